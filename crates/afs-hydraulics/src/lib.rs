@@ -1,0 +1,1 @@
+//! Hydraulic articulated frame steering: strut kinematics, valve, continuity, torque (Chapters 3-4).

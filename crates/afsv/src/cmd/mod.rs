@@ -1,0 +1,7 @@
+//! One module per subcommand group. Each has a clap `Args` (or `Subcommand`) type and a
+//! `run` function returning [`CmdResult`].
+
+pub mod evaluate;
+
+/// Result of a subcommand: errors are printed as one line by `main`.
+pub type CmdResult = Result<(), Box<dyn std::error::Error>>;

@@ -1,0 +1,7 @@
+//! The afsv toolkit: records (CSV + JSON sidecar), output helpers and plots shared by the
+//! `afsv` command-line tool. The physics lives in the subsystem crates
+//! (`terrain-psd`, `tire-fiala`, `afs-hydraulics`, `hps-emulsion`, `perf-measures`,
+//! `afsv-dynamics`); this crate composes them for users.
+
+pub mod output;
+pub mod record;

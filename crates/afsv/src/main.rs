@@ -1,0 +1,41 @@
+//! `afsv`: command-line front end of the toolkit. Every subcommand prints JSON on stdout
+//! (or writes CSV with `-o`), so results can be scripted; errors go to stderr as one line
+//! and the exit code is non-zero.
+
+use clap::{Parser, Subcommand};
+use std::process::ExitCode;
+
+mod cmd;
+
+/// Design and assess articulated frame-steered off-road vehicles: terrain, tires,
+/// hydraulic steering, hydro-pneumatic suspension, performance measures.
+#[derive(Parser)]
+#[command(name = "afsv", version, propagate_version = true)]
+struct Cli {
+    #[command(subcommand)]
+    command: Command,
+}
+
+#[derive(Subcommand)]
+enum Command {
+    /// Run the main job on the built-in default vehicle and print its assessment as JSON.
+    Evaluate(cmd::evaluate::Args),
+}
+
+fn main() -> ExitCode {
+    // A bug must not greet the user with a backtrace: one line, non-zero exit.
+    std::panic::set_hook(Box::new(|info| {
+        eprintln!("afsv: internal error (please report): {info}");
+    }));
+    let cli = Cli::parse();
+    let result = match cli.command {
+        Command::Evaluate(args) => cmd::evaluate::run(args),
+    };
+    match result {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(e) => {
+            eprintln!("afsv: error: {e}");
+            ExitCode::FAILURE
+        }
+    }
+}

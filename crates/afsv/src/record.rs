@@ -1,0 +1,339 @@
+//! Measured or simulated records: CSV with a one-line header of `name_unit` columns and an
+//! optional JSON sidecar (`record.json` beside `record.csv`), as fixed in DESIGN.md.
+//!
+//! Reading reports the line and column of any malformed cell. Unknown columns are kept (and
+//! ignored by consumers); absent columns are simply not compared. A sidecar that states a
+//! `"sign_convention"` other than [`SIGN_CONVENTION`] is refused rather than guessed at.
+
+use std::fmt::Write as _;
+use std::path::{Path, PathBuf};
+
+/// The sign convention this toolkit writes and accepts (DESIGN.md, "Sign conventions of records").
+pub const SIGN_CONVENTION: &str = "afsv-v1";
+
+/// A column-oriented numeric record.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct Record {
+    names: Vec<String>,
+    columns: Vec<Vec<f64>>,
+    /// Sidecar metadata (sample rate, units, manoeuvre, ...), `Null` when there is none.
+    pub meta: serde_json::Value,
+}
+
+/// What went wrong reading or writing a record.
+#[derive(Debug, thiserror::Error)]
+pub enum RecordError {
+    /// The file could not be opened, read or written.
+    #[error("{path}: {source}")]
+    Io {
+        /// File involved.
+        path: PathBuf,
+        /// Underlying error.
+        source: std::io::Error,
+    },
+    /// A cell or the header is malformed.
+    #[error("{path}:{line}:{column}: {message}")]
+    Parse {
+        /// File involved.
+        path: PathBuf,
+        /// 1-based line number.
+        line: u64,
+        /// 1-based column number.
+        column: usize,
+        /// What is wrong.
+        message: String,
+    },
+    /// The sidecar is malformed or states a convention we cannot honour.
+    #[error("{path}: {message}")]
+    Sidecar {
+        /// Sidecar file.
+        path: PathBuf,
+        /// What is wrong.
+        message: String,
+    },
+    /// A required column is absent.
+    #[error("{path}: no column `{name}` (columns: {available})")]
+    MissingColumn {
+        /// File involved.
+        path: PathBuf,
+        /// Column asked for.
+        name: String,
+        /// Columns present.
+        available: String,
+    },
+    /// Columns of unequal length or a duplicate name when building a record in code.
+    #[error("invalid record: {0}")]
+    Invalid(String),
+}
+
+impl Record {
+    /// An empty record.
+    pub fn new() -> Self {
+        Self {
+            names: Vec::new(),
+            columns: Vec::new(),
+            meta: serde_json::Value::Null,
+        }
+    }
+
+    /// Add a column; all columns must have the same length and distinct names.
+    pub fn push_column(&mut self, name: &str, values: Vec<f64>) -> Result<(), RecordError> {
+        if self.names.iter().any(|n| n == name) {
+            return Err(RecordError::Invalid(format!("duplicate column `{name}`")));
+        }
+        if let Some(first) = self.columns.first() {
+            if first.len() != values.len() {
+                return Err(RecordError::Invalid(format!(
+                    "column `{name}` has {} rows, the record has {}",
+                    values.len(),
+                    first.len()
+                )));
+            }
+        }
+        self.names.push(name.to_string());
+        self.columns.push(values);
+        Ok(())
+    }
+
+    /// Column names in file order.
+    pub fn names(&self) -> &[String] {
+        &self.names
+    }
+
+    /// Number of rows.
+    pub fn len(&self) -> usize {
+        self.columns.first().map_or(0, Vec::len)
+    }
+
+    /// True when the record has no rows.
+    pub fn is_empty(&self) -> bool {
+        self.len() == 0
+    }
+
+    /// The column called `name`, if present.
+    pub fn column(&self, name: &str) -> Option<&[f64]> {
+        self.names
+            .iter()
+            .position(|n| n == name)
+            .map(|i| self.columns[i].as_slice())
+    }
+
+    /// The column called `name`, or an error naming the columns that are there.
+    pub fn require(&self, name: &str, path: &Path) -> Result<&[f64], RecordError> {
+        self.column(name).ok_or_else(|| RecordError::MissingColumn {
+            path: path.to_path_buf(),
+            name: name.to_string(),
+            available: self.names.join(", "),
+        })
+    }
+
+    /// Read `path` (CSV) and its sidecar `path.with_extension("json")` if it exists.
+    pub fn read(path: &Path) -> Result<Self, RecordError> {
+        let text = std::fs::read_to_string(path).map_err(|source| RecordError::Io {
+            path: path.to_path_buf(),
+            source,
+        })?;
+        let mut rec = Self::parse_csv(&text, path)?;
+        let sidecar = path.with_extension("json");
+        if sidecar.is_file() {
+            rec.meta = read_sidecar(&sidecar)?;
+        }
+        Ok(rec)
+    }
+
+    /// Parse CSV text (`path` is only used in error messages).
+    pub fn parse_csv(text: &str, path: &Path) -> Result<Self, RecordError> {
+        let perr = |line: u64, column: usize, message: String| RecordError::Parse {
+            path: path.to_path_buf(),
+            line,
+            column,
+            message,
+        };
+        let mut reader = csv::ReaderBuilder::new()
+            .has_headers(true)
+            .trim(csv::Trim::All)
+            .comment(Some(b'#'))
+            .from_reader(text.as_bytes());
+        let headers = reader
+            .headers()
+            .map_err(|e| perr(1, 1, format!("cannot read header: {e}")))?
+            .clone();
+        if headers.is_empty() || (headers.len() == 1 && headers[0].is_empty()) {
+            return Err(perr(1, 1, "empty file: expected a header line".into()));
+        }
+        let mut rec = Self::new();
+        for (j, h) in headers.iter().enumerate() {
+            if h.is_empty() {
+                return Err(perr(1, j + 1, "empty column name in header".into()));
+            }
+            if rec.names.iter().any(|n| n == h) {
+                return Err(perr(1, j + 1, format!("duplicate column `{h}`")));
+            }
+            rec.names.push(h.to_string());
+            rec.columns.push(Vec::new());
+        }
+        let header_line = headers_line(&reader);
+        for row in reader.records() {
+            let row = row.map_err(|e| {
+                let line = e.position().map_or(header_line, |p| p.line());
+                perr(line, 1, format!("{e}"))
+            })?;
+            let line = row.position().map_or(0, |p| p.line());
+            if row.len() != rec.names.len() {
+                return Err(perr(
+                    line,
+                    row.len().min(rec.names.len()) + 1,
+                    format!("expected {} fields, found {}", rec.names.len(), row.len()),
+                ));
+            }
+            for (j, cell) in row.iter().enumerate() {
+                let v: f64 = cell.parse().map_err(|_| {
+                    perr(
+                        line,
+                        j + 1,
+                        format!("`{cell}` in column `{}` is not a number", rec.names[j]),
+                    )
+                })?;
+                if !v.is_finite() {
+                    return Err(perr(
+                        line,
+                        j + 1,
+                        format!("`{cell}` in column `{}` is not finite", rec.names[j]),
+                    ));
+                }
+                rec.columns[j].push(v);
+            }
+        }
+        Ok(rec)
+    }
+
+    /// CSV text of the record (full precision, header first).
+    pub fn to_csv_string(&self) -> String {
+        let mut s = self.names.join(",");
+        s.push('\n');
+        for i in 0..self.len() {
+            for (j, c) in self.columns.iter().enumerate() {
+                if j > 0 {
+                    s.push(',');
+                }
+                let _ = write!(s, "{}", c[i]);
+            }
+            s.push('\n');
+        }
+        s
+    }
+
+    /// Write the CSV to `path`, and the sidecar beside it when `meta` is not `Null`
+    /// (the sidecar then carries `"sign_convention": "afsv-v1"`).
+    pub fn write(&self, path: &Path) -> Result<(), RecordError> {
+        let io = |source| RecordError::Io {
+            path: path.to_path_buf(),
+            source,
+        };
+        std::fs::write(path, self.to_csv_string()).map_err(io)?;
+        if !self.meta.is_null() {
+            let mut meta = self.meta.clone();
+            if let Some(obj) = meta.as_object_mut() {
+                obj.entry("sign_convention")
+                    .or_insert_with(|| SIGN_CONVENTION.into());
+            }
+            let side = path.with_extension("json");
+            let text = serde_json::to_string_pretty(&meta).expect("JSON value serialises");
+            std::fs::write(&side, text + "\n").map_err(|source| RecordError::Io {
+                path: side.clone(),
+                source,
+            })?;
+        }
+        Ok(())
+    }
+}
+
+fn headers_line(reader: &csv::Reader<&[u8]>) -> u64 {
+    reader.position().line().max(1)
+}
+
+fn read_sidecar(path: &Path) -> Result<serde_json::Value, RecordError> {
+    let text = std::fs::read_to_string(path).map_err(|source| RecordError::Io {
+        path: path.to_path_buf(),
+        source,
+    })?;
+    let meta: serde_json::Value = serde_json::from_str(&text).map_err(|e| RecordError::Parse {
+        path: path.to_path_buf(),
+        line: e.line() as u64,
+        column: e.column(),
+        message: format!("invalid JSON sidecar: {e}"),
+    })?;
+    if !meta.is_object() {
+        return Err(RecordError::Sidecar {
+            path: path.to_path_buf(),
+            message: "sidecar must be a JSON object".into(),
+        });
+    }
+    if let Some(conv) = meta.get("sign_convention") {
+        if conv.as_str() != Some(SIGN_CONVENTION) {
+            return Err(RecordError::Sidecar {
+                path: path.to_path_buf(),
+                message: format!(
+                    "sign_convention {conv} is not supported (this reader honours only \"{SIGN_CONVENTION}\", see DESIGN.md); convert the record first"
+                ),
+            });
+        }
+    }
+    Ok(meta)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn p() -> &'static Path {
+        Path::new("rec.csv")
+    }
+
+    #[test]
+    fn parses_and_keeps_unknown_columns() {
+        let r = Record::parse_csv("time_s,force_n,extra_x\n0,1.5,9\n0.1,2.5,9\n", p()).unwrap();
+        assert_eq!(r.len(), 2);
+        assert_eq!(r.column("force_n").unwrap(), &[1.5, 2.5]);
+        assert!(r.column("extra_x").is_some());
+        assert!(r.column("p_rod_pa").is_none());
+    }
+
+    #[test]
+    fn bad_cell_reports_line_and_column() {
+        let e = Record::parse_csv("time_s,force_n\n0,1\n0.1,abc\n", p()).unwrap_err();
+        let msg = e.to_string();
+        assert!(msg.starts_with("rec.csv:3:2:"), "{msg}");
+        let e = Record::parse_csv("time_s,force_n\n0,1\n0.1\n", p()).unwrap_err();
+        assert!(e.to_string().starts_with("rec.csv:3:"), "{e}");
+        let e = Record::parse_csv("time_s,force_n\n0,nan\n", p()).unwrap_err();
+        assert!(e.to_string().starts_with("rec.csv:2:2:"), "{e}");
+    }
+
+    #[test]
+    fn empty_and_duplicate_headers_are_errors() {
+        assert!(Record::parse_csv("", p()).is_err());
+        assert!(Record::parse_csv("a,a\n1,2\n", p()).is_err());
+    }
+
+    #[test]
+    fn round_trip_through_files_with_sidecar() {
+        let dir = std::env::temp_dir().join(format!("afsv-record-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let path = dir.join("r.csv");
+        let mut r = Record::new();
+        r.push_column("time_s", vec![0.0, 0.01]).unwrap();
+        r.push_column("force_n", vec![1.0 / 3.0, -2e-9]).unwrap();
+        r.meta = serde_json::json!({"sample_rate_hz": 100.0});
+        r.write(&path).unwrap();
+        let back = Record::read(&path).unwrap();
+        assert_eq!(back.column("force_n"), r.column("force_n"));
+        assert_eq!(back.meta["sign_convention"], SIGN_CONVENTION);
+        std::fs::write(dir.join("r.json"), r#"{"sign_convention": "sae"}"#).unwrap();
+        assert!(matches!(
+            Record::read(&path),
+            Err(RecordError::Sidecar { .. })
+        ));
+        std::fs::remove_dir_all(&dir).unwrap();
+    }
+}

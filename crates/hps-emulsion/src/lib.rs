@@ -1,0 +1,1 @@
+//! Hydro-pneumatic suspension strut with gas-oil emulsion (Chapter 5).

@@ -1,0 +1,1 @@
+//! Fiala off-road tire: handling forces, relaxation, vertical contact and terrain enveloping.
