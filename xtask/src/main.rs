@@ -1,2 +1,157 @@
-//! Project automation (`cargo xtask <task>`).
-fn main() {}
+//! Project automation, run as `cargo xtask <task>` (alias in `.cargo/config.toml`).
+//!
+//! - `bench [CARGO BENCH ARGS...]`: run every criterion bench of the workspace, then print
+//!   one table of mean times. A benchmark whose id ends in `_sim<N>s` simulates N seconds
+//!   (`p` may stand for the decimal point: `_sim1p25s`), and the table adds its real-time
+//!   factor = simulated seconds / wall seconds.
+//! - `bench --summary`: only print the table from the last run's results.
+
+use std::path::{Path, PathBuf};
+use std::process::{Command, ExitCode};
+
+fn main() -> ExitCode {
+    let args: Vec<String> = std::env::args().skip(1).collect();
+    let result = match args.first().map(String::as_str) {
+        Some("bench") => bench(&args[1..]),
+        Some("-h") | Some("--help") | None => {
+            println!("{}", HELP);
+            Ok(())
+        }
+        Some(other) => Err(format!("unknown task `{other}`\n{HELP}")),
+    };
+    match result {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(e) => {
+            eprintln!("xtask: error: {e}");
+            ExitCode::FAILURE
+        }
+    }
+}
+
+const HELP: &str = "usage: cargo xtask <task>\n\ntasks:\n  bench [--summary] [ARGS...]  run the criterion benches (ARGS go to the bench harness) and print mean times and real-time factors";
+
+fn workspace_root() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+        .parent()
+        .expect("xtask lives one level below the workspace root")
+        .to_path_buf()
+}
+
+fn bench(args: &[String]) -> Result<(), String> {
+    let root = workspace_root();
+    let summary_only = args.iter().any(|a| a == "--summary");
+    if !summary_only {
+        let mut cmd = Command::new(std::env::var("CARGO").unwrap_or_else(|_| "cargo".into()));
+        cmd.current_dir(&root).args([
+            "bench",
+            "--workspace",
+            "--exclude",
+            "xtask",
+            "--benches",
+            "--",
+        ]);
+        cmd.args(args);
+        let status = cmd
+            .status()
+            .map_err(|e| format!("cannot run cargo bench: {e}"))?;
+        if !status.success() {
+            return Err(format!("cargo bench failed ({status})"));
+        }
+    }
+    let dir = root.join("target").join("criterion");
+    let mut rows = Vec::new();
+    collect(&dir, &mut rows)?;
+    if rows.is_empty() {
+        return Err(format!("no criterion results under {}", dir.display()));
+    }
+    rows.sort_by(|a, b| a.0.cmp(&b.0));
+    println!(
+        "{:<60} {:>14} {:>16}",
+        "benchmark", "mean", "real-time factor"
+    );
+    for (id, ns) in rows {
+        let rtf = sim_seconds(&id)
+            .map(|s| format!("{:.0}x", s / (ns * 1e-9)))
+            .unwrap_or_default();
+        println!("{:<60} {:>14} {:>16}", id, human_time(ns), rtf);
+    }
+    Ok(())
+}
+
+/// Walk `target/criterion` for `new/estimates.json` + `new/benchmark.json` pairs.
+fn collect(dir: &Path, rows: &mut Vec<(String, f64)>) -> Result<(), String> {
+    let Ok(entries) = std::fs::read_dir(dir) else {
+        return Ok(());
+    };
+    for entry in entries.flatten() {
+        let path = entry.path();
+        if !path.is_dir() {
+            continue;
+        }
+        if path.file_name().is_some_and(|n| n == "new") {
+            let est = path.join("estimates.json");
+            let meta = path.join("benchmark.json");
+            if let (Ok(e), Ok(m)) = (
+                std::fs::read_to_string(&est),
+                std::fs::read_to_string(&meta),
+            ) {
+                let e: serde_json::Value =
+                    serde_json::from_str(&e).map_err(|err| format!("{}: {err}", est.display()))?;
+                let m: serde_json::Value =
+                    serde_json::from_str(&m).map_err(|err| format!("{}: {err}", meta.display()))?;
+                let ns = e["mean"]["point_estimate"].as_f64();
+                let id = m["full_id"].as_str().map(str::to_string);
+                if let (Some(ns), Some(id)) = (ns, id) {
+                    rows.push((id, ns));
+                }
+            }
+        } else if path.file_name().is_some_and(|n| n != "report") {
+            collect(&path, rows)?;
+        }
+    }
+    Ok(())
+}
+
+/// Simulated seconds encoded in a benchmark id as `_sim<N>s` (`p` for the decimal point).
+fn sim_seconds(id: &str) -> Option<f64> {
+    let last = id.rsplit('/').next()?;
+    let pos = last.rfind("_sim")?;
+    let tail = &last[pos + 4..];
+    let num = tail.strip_suffix('s')?;
+    num.replace('p', ".")
+        .parse::<f64>()
+        .ok()
+        .filter(|v| *v > 0.0)
+}
+
+fn human_time(ns: f64) -> String {
+    if ns < 1e3 {
+        format!("{ns:.1} ns")
+    } else if ns < 1e6 {
+        format!("{:.2} µs", ns / 1e3)
+    } else if ns < 1e9 {
+        format!("{:.2} ms", ns / 1e6)
+    } else {
+        format!("{:.2} s", ns / 1e9)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn parses_simulated_seconds() {
+        assert_eq!(sim_seconds("yaw/yaw_pulse_sim10s"), Some(10.0));
+        assert_eq!(sim_seconds("hps_8hz_sim1p25s"), Some(1.25));
+        assert_eq!(sim_seconds("hps_8hz_sim1.25s"), Some(1.25));
+        assert_eq!(sim_seconds("fiala_force"), None);
+        assert_eq!(sim_seconds("x_simfoos"), None);
+    }
+
+    #[test]
+    fn formats_times() {
+        assert_eq!(human_time(12.0), "12.0 ns");
+        assert_eq!(human_time(2.5e6), "2.50 ms");
+    }
+}
