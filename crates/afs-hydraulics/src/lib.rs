@@ -1,1 +1,29 @@
-//! Hydraulic articulated frame steering: strut kinematics, valve, continuity, torque (Chapters 3-4).
+//! Hydraulic articulated frame steering (AFS) component: strut kinematics, steering valve
+//! with gerotor feedback, fluid continuity with leakage, seal friction, strut forces and the
+//! steering torque about the articulation joint (Chapter 3.2.1, Chapter 4.2, Eqs 6.6-6.8).
+//!
+//! The component has a narrow interface so any vehicle model can use it: the vehicle gives
+//! the articulation angle, its rate and the steering-wheel angle ([`AfsInput`]); the
+//! component owns three states (P_c, P_r, theta_h) and returns their derivatives plus the
+//! torque, strut forces, flows and powers ([`AfsOutput`]).
+//!
+//! Sign convention (DESIGN.md): positive steering-wheel angle and articulation are the
+//! paper's right-hand turn, in which the valve feeds the P_c group (left-strut piston side +
+//! right-strut rod side) and the left strut extends. A positive torque drives theta
+//! positive. See `docs/afs-hydraulics.md` for the derivation and the unit choices.
+
+mod error;
+pub mod extensions;
+pub mod fluid;
+pub mod kinematics;
+pub mod params;
+pub mod sensor;
+mod system;
+pub mod valve;
+
+pub use error::AfsError;
+pub use extensions::{AfsExtensions, CoulombFriction, EntrainedAir, SupplyDroop};
+pub use kinematics::{strut_kinematics, StrutKinematics};
+pub use params::AfsParams;
+pub use sensor::backlash;
+pub use system::{AfsInput, AfsOutput, AfsSystem};
