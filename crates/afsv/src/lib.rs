@@ -3,5 +3,7 @@
 //! (`terrain-psd`, `tire-fiala`, `afs-hydraulics`, `hps-emulsion`, `perf-measures`,
 //! `afsv-dynamics`); this crate composes them for users.
 
+pub mod discover;
 pub mod output;
+pub mod plot;
 pub mod record;

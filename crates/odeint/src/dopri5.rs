@@ -88,7 +88,7 @@ impl Dopri5 {
     }
 }
 
-/// Hairer's starting-step heuristic (HNW I, II.4).
+/// Hairer's starting-step heuristic (HNW I, II.4); costs one right-hand-side evaluation.
 pub(crate) fn initial_step<S: OdeSystem + ?Sized>(
     sys: &S,
     t0: f64,
@@ -96,10 +96,9 @@ pub(crate) fn initial_step<S: OdeSystem + ?Sized>(
     f0: &[f64],
     tol: Tolerances,
     order: i32,
-    scratch_y: &mut [f64],
-    scratch_f: &mut [f64],
-    stats: &mut Stats,
+    scratch: [&mut [f64]; 2],
 ) -> f64 {
+    let [scratch_y, scratch_f] = scratch;
     let n = y0.len().max(1) as f64;
     let (mut d0, mut d1) = (0.0, 0.0);
     for i in 0..y0.len() {
@@ -118,7 +117,6 @@ pub(crate) fn initial_step<S: OdeSystem + ?Sized>(
         scratch_y[i] = y0[i] + h0 * f0[i];
     }
     sys.rhs(t0 + h0, scratch_y, scratch_f);
-    stats.rhs_evals += 1;
     let mut d2 = 0.0;
     for i in 0..y0.len() {
         let sk = tol.atol + tol.rtol * y0[i].abs();
@@ -153,7 +151,7 @@ impl Integrator for Dopri5 {
     {
         check_request(sys, t0, y0, t_out)?;
         self.tol.validate()?;
-        if !(self.max_step > 0.0) {
+        if self.max_step.is_nan() || self.max_step <= 0.0 {
             return Err(OdeError::InvalidInput(format!(
                 "max_step must be positive, got {}",
                 self.max_step
@@ -198,7 +196,10 @@ impl Integrator for Dopri5 {
         stats.rhs_evals += 1;
         let mut h = match self.first_step {
             Some(h) => h,
-            None => initial_step(sys, t, y, k1, self.tol, 5, ys, k2, &mut stats),
+            None => {
+                stats.rhs_evals += 1;
+                initial_step(sys, t, y, k1, self.tol, 5, [ys, k2])
+            }
         }
         .min(self.max_step)
         .min(t_end - t0);

@@ -152,7 +152,7 @@ pub(crate) fn error_norm(err: &[f64], a: &[f64], b: &[f64], rtol: f64, atol: f64
 
 /// Evenly spaced output times `t0, t0+dt, ..., t0+n*dt` that end at or just before `t_end`.
 pub fn output_grid(t0: f64, t_end: f64, dt: f64) -> Vec<f64> {
-    if !(dt > 0.0) || !(t_end >= t0) {
+    if dt.is_nan() || dt <= 0.0 || t_end.is_nan() || t_end < t0 {
         return vec![t0];
     }
     let n = ((t_end - t0) / dt + 1e-9).floor() as usize;
@@ -170,7 +170,8 @@ pub struct Tolerances {
 
 impl Tolerances {
     pub(crate) fn validate(&self) -> Result<(), OdeError> {
-        if !(self.rtol > 0.0 && self.rtol.is_finite() && self.atol > 0.0 && self.atol.is_finite()) {
+        let positive = |v: f64| v.is_finite() && v > 0.0;
+        if !positive(self.rtol) || !positive(self.atol) {
             return Err(OdeError::InvalidInput(format!(
                 "tolerances must be positive and finite (rtol = {}, atol = {})",
                 self.rtol, self.atol

@@ -17,7 +17,7 @@ pub(crate) fn lu_factor(a: &mut [f64], piv: &mut [usize], n: usize) -> bool {
                 p = r;
             }
         }
-        if !(best > 0.0) || !best.is_finite() {
+        if best.is_nan() || best <= 0.0 || !best.is_finite() {
             return false;
         }
         if p != k {

@@ -24,7 +24,7 @@ impl Integrator for Rk4 {
         F: FnMut(f64, &[f64]) -> Control,
     {
         check_request(sys, t0, y0, t_out)?;
-        if !(self.step > 0.0 && self.step.is_finite()) {
+        if !self.step.is_finite() || self.step <= 0.0 {
             return Err(OdeError::InvalidInput(format!(
                 "RK4 step must be positive, got {}",
                 self.step

@@ -64,7 +64,7 @@ impl Integrator for Rosenbrock23 {
     {
         check_request(sys, t0, y0, t_out)?;
         self.tol.validate()?;
-        if !(self.max_step > 0.0) {
+        if self.max_step.is_nan() || self.max_step <= 0.0 {
             return Err(OdeError::InvalidInput(format!(
                 "max_step must be positive, got {}",
                 self.max_step
@@ -108,7 +108,8 @@ impl Integrator for Rosenbrock23 {
         }
         sys.rhs(t, y, f0);
         stats.rhs_evals += 1;
-        let mut h = initial_step(sys, t, y, f0, self.tol, 2, ys, f1, &mut stats)
+        stats.rhs_evals += 1;
+        let mut h = initial_step(sys, t, y, f0, self.tol, 2, [ys, f1])
             .min(self.max_step)
             .min(t_end - t0);
         let mut need_jac = true;

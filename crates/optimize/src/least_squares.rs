@@ -124,7 +124,13 @@ pub fn fit<P: Problem + ?Sized>(
         .clone()
         .unwrap_or_else(|| vec![f64::NEG_INFINITY; n]);
     let hi = opts.upper.clone().unwrap_or_else(|| vec![f64::INFINITY; n]);
-    if lo.len() != n || hi.len() != n || lo.iter().zip(&hi).any(|(a, b)| !(a <= b)) {
+    if lo.len() != n
+        || hi.len() != n
+        || lo
+            .iter()
+            .zip(&hi)
+            .any(|(a, b)| a.is_nan() || b.is_nan() || a > b)
+    {
         return Err(LeastSquaresError::Invalid(
             "bounds must have one entry per parameter with lower <= upper".into(),
         ));
@@ -290,8 +296,8 @@ mod tests {
             self.x.len()
         }
         fn residuals(&self, p: &[f64], r: &mut [f64]) -> Result<(), String> {
-            for i in 0..self.x.len() {
-                r[i] = p[0] * (-p[1] * self.x[i]).exp() + p[2] - self.y[i];
+            for ((ri, x), y) in r.iter_mut().zip(&self.x).zip(&self.y) {
+                *ri = p[0] * (-p[1] * x).exp() + p[2] - y;
             }
             Ok(())
         }

@@ -1,0 +1,115 @@
+//! Model-discrepancy discovery: find which physical effect a model is missing, add it, and
+//! show the gap shrink (see `docs/discovery.md`).
+//!
+//! The workflow, for any model that implements [`DiscoveryModel`]:
+//!
+//! 0. **Calibrate** the baseline's uncertain parameters on the training records, so that a
+//!    mismatch of nominal values is not mistaken for a missing effect ([`calibrate`]).
+//! 1. **Simulate** the calibrated baseline with each record's inputs.
+//! 2. **Locate** the disagreement per channel, per phase and by signature ([`signature`]).
+//! 3. **Try** every effect of the model's catalogue: fit its parameters (with the baseline's
+//!    calibrated parameters freed again) on the training records, score it on held-out records.
+//! 4. **Name** an effect only when the improvement is significant ([`stats`]), add it, repeat.
+//! 5. **Report** the effects named, fitted parameters with standard errors, before/after errors
+//!    and the gap shrink ([`report`]).
+
+mod engine;
+pub mod signature;
+pub mod stats;
+
+pub use engine::{
+    calibrate, discover, evaluate_errors, ChannelError, Discovery, DiscoveryOptions, EffectChoice,
+    FitOutcome, Progress, Step,
+};
+
+use crate::record::Record;
+
+/// A parameter the workflow may fit, with its physical range.
+#[derive(Debug, Clone, PartialEq, serde::Serialize)]
+pub struct ParamSpec {
+    /// Name as shown to users (with unit suffix, e.g. `friction_coulomb_n`).
+    pub name: String,
+    /// Start value (for baseline parameters: the nominal value).
+    pub initial: f64,
+    /// Lower bound.
+    pub lower: f64,
+    /// Upper bound.
+    pub upper: f64,
+    /// Typical magnitude (sets finite-difference steps).
+    pub typical: f64,
+}
+
+impl ParamSpec {
+    /// A parameter with bounds; `typical` defaults to `|initial|` (or the bound span if zero).
+    pub fn new(name: &str, initial: f64, lower: f64, upper: f64) -> Self {
+        let typical = if initial != 0.0 {
+            initial.abs()
+        } else {
+            (upper - lower).abs().min(1e300) * 0.1
+        };
+        Self {
+            name: name.to_string(),
+            initial,
+            lower,
+            upper,
+            typical,
+        }
+    }
+}
+
+/// One candidate model extension of a catalogue: a documented physical mechanism.
+#[derive(Debug, Clone, PartialEq, serde::Serialize)]
+pub struct EffectSpec {
+    /// Short name used on the command line (`gas-heat-transfer`, `sensor-backlash`, ...).
+    pub name: String,
+    /// One-sentence physics.
+    pub description: String,
+    /// Where the mechanism comes from (dissertation section or literature).
+    pub citation: String,
+    /// Its parameters.
+    pub params: Vec<ParamSpec>,
+}
+
+/// An effect switched on with parameter values, as passed to [`DiscoveryModel::simulate`].
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ActiveEffect<'a> {
+    /// Index into [`DiscoveryModel::catalogue`].
+    pub index: usize,
+    /// Values of its parameters, in the order of its [`EffectSpec::params`].
+    pub values: &'a [f64],
+}
+
+/// Phase labels of a record (e.g. compression/extension) for locating disagreement.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Phase {
+    /// Label (e.g. `compression`).
+    pub name: String,
+    /// Which samples belong to it.
+    pub mask: Vec<bool>,
+}
+
+/// A model the discovery workflow can calibrate and extend.
+///
+/// Implementations live next to the models (strut, yaw-plane vehicle); the workflow only
+/// sees records, parameter vectors and predicted channels.
+pub trait DiscoveryModel: Sync {
+    /// Model name (`hps-strut`, `yaw-plane`).
+    fn name(&self) -> &str;
+    /// Record channels the model predicts and the workflow compares (absent ones are skipped).
+    fn channels(&self) -> Vec<String>;
+    /// Uncertain baseline parameters calibrated before any effect is considered.
+    fn baseline_params(&self) -> Vec<ParamSpec>;
+    /// The catalogue of candidate effects.
+    fn catalogue(&self) -> Vec<EffectSpec>;
+    /// Simulate `record`'s inputs with the given baseline parameter values and effects;
+    /// returns one predicted series per entry of `channels()`, on the record's time base
+    /// (`None` for a channel the model cannot predict for this record).
+    fn simulate(
+        &self,
+        record: &Record,
+        baseline: &[f64],
+        effects: &[ActiveEffect<'_>],
+    ) -> Result<Vec<Option<Vec<f64>>>, String>;
+    /// Phases of a record used to locate the disagreement (may be empty).
+    fn phases(&self, record: &Record) -> Vec<Phase>;
+}
