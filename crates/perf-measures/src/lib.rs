@@ -1,1 +1,32 @@
-//! ISO 2631-1 weightings and exposure, roll (LTR, SP-DRT) and yaw/steering measures.
+//! Performance measures of articulated frame-steered vehicles (AFSV):
+//!
+//! * [`iso2631`]: ISO 2631-1:1997 frequency weightings (Annex A) as analog transfer
+//!   functions, digital filters and frequency-domain weighting; exposure measures
+//!   (weighted RMS, `a_v` of Eq 1.1, crest factor, MTVV, VDV, A(8), EU 2002/44/EC values,
+//!   Annex B caution zone) and the weighting check against the standard's tables.
+//! * [`roll`]: LTR (Eq 2.11), smooth-road DRT, sustained period and SP-DRT (section 2.3),
+//!   SSF.
+//! * [`decay`]: free-decay single-DOF fit (yaw-mode frequency and damping, sections 3.3,
+//!   4.3.1, 6.4).
+//! * [`step`]: step-steer gain, 0-100 % rise time, overshoot (section 3.3).
+//! * [`steering`]: steering power efficiency (Eq 4.7).
+//!
+//! Units are SI throughout; `docs/perf-measures.md` maps every equation to its code.
+
+pub mod decay;
+pub mod error;
+pub mod iso2631;
+pub mod roll;
+pub mod signal;
+pub mod steering;
+pub mod step;
+
+pub use decay::{fit_free_decay, DecayFit};
+pub use error::MeasureError;
+pub use iso2631::{weighting_check, weighting_check_at, Weighting, WeightingCheck};
+pub use roll::{
+    ltr, ltr_two_axle, smooth_road_drt, static_stability_factor, sustained_period, RollPoint,
+    SustainedPeriod, SustainedPeriodParams,
+};
+pub use steering::steering_power_efficiency;
+pub use step::{step_metrics, step_metrics_with, StepMetrics, StepOptions};

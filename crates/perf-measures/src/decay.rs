@@ -1,0 +1,363 @@
+//! Free-decay single-DOF fit of a yaw (articulation-angle) oscillation (sections 3.3,
+//! 4.3.1 and 6.4: yaw-mode natural frequency and damping ratio "assuming single-DOF
+//! system response").
+//!
+//! Model, with `tau = t - t[0]` (the record must start at the free-decay onset):
+//!
+//! `y(tau) = c + exp(-sigma tau) (a cos(wd tau) + b sin(wd tau))
+//!         = c + A exp(-zeta wn tau) cos(wd tau + phi)`,
+//!
+//! `sigma = zeta wn`, `wd = wn sqrt(1 - zeta^2)`. The five parameters `(c, a, b, sigma, wd)`
+//! are fitted by bounded Levenberg-Marquardt ([`optimize::least_squares::fit`]). The start
+//! is chosen robustly: the FFT peak of the (uniformly resampled, zero-padded) record gives a
+//! first `wd`; a grid over `wd` (0.35 to 2.8 times it) and `zeta` (-0.1 to 0.9) is scored by
+//! variable projection (the linear parameters `c, a, b` solved exactly at each grid point);
+//! zero crossings and the logarithmic decrement of successive extrema about the best grid
+//! offset give one more candidate; LM is run from the three best candidates and the
+//! smallest residual wins. The free offset `c` makes the fit insensitive to a non-zero
+//! final value; negative `zeta` (growing oscillation, snaking) is allowed.
+
+use crate::error::{finite_series, same_len, time_series, MeasureError};
+use optimize::least_squares::{fit, FitOptions, Problem};
+use realfft::RealFftPlanner;
+use serde::Serialize;
+use std::f64::consts::PI;
+
+/// Result of [`fit_free_decay`].
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct DecayFit {
+    /// Undamped natural frequency `wn / 2 pi` (Hz).
+    pub natural_frequency_hz: f64,
+    /// Damped frequency `wd / 2 pi` (Hz).
+    pub damped_frequency_hz: f64,
+    /// Damping ratio `zeta` (negative for a growing oscillation).
+    pub damping_ratio: f64,
+    /// Initial amplitude `A` of the oscillation (units of `y`).
+    pub amplitude: f64,
+    /// Final value `c` the oscillation decays to (units of `y`).
+    pub offset: f64,
+    /// Root-mean-square residual (units of `y`).
+    pub rmse: f64,
+    /// Phase `phi` at the first sample (rad).
+    pub phase_rad: f64,
+    /// Decay rate `sigma = zeta wn` (1/s).
+    pub decay_rate_1_s: f64,
+    /// Standard error of the natural frequency (Hz), from the fit covariance.
+    pub natural_frequency_std_hz: f64,
+    /// Standard error of the damping ratio.
+    pub damping_ratio_std: f64,
+    /// Coefficient of determination of the fit.
+    pub r_squared: f64,
+    /// Number of damped cycles the record covers.
+    pub cycles: f64,
+    /// Levenberg-Marquardt iterations of the winning start.
+    pub iterations: usize,
+    /// Whether LM met its convergence test.
+    pub converged: bool,
+}
+
+struct DecayProblem<'a> {
+    tau: &'a [f64],
+    y: &'a [f64],
+}
+
+#[inline]
+fn model(p: &[f64], tau: f64) -> f64 {
+    let e = (-p[3] * tau).exp();
+    let (s, c) = (p[4] * tau).sin_cos();
+    p[0] + e * (p[1] * c + p[2] * s)
+}
+
+impl Problem for DecayProblem<'_> {
+    fn n_params(&self) -> usize {
+        5
+    }
+    fn n_residuals(&self) -> usize {
+        self.y.len()
+    }
+    fn residuals(&self, p: &[f64], r: &mut [f64]) -> Result<(), String> {
+        for ((ri, &tau), &y) in r.iter_mut().zip(self.tau).zip(self.y) {
+            *ri = model(p, tau) - y;
+        }
+        if r.iter().all(|v| v.is_finite()) {
+            Ok(())
+        } else {
+            Err("model overflow".into())
+        }
+    }
+}
+
+/// Variable projection at fixed `(sigma, wd)`: least-squares `c, a, b` and the RSS.
+fn projected(tau: &[f64], y: &[f64], sigma: f64, wd: f64) -> Option<([f64; 3], f64)> {
+    let mut m = [[0.0f64; 3]; 3];
+    let mut rhs = [0.0f64; 3];
+    for (&t, &v) in tau.iter().zip(y) {
+        let e = (-sigma * t).exp();
+        let (s, c) = (wd * t).sin_cos();
+        let g = [1.0, e * c, e * s];
+        for i in 0..3 {
+            rhs[i] += g[i] * v;
+            for j in i..3 {
+                m[i][j] += g[i] * g[j];
+            }
+        }
+    }
+    m[1][0] = m[0][1];
+    m[2][0] = m[0][2];
+    m[2][1] = m[1][2];
+    let x = solve3(m, rhs)?;
+    let p = [x[0], x[1], x[2], sigma, wd];
+    let rss = tau
+        .iter()
+        .zip(y)
+        .map(|(&t, &v)| (model(&p, t) - v).powi(2))
+        .sum();
+    Some((x, rss))
+}
+
+fn solve3(m: [[f64; 3]; 3], r: [f64; 3]) -> Option<[f64; 3]> {
+    let det = |a: [[f64; 3]; 3]| {
+        a[0][0] * (a[1][1] * a[2][2] - a[1][2] * a[2][1])
+            - a[0][1] * (a[1][0] * a[2][2] - a[1][2] * a[2][0])
+            + a[0][2] * (a[1][0] * a[2][1] - a[1][1] * a[2][0])
+    };
+    let d = det(m);
+    let scale = m[0][0] * m[1][1] * m[2][2];
+    if d.abs() <= 1e-12 * scale.abs() || !d.is_finite() {
+        return None;
+    }
+    let mut x = [0.0; 3];
+    for (k, xk) in x.iter_mut().enumerate() {
+        let mut a = m;
+        for i in 0..3 {
+            a[i][k] = r[i];
+        }
+        *xk = det(a) / d;
+    }
+    Some(x)
+}
+
+/// FFT-peak estimate of the dominant angular frequency (rad/s), ignoring frequencies below
+/// half a cycle per record. Non-uniform records are linearly resampled first.
+fn fft_peak_omega(tau: &[f64], y: &[f64]) -> Option<f64> {
+    let n = tau.len();
+    let duration = tau[n - 1];
+    let dt = duration / (n - 1) as f64;
+    let mut j = 0;
+    let mean = y.iter().sum::<f64>() / n as f64;
+    let mut u: Vec<f64> = (0..n)
+        .map(|i| {
+            let t = i as f64 * dt;
+            while j + 2 < n && tau[j + 1] < t {
+                j += 1;
+            }
+            let f = ((t - tau[j]) / (tau[j + 1] - tau[j])).clamp(0.0, 1.0);
+            y[j] + f * (y[j + 1] - y[j]) - mean
+        })
+        .collect();
+    let len = crate::iso2631::filter::fast_fft_len(8 * n);
+    u.resize(len, 0.0);
+    let mut planner = RealFftPlanner::<f64>::new();
+    let r2c = planner.plan_fft_forward(len);
+    let mut spec = r2c.make_output_vec();
+    r2c.process(&mut u, &mut spec).ok()?;
+    let df = 1.0 / (len as f64 * dt);
+    let k_min = ((0.5 / duration) / df).ceil().max(1.0) as usize;
+    let mags: Vec<f64> = spec.iter().map(|c| c.norm()).collect();
+    let k = (k_min..mags.len() - 1).max_by(|&a, &b| mags[a].total_cmp(&mags[b]))?;
+    let (a, b, c) = (mags[k - 1], mags[k], mags[k + 1]);
+    let den = a - 2.0 * b + c;
+    let shift = if den != 0.0 { 0.5 * (a - c) / den } else { 0.0 };
+    Some(2.0 * PI * (k as f64 + shift.clamp(-0.5, 0.5)) * df)
+}
+
+/// Zero crossings of `y - c` give the damped period; the log decrement of the alternating
+/// extrema between them gives `zeta`.
+fn zero_crossing_estimate(tau: &[f64], y: &[f64], c: f64) -> Option<(f64, f64)> {
+    let mut crossings = Vec::new();
+    for i in 0..tau.len() - 1 {
+        let (a, b) = (y[i] - c, y[i + 1] - c);
+        if a == 0.0 || a * b < 0.0 {
+            crossings.push(tau[i] + (tau[i + 1] - tau[i]) * a / (a - b));
+        }
+    }
+    if crossings.len() < 2 {
+        return None;
+    }
+    let half = (crossings[crossings.len() - 1] - crossings[0]) / (crossings.len() - 1) as f64;
+    let wd = PI / half;
+    // Extrema between successive crossings.
+    let mut ext = Vec::new();
+    let mut start = 0;
+    for &tc in &crossings {
+        let end = tau.partition_point(|&t| t <= tc);
+        if end > start {
+            let m = y[start..end]
+                .iter()
+                .map(|v| (v - c).abs())
+                .fold(0.0, f64::max);
+            ext.push(m);
+        }
+        start = end;
+    }
+    let logs: Vec<f64> = ext
+        .windows(2)
+        .filter(|w| w[0] > 0.0 && w[1] > 0.0)
+        .map(|w| (w[0] / w[1]).ln())
+        .collect();
+    let delta = if logs.is_empty() {
+        0.0
+    } else {
+        2.0 * logs.iter().sum::<f64>() / logs.len() as f64
+    };
+    let zeta = delta / (4.0 * PI * PI + delta * delta).sqrt();
+    Some((wd, zeta.clamp(-0.3, 0.95)))
+}
+
+/// Fit the single-DOF free decay `y = offset + A exp(-zeta wn t) cos(wd t + phi)` to a
+/// history `(t, y)` that starts at the free-decay onset (see the module documentation).
+/// Needs at least 8 samples covering at least half a damped cycle.
+pub fn fit_free_decay(t: &[f64], y: &[f64]) -> Result<DecayFit, MeasureError> {
+    time_series(t, 8)?;
+    same_len("t", t, "y", y)?;
+    finite_series("y", y, 8)?;
+    let n = t.len();
+    let tau: Vec<f64> = t.iter().map(|v| v - t[0]).collect();
+    let duration = tau[n - 1];
+    let mean = y.iter().sum::<f64>() / n as f64;
+    let sst: f64 = y.iter().map(|v| (v - mean).powi(2)).sum();
+    if sst.is_nan() || sst <= 0.0 {
+        return Err(MeasureError::Fit("the record is constant".into()));
+    }
+    let min_dt = tau
+        .windows(2)
+        .map(|w| w[1] - w[0])
+        .fold(f64::INFINITY, f64::min);
+    let w_nyq = PI / min_dt;
+    let w_lo = PI / (2.0 * duration);
+    let w_fft = fft_peak_omega(&tau, y).unwrap_or(2.0 * PI / duration);
+
+    // Variable-projection grid.
+    let zetas = [
+        -0.1, -0.03, 0.0, 0.03, 0.06, 0.1, 0.15, 0.2, 0.3, 0.4, 0.5, 0.6, 0.7, 0.8, 0.9,
+    ];
+    let mut cands: Vec<(f64, [f64; 5])> = Vec::new();
+    let n_w = 33;
+    for iw in 0..n_w {
+        let wd = w_fft * 2f64.powf(-1.5 + 3.0 * iw as f64 / (n_w - 1) as f64);
+        if wd < w_lo || wd > 0.5 * w_nyq {
+            continue;
+        }
+        for &z in &zetas {
+            let sigma = z * wd / (1.0 - z * z).sqrt();
+            if let Some((lin, rss)) = projected(&tau, y, sigma, wd) {
+                cands.push((rss, [lin[0], lin[1], lin[2], sigma, wd]));
+            }
+        }
+    }
+    cands.sort_by(|a, b| a.0.total_cmp(&b.0));
+    // Zero crossings / log decrement about the best grid offset.
+    if let Some(best) = cands.first() {
+        if let Some((wd, z)) = zero_crossing_estimate(&tau, y, best.1[0]) {
+            if wd > w_lo && wd < 0.5 * w_nyq {
+                let sigma = z * wd / (1.0 - z * z).sqrt();
+                if let Some((lin, rss)) = projected(&tau, y, sigma, wd) {
+                    cands.insert(0, (rss, [lin[0], lin[1], lin[2], sigma, wd]));
+                }
+            }
+        }
+    }
+    if cands.is_empty() {
+        return Err(MeasureError::Fit(
+            "no oscillation could be located in the record".into(),
+        ));
+    }
+    // Distinct starts: the zero-crossing candidate and the best grid points of distinct wd.
+    let mut starts: Vec<[f64; 5]> = Vec::new();
+    for (_, p) in &cands {
+        if starts.len() >= 3 {
+            break;
+        }
+        if starts.iter().all(|s| (s[4] / p[4] - 1.0).abs() > 0.1) {
+            starts.push(*p);
+        }
+    }
+    let y_scale = sst.sqrt() / (n as f64).sqrt();
+    let opts = FitOptions {
+        max_iter: 200,
+        lower: Some(vec![
+            f64::NEG_INFINITY,
+            f64::NEG_INFINITY,
+            f64::NEG_INFINITY,
+            -0.5 * w_nyq,
+            w_lo,
+        ]),
+        upper: Some(vec![
+            f64::INFINITY,
+            f64::INFINITY,
+            f64::INFINITY,
+            10.0 * w_nyq,
+            w_nyq,
+        ]),
+        typical: Some(vec![y_scale, y_scale, y_scale, 0.1 * w_fft, w_fft]),
+        ..FitOptions::default()
+    };
+    let problem = DecayProblem { tau: &tau, y };
+    let mut best: Option<optimize::least_squares::FitResult> = None;
+    for s in &starts {
+        if let Ok(r) = fit(&problem, s, &opts) {
+            if r.params.iter().all(|v| v.is_finite()) && best.as_ref().is_none_or(|b| r.rss < b.rss)
+            {
+                best = Some(r);
+            }
+        }
+    }
+    let r = best
+        .ok_or_else(|| MeasureError::Fit("Levenberg-Marquardt failed from every start".into()))?;
+    let [c, a, b, sigma, wd] = [
+        r.params[0],
+        r.params[1],
+        r.params[2],
+        r.params[3],
+        r.params[4],
+    ];
+    let amplitude = a.hypot(b);
+    if amplitude.is_nan() || amplitude <= 0.0 {
+        return Err(MeasureError::Fit(
+            "fitted oscillation amplitude is zero".into(),
+        ));
+    }
+    let wn = sigma.hypot(wd);
+    let zeta = sigma / wn;
+    let cov = |i: usize, j: usize| r.covariance.get(i * 5 + j).copied().unwrap_or(f64::NAN);
+    let (g_wn, g_z) = (
+        [sigma / wn, wd / wn],
+        [wd * wd / wn.powi(3), -sigma * wd / wn.powi(3)],
+    );
+    let var = |g: [f64; 2]| {
+        g[0] * g[0] * cov(3, 3) + 2.0 * g[0] * g[1] * cov(3, 4) + g[1] * g[1] * cov(4, 4)
+    };
+    let cycles = wd * duration / (2.0 * PI);
+    if cycles < 0.5 {
+        return Err(MeasureError::Fit(format!(
+            "the record covers only {cycles:.2} damped cycles of the fitted {:.3} Hz oscillation (need >= 0.5)",
+            wd / (2.0 * PI)
+        )));
+    }
+    Ok(DecayFit {
+        natural_frequency_hz: wn / (2.0 * PI),
+        damped_frequency_hz: wd / (2.0 * PI),
+        damping_ratio: zeta,
+        amplitude,
+        offset: c,
+        rmse: (r.rss / n as f64).sqrt(),
+        phase_rad: (-b).atan2(a),
+        decay_rate_1_s: sigma,
+        natural_frequency_std_hz: var(g_wn).max(0.0).sqrt() / (2.0 * PI),
+        damping_ratio_std: var(g_z).max(0.0).sqrt(),
+        r_squared: 1.0 - r.rss / sst,
+        cycles,
+        iterations: r.iterations,
+        converged: r.converged,
+    })
+}
