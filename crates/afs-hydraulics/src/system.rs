@@ -45,9 +45,9 @@ pub struct AfsOutput {
     pub spool_opening: f64,
     /// Normalised valve opening xi in [0, 1] (0 inside the dead band).
     pub valve_opening: f64,
-    /// P_c (Pa, absolute), equal to state[0].
+    /// P_c (Pa, absolute), equal to `state[0]`.
     pub p_c: f64,
-    /// P_r (Pa, absolute), equal to state[1].
+    /// P_r (Pa, absolute), equal to `state[1]`.
     pub p_r: f64,
     /// Supply pressure at the valve inlet (Pa); P_s unless the supply-droop extension is on.
     pub supply_pressure: f64,
