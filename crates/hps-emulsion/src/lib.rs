@@ -1,1 +1,53 @@
-//! Hydro-pneumatic suspension strut with gas-oil emulsion (Chapter 5).
+//! Hydro-pneumatic suspension strut with gas-oil emulsion (Chapter 5, section 6.2.5).
+//!
+//! The strut has a piston-side chamber shared by gas and oil and an oil-filled annular
+//! rod-side chamber, joined by bleed orifices, check valves (open in compression only) and
+//! piston leakage. The model (Eqs 5.1-5.12 = 6.9-6.18) gives the strut force from both
+//! chamber pressures and the seal friction; the emulsion's gas fraction, density and bulk
+//! modulus follow the pressure.
+//!
+//! Sign convention (DESIGN.md): deflection `z_s` positive in compression from the static
+//! mid-stroke position, force positive when compressive, absolute pressures.
+//!
+//! - [`StrutParams`]: parameter sets ([`StrutParams::front_axle`], Table 6.3;
+//!   [`StrutParams::lab`], the chapter 5 strut identified in [`lab`]).
+//! - [`HpsStrut`]: the strut as a force element with its own states (for a vehicle model).
+//! - [`simulate_displacement`]: prescribed-displacement runs (harmonic or sampled).
+//! - [`characterize`], [`lab_programme`], [`loop_metrics`]: the harmonic characterisation.
+//! - [`identify`]: least-squares identification from a record.
+//! - [`HpsExtensions`]: switchable physical extensions for the model-discrepancy workflow.
+//!
+//! See `docs/hps-emulsion.md` for the equation-to-code map and every modelling choice.
+
+// Index loops over fixed-size arrays of channels read closest to the equations.
+#![allow(clippy::needless_range_loop)]
+
+pub mod characterize;
+pub mod emulsion;
+pub mod error;
+pub mod extensions;
+pub mod flow;
+pub mod friction;
+pub mod identify;
+pub mod lab;
+pub mod params;
+pub mod simulate;
+pub mod strut;
+
+pub use characterize::{
+    characterize, front_axle_summary, lab_programme, loop_metrics, run_harmonic, summary,
+    HarmonicTest, LoopMetrics, StrutSummary,
+};
+pub use error::HpsError;
+pub use extensions::{
+    AsymmetricFriction, GasFractionGrowth, HeatTransfer, HpsExtensions, ValveLag,
+};
+pub use identify::{
+    identify, ChannelNrmse, FitParam, FittedValue, IdentifyOptions, IdentifyResult, Measured,
+};
+pub use lab::{identify_lab, LabConfig, LabIdentification, LabReported};
+pub use params::{FrictionParams, StrutParams};
+pub use simulate::{
+    simulate_displacement, simulate_strut, Excitation, SimOptions, Solver, StrutRecord,
+};
+pub use strut::{HpsStrut, StrutOutputs};
