@@ -1,0 +1,491 @@
+//! Analyses of sections 3.3, 3.4.1-3.4.3 and 4.3.1: yaw-mode frequency and damping from
+//! the pulse response, steering gain / rise time / overshoot / power efficiency from the
+//! step response, the one-at-a-time sensitivity table, the steady-turning decay due to
+//! leakage, and the gain-efficiency correlation over a leakage sweep (Fig 4.7).
+
+use crate::error::DynError;
+use crate::params::{Load, VehicleParams};
+use crate::simulate::{simulate, Manoeuvre, SimOptions, YawRecord};
+use crate::{EquationForm, SteerInput};
+use afs_hydraulics::{AfsParams, AfsSystem};
+use serde::{Deserialize, Serialize};
+
+/// Test definition of the measures (section 3.3).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub struct MeasureSpec {
+    /// Peak of the 0.2 s half-sine pulse (deg of steering wheel). Not stated in the
+    /// paper; 30 deg makes the pulse and the 30 deg step give comparable articulation
+    /// peaks, as section 3.3 says they do.
+    pub pulse_amplitude_deg: f64,
+    /// Pulse duration (s), 0.2 in section 3.3.
+    pub pulse_duration_s: f64,
+    /// Step height (deg of steering wheel), 30 in section 3.3.
+    pub step_amplitude_deg: f64,
+    /// Input time (s).
+    pub input_time_s: f64,
+    /// Simulated time of each run (s).
+    pub duration_s: f64,
+    /// Length of the free-decay window fitted after the pulse (s).
+    pub decay_window_s: f64,
+    /// Numerical options.
+    pub options: SimOptions,
+}
+
+impl Default for MeasureSpec {
+    fn default() -> Self {
+        Self {
+            pulse_amplitude_deg: 30.0,
+            pulse_duration_s: 0.2,
+            step_amplitude_deg: 30.0,
+            input_time_s: 0.5,
+            duration_s: 10.0,
+            decay_window_s: 3.0,
+            options: SimOptions::default(),
+        }
+    }
+}
+
+/// The yaw-plane performance measures of one configuration.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct YawMeasures {
+    /// Load condition (`None` for a user parameter set).
+    pub load: Option<Load>,
+    /// Forward speed (m/s).
+    pub speed_m_s: f64,
+    /// Equation form used.
+    pub form: EquationForm,
+    /// Yaw-mode natural frequency from the single-DOF fit of the post-pulse articulation (Hz).
+    pub natural_frequency_hz: f64,
+    /// Damped frequency of that fit (Hz).
+    pub damped_frequency_hz: f64,
+    /// Yaw damping ratio (-).
+    pub damping_ratio: f64,
+    /// RMS residual of the decay fit (deg) and its coefficient of determination.
+    pub decay_fit_rmse_deg: f64,
+    /// Coefficient of determination of the decay fit.
+    pub decay_fit_r_squared: f64,
+    /// Peak articulation after the pulse (deg).
+    pub pulse_peak_articulation_deg: f64,
+    /// Steering gain Gamma: steady articulation / steering-wheel step (deg/deg).
+    pub steering_gain: f64,
+    /// Steady articulation after the step (deg).
+    pub steady_articulation_deg: f64,
+    /// 0-100 % rise time of the step response (s).
+    pub rise_time_s: f64,
+    /// Response rate psi: steady articulation / rise time (deg/s).
+    pub response_rate_deg_s: f64,
+    /// Overshoot of the step response (%).
+    pub overshoot_percent: f64,
+    /// Steering power efficiency eta over the step run, Eq 4.7 (-).
+    pub power_efficiency: f64,
+    /// Initial strut length L (m), the sixth objective of section 4.3.2.
+    pub strut_length_m: f64,
+}
+
+fn measure_err(measure: &'static str) -> impl Fn(perf_measures::MeasureError) -> DynError {
+    move |e| DynError::Measure {
+        measure,
+        reason: e.to_string(),
+    }
+}
+
+/// Index of the first sample at or after `t`.
+fn index_at(time: &[f64], t: f64) -> usize {
+    time.partition_point(|&x| x < t - 1e-12)
+}
+
+/// Start of the free decay: the second extremum of the articulation after the pulse end,
+/// i.e. after the first, input-driven swing (section 3.4.2: "following the initial
+/// oscillation caused by the steering input").
+pub fn decay_onset(time: &[f64], y: &[f64], pulse_end_s: f64) -> Option<usize> {
+    let i0 = index_at(time, pulse_end_s).max(1);
+    let mut found = 0;
+    for i in i0..y.len().saturating_sub(1) {
+        let d0 = y[i] - y[i - 1];
+        let d1 = y[i + 1] - y[i];
+        if d0 * d1 < 0.0 || (d0 != 0.0 && d1 == 0.0) {
+            found += 1;
+            if found == 2 {
+                return Some(i);
+            }
+        }
+    }
+    None
+}
+
+/// Pulse measures from a pulse run: `(fit, peak articulation deg)`.
+pub fn pulse_measures(
+    rec: &YawRecord,
+    pulse_end_s: f64,
+    window_s: f64,
+) -> Result<(perf_measures::DecayFit, f64), DynError> {
+    let y = &rec.articulation_deg;
+    let t = &rec.time_s;
+    let peak = y
+        .iter()
+        .fold(0.0f64, |m, v| if v.abs() > m.abs() { *v } else { m });
+    let i0 = decay_onset(t, y, pulse_end_s).ok_or_else(|| DynError::Measure {
+        measure: "yaw-mode frequency",
+        reason: "no free oscillation after the pulse (fewer than two extrema)".into(),
+    })?;
+    let i1 = index_at(t, t[i0] + window_s).min(t.len());
+    let fit = perf_measures::fit_free_decay(&t[i0..i1], &y[i0..i1])
+        .map_err(measure_err("yaw-mode frequency"))?;
+    Ok((fit, peak))
+}
+
+/// Step measures from a step run: `(metrics, efficiency)`.
+pub fn step_measures(
+    rec: &YawRecord,
+    step_time_s: f64,
+    amplitude_deg: f64,
+) -> Result<(perf_measures::StepMetrics, f64), DynError> {
+    let m = perf_measures::step_metrics(
+        &rec.time_s,
+        &rec.articulation_deg,
+        step_time_s,
+        amplitude_deg,
+    )
+    .map_err(measure_err("step response"))?;
+    let i0 = index_at(&rec.time_s, step_time_s);
+    let q: Vec<f64> = rec.q_supply_m3_s[i0..].iter().map(|q| q.abs()).collect();
+    let eta = perf_measures::steering_power_efficiency(
+        &rec.time_s[i0..],
+        &rec.steering_torque_nm[i0..],
+        &rec.articulation_rate_rad_s()[i0..],
+        &rec.supply_pressure_pa[i0..],
+        &q,
+    )
+    .map_err(measure_err("power efficiency"))?;
+    Ok((m, eta))
+}
+
+/// All measures of one configuration (vehicle, steering parameters) at `speed_m_s`.
+pub fn measures_for(
+    vehicle: &VehicleParams,
+    afs: &AfsParams,
+    load: Option<Load>,
+    speed_m_s: f64,
+    spec: &MeasureSpec,
+) -> Result<YawMeasures, DynError> {
+    let sys = AfsSystem::new(afs.clone()).map_err(|e| DynError::Steering(e.to_string()))?;
+    let pulse = Manoeuvre::open_loop(
+        speed_m_s,
+        spec.duration_s,
+        SteerInput::pulse_deg(
+            spec.pulse_amplitude_deg,
+            spec.pulse_duration_s,
+            spec.input_time_s,
+        ),
+        "pulse",
+    );
+    let step = Manoeuvre::open_loop(
+        speed_m_s,
+        spec.duration_s,
+        SteerInput::step_deg(spec.step_amplitude_deg, spec.input_time_s),
+        "step",
+    );
+    let rp = simulate(vehicle, &sys, &pulse, &spec.options)?;
+    let (fit, peak) = pulse_measures(
+        &rp,
+        spec.input_time_s + spec.pulse_duration_s,
+        spec.decay_window_s,
+    )?;
+    let rs = simulate(vehicle, &sys, &step, &spec.options)?;
+    let (sm, eta) = step_measures(&rs, spec.input_time_s, spec.step_amplitude_deg)?;
+    Ok(YawMeasures {
+        load,
+        speed_m_s,
+        form: spec.options.form,
+        natural_frequency_hz: fit.natural_frequency_hz,
+        damped_frequency_hz: fit.damped_frequency_hz,
+        damping_ratio: fit.damping_ratio,
+        decay_fit_rmse_deg: fit.rmse,
+        decay_fit_r_squared: fit.r_squared,
+        pulse_peak_articulation_deg: peak,
+        steering_gain: sm.gain,
+        steady_articulation_deg: sm.steady_value,
+        rise_time_s: sm.rise_time_s,
+        response_rate_deg_s: sm.steady_value / sm.rise_time_s,
+        overshoot_percent: sm.overshoot_percent,
+        power_efficiency: eta,
+        strut_length_m: sys.initial_strut_length(),
+    })
+}
+
+/// The measures of the nominal vehicle (Table 3.1) for `load` at `speed_m_s` with the
+/// default test definition and the energy-consistent equations. This is what
+/// `afsv evaluate` and `afsv yaw measures` report.
+pub fn yaw_measures(load: Load, speed_m_s: f64) -> Result<YawMeasures, DynError> {
+    measures_for(
+        &VehicleParams::nominal(load),
+        &AfsParams::nominal(),
+        Some(load),
+        speed_m_s,
+        &MeasureSpec::default(),
+    )
+}
+
+/// Design parameters of the sensitivity study (section 3.4.3).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum SensitivityParam {
+    /// Kinematic angle A_0.
+    A0,
+    /// Effective bulk modulus B_eff.
+    BulkModulus,
+    /// Viscous seal-friction coefficient mu_v.
+    SealViscous,
+    /// Velocity-related leakage coefficient k_l.
+    LeakVelocity,
+}
+
+impl SensitivityParam {
+    /// The four parameters in the paper's order.
+    pub const ALL: [SensitivityParam; 4] = [
+        SensitivityParam::A0,
+        SensitivityParam::BulkModulus,
+        SensitivityParam::SealViscous,
+        SensitivityParam::LeakVelocity,
+    ];
+
+    /// Paper symbol.
+    pub fn symbol(self) -> &'static str {
+        match self {
+            SensitivityParam::A0 => "A_0",
+            SensitivityParam::BulkModulus => "B_eff",
+            SensitivityParam::SealViscous => "mu_v",
+            SensitivityParam::LeakVelocity => "k_l",
+        }
+    }
+
+    /// `p` with this parameter scaled by `factor`.
+    pub fn scaled(self, p: &AfsParams, factor: f64) -> AfsParams {
+        let mut q = p.clone();
+        match self {
+            SensitivityParam::A0 => q.a0_rad *= factor,
+            SensitivityParam::BulkModulus => q.bulk_modulus_pa *= factor,
+            SensitivityParam::SealViscous => q.seal_viscous_n_s_m *= factor,
+            SensitivityParam::LeakVelocity => q.leak_velocity *= factor,
+        }
+        q
+    }
+}
+
+/// Percent changes of the measures relative to nominal.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub struct MeasureChanges {
+    /// Natural frequency (%).
+    pub frequency: f64,
+    /// Damping ratio (%).
+    pub damping: f64,
+    /// Steering gain (%).
+    pub gain: f64,
+    /// Response rate = steady articulation / rise time (%).
+    pub response_rate: f64,
+    /// Overshoot (%), relative change of the overshoot percentage.
+    pub overshoot: f64,
+    /// Power efficiency (%).
+    pub efficiency: f64,
+}
+
+fn pct(a: f64, b: f64) -> f64 {
+    100.0 * (a - b) / b
+}
+
+impl MeasureChanges {
+    /// Changes of `m` relative to `nominal`.
+    pub fn between(m: &YawMeasures, nominal: &YawMeasures) -> Self {
+        Self {
+            frequency: pct(m.natural_frequency_hz, nominal.natural_frequency_hz),
+            damping: pct(m.damping_ratio, nominal.damping_ratio),
+            gain: pct(m.steering_gain, nominal.steering_gain),
+            response_rate: pct(m.response_rate_deg_s, nominal.response_rate_deg_s),
+            overshoot: pct(m.overshoot_percent, nominal.overshoot_percent),
+            efficiency: pct(m.power_efficiency, nominal.power_efficiency),
+        }
+    }
+}
+
+/// One row of the sensitivity table.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct SensitivityRow {
+    /// Load condition.
+    pub load: Load,
+    /// Parameter varied.
+    pub parameter: SensitivityParam,
+    /// Variation (%), e.g. -30.
+    pub variation_percent: f64,
+    /// Percent changes of the measures.
+    pub change: MeasureChanges,
+    /// The measures themselves.
+    pub measures: YawMeasures,
+}
+
+/// The full one-at-a-time study.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct SensitivityTable {
+    /// Speed (m/s).
+    pub speed_m_s: f64,
+    /// Nominal measures, loaded then unloaded.
+    pub nominal: Vec<YawMeasures>,
+    /// Rows: load x parameter x variation.
+    pub rows: Vec<SensitivityRow>,
+}
+
+/// Variations of section 3.4.3 (%).
+pub const VARIATIONS_PERCENT: [f64; 4] = [-30.0, -15.0, 15.0, 30.0];
+
+/// Section 3.4.3: each of A_0, B_eff, mu_v, k_l at -30, -15, +15, +30 % for both loads.
+pub fn sensitivity(speed_m_s: f64, spec: &MeasureSpec) -> Result<SensitivityTable, DynError> {
+    let afs = AfsParams::nominal();
+    let mut nominal = Vec::new();
+    let mut rows = Vec::new();
+    for load in Load::ALL {
+        let v = VehicleParams::nominal(load);
+        let nom = measures_for(&v, &afs, Some(load), speed_m_s, spec)?;
+        for p in SensitivityParam::ALL {
+            for pctv in VARIATIONS_PERCENT {
+                let a = p.scaled(&afs, 1.0 + pctv / 100.0);
+                let m = measures_for(&v, &a, Some(load), speed_m_s, spec)?;
+                rows.push(SensitivityRow {
+                    load,
+                    parameter: p,
+                    variation_percent: pctv,
+                    change: MeasureChanges::between(&m, &nom),
+                    measures: m,
+                });
+            }
+        }
+        nominal.push(nom);
+    }
+    Ok(SensitivityTable {
+        speed_m_s,
+        nominal,
+        rows,
+    })
+}
+
+/// Steady-turning decay of the articulation due to leakage (section 3.4.1).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct SteadyTurnDecay {
+    /// Load condition.
+    pub load: Load,
+    /// Speed (m/s).
+    pub speed_m_s: f64,
+    /// Steering-wheel angle held (deg).
+    pub steer_wheel_deg: f64,
+    /// Articulation at the start of the hold window (deg).
+    pub articulation_start_deg: f64,
+    /// Articulation at the end of the hold window (deg).
+    pub articulation_end_deg: f64,
+    /// Mean drift rate over the window (deg/s, negative = decaying).
+    pub drift_deg_s: f64,
+    /// Length of the window (s).
+    pub window_s: f64,
+}
+
+/// Hold a steering-wheel angle (ramped in over 1 s) at the Table 3.2 speed and report
+/// how much the articulation decays over `window_s` seconds once settled (from 10 s on).
+pub fn steady_turn_decay(
+    load: Load,
+    speed_m_s: f64,
+    steer_wheel_deg: f64,
+    window_s: f64,
+    options: &SimOptions,
+) -> Result<SteadyTurnDecay, DynError> {
+    let sys =
+        AfsSystem::new(AfsParams::nominal()).map_err(|e| DynError::Steering(e.to_string()))?;
+    let v = VehicleParams::nominal(load);
+    let t_settle = 10.0;
+    let man = Manoeuvre::open_loop(
+        speed_m_s,
+        t_settle + window_s,
+        SteerInput::Ramp {
+            rate_rad_s: steer_wheel_deg.to_radians(),
+            start_s: 0.0,
+            limit_rad: steer_wheel_deg.abs().to_radians(),
+        },
+        "steady_turn",
+    );
+    let r = simulate(&v, &sys, &man, options)?;
+    let i0 = index_at(&r.time_s, t_settle);
+    let n = r.time_s.len() - 1;
+    let (a0, a1) = (r.articulation_deg[i0], r.articulation_deg[n]);
+    let w = r.time_s[n] - r.time_s[i0];
+    Ok(SteadyTurnDecay {
+        load,
+        speed_m_s,
+        steer_wheel_deg,
+        articulation_start_deg: a0,
+        articulation_end_deg: a1,
+        drift_deg_s: (a1 - a0) / w,
+        window_s: w,
+    })
+}
+
+/// Gain-efficiency correlation over a leakage sweep (Fig 4.7).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct GainEfficiency {
+    /// Leakage-coefficient variations (%).
+    pub variation_percent: Vec<f64>,
+    /// Steering gain at each (deg/deg).
+    pub steering_gain: Vec<f64>,
+    /// Power efficiency at each (-).
+    pub power_efficiency: Vec<f64>,
+    /// Coefficient of determination of the linear fit efficiency ~ gain.
+    pub r_squared: f64,
+}
+
+/// Coefficient of determination of a straight-line fit of `y` on `x`.
+pub fn r_squared(x: &[f64], y: &[f64]) -> f64 {
+    let n = x.len() as f64;
+    let mx = x.iter().sum::<f64>() / n;
+    let my = y.iter().sum::<f64>() / n;
+    let (mut sxy, mut sxx, mut syy) = (0.0, 0.0, 0.0);
+    for (a, b) in x.iter().zip(y) {
+        sxy += (a - mx) * (b - my);
+        sxx += (a - mx) * (a - mx);
+        syy += (b - my) * (b - my);
+    }
+    if sxx == 0.0 || syy == 0.0 {
+        return 0.0;
+    }
+    sxy * sxy / (sxx * syy)
+}
+
+/// Fig 4.7: step-response gain and efficiency with both leakage coefficients (k_l0 and
+/// k_l) scaled by -30, -15, 0, +15, +30 %, loaded vehicle.
+pub fn gain_efficiency_correlation(
+    load: Load,
+    speed_m_s: f64,
+    spec: &MeasureSpec,
+) -> Result<GainEfficiency, DynError> {
+    let v = VehicleParams::nominal(load);
+    let base = AfsParams::nominal();
+    let vars = [-30.0, -15.0, 0.0, 15.0, 30.0];
+    let mut gains = Vec::new();
+    let mut effs = Vec::new();
+    for pv in vars {
+        let mut a = base.clone();
+        a.leak_const *= 1.0 + pv / 100.0;
+        a.leak_velocity *= 1.0 + pv / 100.0;
+        let sys = AfsSystem::new(a).map_err(|e| DynError::Steering(e.to_string()))?;
+        let step = Manoeuvre::open_loop(
+            speed_m_s,
+            spec.duration_s,
+            SteerInput::step_deg(spec.step_amplitude_deg, spec.input_time_s),
+            "step",
+        );
+        let r = simulate(&v, &sys, &step, &spec.options)?;
+        let (m, eta) = step_measures(&r, spec.input_time_s, spec.step_amplitude_deg)?;
+        gains.push(m.gain);
+        effs.push(eta);
+    }
+    Ok(GainEfficiency {
+        r_squared: r_squared(&gains, &effs),
+        variation_percent: vars.to_vec(),
+        steering_gain: gains,
+        power_efficiency: effs,
+    })
+}

@@ -1,0 +1,274 @@
+//! Open-loop steering-wheel inputs (section 3.3): half-sine pulse, step, ramp, and a
+//! measured time history. Angles in rad, positive = right-hand turn.
+
+use crate::error::DynError;
+use serde::{Deserialize, Serialize};
+
+/// A steering-wheel angle time history theta_sw(t).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(tag = "kind", rename_all = "snake_case")]
+pub enum SteerInput {
+    /// Zero input (free running).
+    None,
+    /// Half-sine pulse `A sin(pi (t - t0)/D)` for `t0 <= t <= t0 + D` (section 3.3: D = 0.2 s).
+    Pulse {
+        /// Peak angle A (rad).
+        amplitude_rad: f64,
+        /// Duration D (s).
+        duration_s: f64,
+        /// Start time t0 (s).
+        start_s: f64,
+    },
+    /// Step of `A` at `t0` (section 3.3: 30 deg).
+    Step {
+        /// Step height A (rad).
+        amplitude_rad: f64,
+        /// Step time t0 (s).
+        start_s: f64,
+    },
+    /// Ramp at constant rate from `t0`, held once `limit_rad` is reached.
+    Ramp {
+        /// Rate (rad/s).
+        rate_rad_s: f64,
+        /// Start time t0 (s).
+        start_s: f64,
+        /// Magnitude at which the ramp stops and holds (rad).
+        limit_rad: f64,
+    },
+    /// Linear interpolation in a sampled history (e.g. a measured record's
+    /// `steer_wheel_deg` column converted to rad); held constant outside its span.
+    Table {
+        /// Sample times (s), strictly increasing.
+        time_s: Vec<f64>,
+        /// Steering-wheel angle samples (rad).
+        angle_rad: Vec<f64>,
+    },
+}
+
+impl SteerInput {
+    /// Half-sine pulse of the given peak (deg) and duration, starting at `start_s`.
+    pub fn pulse_deg(amplitude_deg: f64, duration_s: f64, start_s: f64) -> Self {
+        SteerInput::Pulse {
+            amplitude_rad: amplitude_deg.to_radians(),
+            duration_s,
+            start_s,
+        }
+    }
+
+    /// Step of the given height (deg) at `start_s`.
+    pub fn step_deg(amplitude_deg: f64, start_s: f64) -> Self {
+        SteerInput::Step {
+            amplitude_rad: amplitude_deg.to_radians(),
+            start_s,
+        }
+    }
+
+    /// Check the input's numbers.
+    pub fn validate(&self) -> Result<(), DynError> {
+        let bad = |what: &str, v: f64| {
+            Err(DynError::InvalidInput(format!(
+                "steering input: {what} must be finite{}, got {v}",
+                if what == "pulse duration" {
+                    " and positive"
+                } else {
+                    ""
+                }
+            )))
+        };
+        match self {
+            SteerInput::None => Ok(()),
+            SteerInput::Pulse {
+                amplitude_rad,
+                duration_s,
+                start_s,
+            } => {
+                if !amplitude_rad.is_finite() {
+                    return bad("pulse amplitude", *amplitude_rad);
+                }
+                if !(duration_s.is_finite() && *duration_s > 0.0) {
+                    return bad("pulse duration", *duration_s);
+                }
+                if !start_s.is_finite() {
+                    return bad("pulse start", *start_s);
+                }
+                Ok(())
+            }
+            SteerInput::Step {
+                amplitude_rad,
+                start_s,
+            } => {
+                if !amplitude_rad.is_finite() {
+                    return bad("step amplitude", *amplitude_rad);
+                }
+                if !start_s.is_finite() {
+                    return bad("step time", *start_s);
+                }
+                Ok(())
+            }
+            SteerInput::Ramp {
+                rate_rad_s,
+                start_s,
+                limit_rad,
+            } => {
+                if !rate_rad_s.is_finite() {
+                    return bad("ramp rate", *rate_rad_s);
+                }
+                if !start_s.is_finite() {
+                    return bad("ramp start", *start_s);
+                }
+                if !(limit_rad.is_finite() && *limit_rad >= 0.0) {
+                    return Err(DynError::InvalidInput(format!(
+                        "steering input: ramp limit must be finite and >= 0, got {limit_rad}"
+                    )));
+                }
+                Ok(())
+            }
+            SteerInput::Table { time_s, angle_rad } => {
+                if time_s.len() != angle_rad.len() || time_s.is_empty() {
+                    return Err(DynError::InvalidInput(format!(
+                        "steering table: {} times but {} angles (need equal, non-zero counts)",
+                        time_s.len(),
+                        angle_rad.len()
+                    )));
+                }
+                for i in 0..time_s.len() {
+                    if !time_s[i].is_finite() || !angle_rad[i].is_finite() {
+                        return Err(DynError::InvalidInput(format!(
+                            "steering table: sample {i} is not finite"
+                        )));
+                    }
+                    if i > 0 && time_s[i] <= time_s[i - 1] {
+                        return Err(DynError::InvalidInput(format!(
+                            "steering table: time not strictly increasing at sample {i}"
+                        )));
+                    }
+                }
+                Ok(())
+            }
+        }
+    }
+
+    /// theta_sw(t) (rad). Allocation-free (binary search for tables).
+    #[inline]
+    pub fn angle(&self, t: f64) -> f64 {
+        match *self {
+            SteerInput::None => 0.0,
+            SteerInput::Pulse {
+                amplitude_rad,
+                duration_s,
+                start_s,
+            } => {
+                let x = (t - start_s) / duration_s;
+                if (0.0..=1.0).contains(&x) {
+                    amplitude_rad * (std::f64::consts::PI * x).sin()
+                } else {
+                    0.0
+                }
+            }
+            SteerInput::Step {
+                amplitude_rad,
+                start_s,
+            } => {
+                if t >= start_s {
+                    amplitude_rad
+                } else {
+                    0.0
+                }
+            }
+            SteerInput::Ramp {
+                rate_rad_s,
+                start_s,
+                limit_rad,
+            } => {
+                if t <= start_s {
+                    0.0
+                } else {
+                    (rate_rad_s * (t - start_s)).clamp(-limit_rad, limit_rad)
+                }
+            }
+            SteerInput::Table {
+                ref time_s,
+                ref angle_rad,
+            } => {
+                let n = time_s.len();
+                if t <= time_s[0] {
+                    return angle_rad[0];
+                }
+                if t >= time_s[n - 1] {
+                    return angle_rad[n - 1];
+                }
+                let i = time_s.partition_point(|&x| x <= t); // time_s[i-1] <= t < time_s[i]
+                let (t0, t1) = (time_s[i - 1], time_s[i]);
+                let w = (t - t0) / (t1 - t0);
+                angle_rad[i - 1] + w * (angle_rad[i] - angle_rad[i - 1])
+            }
+        }
+    }
+
+    /// Times where the input or its slope jumps; the integrator is restarted there.
+    pub fn breakpoints(&self) -> Vec<f64> {
+        match *self {
+            SteerInput::None | SteerInput::Table { .. } => Vec::new(),
+            SteerInput::Pulse {
+                duration_s,
+                start_s,
+                ..
+            } => vec![start_s, start_s + duration_s],
+            SteerInput::Step { start_s, .. } => vec![start_s],
+            SteerInput::Ramp {
+                rate_rad_s,
+                start_s,
+                limit_rad,
+            } => {
+                if rate_rad_s != 0.0 && limit_rad > 0.0 {
+                    vec![start_s, start_s + limit_rad / rate_rad_s.abs()]
+                } else {
+                    vec![start_s]
+                }
+            }
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn pulse_step_ramp_table_values() {
+        let p = SteerInput::pulse_deg(30.0, 0.2, 1.0);
+        assert_eq!(p.angle(0.9), 0.0);
+        assert!((p.angle(1.1) - 30f64.to_radians()).abs() < 1e-12);
+        assert_eq!(p.angle(1.3), 0.0);
+        let s = SteerInput::step_deg(30.0, 0.5);
+        assert_eq!(s.angle(0.49), 0.0);
+        assert_eq!(s.angle(0.5), 30f64.to_radians());
+        let r = SteerInput::Ramp {
+            rate_rad_s: 0.1,
+            start_s: 1.0,
+            limit_rad: 0.15,
+        };
+        assert!((r.angle(2.0) - 0.1).abs() < 1e-12);
+        assert!((r.angle(5.0) - 0.15).abs() < 1e-12);
+        assert_eq!(r.breakpoints(), vec![1.0, 2.5]);
+        let t = SteerInput::Table {
+            time_s: vec![0.0, 1.0, 3.0],
+            angle_rad: vec![0.0, 1.0, -1.0],
+        };
+        t.validate().unwrap();
+        assert!((t.angle(0.5) - 0.5).abs() < 1e-12);
+        assert!((t.angle(2.0) - 0.0).abs() < 1e-12);
+        assert_eq!(t.angle(9.0), -1.0);
+    }
+
+    #[test]
+    fn invalid_inputs_rejected() {
+        assert!(SteerInput::pulse_deg(30.0, 0.0, 1.0).validate().is_err());
+        assert!(SteerInput::step_deg(f64::NAN, 1.0).validate().is_err());
+        let t = SteerInput::Table {
+            time_s: vec![0.0, 0.0],
+            angle_rad: vec![0.0, 1.0],
+        };
+        assert!(t.validate().is_err());
+    }
+}

@@ -1,0 +1,513 @@
+//! Simulation entry point: [`simulate`] runs one [`Manoeuvre`] and returns a [`YawRecord`]
+//! with the record channels of DESIGN.md plus internal states.
+
+use crate::actuator::{SteeringActuator, MAX_ACTUATOR_STATES};
+use crate::driver::PathDriver;
+use crate::error::DynError;
+use crate::inputs::SteerInput;
+use crate::mechanics::{kinetic_energy, Motion};
+use crate::model::{SteerSource, YawPlaneModel};
+use crate::params::VehicleParams;
+use crate::EquationForm;
+use odeint::{Control, Dopri5, Integrator, OdeError, Rk4, Rosenbrock23};
+use serde::{Deserialize, Serialize};
+
+/// A constant-speed manoeuvre: forward speed, duration and steering.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Manoeuvre {
+    /// Constant forward speed of the front unit u_f (m/s), >= 0.
+    pub speed_m_s: f64,
+    /// Simulated time (s).
+    pub duration_s: f64,
+    /// Steering-wheel source.
+    pub steer: SteerSource,
+    /// Short label for the record's metadata (e.g. `pulse`).
+    pub label: String,
+}
+
+impl Manoeuvre {
+    /// Open-loop manoeuvre.
+    pub fn open_loop(speed_m_s: f64, duration_s: f64, input: SteerInput, label: &str) -> Self {
+        Self {
+            speed_m_s,
+            duration_s,
+            steer: SteerSource::Open(input),
+            label: label.to_string(),
+        }
+    }
+
+    /// Section 3.3 pulse test: 0.2 s half-sine of `amplitude_deg` at t = 0.5 s, 10 s long.
+    pub fn pulse(speed_m_s: f64, amplitude_deg: f64) -> Self {
+        Self::open_loop(
+            speed_m_s,
+            10.0,
+            SteerInput::pulse_deg(amplitude_deg, 0.2, 0.5),
+            "pulse",
+        )
+    }
+
+    /// Section 3.3 step test: step of `amplitude_deg` at t = 0.5 s, 10 s long.
+    pub fn step(speed_m_s: f64, amplitude_deg: f64) -> Self {
+        Self::open_loop(
+            speed_m_s,
+            10.0,
+            SteerInput::step_deg(amplitude_deg, 0.5),
+            "step",
+        )
+    }
+
+    /// Closed-loop course with the default driver.
+    pub fn course(speed_m_s: f64, duration_s: f64, driver: PathDriver, label: &str) -> Self {
+        Self {
+            speed_m_s,
+            duration_s,
+            steer: SteerSource::Driver(driver),
+            label: label.to_string(),
+        }
+    }
+
+    /// Check the numbers.
+    pub fn validate(&self) -> Result<(), DynError> {
+        if !(self.speed_m_s.is_finite() && self.speed_m_s >= 0.0) {
+            return Err(DynError::InvalidInput(format!(
+                "speed must be finite and >= 0, got {} m/s",
+                self.speed_m_s
+            )));
+        }
+        if !(self.duration_s.is_finite() && self.duration_s > 0.0) {
+            return Err(DynError::InvalidInput(format!(
+                "duration must be positive, got {} s",
+                self.duration_s
+            )));
+        }
+        match &self.steer {
+            SteerSource::Open(i) => i.validate(),
+            SteerSource::Driver(d) => d.validate(),
+        }
+    }
+
+    fn breakpoints(&self) -> Vec<f64> {
+        match &self.steer {
+            SteerSource::Open(i) => i.breakpoints(),
+            SteerSource::Driver(_) => Vec::new(),
+        }
+    }
+}
+
+/// Integration method.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum SolverKind {
+    /// Adaptive Dormand-Prince 5(4) (default; chosen by measurement, docs/afs-yaw-plane.md).
+    #[default]
+    Dopri5,
+    /// Adaptive linearly implicit Rosenbrock 2(3) with FD Jacobian.
+    Rosenbrock23,
+    /// Fixed-step classical RK4 with step `rk4_step_s`.
+    Rk4,
+}
+
+/// Numerical and modelling options of a run.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub struct SimOptions {
+    /// Integration method.
+    pub solver: SolverKind,
+    /// Relative tolerance (adaptive methods).
+    pub rtol: f64,
+    /// Absolute tolerance (states in rad, m/s, m, MPa).
+    pub atol: f64,
+    /// Largest step (s) of the adaptive methods.
+    pub max_step_s: f64,
+    /// Step of the fixed-step RK4 (s).
+    pub rk4_step_s: f64,
+    /// Output sample interval (s).
+    pub output_dt_s: f64,
+    /// Equation form of Eq 3.13.
+    pub form: EquationForm,
+    /// A run whose articulation exceeds this magnitude (deg) is reported as diverged
+    /// (jackknife / snaking instability).
+    pub max_articulation_deg: f64,
+    /// Initial articulation angle (rad).
+    pub initial_articulation_rad: f64,
+}
+
+impl Default for SimOptions {
+    fn default() -> Self {
+        Self {
+            solver: SolverKind::Dopri5,
+            rtol: 1e-6,
+            atol: 1e-8,
+            max_step_s: 0.05,
+            rk4_step_s: 2e-4,
+            output_dt_s: 0.005,
+            form: EquationForm::EnergyConsistent,
+            max_articulation_deg: 60.0,
+            initial_articulation_rad: 0.0,
+        }
+    }
+}
+
+impl SimOptions {
+    /// Check the numbers.
+    pub fn validate(&self) -> Result<(), DynError> {
+        for (name, v) in [
+            ("rtol", self.rtol),
+            ("atol", self.atol),
+            ("max_step_s", self.max_step_s),
+            ("rk4_step_s", self.rk4_step_s),
+            ("output_dt_s", self.output_dt_s),
+            ("max_articulation_deg", self.max_articulation_deg),
+        ] {
+            if !(v.is_finite() && v > 0.0) {
+                return Err(DynError::InvalidInput(format!(
+                    "option `{name}` must be positive and finite, got {v}"
+                )));
+            }
+        }
+        if !self.initial_articulation_rad.is_finite() {
+            return Err(DynError::InvalidInput(
+                "option `initial_articulation_rad` must be finite".into(),
+            ));
+        }
+        Ok(())
+    }
+}
+
+/// Solver counters of a run.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
+pub struct SolverStats {
+    /// Right-hand-side evaluations (excluding output evaluation).
+    pub rhs_evals: usize,
+    /// Accepted steps.
+    pub accepted: usize,
+    /// Rejected steps.
+    pub rejected: usize,
+}
+
+/// Time histories of one run. The first eight columns are the record channels of
+/// DESIGN.md (sign convention: positive = right-hand turn); the rest are internal.
+#[derive(Debug, Clone, PartialEq, Default, Serialize, Deserialize)]
+pub struct YawRecord {
+    /// Time (s).
+    pub time_s: Vec<f64>,
+    /// Steering-wheel angle (deg).
+    pub steer_wheel_deg: Vec<f64>,
+    /// Forward speed of the front unit (m/s).
+    pub speed_m_s: Vec<f64>,
+    /// Articulation angle (deg).
+    pub articulation_deg: Vec<f64>,
+    /// Left-strut displacement, positive extending (m).
+    pub strut_left_disp_m: Vec<f64>,
+    /// P_c chamber-group pressure (Pa, absolute).
+    pub p_c_pa: Vec<f64>,
+    /// P_r chamber-group pressure (Pa, absolute).
+    pub p_r_pa: Vec<f64>,
+    /// Front-unit yaw rate (deg/s).
+    pub yaw_rate_front_deg_s: Vec<f64>,
+    /// Rear-unit yaw rate (deg/s).
+    pub yaw_rate_rear_deg_s: Vec<f64>,
+    /// Articulation rate (deg/s).
+    pub articulation_rate_deg_s: Vec<f64>,
+    /// Front-cg lateral velocity (m/s).
+    pub lateral_velocity_front_m_s: Vec<f64>,
+    /// Front-cg lateral acceleration (m/s^2).
+    pub lateral_accel_front_m_s2: Vec<f64>,
+    /// Rear-cg lateral acceleration (m/s^2).
+    pub lateral_accel_rear_m_s2: Vec<f64>,
+    /// Ground x of the front cg (m).
+    pub x_m: Vec<f64>,
+    /// Ground y of the front cg, to the right (m).
+    pub y_m: Vec<f64>,
+    /// Front-unit heading (deg).
+    pub heading_front_deg: Vec<f64>,
+    /// Mean front slip angle (deg).
+    pub slip_front_deg: Vec<f64>,
+    /// Mean rear slip angle (deg).
+    pub slip_rear_deg: Vec<f64>,
+    /// Steering torque about the joint (N m).
+    pub steering_torque_nm: Vec<f64>,
+    /// Supply flow into the struts (m^3/s).
+    pub q_supply_m3_s: Vec<f64>,
+    /// Supply power P_s q (W).
+    pub supply_power_w: Vec<f64>,
+    /// Longitudinal force holding u_f constant (N).
+    pub traction_force_n: Vec<f64>,
+    /// Kinetic energy of both units (J).
+    pub kinetic_energy_j: Vec<f64>,
+    /// Energy stored in the actuator (J).
+    pub actuator_energy_j: Vec<f64>,
+    /// Every integrated state, `(name, values)`; see [`crate::model`] for the layout.
+    pub states: Vec<(String, Vec<f64>)>,
+    /// Solver counters.
+    pub stats: SolverStats,
+    /// Supply pressure at the valve (Pa), for the efficiency of Eq 4.7.
+    pub supply_pressure_pa: Vec<f64>,
+}
+
+impl YawRecord {
+    /// All scalar channels in record order, `(column name, values)`; internal states
+    /// follow with a `state_` prefix.
+    pub fn columns(&self) -> Vec<(String, &[f64])> {
+        let mut c: Vec<(String, &[f64])> = vec![
+            ("time_s".into(), &self.time_s),
+            ("steer_wheel_deg".into(), &self.steer_wheel_deg),
+            ("speed_m_s".into(), &self.speed_m_s),
+            ("articulation_deg".into(), &self.articulation_deg),
+            ("strut_left_disp_m".into(), &self.strut_left_disp_m),
+            ("p_c_pa".into(), &self.p_c_pa),
+            ("p_r_pa".into(), &self.p_r_pa),
+            ("yaw_rate_front_deg_s".into(), &self.yaw_rate_front_deg_s),
+            ("yaw_rate_rear_deg_s".into(), &self.yaw_rate_rear_deg_s),
+            (
+                "articulation_rate_deg_s".into(),
+                &self.articulation_rate_deg_s,
+            ),
+            (
+                "lateral_velocity_front_m_s".into(),
+                &self.lateral_velocity_front_m_s,
+            ),
+            (
+                "lateral_accel_front_m_s2".into(),
+                &self.lateral_accel_front_m_s2,
+            ),
+            (
+                "lateral_accel_rear_m_s2".into(),
+                &self.lateral_accel_rear_m_s2,
+            ),
+            ("x_m".into(), &self.x_m),
+            ("y_m".into(), &self.y_m),
+            ("heading_front_deg".into(), &self.heading_front_deg),
+            ("slip_front_deg".into(), &self.slip_front_deg),
+            ("slip_rear_deg".into(), &self.slip_rear_deg),
+            ("steering_torque_nm".into(), &self.steering_torque_nm),
+            ("q_supply_m3_s".into(), &self.q_supply_m3_s),
+            ("supply_power_w".into(), &self.supply_power_w),
+            ("supply_pressure_pa".into(), &self.supply_pressure_pa),
+            ("traction_force_n".into(), &self.traction_force_n),
+            ("kinetic_energy_j".into(), &self.kinetic_energy_j),
+            ("actuator_energy_j".into(), &self.actuator_energy_j),
+        ];
+        for (name, v) in &self.states {
+            c.push((format!("state_{name}"), v.as_slice()));
+        }
+        c
+    }
+
+    /// Articulation angle in rad.
+    pub fn articulation_rad(&self) -> Vec<f64> {
+        self.articulation_deg
+            .iter()
+            .map(|d| d.to_radians())
+            .collect()
+    }
+
+    /// Articulation rate in rad/s.
+    pub fn articulation_rate_rad_s(&self) -> Vec<f64> {
+        self.articulation_rate_deg_s
+            .iter()
+            .map(|d| d.to_radians())
+            .collect()
+    }
+}
+
+fn describe_state(names: &[String], y: &[f64]) -> String {
+    names
+        .iter()
+        .zip(y)
+        .map(|(n, v)| format!("{n}={v:.6e}"))
+        .collect::<Vec<_>>()
+        .join(", ")
+}
+
+/// Run one manoeuvre of the yaw-plane vehicle with the given articulation actuator
+/// (normally [`afs_hydraulics::AfsSystem`]).
+///
+/// The integrator is restarted at every kink or jump of the steering input (pulse start
+/// and end, step time) so that no step straddles it. A solver failure, a non-finite state
+/// or an articulation beyond `options.max_articulation_deg` returns
+/// [`DynError::Diverged`] with the time and the named state.
+pub fn simulate<A: SteeringActuator>(
+    vehicle: &VehicleParams,
+    actuator: &A,
+    manoeuvre: &Manoeuvre,
+    options: &SimOptions,
+) -> Result<YawRecord, DynError> {
+    vehicle.validate()?;
+    manoeuvre.validate()?;
+    options.validate()?;
+    if actuator.n_states() > MAX_ACTUATOR_STATES {
+        return Err(DynError::InvalidInput(format!(
+            "actuator has {} states, at most {MAX_ACTUATOR_STATES} supported",
+            actuator.n_states()
+        )));
+    }
+    let model = YawPlaneModel::new(
+        vehicle,
+        actuator,
+        manoeuvre.speed_m_s,
+        &manoeuvre.steer,
+        options.form,
+    );
+    let names = model.state_names();
+    let layout = model.layout();
+    let grid = odeint::output_grid(0.0, manoeuvre.duration_s, options.output_dt_s);
+    let t_end = *grid.last().expect("grid has t0");
+    let mut cuts: Vec<f64> = manoeuvre
+        .breakpoints()
+        .into_iter()
+        .filter(|&b| b > 0.0 && b < t_end)
+        .collect();
+    cuts.sort_by(f64::total_cmp);
+    cuts.dedup();
+    cuts.push(t_end);
+
+    let mut rec = YawRecord::default();
+    let n_out = grid.len();
+    for v in [
+        &mut rec.time_s,
+        &mut rec.steer_wheel_deg,
+        &mut rec.speed_m_s,
+        &mut rec.articulation_deg,
+        &mut rec.strut_left_disp_m,
+        &mut rec.p_c_pa,
+        &mut rec.p_r_pa,
+        &mut rec.yaw_rate_front_deg_s,
+    ] {
+        v.reserve(n_out);
+    }
+    let mut states: Vec<Vec<f64>> = vec![Vec::with_capacity(n_out); layout.dim];
+    let mut scratch = vec![0.0; layout.dim];
+    let max_theta = options.max_articulation_deg.to_radians();
+
+    let mut y0 = model.initial_state(options.initial_articulation_rad);
+    let mut t0 = 0.0;
+    let mut gi = 0; // next grid index to record
+    let mut failure: Option<DynError> = None;
+    let mut stats = SolverStats::default();
+    for &cut in &cuts {
+        let mut t_out: Vec<f64> = grid[gi..]
+            .iter()
+            .copied()
+            .take_while(|&t| t <= cut)
+            .collect();
+        if t_out.last() != Some(&cut) {
+            t_out.push(cut);
+        }
+        let mut y_end = y0.clone();
+        let mut observe = |t: f64, y: &[f64]| -> Control {
+            if y[0].abs() > max_theta || !y.iter().all(|v| v.is_finite()) {
+                failure = Some(DynError::Diverged {
+                    t,
+                    reason: format!(
+                        "articulation {:.2} deg beyond the {:.0} deg bound (jackknife/snaking) or non-finite state",
+                        y[0].to_degrees(),
+                        options.max_articulation_deg
+                    ),
+                    state: describe_state(&names, y),
+                });
+                return Control::Stop;
+            }
+            if gi < n_out && (t - grid[gi]).abs() <= 1e-12 * t_end.max(1.0) {
+                gi += 1;
+                let e = model.evaluate(t, y, &mut scratch);
+                let m = Motion {
+                    theta: y[0],
+                    u_f: manoeuvre.speed_m_s,
+                    v_f: y[1],
+                    r_f: y[2],
+                    r_r: y[3],
+                };
+                let mut xs = [0.0; MAX_ACTUATOR_STATES];
+                model.actuator_state(y, &mut xs);
+                rec.time_s.push(t);
+                rec.steer_wheel_deg.push(e.steer_wheel.to_degrees());
+                rec.speed_m_s.push(manoeuvre.speed_m_s);
+                rec.articulation_deg.push(y[0].to_degrees());
+                rec.strut_left_disp_m.push(e.actuator.strut_left_disp);
+                rec.p_c_pa.push(e.actuator.p_c);
+                rec.p_r_pa.push(e.actuator.p_r);
+                rec.yaw_rate_front_deg_s.push(y[2].to_degrees());
+                rec.yaw_rate_rear_deg_s.push(y[3].to_degrees());
+                rec.articulation_rate_deg_s.push(e.theta_dot.to_degrees());
+                rec.lateral_velocity_front_m_s.push(y[1]);
+                rec.lateral_accel_front_m_s2.push(e.acc.a_y_front);
+                rec.lateral_accel_rear_m_s2.push(e.acc.a_y_rear);
+                rec.x_m.push(y[4]);
+                rec.y_m.push(y[5]);
+                rec.heading_front_deg.push(y[6].to_degrees());
+                rec.slip_front_deg
+                    .push((0.5 * (e.alpha[0] + e.alpha[1])).to_degrees());
+                rec.slip_rear_deg
+                    .push((0.5 * (e.alpha[2] + e.alpha[3])).to_degrees());
+                rec.steering_torque_nm.push(e.actuator.torque);
+                rec.q_supply_m3_s.push(e.actuator.q_supply);
+                rec.supply_power_w.push(e.actuator.supply_power);
+                rec.supply_pressure_pa.push(e.actuator.supply_pressure);
+                rec.traction_force_n.push(e.acc.traction_force);
+                rec.kinetic_energy_j.push(kinetic_energy(vehicle, &m));
+                rec.actuator_energy_j.push(model.actuator.energy(
+                    y[0],
+                    e.steer_wheel,
+                    &xs[..layout.n_act],
+                ));
+                for (s, &v) in states.iter_mut().zip(y) {
+                    s.push(v);
+                }
+            }
+            if t == cut {
+                y_end.copy_from_slice(y);
+            }
+            Control::Continue
+        };
+        let res = match options.solver {
+            SolverKind::Dopri5 => Dopri5::new(options.rtol, options.atol)
+                .with_max_step(options.max_step_s)
+                .integrate(&model, t0, &y0, &t_out, &mut observe),
+            SolverKind::Rosenbrock23 => Rosenbrock23::new(options.rtol, options.atol)
+                .with_max_step(options.max_step_s)
+                .integrate(&model, t0, &y0, &t_out, &mut observe),
+            SolverKind::Rk4 => Rk4 {
+                step: options.rk4_step_s,
+            }
+            .integrate(&model, t0, &y0, &t_out, &mut observe),
+        };
+        if let Some(f) = failure.take() {
+            return Err(f);
+        }
+        match res {
+            Ok(s) => {
+                stats.rhs_evals += s.rhs_evals;
+                stats.accepted += s.accepted;
+                stats.rejected += s.rejected;
+            }
+            Err(e) => return Err(map_ode_error(e, &names)),
+        }
+        y0 = y_end;
+        t0 = cut;
+    }
+    rec.stats = stats;
+    rec.states = names.into_iter().zip(states).collect();
+    Ok(rec)
+}
+
+fn map_ode_error(e: OdeError, names: &[String]) -> DynError {
+    match e {
+        OdeError::Diverged { t, h, state } => DynError::Diverged {
+            t,
+            reason: format!(
+                "integrator step size collapsed (h = {h:.3e} s) or state became non-finite"
+            ),
+            state: describe_state(names, &state),
+        },
+        OdeError::TooManySteps {
+            max_steps,
+            t,
+            state,
+        } => DynError::Diverged {
+            t,
+            reason: format!("step limit of {max_steps} reached"),
+            state: describe_state(names, &state),
+        },
+        OdeError::InvalidInput(m) => DynError::InvalidInput(m),
+    }
+}
