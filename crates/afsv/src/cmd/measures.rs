@@ -1,0 +1,367 @@
+//! `afsv measures`: ISO 2631-1 weightings and whole-body vibration exposure, free-decay
+//! (yaw-mode) fit, step-response metrics and the weighting check (crate `perf-measures`).
+
+use super::CmdResult;
+use afsv::record::Record;
+use perf_measures::iso2631::{
+    assess_whole_body, Axis, AxisInput, FilterMethod, IirWeighting, KFactors, Weighting,
+};
+use perf_measures::signal::sample_rate;
+use perf_measures::{fit_free_decay, step_metrics_with, StepOptions};
+use serde_json::json;
+use std::path::{Path, PathBuf};
+
+/// Subcommands of `afsv measures`.
+#[derive(clap::Subcommand)]
+pub enum Command {
+    /// Print the magnitude (factor and dB) and phase of an ISO 2631-1 frequency weighting
+    /// (Annex A analog transfer function) at the given frequencies, and, with --fs, the
+    /// magnitude of its bilinear IIR realisation at that sampling rate.
+    Weighting(WeightingArgs),
+    /// Whole-body vibration assessment of a seat acceleration record (CSV with `time_s`
+    /// and any of `ax_m_s2`, `ay_m_s2`, `az_m_s2`, uniformly sampled, unweighted m/s^2):
+    /// per-axis weighted RMS a_w, crest factor, MTVV (1-s running RMS), VDV, the combined
+    /// a_v (Eq 1.1), daily exposure A(8) for --hours against the EU 2002/44/EC action
+    /// (0.5 m/s^2) and limit (1.15 m/s^2) values, and the ISO 2631-1 Annex B health
+    /// guidance caution zone for that duration.
+    Wbv(WbvArgs),
+    /// Fit a single-DOF free decay y = c + A exp(-zeta wn t) cos(wd t + phi) to one column
+    /// of a record (e.g. the articulation angle after a steering pulse) and print the
+    /// natural frequency (Hz), damping ratio and fit quality. The fit starts at --start-s,
+    /// or, without it, at the largest deviation from the final value.
+    Decay(DecayArgs),
+    /// Step-response metrics of an output column to a step in an input column (e.g.
+    /// articulation_deg to steer_wheel_deg): steady gain (steady output / input step),
+    /// 0-100 % rise time, percent overshoot, peak.
+    Step(StepArgs),
+    /// Compare every ISO 2631-1 weighting (analog, IIR at --iir-fs, frequency-domain
+    /// method) with the standard's tabulated factors from 0.1 to 100 Hz (2 % tolerance).
+    Check(CheckArgs),
+}
+
+/// Options of `afsv measures weighting`.
+#[derive(clap::Args)]
+pub struct WeightingArgs {
+    /// Weighting: wk, wd, wc, we, wj or wf.
+    #[arg(long, short = 'w', value_name = "W")]
+    pub weighting: Weighting,
+    /// Frequencies in Hz, comma separated (e.g. 0.5,1,2).
+    #[arg(
+        long,
+        value_name = "HZ,...",
+        value_delimiter = ',',
+        required = true,
+        allow_hyphen_values = true
+    )]
+    pub freqs: Vec<f64>,
+    /// Also report the IIR filter's magnitude at this sampling rate (Hz).
+    #[arg(long, value_name = "HZ")]
+    pub fs: Option<f64>,
+}
+
+/// Options of `afsv measures wbv`.
+#[derive(clap::Args)]
+pub struct WbvArgs {
+    /// Input record (CSV with `time_s` and any of `ax_m_s2`, `ay_m_s2`, `az_m_s2`).
+    #[arg(long, short = 'i', value_name = "CSV")]
+    pub input: PathBuf,
+    /// Daily exposure duration in hours for A(8) and the caution zone.
+    #[arg(long, value_name = "H", default_value_t = 8.0)]
+    pub hours: f64,
+    /// Weighting of an axis, AXIS=W (repeatable), e.g. --weighting z=wk --weighting x=wd.
+    /// Defaults are the seat-pan health weightings: x=wd, y=wd, z=wk.
+    #[arg(long, value_name = "AXIS=W")]
+    pub weighting: Vec<String>,
+    /// Multiplying factors k_x,k_y,k_z of Eq 1.1 (health, seated: 1.4,1.4,1; comfort: 1,1,1).
+    #[arg(
+        long,
+        value_name = "KX,KY,KZ",
+        value_delimiter = ',',
+        default_value = "1.4,1.4,1"
+    )]
+    pub k: Vec<f64>,
+    /// Weighting method: fft (exact analog response, default) or iir (bilinear filter;
+    /// accurate only well below the Nyquist frequency).
+    #[arg(long, value_name = "METHOD", default_value = "fft", value_parser = ["fft", "iir"])]
+    pub method: String,
+}
+
+/// Options of `afsv measures decay`.
+#[derive(clap::Args)]
+pub struct DecayArgs {
+    /// Input record (CSV with `time_s`).
+    #[arg(long, short = 'i', value_name = "CSV")]
+    pub input: PathBuf,
+    /// Column holding the decaying signal (e.g. articulation_deg).
+    #[arg(long, value_name = "NAME")]
+    pub column: String,
+    /// Start of the free decay (s); default: the time of the largest deviation from the
+    /// final value (mean of the last 10 % of the record).
+    #[arg(long, value_name = "S", allow_hyphen_values = true)]
+    pub start_s: Option<f64>,
+    /// End of the fitted window (s); default: end of the record.
+    #[arg(long, value_name = "S", allow_hyphen_values = true)]
+    pub end_s: Option<f64>,
+}
+
+/// Options of `afsv measures step`.
+#[derive(clap::Args)]
+pub struct StepArgs {
+    /// Input record (CSV with `time_s`).
+    #[arg(long, short = 'i', value_name = "CSV")]
+    pub input_file: PathBuf,
+    /// Input (steering) column, e.g. steer_wheel_deg.
+    #[arg(long, value_name = "NAME")]
+    pub input: String,
+    /// Output (response) column, e.g. articulation_deg.
+    #[arg(long, value_name = "NAME")]
+    pub output: String,
+    /// Step time (s); default: the first time the input departs from its initial value by
+    /// 2 % of the step.
+    #[arg(long, value_name = "S", allow_hyphen_values = true)]
+    pub t_step: Option<f64>,
+    /// Step amplitude in the input column's unit; default: the mean of the input over
+    /// the final --settle-fraction minus its initial value.
+    #[arg(long, value_name = "X", allow_hyphen_values = true)]
+    pub amplitude: Option<f64>,
+    /// Final fraction of the post-step record averaged for the steady values.
+    #[arg(long, value_name = "F", default_value_t = 0.1)]
+    pub settle_fraction: f64,
+}
+
+/// Options of `afsv measures check`.
+#[derive(clap::Args)]
+pub struct CheckArgs {
+    /// Sampling rate (Hz) of the IIR filters compared.
+    #[arg(long, value_name = "HZ", default_value_t = perf_measures::iso2631::check::CHECK_IIR_FS_HZ)]
+    pub iir_fs: f64,
+}
+
+/// Run an `afsv measures` subcommand.
+pub fn run(cmd: Command) -> CmdResult {
+    match cmd {
+        Command::Weighting(a) => weighting(a),
+        Command::Wbv(a) => wbv(a),
+        Command::Decay(a) => decay(a),
+        Command::Step(a) => step(a),
+        Command::Check(a) => {
+            let c = perf_measures::weighting_check_at(a.iir_fs)?;
+            afsv::output::print_json(&c)?;
+            Ok(())
+        }
+    }
+}
+
+fn weighting(a: WeightingArgs) -> CmdResult {
+    let iir = match a.fs {
+        Some(fs) => Some(IirWeighting::new(a.weighting, fs)?),
+        None => None,
+    };
+    let mut rows = Vec::with_capacity(a.freqs.len());
+    for &f in &a.freqs {
+        if !(f.is_finite() && f > 0.0) {
+            return Err(format!("--freqs: {f} is not a positive frequency").into());
+        }
+        let h = a.weighting.response(f);
+        let mut row = json!({
+            "f_hz": f,
+            "magnitude": h.norm(),
+            "magnitude_db": 20.0 * h.norm().log10(),
+            "phase_deg": h.arg().to_degrees(),
+        });
+        if let Some(iir) = &iir {
+            row["iir_magnitude"] = if f < 0.5 * iir.fs_hz() {
+                json!(iir.magnitude(f))
+            } else {
+                serde_json::Value::Null
+            };
+        }
+        rows.push(row);
+    }
+    afsv::output::print_json(&json!({
+        "weighting": a.weighting,
+        "params": a.weighting.params(),
+        "iir_fs_hz": a.fs,
+        "rows": rows,
+    }))?;
+    Ok(())
+}
+
+fn parse_axis_weightings(specs: &[String]) -> Result<[Weighting; 3], String> {
+    let mut w = [Axis::X, Axis::Y, Axis::Z].map(Axis::health_weighting);
+    for s in specs {
+        let (axis, name) = s
+            .split_once('=')
+            .ok_or_else(|| format!("--weighting `{s}`: expected AXIS=W, e.g. z=wk"))?;
+        let idx = match axis.trim().to_ascii_lowercase().as_str() {
+            "x" => 0,
+            "y" => 1,
+            "z" => 2,
+            other => {
+                return Err(format!(
+                    "--weighting `{s}`: unknown axis `{other}` (x, y or z)"
+                ))
+            }
+        };
+        w[idx] = name
+            .parse()
+            .map_err(|e| format!("--weighting `{s}`: {e}"))?;
+    }
+    Ok(w)
+}
+
+fn wbv(a: WbvArgs) -> CmdResult {
+    let rec = Record::read(&a.input)?;
+    let t = rec.require("time_s", &a.input)?;
+    let fs = sample_rate(t).map_err(|e| format!("{}: {e}", a.input.display()))?;
+    let w = parse_axis_weightings(&a.weighting)?;
+    if a.k.len() != 3 {
+        return Err(format!("--k: expected 3 values k_x,k_y,k_z, got {}", a.k.len()).into());
+    }
+    let k = KFactors {
+        x: a.k[0],
+        y: a.k[1],
+        z: a.k[2],
+    };
+    let method = if a.method == "iir" {
+        FilterMethod::Iir
+    } else {
+        FilterMethod::Fft
+    };
+    let mut inputs = Vec::new();
+    for (i, (axis, name)) in [
+        (Axis::X, "ax_m_s2"),
+        (Axis::Y, "ay_m_s2"),
+        (Axis::Z, "az_m_s2"),
+    ]
+    .into_iter()
+    .enumerate()
+    {
+        if let Some(col) = rec.column(name) {
+            inputs.push(AxisInput {
+                axis,
+                weighting: w[i],
+                accel: col,
+            });
+        }
+    }
+    if inputs.is_empty() {
+        return Err(format!(
+            "{}: no acceleration column (expected any of ax_m_s2, ay_m_s2, az_m_s2)",
+            a.input.display()
+        )
+        .into());
+    }
+    let r = assess_whole_body(&inputs, fs, a.hours, k, method)
+        .map_err(|e| format!("{}: {e}", a.input.display()))?;
+    afsv::output::print_json(&r)?;
+    Ok(())
+}
+
+fn window<'a>(
+    path: &Path,
+    t: &'a [f64],
+    y: &'a [f64],
+    start: Option<f64>,
+    end: Option<f64>,
+) -> Result<(&'a [f64], &'a [f64]), String> {
+    let i1 = match end {
+        Some(e) => t.partition_point(|&v| v <= e),
+        None => t.len(),
+    };
+    let i0 = match start {
+        Some(s) => t.partition_point(|&v| v < s),
+        None => {
+            let n_tail = (i1 / 10).max(1);
+            let fin = y[i1 - n_tail..i1].iter().sum::<f64>() / n_tail as f64;
+            (0..i1)
+                .max_by(|&a, &b| (y[a] - fin).abs().total_cmp(&(y[b] - fin).abs()))
+                .unwrap_or(0)
+        }
+    };
+    if i1 <= i0 + 1 {
+        return Err(format!(
+            "{}: the window [{:?}, {:?}] s holds no samples",
+            path.display(),
+            start,
+            end
+        ));
+    }
+    Ok((&t[i0..i1], &y[i0..i1]))
+}
+
+fn decay(a: DecayArgs) -> CmdResult {
+    let rec = Record::read(&a.input)?;
+    let t = rec.require("time_s", &a.input)?;
+    let y = rec.require(&a.column, &a.input)?;
+    if t.is_empty() {
+        return Err(format!("{}: the record is empty", a.input.display()).into());
+    }
+    let (tw, yw) = window(&a.input, t, y, a.start_s, a.end_s)?;
+    let fit = fit_free_decay(tw, yw).map_err(|e| format!("{}: {e}", a.input.display()))?;
+    afsv::output::print_json(&json!({
+        "column": a.column,
+        "start_s": tw[0],
+        "end_s": tw[tw.len() - 1],
+        "samples": tw.len(),
+        "note": "amplitude, offset and rmse are in the column's unit",
+        "fit": fit,
+    }))?;
+    Ok(())
+}
+
+fn step(a: StepArgs) -> CmdResult {
+    let path = &a.input_file;
+    let rec = Record::read(path)?;
+    let t = rec.require("time_s", path)?;
+    let u = rec.require(&a.input, path)?;
+    let y = rec.require(&a.output, path)?;
+    if t.len() < 4 {
+        return Err(format!("{}: needs at least 4 samples", path.display()).into());
+    }
+    if !(a.settle_fraction > 0.0 && a.settle_fraction < 1.0) {
+        return Err(format!("--settle-fraction {} must lie in (0, 1)", a.settle_fraction).into());
+    }
+    let n = t.len();
+    let u0 = u[0];
+    let amplitude = match a.amplitude {
+        Some(v) => v,
+        None => {
+            let k = ((a.settle_fraction * n as f64) as usize).max(1);
+            u[n - k..].iter().sum::<f64>() / k as f64 - u0
+        }
+    };
+    if !(amplitude.is_finite() && amplitude != 0.0) {
+        return Err(format!(
+            "{}: the input `{}` has no step (amplitude {amplitude}); give --amplitude",
+            path.display(),
+            a.input
+        )
+        .into());
+    }
+    let t_step = match a.t_step {
+        Some(v) => v,
+        None => {
+            let i = u
+                .iter()
+                .position(|v| (v - u0).abs() >= 0.02 * amplitude.abs())
+                .ok_or_else(|| {
+                    format!("{}: the input never steps; give --t-step", path.display())
+                })?;
+            t[i.saturating_sub(1)]
+        }
+    };
+    let opts = StepOptions {
+        settle_fraction: a.settle_fraction,
+    };
+    let m = step_metrics_with(t, y, t_step, amplitude, &opts)
+        .map_err(|e| format!("{}: {e}", path.display()))?;
+    afsv::output::print_json(&json!({
+        "input": a.input,
+        "output": a.output,
+        "t_step_s": t_step,
+        "input_amplitude": amplitude,
+        "metrics": m,
+    }))?;
+    Ok(())
+}
