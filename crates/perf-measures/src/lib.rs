@@ -13,6 +13,8 @@
 //!
 //! Units are SI throughout; `docs/perf-measures.md` maps every equation to its code.
 
+#![warn(missing_docs)]
+
 pub mod decay;
 pub mod error;
 pub mod iso2631;
