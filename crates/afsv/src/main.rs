@@ -20,6 +20,9 @@ struct Cli {
 enum Command {
     /// Run the main job on the built-in default vehicle and print its assessment as JSON.
     Evaluate(cmd::evaluate::Args),
+    /// Tire forces (Fiala) and terrain enveloping: `sweep`, `envelope`.
+    #[command(subcommand)]
+    Tire(cmd::tire::Command),
     /// Performance measures: ISO 2631-1 weightings and exposure, free-decay fit, step metrics.
     #[command(subcommand)]
     Measures(cmd::measures::Command),
@@ -33,6 +36,7 @@ fn main() -> ExitCode {
     let cli = Cli::parse();
     let result = match cli.command {
         Command::Evaluate(args) => cmd::evaluate::run(args),
+        Command::Tire(c) => cmd::tire::run(c),
         Command::Measures(c) => cmd::measures::run(c),
     };
     match result {

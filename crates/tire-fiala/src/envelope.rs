@@ -246,6 +246,19 @@ impl Envelope {
     fn tandem_cams(&self, s: &Samples, x_c: f64, z_c: f64) -> EffectiveContact {
         let r = self.radius;
         let rc = self.cam_radius;
+        // Per-segment slope m, tangent offset rc m / sqrt(1 + m^2) and base lift
+        // rc (sqrt(1 + m^2) - 1), computed once for all cam evaluations.
+        let nseg = s.z.len().saturating_sub(1);
+        let mut slope = [0.0f64; MAX_SAMPLES];
+        let mut offset = [0.0f64; MAX_SAMPLES];
+        let mut lift = [0.0f64; MAX_SAMPLES];
+        for i in 0..nseg {
+            let m = (s.z[i + 1] - s.z[i]) / s.h;
+            let q = (1.0 + m * m).sqrt();
+            slope[i] = m;
+            offset[i] = rc * m / q;
+            lift[i] = rc * (q - 1.0);
+        }
         let base = |xj: f64| -> f64 {
             let lo = (((xj - rc) - s.x0) / s.h).ceil().max(0.0) as usize;
             let hi = ((((xj + rc) - s.x0) / s.h).floor().max(-1.0) + 1.0) as usize;
@@ -261,12 +274,10 @@ impl Envelope {
             }
             // Segments between samples (linear): the cam touches a segment of slope m at
             // x_j + rc m / sqrt(1 + m^2), base z_line(x_j) - rc + rc sqrt(1 + m^2).
-            for i in lo.saturating_sub(1)..hi.min(s.z.len().saturating_sub(1)) {
-                let m = (s.z[i + 1] - s.z[i]) / s.h;
-                let q = (1.0 + m * m).sqrt();
-                let xt = xj + rc * m / q;
+            for i in lo.saturating_sub(1)..hi.min(nseg) {
+                let xt = xj + offset[i];
                 if xt >= s.x(i) && xt <= s.x(i + 1) {
-                    let v = s.z[i] + m * (xj - s.x(i)) - rc + rc * q;
+                    let v = s.z[i] + slope[i] * (xj - s.x(i)) + lift[i];
                     if v > b {
                         b = v;
                     }

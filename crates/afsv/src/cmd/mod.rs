@@ -2,6 +2,7 @@
 //! `run` function returning [`CmdResult`].
 
 pub mod evaluate;
+pub mod tire;
 pub mod measures;
 
 /// Result of a subcommand: errors are printed as one line by `main`.

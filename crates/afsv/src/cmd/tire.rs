@@ -1,0 +1,401 @@
+//! `afsv tire`: Fiala tire force sweeps and terrain enveloping (crate `tire-fiala`).
+
+use super::CmdResult;
+use std::path::{Path, PathBuf};
+use tire_fiala::{Envelope, EnvelopeMethod, Fiala, HandlingModel, PolylineProfile, TireParams};
+
+/// Subcommands of `afsv tire`.
+#[derive(clap::Subcommand)]
+pub enum Command {
+    /// Sweep slip angle and/or slip ratio at one or more loads and print the Fiala forces
+    /// as JSON rows {fz_n, kappa, alpha_deg, fx_n, fy_n, mz_nm, my_nm}.
+    ///
+    /// Signs: x forward, y left; alpha has the sign of Eq 3.17 (positive alpha gives
+    /// positive F_y); kappa > 0 in traction; M_z with the paper's sign (same as alpha);
+    /// M_y < 0 opposes forward rolling. Without --alpha-deg and --kappa the sweep is
+    /// alpha -20:20:0.5 deg at kappa 0. Tire: the 29.5R29 of Table 6.2 (see
+    /// docs/tire-fiala.md for the assumed values), changed by --params and the options.
+    Sweep(SweepArgs),
+    /// Envelope a terrain profile with the tire and print, at every profile point, the
+    /// effective elevation z_oi and slope (Eqs 2.3-2.4 / 6.2-6.3) seen by a wheel held at
+    /// a constant deflection, as JSON rows
+    /// {x_m, z_profile_m, z_eff_m, slope_rad, contact_length_m, wheel_z_m}.
+    Envelope(EnvelopeArgs),
+}
+
+/// Options of `afsv tire sweep`.
+#[derive(clap::Args)]
+#[command(allow_negative_numbers = true)]
+pub struct SweepArgs {
+    /// Normal load(s) F_z in N: a value (100000) or a range start:stop:step.
+    #[arg(long, value_name = "N|RANGE")]
+    pub fz: String,
+    /// Slip angle(s) in degrees: a value or a range start:stop:step (e.g. -20:20:0.5).
+    #[arg(long, value_name = "DEG|RANGE", allow_hyphen_values = true)]
+    pub alpha_deg: Option<String>,
+    /// Longitudinal slip ratio(s): a value or a range start:stop:step (e.g. -0.5:0.5:0.01).
+    #[arg(long, value_name = "X|RANGE", allow_hyphen_values = true)]
+    pub kappa: Option<String>,
+    /// Tire parameter file (JSON, fields of TireParams; missing fields keep the nominal
+    /// 29.5R29 values).
+    #[arg(long, value_name = "FILE")]
+    pub params: Option<PathBuf>,
+    /// Longitudinal slip stiffness C_slip (N per unit slip ratio).
+    #[arg(long, value_name = "N")]
+    pub c_slip: Option<f64>,
+    /// Constant cornering stiffness C_alpha (N/rad); replaces the load-dependent table.
+    #[arg(long, value_name = "N")]
+    pub c_alpha_per_rad: Option<f64>,
+    /// Static friction coefficient U_max.
+    #[arg(long, value_name = "X")]
+    pub u_max: Option<f64>,
+    /// Sliding friction coefficient U_min.
+    #[arg(long, value_name = "X")]
+    pub u_min: Option<f64>,
+    /// Tire width b in m (Fiala's R2 is half of it).
+    #[arg(long, value_name = "M")]
+    pub width_m: Option<f64>,
+    /// Also draw the curves into this SVG file: F_y vs alpha when alpha is swept,
+    /// otherwise F_x vs kappa; one curve per (F_z, kappa) or (F_z, alpha).
+    #[arg(long, value_name = "SVG")]
+    pub plot: Option<PathBuf>,
+}
+
+/// Which profile column a wheel runs on.
+#[derive(Clone, Copy, clap::ValueEnum)]
+pub enum TrackSide {
+    /// Column `left_m`.
+    Left,
+    /// Column `right_m`.
+    Right,
+}
+
+/// Enveloping method on the command line.
+#[derive(Clone, Copy, clap::ValueEnum)]
+pub enum MethodArg {
+    /// Two tandem cams (section 6.2.2, Eqs 6.1-6.3).
+    Cams,
+    /// Circle-line intersection (section 2.2.1, Eqs 2.2-2.4).
+    Circle,
+}
+
+/// Options of `afsv tire envelope`.
+#[derive(clap::Args)]
+#[command(allow_negative_numbers = true)]
+pub struct EnvelopeArgs {
+    /// Terrain profile CSV with columns x_m,left_m,right_m (x strictly increasing).
+    #[arg(long, value_name = "CSV")]
+    pub profile: PathBuf,
+    /// Free tire radius R in m (Table 6.2: 1.0).
+    #[arg(long, default_value_t = 1.0, value_name = "M")]
+    pub radius: f64,
+    /// Enveloping method.
+    #[arg(long, value_enum, default_value = "cams")]
+    pub method: MethodArg,
+    /// Profile track under the wheel.
+    #[arg(long, value_enum, default_value = "left")]
+    pub track: TrackSide,
+    /// Tire deflection held constant along the profile, m (0.1 m is the default
+    /// 29.5R29 table at about 160 kN).
+    #[arg(long, default_value_t = 0.1, value_name = "M")]
+    pub deflection_m: f64,
+    /// Sampling step of the profile under the tire, m.
+    #[arg(long, default_value_t = 0.01, value_name = "M")]
+    pub spacing_m: f64,
+}
+
+/// Run `afsv tire ...`.
+pub fn run(cmd: Command) -> CmdResult {
+    match cmd {
+        Command::Sweep(a) => sweep(a),
+        Command::Envelope(a) => envelope(a),
+    }
+}
+
+/// Parse `v` or `start:stop:step` (inclusive end) into values.
+fn parse_range(text: &str, option: &str) -> Result<Vec<f64>, String> {
+    let num = |s: &str, what: &str| -> Result<f64, String> {
+        let v: f64 = s.trim().parse().map_err(|_| {
+            format!(
+                "{option}: {what} `{}` is not a number (in `{text}`)",
+                s.trim()
+            )
+        })?;
+        if v.is_finite() {
+            Ok(v)
+        } else {
+            Err(format!("{option}: {what} `{}` is not finite", s.trim()))
+        }
+    };
+    let parts: Vec<&str> = text.split(':').collect();
+    match parts.as_slice() {
+        [v] => Ok(vec![num(v, "value")?]),
+        [a, b, s] => {
+            let (a, b, s) = (num(a, "start")?, num(b, "stop")?, num(s, "step")?);
+            if s <= 0.0 {
+                return Err(format!("{option}: step must be > 0 in `{text}`"));
+            }
+            if b < a {
+                return Err(format!("{option}: stop {b} is below start {a} in `{text}`"));
+            }
+            let n = ((b - a) / s + 1e-9).floor() + 1.0;
+            if n > 1e6 {
+                return Err(format!(
+                    "{option}: `{text}` gives {n} values (at most 1000000)"
+                ));
+            }
+            Ok((0..n as usize).map(|i| a + i as f64 * s).collect())
+        }
+        _ => Err(format!(
+            "{option}: expected a value or start:stop:step, got `{text}`"
+        )),
+    }
+}
+
+fn load_params(args: &SweepArgs) -> Result<TireParams, Box<dyn std::error::Error>> {
+    let mut p = match &args.params {
+        Some(path) => {
+            let text =
+                std::fs::read_to_string(path).map_err(|e| format!("{}: {e}", path.display()))?;
+            serde_json::from_str::<TireParams>(&text)
+                .map_err(|e| format!("{}: {e}", path.display()))?
+        }
+        None => TireParams::nominal(),
+    };
+    if let Some(v) = args.c_slip {
+        p.longitudinal_stiffness_n = v;
+    }
+    if let Some(v) = args.c_alpha_per_rad {
+        p.cornering_stiffness_n_per_rad = v;
+        p.cornering_stiffness_table.clear();
+    }
+    if let Some(v) = args.u_max {
+        p.u_max = v;
+    }
+    if let Some(v) = args.u_min {
+        p.u_min = v;
+    }
+    if let Some(v) = args.width_m {
+        p.width_m = v;
+    }
+    p.validate()?;
+    Ok(p)
+}
+
+#[derive(serde::Serialize)]
+struct SweepRow {
+    fz_n: f64,
+    kappa: f64,
+    alpha_deg: f64,
+    fx_n: f64,
+    fy_n: f64,
+    mz_nm: f64,
+    my_nm: f64,
+}
+
+fn sweep(args: SweepArgs) -> CmdResult {
+    let fzs = parse_range(&args.fz, "--fz")?;
+    let (alphas, kappas) = match (&args.alpha_deg, &args.kappa) {
+        (None, None) => (parse_range("-20:20:0.5", "--alpha-deg")?, vec![0.0]),
+        (a, k) => (
+            match a {
+                Some(t) => parse_range(t, "--alpha-deg")?,
+                None => vec![0.0],
+            },
+            match k {
+                Some(t) => parse_range(t, "--kappa")?,
+                None => vec![0.0],
+            },
+        ),
+    };
+    let total = fzs.len() * alphas.len() * kappas.len();
+    if total > 2_000_000 {
+        return Err(format!("the sweep has {total} rows (at most 2000000)").into());
+    }
+    let tire = Fiala::new(&load_params(&args)?)?;
+    let mut rows = Vec::with_capacity(total);
+    for &fz in &fzs {
+        for &kappa in &kappas {
+            for &alpha_deg in &alphas {
+                let f = tire.forces(fz, kappa, alpha_deg.to_radians());
+                rows.push(SweepRow {
+                    fz_n: fz,
+                    kappa,
+                    alpha_deg,
+                    fx_n: f.fx,
+                    fy_n: f.fy,
+                    mz_nm: f.mz,
+                    my_nm: f.my,
+                });
+            }
+        }
+    }
+    if let Some(path) = &args.plot {
+        plot_sweep(path, &rows, &fzs, &kappas, &alphas)?;
+    }
+    afsv::output::print_json(&rows)?;
+    Ok(())
+}
+
+/// One curve per (F_z, other slip): F_y(alpha) if alpha is swept, else F_x(kappa).
+fn plot_sweep(
+    path: &Path,
+    rows: &[SweepRow],
+    fzs: &[f64],
+    kappas: &[f64],
+    alphas: &[f64],
+) -> Result<(), String> {
+    use plotters::prelude::*;
+    let lateral = alphas.len() > 1;
+    if !lateral && kappas.len() < 2 {
+        return Err("--plot needs a swept --alpha-deg or --kappa (a range)".into());
+    }
+    let mut curves: Vec<(String, Vec<(f64, f64)>)> = Vec::new();
+    for (i, &fz) in fzs.iter().enumerate() {
+        if lateral {
+            for (j, &k) in kappas.iter().enumerate() {
+                let start = (i * kappas.len() + j) * alphas.len();
+                let pts = rows[start..start + alphas.len()]
+                    .iter()
+                    .map(|r| (r.alpha_deg, r.fy_n / 1e3))
+                    .collect();
+                curves.push((format!("Fz = {:.0} kN, kappa = {k}", fz / 1e3), pts));
+            }
+        } else {
+            for (j, &a) in alphas.iter().enumerate() {
+                let pts = (0..kappas.len())
+                    .map(|m| {
+                        let r = &rows[(i * kappas.len() + m) * alphas.len() + j];
+                        (r.kappa, r.fx_n / 1e3)
+                    })
+                    .collect();
+                curves.push((format!("Fz = {:.0} kN, alpha = {a} deg", fz / 1e3), pts));
+            }
+        }
+    }
+    if curves.len() > 50 {
+        return Err(format!(
+            "--plot: {} curves is too many to read (at most 50)",
+            curves.len()
+        ));
+    }
+    let all = curves.iter().flat_map(|c| c.1.iter());
+    let (mut x0, mut x1, mut y0, mut y1) = (f64::MAX, f64::MIN, f64::MAX, f64::MIN);
+    for &(x, y) in all {
+        x0 = x0.min(x);
+        x1 = x1.max(x);
+        y0 = y0.min(y);
+        y1 = y1.max(y);
+    }
+    if y1 <= y0 {
+        y0 -= 1.0;
+        y1 += 1.0;
+    }
+    let pad = 0.05 * (y1 - y0);
+    let err = |e: &dyn std::fmt::Display| format!("{}: {e}", path.display());
+    let root = SVGBackend::new(path, (900, 560)).into_drawing_area();
+    root.fill(&WHITE).map_err(|e| err(&e))?;
+    let (title, xd, yd) = if lateral {
+        ("Fiala lateral force", "slip angle alpha (deg)", "F_y (kN)")
+    } else {
+        (
+            "Fiala longitudinal force",
+            "slip ratio kappa (-)",
+            "F_x (kN)",
+        )
+    };
+    let mut chart = ChartBuilder::on(&root)
+        .caption(title, ("sans-serif", 20))
+        .margin(12)
+        .x_label_area_size(40)
+        .y_label_area_size(70)
+        .build_cartesian_2d(x0..x1, (y0 - pad)..(y1 + pad))
+        .map_err(|e| err(&e))?;
+    chart
+        .configure_mesh()
+        .x_desc(xd)
+        .y_desc(yd)
+        .draw()
+        .map_err(|e| err(&e))?;
+    for (i, (label, pts)) in curves.into_iter().enumerate() {
+        let color = Palette99::pick(i).to_rgba();
+        chart
+            .draw_series(LineSeries::new(pts, color.stroke_width(2)))
+            .map_err(|e| err(&e))?
+            .label(label)
+            .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], color));
+    }
+    chart
+        .configure_series_labels()
+        .background_style(WHITE.mix(0.8))
+        .border_style(BLACK)
+        .position(SeriesLabelPosition::UpperLeft)
+        .draw()
+        .map_err(|e| err(&e))?;
+    root.present().map_err(|e| err(&e))?;
+    Ok(())
+}
+
+#[derive(serde::Serialize)]
+struct EnvelopeRow {
+    x_m: f64,
+    z_profile_m: f64,
+    z_eff_m: f64,
+    slope_rad: f64,
+    contact_length_m: f64,
+    wheel_z_m: f64,
+}
+
+fn envelope(args: EnvelopeArgs) -> CmdResult {
+    let rec = afsv::record::Record::read(&args.profile)?;
+    let xs = rec.require("x_m", &args.profile)?.to_vec();
+    let col = match args.track {
+        TrackSide::Left => "left_m",
+        TrackSide::Right => "right_m",
+    };
+    let zs = rec.require(col, &args.profile)?.to_vec();
+    let profile = PolylineProfile::new(xs.clone(), zs.clone())
+        .map_err(|e| format!("{}: {e}", args.profile.display()))?;
+    let method = match args.method {
+        MethodArg::Cams => EnvelopeMethod::TandemCams,
+        MethodArg::Circle => EnvelopeMethod::CircleLine,
+    };
+    let env = Envelope::new(method, args.radius, args.spacing_m)?;
+    let mut rows = Vec::with_capacity(xs.len());
+    for (&x, &z) in xs.iter().zip(&zs) {
+        let p = env.at_deflection(&profile, x, args.deflection_m)?;
+        rows.push(EnvelopeRow {
+            x_m: x,
+            z_profile_m: z,
+            z_eff_m: p.contact.z_eff,
+            slope_rad: p.contact.slope,
+            contact_length_m: p.contact.contact_length,
+            wheel_z_m: p.wheel_z,
+        });
+    }
+    afsv::output::print_json(&rows)?;
+    Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::parse_range;
+
+    #[test]
+    fn ranges() {
+        assert_eq!(parse_range("5", "--x").unwrap(), vec![5.0]);
+        let r = parse_range("-20:20:0.5", "--x").unwrap();
+        assert_eq!(r.len(), 81);
+        assert_eq!(r[80], 20.0);
+        assert_eq!(parse_range("0:1:0.3", "--x").unwrap().len(), 4);
+        assert!(parse_range("1:0:0.1", "--x")
+            .unwrap_err()
+            .contains("below start"));
+        assert!(parse_range("0:1:0", "--x").unwrap_err().contains("step"));
+        assert!(parse_range("0:a:1", "--x")
+            .unwrap_err()
+            .contains("stop `a`"));
+        assert!(parse_range("0:1", "--x").is_err());
+        assert!(parse_range("nan", "--x").is_err());
+    }
+}
