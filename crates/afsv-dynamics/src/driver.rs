@@ -100,16 +100,25 @@ impl Course {
         }
     }
 
-    /// Look-ahead point `preview` ahead (along the course) of the point closest to `(x, y)`.
+    /// Whether a vehicle at `x` with unwrapped heading `psi` is still on the approach
+    /// straight of a steady turn (after the first quarter lap it is on the circle).
     #[inline]
-    pub fn lookahead(&self, x: f64, y: f64, preview: f64) -> (f64, f64) {
+    fn on_approach(x: f64, psi: f64, side: f64) -> bool {
+        x < 0.0 && psi * side < std::f64::consts::FRAC_PI_2
+    }
+
+    /// Look-ahead point `preview` ahead (along the course) of the point closest to `(x, y)`;
+    /// `psi` is the vehicle's unwrapped heading (it tells the approach straight from the
+    /// last quarter of each lap).
+    #[inline]
+    pub fn lookahead(&self, x: f64, y: f64, psi: f64, preview: f64) -> (f64, f64) {
         match *self {
             Course::SteadyTurn { radius_m, .. } => {
                 let r = radius_m.abs();
                 let side = radius_m.signum();
                 // Work in the right-turn frame (mirror y for a left turn).
                 let ym = y * side;
-                let s = if x < 0.0 && ym < 0.5 * r {
+                let s = if Self::on_approach(x, psi, side) {
                     x
                 } else {
                     let phi = x.atan2(r - ym);
@@ -145,14 +154,15 @@ impl Course {
         }
     }
 
-    /// Lateral deviation of `(x, y)` from the course (m), positive to the right of it.
-    pub fn deviation(&self, x: f64, y: f64) -> f64 {
+    /// Lateral deviation of `(x, y)` (unwrapped heading `psi`) from the course (m);
+    /// for the steady turn positive towards the centre.
+    pub fn deviation(&self, x: f64, y: f64, psi: f64) -> f64 {
         match *self {
             Course::SteadyTurn { radius_m, .. } => {
                 let r = radius_m.abs();
                 let side = radius_m.signum();
                 let ym = y * side;
-                if x < 0.0 && ym < 0.5 * r {
+                if Self::on_approach(x, psi, side) {
                     y
                 } else {
                     // Inside the circle (towards the centre) is the turning side.
@@ -192,14 +202,15 @@ pub struct PathDriver {
 }
 
 impl PathDriver {
-    /// Driver with default settings (preview 0.8 s but at least 4 m, K = 60 1/s, rate
-    /// limit 2 turns/s) on `course`.
+    /// Driver with default settings (preview 1.2 s but at least 4 m, K = 40 1/s, rate
+    /// limit 2 turns/s) on `course`. The settings were chosen by a sweep over the six
+    /// Fig 3.6 / Table 3.2 cases (docs/afs-yaw-plane.md).
     pub fn new(course: Course) -> Self {
         Self {
             course,
-            preview_time_s: 0.8,
+            preview_time_s: 1.2,
             min_preview_m: 4.0,
-            rate_gain_per_s: 60.0,
+            rate_gain_per_s: 40.0,
             max_rate_rad_s: 4.0 * std::f64::consts::PI,
         }
     }
@@ -227,7 +238,7 @@ impl PathDriver {
     #[inline]
     pub fn desired_articulation(&self, x: f64, y: f64, psi: f64, u: f64, a: f64, b: f64) -> f64 {
         let ld = (self.preview_time_s * u).max(self.min_preview_m);
-        let (px, py) = self.course.lookahead(x, y, ld);
+        let (px, py) = self.course.lookahead(x, y, psi, ld);
         let (dx, dy) = (px - x, py - y);
         let eta = dy.atan2(dx) - psi;
         let eta =
@@ -280,10 +291,10 @@ mod tests {
     #[test]
     fn path_change_geometry() {
         let c = Course::path_change_fig_3_6();
-        assert_eq!(c.lookahead(-10.0, 0.0, 4.0), (-6.0, 0.0));
-        let (_, y) = c.lookahead(5.0, 0.0, 4.0);
+        assert_eq!(c.lookahead(-10.0, 0.0, 0.0, 4.0), (-6.0, 0.0));
+        let (_, y) = c.lookahead(5.0, 0.0, 0.0, 4.0);
         assert!((y - 2.25).abs() < 1e-12);
-        assert!((c.deviation(30.0, 4.0) + 0.5).abs() < 1e-12);
+        assert!((c.deviation(30.0, 4.0, 0.0) + 0.5).abs() < 1e-12);
         let d = PathDriver::new(c);
         // On the straight, aligned: no articulation demand.
         assert_eq!(
@@ -291,5 +302,26 @@ mod tests {
             0.0
         );
         assert!(d.wheel_rate(1.0, 0.0) <= d.max_rate_rad_s);
+    }
+}
+
+/// Which field course of Fig 3.6.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum FieldCourse {
+    /// 13.5 m radius steady turn.
+    SteadyTurn,
+    /// 4.5 m offset, 18 m gate path change.
+    PathChange,
+}
+
+/// Table 3.2 mean speeds (km/h) for a course and load condition.
+pub fn table_3_2_speeds_kmh(course: FieldCourse, load: crate::Load) -> &'static [f64] {
+    use crate::Load::*;
+    match (course, load) {
+        (FieldCourse::SteadyTurn, Loaded) => &[13.4],
+        (FieldCourse::SteadyTurn, Unloaded) => &[18.5, 24.0],
+        (FieldCourse::PathChange, Loaded) => &[15.3],
+        (FieldCourse::PathChange, Unloaded) => &[19.2, 22.8],
     }
 }

@@ -24,7 +24,7 @@ pub use analysis::{
     measures_for, sensitivity, yaw_measures, MeasureSpec, SensitivityParam, SensitivityTable,
     YawMeasures,
 };
-pub use driver::{Course, PathDriver};
+pub use driver::{table_3_2_speeds_kmh, Course, FieldCourse, PathDriver};
 pub use error::DynError;
 pub use inputs::SteerInput;
 pub use mechanics::EquationForm;

@@ -135,8 +135,8 @@ impl Default for SimOptions {
     fn default() -> Self {
         Self {
             solver: SolverKind::Dopri5,
-            rtol: 1e-6,
-            atol: 1e-8,
+            rtol: 1e-5,
+            atol: 1e-6,
             max_step_s: 0.05,
             rk4_step_s: 2e-4,
             output_dt_s: 0.005,
