@@ -20,6 +20,9 @@ struct Cli {
 enum Command {
     /// Run the main job on the built-in default vehicle and print its assessment as JSON.
     Evaluate(cmd::evaluate::Args),
+    /// Hydro-pneumatic suspension strut with gas-oil emulsion: `harmonic`, `characterize`, `identify`.
+    #[command(subcommand)]
+    Hps(cmd::hps::Command),
     /// Tire forces (Fiala) and terrain enveloping: `sweep`, `envelope`.
     #[command(subcommand)]
     Tire(cmd::tire::Command),
@@ -36,6 +39,7 @@ fn main() -> ExitCode {
     let cli = Cli::parse();
     let result = match cli.command {
         Command::Evaluate(args) => cmd::evaluate::run(args),
+        Command::Hps(c) => cmd::hps::run(c),
         Command::Tire(c) => cmd::tire::run(c),
         Command::Measures(c) => cmd::measures::run(c),
     };

@@ -2,6 +2,7 @@
 //! `run` function returning [`CmdResult`].
 
 pub mod evaluate;
+pub mod hps;
 pub mod tire;
 pub mod measures;
 

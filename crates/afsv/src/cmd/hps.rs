@@ -1,0 +1,361 @@
+//! `afsv hps`: the hydro-pneumatic suspension strut with gas-oil emulsion (chapter 5):
+//! harmonic runs with loops, the laboratory characterisation programme, and parameter
+//! identification from a measured record.
+
+use super::CmdResult;
+use afsv::record::Record;
+use hps_emulsion::{
+    characterize, identify, lab_programme, loop_metrics, simulate_displacement, Excitation,
+    FitParam, HarmonicTest, HpsExtensions, IdentifyOptions, LabConfig, Measured, SimOptions,
+    Solver, StrutParams, StrutRecord,
+};
+use std::path::{Path, PathBuf};
+
+/// Built-in strut parameter sets.
+#[derive(Clone, Copy, Debug, clap::ValueEnum)]
+pub enum StrutChoice {
+    /// Front-axle strut of the articulated dump truck (Table 6.3).
+    FrontAxle,
+    /// Laboratory strut of chapter 5 with one bleed orifice (identified, see docs/hps-emulsion.md).
+    #[value(name = "lab-1orifice")]
+    Lab1Orifice,
+    /// Laboratory strut of chapter 5 with two bleed orifices.
+    #[value(name = "lab-2orifice")]
+    Lab2Orifice,
+}
+
+impl StrutChoice {
+    fn params(self) -> StrutParams {
+        match self {
+            StrutChoice::FrontAxle => StrutParams::front_axle(),
+            StrutChoice::Lab1Orifice => StrutParams::lab(LabConfig::OneOrifice),
+            StrutChoice::Lab2Orifice => StrutParams::lab(LabConfig::TwoOrifices),
+        }
+    }
+    fn name(self) -> &'static str {
+        match self {
+            StrutChoice::FrontAxle => "front-axle",
+            StrutChoice::Lab1Orifice => "lab-1orifice",
+            StrutChoice::Lab2Orifice => "lab-2orifice",
+        }
+    }
+}
+
+/// Integrator choice.
+#[derive(Clone, Copy, Debug, clap::ValueEnum)]
+pub enum SolverChoice {
+    /// Dopri5 at 0.5 Hz and above, Rosenbrock23 below (measured fastest).
+    Auto,
+    /// Linearly implicit Rosenbrock 2(3).
+    Rosenbrock,
+    /// Explicit Dormand-Prince 5(4).
+    Dopri,
+}
+
+impl SolverChoice {
+    fn solver(self) -> Solver {
+        match self {
+            SolverChoice::Auto => Solver::Auto,
+            SolverChoice::Rosenbrock => Solver::Rosenbrock23,
+            SolverChoice::Dopri => Solver::Dopri5,
+        }
+    }
+}
+
+/// Subcommands of `afsv hps`.
+#[derive(clap::Subcommand)]
+pub enum Command {
+    /// Simulate a harmonic displacement test; print the last cycle's loop metrics as JSON,
+    /// optionally write the record (CSV + JSON sidecar) and an SVG of the loops.
+    Harmonic(HarmonicArgs),
+    /// Run the laboratory programme (0.1 Hz at 5/25/50 mm; 1-8 Hz at peak velocities
+    /// 0.05-0.2356 m/s, amplitude capped at 45 mm) and print stiffness, damping and energy per
+    /// test as JSON.
+    Characterize(CharacterizeArgs),
+    /// Fit model parameters to a measured strut record (CSV with time_s, displacement_m and
+    /// any of force_n, p_piston_pa, p_rod_pa); print fitted values, standard errors and NRMSE.
+    Identify(IdentifyArgs),
+}
+
+/// Options of `afsv hps harmonic`.
+#[derive(clap::Args)]
+pub struct HarmonicArgs {
+    /// Strut parameter set.
+    #[arg(long, value_enum, default_value = "front-axle")]
+    pub strut: StrutChoice,
+    /// Excitation frequency (Hz).
+    #[arg(long, default_value_t = 2.0)]
+    pub freq: f64,
+    /// Excitation amplitude (mm); deflection positive in compression.
+    #[arg(long = "amp-mm", default_value_t = 7.5)]
+    pub amp_mm: f64,
+    /// Number of cycles simulated (metrics are from the last).
+    #[arg(long, default_value_t = 5.0)]
+    pub cycles: f64,
+    /// Gas volume fraction of the emulsion, e.g. 0.03 (gas moved from the free gas volume).
+    #[arg(long)]
+    pub gamma0: Option<f64>,
+    /// Output sample rate of the record (Hz).
+    #[arg(long, default_value_t = 360.0)]
+    pub rate: f64,
+    /// Integrator.
+    #[arg(long, value_enum, default_value = "auto")]
+    pub solver: SolverChoice,
+    /// Write the record here (CSV; a JSON sidecar is written beside it).
+    #[arg(short = 'o', long = "output")]
+    pub output: Option<PathBuf>,
+    /// Draw pressure-deflection, force-deflection, force-velocity and damping-force loops (SVG).
+    #[arg(long)]
+    pub plot: Option<PathBuf>,
+}
+
+/// Options of `afsv hps characterize`.
+#[derive(clap::Args)]
+pub struct CharacterizeArgs {
+    /// Strut parameter set.
+    #[arg(long, value_enum, default_value = "lab-1orifice")]
+    pub strut: StrutChoice,
+    /// Gas volume fraction of the emulsion, e.g. 0.03.
+    #[arg(long)]
+    pub gamma0: Option<f64>,
+}
+
+/// Options of `afsv hps identify`.
+#[derive(clap::Args)]
+pub struct IdentifyArgs {
+    /// Measured record (CSV; sidecar `.json` beside it is honoured).
+    #[arg(short = 'i', long = "input")]
+    pub input: PathBuf,
+    /// Parameters to fit, comma-separated, from: n, fc, fs, muv, gamma0, cb, cv, kl.
+    #[arg(long, default_value = "n,gamma0,cb")]
+    pub fit: String,
+    /// Strut whose other parameters are taken as known (and start values).
+    #[arg(long, value_enum, default_value = "lab-1orifice")]
+    pub strut: StrutChoice,
+    /// Simulate but do not compare the first seconds (start-up transient).
+    #[arg(long, default_value_t = 0.0)]
+    pub warmup: f64,
+}
+
+/// Run `afsv hps ...`.
+pub fn run(cmd: Command) -> CmdResult {
+    match cmd {
+        Command::Harmonic(a) => harmonic(a),
+        Command::Characterize(a) => characterize_cmd(a),
+        Command::Identify(a) => identify_cmd(a),
+    }
+}
+
+fn with_gamma0(p: StrutParams, g: Option<f64>) -> Result<StrutParams, Box<dyn std::error::Error>> {
+    Ok(match g {
+        Some(g) => p.with_gamma0(g)?,
+        None => p,
+    })
+}
+
+fn harmonic(a: HarmonicArgs) -> CmdResult {
+    let params = with_gamma0(a.strut.params(), a.gamma0)?;
+    let test = HarmonicTest {
+        frequency_hz: a.freq,
+        amplitude_m: a.amp_mm * 1e-3,
+    };
+    let opts = SimOptions {
+        output_rate_hz: a.rate,
+        solver: a.solver.solver(),
+        ..SimOptions::default()
+    };
+    let exc = Excitation::harmonic(a.freq, test.amplitude_m, a.cycles);
+    let rec = simulate_displacement(&params, &HpsExtensions::none(), &exc, &opts)?;
+    let metrics = loop_metrics(&rec, &test).map_err(|e| {
+        format!("{e}: raise --rate or --cycles (need >= 1 cycle, 16 samples per cycle)")
+    })?;
+    if let Some(path) = &a.output {
+        let mut r = Record::new();
+        for (name, v) in rec.columns() {
+            r.push_column(name, v)?;
+        }
+        r.meta = serde_json::json!({
+            "model": "hps-emulsion",
+            "strut": a.strut.name(),
+            "sample_rate_hz": a.rate,
+            "excitation": {"kind": "harmonic", "frequency_hz": a.freq, "amplitude_m": test.amplitude_m, "cycles": a.cycles},
+            "gamma0": params.gamma0,
+            "units": {"time_s": "s", "displacement_m": "m (+ compression)", "velocity_m_s": "m/s",
+                      "force_n": "N (+ compressive)", "p_piston_pa": "Pa absolute", "p_rod_pa": "Pa absolute"},
+        });
+        r.write(path)?;
+    }
+    if let Some(path) = &a.plot {
+        plot_loops(path, &rec, &test)?;
+    }
+    afsv::output::print_json(&serde_json::json!({
+        "strut": a.strut.name(),
+        "gamma0": params.gamma0,
+        "last_cycle": metrics,
+    }))?;
+    Ok(())
+}
+
+fn characterize_cmd(a: CharacterizeArgs) -> CmdResult {
+    let params = with_gamma0(a.strut.params(), a.gamma0)?;
+    let tests = lab_programme(params.travel);
+    let rows = characterize(
+        &params,
+        &HpsExtensions::none(),
+        &tests,
+        &SimOptions::default(),
+    )?;
+    afsv::output::print_json(&serde_json::json!({
+        "strut": a.strut.name(),
+        "gamma0": params.gamma0,
+        "tests": rows,
+    }))?;
+    Ok(())
+}
+
+fn identify_cmd(a: IdentifyArgs) -> CmdResult {
+    let which = FitParam::parse_list(&a.fit)?;
+    let rec = Record::read(&a.input)?;
+    let time = rec.require("time_s", &a.input)?.to_vec();
+    let displacement = rec.require("displacement_m", &a.input)?.to_vec();
+    let col = |n: &str| rec.column(n).map(|c| c.to_vec());
+    let meas = Measured {
+        time,
+        displacement,
+        velocity: col("velocity_m_s"),
+        force: col("force_n"),
+        p_piston: col("p_piston_pa"),
+        p_rod: col("p_rod_pa"),
+    };
+    let opts = IdentifyOptions {
+        warmup_s: a.warmup,
+        ..IdentifyOptions::default()
+    };
+    let start = a.strut.params();
+    let res = identify(&meas, &start, &HpsExtensions::none(), &which, &opts)
+        .map_err(|e| format!("{}: {e}", a.input.display()))?;
+    let fitted: Vec<serde_json::Value> = res
+        .fitted
+        .iter()
+        .map(|f| {
+            serde_json::json!({
+                "param": f.param.name(), "initial": f.initial, "value": f.value,
+                "std_error": if f.std_error.is_finite() { Some(f.std_error) } else { None },
+            })
+        })
+        .collect();
+    afsv::output::print_json(&serde_json::json!({
+        "input": a.input.display().to_string(),
+        "strut": a.strut.name(),
+        "fitted": fitted,
+        "nrmse_initial": res.nrmse_initial,
+        "nrmse": res.nrmse,
+        "iterations": res.iterations,
+        "converged": res.converged,
+    }))?;
+    Ok(())
+}
+
+fn plot_loops(path: &Path, rec: &StrutRecord, test: &HarmonicTest) -> Result<(), String> {
+    use plotters::prelude::*;
+    let period = 1.0 / test.frequency_hz;
+    let t_end = rec.time.last().copied().unwrap_or(0.0);
+    let idx: Vec<usize> = (0..rec.time.len())
+        .filter(|&i| rec.time[i] >= t_end - period - 1e-9)
+        .collect();
+    let pick = |v: &[f64], s: f64| idx.iter().map(|&i| v[i] * s).collect::<Vec<f64>>();
+    let z = pick(&rec.displacement, 1e3);
+    let v = pick(&rec.velocity, 1.0);
+    let f = pick(&rec.force, 1e-3);
+    let pc = pick(&rec.p_piston, 1e-6);
+    let pr = pick(&rec.p_rod, 1e-6);
+    let fd = pick(&rec.damping_force(), 1e-3);
+    let err = |e: &dyn std::fmt::Display| format!("{}: {e}", path.display());
+    let root = SVGBackend::new(path, (1200, 900)).into_drawing_area();
+    root.fill(&WHITE).map_err(|e| err(&e))?;
+    let panels = root.split_evenly((2, 2));
+    type Curve<'a> = (&'a str, &'a [f64], &'a [f64], RGBColor);
+    let specs: [(&str, &str, &str, Vec<Curve>); 4] = [
+        (
+            "Pressure-deflection",
+            "deflection (mm)",
+            "pressure (MPa)",
+            vec![
+                ("P_hc", &z, &pc, RGBColor(31, 119, 180)),
+                ("P_hr", &z, &pr, RGBColor(214, 39, 40)),
+            ],
+        ),
+        (
+            "Force-deflection",
+            "deflection (mm)",
+            "force (kN)",
+            vec![("F_h", &z, &f, BLACK)],
+        ),
+        (
+            "Force-velocity",
+            "velocity (m/s)",
+            "force (kN)",
+            vec![("F_h", &v, &f, BLACK)],
+        ),
+        (
+            "Damping force-velocity",
+            "velocity (m/s)",
+            "damping force (kN)",
+            vec![("F_h - spring", &v, &fd, RGBColor(44, 160, 44))],
+        ),
+    ];
+    for (area, (title, xl, yl, curves)) in panels.iter().zip(specs.iter()) {
+        let (x0, x1) = limits(curves.iter().map(|c| c.1));
+        let (y0, y1) = limits(curves.iter().map(|c| c.2));
+        let mut chart = ChartBuilder::on(area)
+            .caption(*title, ("sans-serif", 18))
+            .margin(10)
+            .x_label_area_size(35)
+            .y_label_area_size(55)
+            .build_cartesian_2d(x0..x1, y0..y1)
+            .map_err(|e| err(&e))?;
+        chart
+            .configure_mesh()
+            .x_desc(*xl)
+            .y_desc(*yl)
+            .draw()
+            .map_err(|e| err(&e))?;
+        for (label, x, y, color) in curves {
+            let color = *color;
+            chart
+                .draw_series(LineSeries::new(
+                    x.iter().copied().zip(y.iter().copied()),
+                    color,
+                ))
+                .map_err(|e| err(&e))?
+                .label(*label)
+                .legend(move |(a, b)| PathElement::new(vec![(a, b), (a + 18, b)], color));
+        }
+        chart
+            .configure_series_labels()
+            .background_style(WHITE.mix(0.8))
+            .border_style(BLACK)
+            .draw()
+            .map_err(|e| err(&e))?;
+    }
+    root.present().map_err(|e| err(&e))?;
+    Ok(())
+}
+
+fn limits<'a>(cols: impl Iterator<Item = &'a [f64]>) -> (f64, f64) {
+    let (mut lo, mut hi) = (f64::INFINITY, f64::NEG_INFINITY);
+    for c in cols {
+        for &x in c.iter().filter(|x| x.is_finite()) {
+            lo = lo.min(x);
+            hi = hi.max(x);
+        }
+    }
+    if !lo.is_finite() {
+        return (0.0, 1.0);
+    }
+    if hi <= lo {
+        hi = lo + 1.0;
+    }
+    let pad = 0.05 * (hi - lo);
+    (lo - pad, hi + pad)
+}
