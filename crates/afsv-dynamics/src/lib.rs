@@ -29,5 +29,5 @@ pub use error::DynError;
 pub use inputs::SteerInput;
 pub use mechanics::EquationForm;
 pub use model::{SteerSource, YawPlaneModel};
-pub use params::{Load, VehicleParams};
+pub use params::{Load, VehicleParams, YawPlaneParams};
 pub use simulate::{simulate, Manoeuvre, SimOptions, SolverKind, SolverStats, YawRecord};

@@ -145,7 +145,8 @@ impl<'a, A: SteeringActuator> YawPlaneModel<'a, A> {
         self.layout
     }
 
-    /// Name (with unit) of every state, in order.
+    /// Name (with SI unit) of every state, in order. Actuator states are named by their SI
+    /// value; the integrated variable is that times [`SteeringActuator::state_scale`].
     pub fn state_names(&self) -> Vec<String> {
         let mut v: Vec<String> = [
             "articulation_rad",
@@ -166,13 +167,7 @@ impl<'a, A: SteeringActuator> YawPlaneModel<'a, A> {
             v.push("driver_steer_wheel_rad".into());
         }
         for i in 0..self.layout.n_act {
-            let s = self.actuator.state_scale(i);
-            let name = self.actuator.state_name(i);
-            if s == 1.0 {
-                v.push(name.to_string());
-            } else {
-                v.push(format!("{name}_x{s:e}"));
-            }
+            v.push(self.actuator.state_name(i).to_string());
         }
         v
     }
@@ -203,6 +198,16 @@ impl<'a, A: SteeringActuator> YawPlaneModel<'a, A> {
             (SteerSource::Open(inp), _) => inp.angle(t),
             (SteerSource::Driver(_), Some(i)) => y[i],
             (SteerSource::Driver(_), None) => 0.0,
+        }
+    }
+
+    /// State `i` of `y` in SI units (undoes the actuator-state scaling).
+    #[inline]
+    pub fn state_si(&self, i: usize, y: &[f64]) -> f64 {
+        if i >= self.layout.act0 {
+            y[i] / self.actuator.state_scale(i - self.layout.act0)
+        } else {
+            y[i]
         }
     }
 

@@ -247,3 +247,64 @@ mod tests {
         assert!("heavy".parse::<Load>().is_err());
     }
 }
+
+/// Complete parameter set of the yaw-plane model: vehicle (Table 3.1, vehicle columns)
+/// and frame steering (Table 3.1 steering column / Table 4.1, see `docs/afs-hydraulics.md`
+/// for its units). This is the file format of `afsv params dump yaw-plane`.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct YawPlaneParams {
+    /// Load condition the vehicle column belongs to (informative; `None` for a user set).
+    #[serde(default)]
+    pub load: Option<Load>,
+    /// Vehicle parameters.
+    pub vehicle: VehicleParams,
+    /// Steering-system parameters.
+    pub afs: afs_hydraulics::AfsParams,
+}
+
+impl YawPlaneParams {
+    /// Table 3.1 for the given load with the nominal steering system.
+    pub fn nominal(load: Load) -> Self {
+        Self {
+            load: Some(load),
+            vehicle: VehicleParams::nominal(load),
+            afs: afs_hydraulics::AfsParams::nominal(),
+        }
+    }
+
+    /// Validate both parts; the error names the offending field.
+    pub fn validate(&self) -> Result<(), DynError> {
+        self.vehicle.validate()?;
+        self.afs
+            .validate()
+            .map_err(|e| DynError::Steering(e.to_string()))
+    }
+
+    /// Build the steering component (validates the steering parameters).
+    pub fn afs_system(&self) -> Result<afs_hydraulics::AfsSystem, DynError> {
+        afs_hydraulics::AfsSystem::new(self.afs.clone())
+            .map_err(|e| DynError::Steering(e.to_string()))
+    }
+}
+
+#[cfg(test)]
+mod set_tests {
+    use super::*;
+
+    #[test]
+    fn yaw_plane_set_round_trips_through_json_and_validates() {
+        let p = YawPlaneParams::nominal(Load::Unloaded);
+        let s = serde_json::to_string(&p).unwrap();
+        let q: YawPlaneParams = serde_json::from_str(&s).unwrap();
+        // serde_json's default float parser may differ in the last bit.
+        assert_eq!(p.vehicle, q.vehicle);
+        assert!((p.afs.gerotor_displacement / q.afs.gerotor_displacement - 1.0).abs() < 1e-14);
+        q.validate().unwrap();
+        let mut bad = q.clone();
+        bad.afs.l1_m = 0.0;
+        assert!(bad.validate().unwrap_err().to_string().contains("l1"));
+        let unknown = s.replacen("\"vehicle\"", "\"vehicel\"", 1);
+        assert!(serde_json::from_str::<YawPlaneParams>(&unknown).is_err());
+    }
+}

@@ -236,7 +236,8 @@ pub struct YawRecord {
     pub kinetic_energy_j: Vec<f64>,
     /// Energy stored in the actuator (J).
     pub actuator_energy_j: Vec<f64>,
-    /// Every integrated state, `(name, values)`; see [`crate::model`] for the layout.
+    /// Every integrated state in SI units, `(name, values)`; see [`crate::model`] for
+    /// the layout.
     pub states: Vec<(String, Vec<f64>)>,
     /// Solver counters.
     pub stats: SolverStats,
@@ -450,8 +451,8 @@ pub fn simulate<A: SteeringActuator>(
                     e.steer_wheel,
                     &xs[..layout.n_act],
                 ));
-                for (s, &v) in states.iter_mut().zip(y) {
-                    s.push(v);
+                for (i, s) in states.iter_mut().enumerate() {
+                    s.push(model.state_si(i, y));
                 }
             }
             if t == cut {

@@ -29,6 +29,12 @@ enum Command {
     /// Performance measures: ISO 2631-1 weightings and exposure, free-decay fit, step metrics.
     #[command(subcommand)]
     Measures(cmd::measures::Command),
+    /// Yaw-plane vehicle with hydraulic frame steering: `simulate`, `measures`, `sensitivity`, `leakage`.
+    #[command(subcommand)]
+    Yaw(cmd::yaw::Command),
+    /// Parameter sets as JSON: `dump` the nominal set, `check` a file.
+    #[command(subcommand)]
+    Params(cmd::params::Command),
 }
 
 fn main() -> ExitCode {
@@ -42,6 +48,8 @@ fn main() -> ExitCode {
         Command::Hps(c) => cmd::hps::run(c),
         Command::Tire(c) => cmd::tire::run(c),
         Command::Measures(c) => cmd::measures::run(c),
+        Command::Yaw(c) => cmd::yaw::run(c),
+        Command::Params(c) => cmd::params::run(c),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

@@ -5,6 +5,8 @@ pub mod evaluate;
 pub mod hps;
 pub mod tire;
 pub mod measures;
+pub mod params;
+pub mod yaw;
 
 /// Result of a subcommand: errors are printed as one line by `main`.
 pub type CmdResult = Result<(), Box<dyn std::error::Error>>;

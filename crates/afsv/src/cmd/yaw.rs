@@ -1,0 +1,403 @@
+//! `afsv yaw`: the yaw-plane AFSV model with hydraulic frame steering (chapters 3-4):
+//! simulate a manoeuvre into a record, the yaw-plane measures, the sensitivity table and
+//! the leakage analyses.
+
+use super::CmdResult;
+use afsv::record::Record;
+use afsv_dynamics::analysis::{
+    gain_efficiency_correlation, measures_for, steady_turn_decay, MeasureSpec,
+};
+use afsv_dynamics::{
+    sensitivity, simulate, Course, EquationForm, Load, Manoeuvre, PathDriver, SimOptions,
+    SolverKind, SteerInput, YawPlaneParams,
+};
+use std::path::{Path, PathBuf};
+
+/// Load condition (Table 3.1 column).
+#[derive(Clone, Copy, Debug, clap::ValueEnum)]
+pub enum LoadChoice {
+    /// Rated payload.
+    Loaded,
+    /// Empty.
+    Unloaded,
+}
+
+impl From<LoadChoice> for Load {
+    fn from(l: LoadChoice) -> Self {
+        match l {
+            LoadChoice::Loaded => Load::Loaded,
+            LoadChoice::Unloaded => Load::Unloaded,
+        }
+    }
+}
+
+/// Form of the yaw equations.
+#[derive(Clone, Copy, Debug, clap::ValueEnum)]
+pub enum FormChoice {
+    /// Newton-Euler about the joint, conserves energy (default).
+    #[value(name = "energy-consistent")]
+    EnergyConsistent,
+    /// Eq 3.13 as printed (m L^2 counted twice in the yaw inertias).
+    #[value(name = "paper-eq-3-13")]
+    Paper,
+}
+
+impl From<FormChoice> for EquationForm {
+    fn from(f: FormChoice) -> Self {
+        match f {
+            FormChoice::EnergyConsistent => EquationForm::EnergyConsistent,
+            FormChoice::Paper => EquationForm::PaperEq313,
+        }
+    }
+}
+
+/// Integrator.
+#[derive(Clone, Copy, Debug, clap::ValueEnum)]
+pub enum SolverChoice {
+    /// Adaptive Dormand-Prince 5(4) (default, fastest by measurement).
+    Dopri,
+    /// Adaptive linearly implicit Rosenbrock 2(3).
+    Rosenbrock,
+    /// Fixed-step RK4 (step 0.2 ms).
+    Rk4,
+}
+
+/// Options shared by the subcommands that build a vehicle.
+#[derive(clap::Args, Debug)]
+pub struct VehicleArgs {
+    /// Load condition (Table 3.1); ignored when --params is given.
+    #[arg(long, value_enum, default_value = "loaded")]
+    pub load: LoadChoice,
+    /// Constant forward speed (km/h).
+    #[arg(long, default_value_t = 50.0)]
+    pub speed_kmh: f64,
+    /// Parameter file (JSON, as written by `afsv params dump yaw-plane`), validated.
+    #[arg(long)]
+    pub params: Option<PathBuf>,
+    /// Form of the yaw equations.
+    #[arg(long, value_enum, default_value = "energy-consistent")]
+    pub form: FormChoice,
+}
+
+/// `afsv yaw` subcommands.
+#[derive(clap::Subcommand, Debug)]
+pub enum Command {
+    /// Simulate one manoeuvre and write the record (CSV + JSON sidecar, DESIGN.md format).
+    Simulate {
+        #[command(flatten)]
+        vehicle: VehicleArgs,
+        /// Steering input: `pulse[:PEAK_DEG]` (0.2 s half-sine, default 30 deg),
+        /// `step:DEG`, `ramp:DEG_PER_S[:LIMIT_DEG]`, `csv:FILE:COLUMN` (a record's column in
+        /// deg or rad, with `time_s`), `turn` (13.5 m steady-turn course with the driver,
+        /// Fig 3.6a) or `path-change` (4.5 m / 18 m gate course, Fig 3.6b).
+        #[arg(long, default_value = "pulse")]
+        input: String,
+        /// Input time of pulse, step and ramp (s).
+        #[arg(long, default_value_t = 0.5)]
+        input_time: f64,
+        /// Simulated time (s).
+        #[arg(long, default_value_t = 10.0)]
+        duration: f64,
+        /// Output sample interval (s).
+        #[arg(long, default_value_t = 0.005)]
+        dt: f64,
+        /// Integrator.
+        #[arg(long, value_enum, default_value = "dopri")]
+        solver: SolverChoice,
+        /// Relative tolerance of the adaptive integrators.
+        #[arg(long, default_value_t = 1e-5)]
+        rtol: f64,
+        /// Output CSV file (the sidecar goes beside it with extension .json).
+        #[arg(short = 'o', long)]
+        output: PathBuf,
+    },
+    /// Yaw-mode frequency and damping (0.2 s pulse), steering gain, 0-100 % rise time,
+    /// overshoot (30 deg step) and power efficiency (Eq 4.7), as JSON.
+    Measures {
+        #[command(flatten)]
+        vehicle: VehicleArgs,
+    },
+    /// Sensitivity of the measures to A_0, B_eff, mu_v and k_l at -30, -15, +15, +30 %,
+    /// loaded and unloaded (section 3.4.3), as JSON or a readable table.
+    Sensitivity {
+        /// Constant forward speed (km/h).
+        #[arg(long, default_value_t = 50.0)]
+        speed_kmh: f64,
+        /// Form of the yaw equations.
+        #[arg(long, value_enum, default_value = "energy-consistent")]
+        form: FormChoice,
+        /// Print a readable table instead of JSON.
+        #[arg(long)]
+        table: bool,
+    },
+    /// Leakage effects: steady-turning articulation decay at the Table 3.2 speeds
+    /// (section 3.4.1) and the gain-efficiency correlation over a leakage sweep (Fig 4.7).
+    Leakage {
+        /// Steering-wheel angle held in the steady turn (deg).
+        #[arg(long, default_value_t = 300.0)]
+        steer_wheel_deg: f64,
+    },
+}
+
+fn kmh(v: f64) -> Result<f64, String> {
+    if v.is_finite() && v >= 0.0 {
+        Ok(v / 3.6)
+    } else {
+        Err(format!("--speed-kmh must be finite and >= 0, got {v}"))
+    }
+}
+
+/// Parameter set from `--params` or the nominal one for `--load`.
+fn load_params(v: &VehicleArgs) -> Result<YawPlaneParams, Box<dyn std::error::Error>> {
+    match &v.params {
+        None => Ok(YawPlaneParams::nominal(v.load.into())),
+        Some(path) => read_params(path),
+    }
+}
+
+/// Read and validate a yaw-plane parameter file.
+pub fn read_params(path: &Path) -> Result<YawPlaneParams, Box<dyn std::error::Error>> {
+    let text = std::fs::read_to_string(path).map_err(|e| format!("{}: {e}", path.display()))?;
+    let p: YawPlaneParams =
+        serde_json::from_str(&text).map_err(|e| format!("{}: {e}", path.display()))?;
+    p.validate()
+        .map_err(|e| format!("{}: {e}", path.display()))?;
+    Ok(p)
+}
+
+fn parse_number(what: &str, s: &str) -> Result<f64, String> {
+    s.parse::<f64>()
+        .ok()
+        .filter(|v| v.is_finite())
+        .ok_or_else(|| format!("--input {what}: `{s}` is not a finite number"))
+}
+
+/// Parse the `--input` specification into a manoeuvre.
+fn parse_input(
+    spec: &str,
+    speed: f64,
+    t0: f64,
+    duration: f64,
+) -> Result<Manoeuvre, Box<dyn std::error::Error>> {
+    let parts: Vec<&str> = spec.splitn(3, ':').collect();
+    let open = |input: SteerInput, label: &str| Manoeuvre::open_loop(speed, duration, input, label);
+    let m = match parts.as_slice() {
+        ["pulse"] => open(SteerInput::pulse_deg(30.0, 0.2, t0), "pulse"),
+        ["pulse", a] => open(
+            SteerInput::pulse_deg(parse_number("pulse peak", a)?, 0.2, t0),
+            "pulse",
+        ),
+        ["step", a] => open(SteerInput::step_deg(parse_number("step", a)?, t0), "step"),
+        ["ramp", r] => open(
+            SteerInput::Ramp {
+                rate_rad_s: parse_number("ramp rate", r)?.to_radians(),
+                start_s: t0,
+                limit_rad: 720f64.to_radians(),
+            },
+            "ramp",
+        ),
+        ["ramp", r, l] => open(
+            SteerInput::Ramp {
+                rate_rad_s: parse_number("ramp rate", r)?.to_radians(),
+                start_s: t0,
+                limit_rad: parse_number("ramp limit", l)?.abs().to_radians(),
+            },
+            "ramp",
+        ),
+        ["csv", file, column] => {
+            let path = Path::new(file);
+            let rec = Record::read(path)?;
+            let t = rec.require("time_s", path)?.to_vec();
+            let col = rec.require(column, path)?;
+            let scale = if column.ends_with("_deg") {
+                std::f64::consts::PI / 180.0
+            } else if column.ends_with("_rad") {
+                1.0
+            } else {
+                return Err(format!(
+                    "--input csv: column `{column}` must end in _deg or _rad to state its unit"
+                )
+                .into());
+            };
+            let input = SteerInput::Table {
+                time_s: t,
+                angle_rad: col.iter().map(|v| v * scale).collect(),
+            };
+            input.validate()?;
+            open(input, "csv")
+        }
+        ["turn"] => Manoeuvre::course(
+            speed,
+            duration,
+            PathDriver::new(Course::steady_turn_fig_3_6()),
+            "steady_turn",
+        ),
+        ["path-change"] => Manoeuvre::course(
+            speed,
+            duration,
+            PathDriver::new(Course::path_change_fig_3_6()),
+            "path_change",
+        ),
+        _ => {
+            return Err(format!(
+                "--input `{spec}` not understood (expected pulse[:DEG], step:DEG, ramp:DEG_S[:LIMIT_DEG], csv:FILE:COLUMN, turn or path-change)"
+            )
+            .into())
+        }
+    };
+    Ok(m)
+}
+
+/// Run an `afsv yaw` subcommand.
+pub fn run(cmd: Command) -> CmdResult {
+    match cmd {
+        Command::Simulate {
+            vehicle,
+            input,
+            input_time,
+            duration,
+            dt,
+            solver,
+            rtol,
+            output,
+        } => {
+            let p = load_params(&vehicle)?;
+            let speed = kmh(vehicle.speed_kmh)?;
+            let sys = p.afs_system()?;
+            let man = parse_input(&input, speed, input_time, duration)?;
+            let opts = SimOptions {
+                solver: match solver {
+                    SolverChoice::Dopri => SolverKind::Dopri5,
+                    SolverChoice::Rosenbrock => SolverKind::Rosenbrock23,
+                    SolverChoice::Rk4 => SolverKind::Rk4,
+                },
+                rtol,
+                atol: rtol * 0.1,
+                output_dt_s: dt,
+                form: vehicle.form.into(),
+                ..SimOptions::default()
+            };
+            let rec = simulate(&p.vehicle, &sys, &man, &opts)?;
+            let mut out = Record::new();
+            for (name, values) in rec.columns() {
+                out.push_column(&name, values.to_vec())?;
+            }
+            let form: EquationForm = vehicle.form.into();
+            out.meta = serde_json::json!({
+                "sample_rate_hz": 1.0 / dt,
+                "model": "afsv-dynamics yaw-plane (chapter 3)",
+                "equation_form": form,
+                "manoeuvre": man.label,
+                "input": input,
+                "speed_m_s": speed,
+                "load": p.load,
+                "excitation": input,
+                "params": p,
+                "solver": opts.solver,
+                "rtol": opts.rtol,
+                "solver_stats": rec.stats,
+            });
+            out.write(&output)?;
+            afsv::output::print_json(&serde_json::json!({
+                "output": output,
+                "sidecar": output.with_extension("json"),
+                "samples": rec.time_s.len(),
+                "columns": out.names(),
+                "peak_articulation_deg": rec.articulation_deg.iter().fold(0.0f64, |m, v| if v.abs() > m.abs() { *v } else { m }),
+                "solver_stats": rec.stats,
+            }))?;
+        }
+        Command::Measures { vehicle } => {
+            let p = load_params(&vehicle)?;
+            let speed = kmh(vehicle.speed_kmh)?;
+            let mut spec = MeasureSpec::default();
+            spec.options.form = vehicle.form.into();
+            let m = measures_for(&p.vehicle, &p.afs, p.load, speed, &spec)?;
+            afsv::output::print_json(&m)?;
+        }
+        Command::Sensitivity {
+            speed_kmh,
+            form,
+            table,
+        } => {
+            let mut spec = MeasureSpec::default();
+            spec.options.form = form.into();
+            let t = sensitivity(kmh(speed_kmh)?, &spec)?;
+            if table {
+                println!(
+                    "Percent change of the measures (section 3.4.3), {speed_kmh} km/h, {:?}",
+                    spec.options.form
+                );
+                println!(
+                    "{:<9} {:<6} {:>5}  {:>9} {:>9} {:>9} {:>9} {:>9} {:>9}",
+                    "load",
+                    "param",
+                    "var%",
+                    "freq",
+                    "damping",
+                    "gain",
+                    "rate",
+                    "overshoot",
+                    "effic."
+                );
+                for r in &t.rows {
+                    let c = r.change;
+                    println!(
+                        "{:<9} {:<6} {:>+5.0}  {:>+9.2} {:>+9.2} {:>+9.2} {:>+9.2} {:>+9.2} {:>+9.2}",
+                        r.load.name(),
+                        r.parameter.symbol(),
+                        r.variation_percent,
+                        c.frequency,
+                        c.damping,
+                        c.gain,
+                        c.response_rate,
+                        c.overshoot,
+                        c.efficiency
+                    );
+                }
+                for n in &t.nominal {
+                    println!(
+                        "nominal {:<9}: f = {:.3} Hz, zeta = {:.4}, gain = {:.4}, rise = {:.3} s, OS = {:.1} %, eta = {:.4}",
+                        n.load.map(|l| l.name()).unwrap_or("-"),
+                        n.natural_frequency_hz,
+                        n.damping_ratio,
+                        n.steering_gain,
+                        n.rise_time_s,
+                        n.overshoot_percent,
+                        n.power_efficiency
+                    );
+                }
+            } else {
+                afsv::output::print_json(&t)?;
+            }
+        }
+        Command::Leakage { steer_wheel_deg } => {
+            if !steer_wheel_deg.is_finite() {
+                return Err("--steer-wheel-deg must be finite".into());
+            }
+            let opts = SimOptions::default();
+            let mut decay = Vec::new();
+            for load in Load::ALL {
+                for &v in afsv_dynamics::table_3_2_speeds_kmh(
+                    afsv_dynamics::FieldCourse::SteadyTurn,
+                    load,
+                ) {
+                    decay.push(steady_turn_decay(
+                        load,
+                        v / 3.6,
+                        steer_wheel_deg,
+                        10.0,
+                        &opts,
+                    )?);
+                }
+            }
+            let ge =
+                gain_efficiency_correlation(Load::Loaded, 50.0 / 3.6, &MeasureSpec::default())?;
+            afsv::output::print_json(&serde_json::json!({
+                "steady_turn_decay": decay,
+                "gain_efficiency_fig_4_7": ge,
+            }))?;
+        }
+    }
+    Ok(())
+}
