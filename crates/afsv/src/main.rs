@@ -23,12 +23,15 @@ enum Command {
     /// Hydro-pneumatic suspension strut with gas-oil emulsion: `harmonic`, `characterize`, `identify`.
     #[command(subcommand)]
     Hps(cmd::hps::Command),
-    /// Tire forces (Fiala) and terrain enveloping: `sweep`, `envelope`.
-    #[command(subcommand)]
-    Tire(cmd::tire::Command),
     /// Performance measures: ISO 2631-1 weightings and exposure, free-decay fit, step metrics.
     #[command(subcommand)]
     Measures(cmd::measures::Command),
+    /// Terrain profiles: synthesize two tracks with a PSD and coherence (`generate`), estimate spectra (`psd`).
+    #[command(subcommand)]
+    Terrain(cmd::terrain::Command),
+    /// Tire forces (Fiala) and terrain enveloping: `sweep`, `envelope`.
+    #[command(subcommand)]
+    Tire(cmd::tire::Command),
     /// Yaw-plane vehicle with hydraulic frame steering: `simulate`, `measures`, `sensitivity`, `leakage`.
     #[command(subcommand)]
     Yaw(cmd::yaw::Command),
@@ -46,8 +49,9 @@ fn main() -> ExitCode {
     let result = match cli.command {
         Command::Evaluate(args) => cmd::evaluate::run(args),
         Command::Hps(c) => cmd::hps::run(c),
-        Command::Tire(c) => cmd::tire::run(c),
         Command::Measures(c) => cmd::measures::run(c),
+        Command::Terrain(c) => cmd::terrain::run(c),
+        Command::Tire(c) => cmd::tire::run(c),
         Command::Yaw(c) => cmd::yaw::run(c),
         Command::Params(c) => cmd::params::run(c),
     };

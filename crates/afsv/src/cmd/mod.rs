@@ -3,9 +3,10 @@
 
 pub mod evaluate;
 pub mod hps;
-pub mod tire;
 pub mod measures;
 pub mod params;
+pub mod terrain;
+pub mod tire;
 pub mod yaw;
 
 /// Result of a subcommand: errors are printed as one line by `main`.

@@ -1,0 +1,417 @@
+//! `afsv terrain`: two-track terrain synthesis and spectral estimates (crate `terrain-psd`).
+
+use super::CmdResult;
+use afsv::record::Record;
+use serde_json::{json, Value};
+use std::path::{Path, PathBuf};
+use terrain_psd::{
+    cross_slope_psd, cross_spectrum, synthesize, welch_psd, Band, CoherenceModel, Detrend,
+    IsoClass, OffRoadTerrain, PowerLawPsd, TwoTrackSpec, WelchConfig, Window,
+};
+
+/// Track width of the 35-t AFSV (Table 6.1), the default for the cross-slope PSD.
+const DEFAULT_TRACK_WIDTH_M: f64 = terrain_psd::summary::AFSV_TRACK_WIDTH_M;
+
+/// Subcommands of `afsv terrain`.
+#[derive(clap::Subcommand)]
+pub enum Command {
+    /// Synthesize left/right terrain profiles whose PSD and coherence follow a model
+    ///
+    /// The displacement PSD is G_d(n) = alpha_r n^-w (Eq 2.8) on the band
+    /// [n_min, n_max] (zero outside), chosen with one of --class, --terrain or
+    /// --alpha/--waviness (default: ISO 8608 class E, the paper's nominal off-road terrain,
+    /// section 6.2.3). The coherence of the two tracks follows --coherence. Profiles come
+    /// from random-phase spectral synthesis (see docs/terrain-psd.md): their expected PSD and
+    /// coherence equal the targets on every synthesized line. Same seed, same bytes.
+    ///
+    /// Output: with -o FILE, writes CSV columns x_m,left_m,right_m (x_i = i dx, elevations
+    /// in m) plus a JSON sidecar beside it (FILE with extension .json) that records the model,
+    /// and prints a short JSON summary on stdout. Without -o, prints one JSON object with
+    /// the model and the arrays x_m, left_m, right_m on stdout.
+    #[command(verbatim_doc_comment)]
+    Generate(GenerateArgs),
+    /// Estimate the PSDs, cross-spectrum, coherence and cross-slope PSD of a profile file
+    ///
+    /// Reads a CSV with columns x_m (uniformly spaced), left_m and optionally right_m (as
+    /// written by `afsv terrain generate -o`) and prints JSON: Welch one-sided PSDs
+    /// (m^3 = m^2/(cycle/m)), and with right_m also the cross-spectral density (conj(L) R),
+    /// the magnitude-squared coherence (Eq 2.9) and the PSD of the cross-slope angle
+    /// (left - right)/B in rad^2/(cycle/m) (roll excitation, Fig 2.7), on frequencies
+    /// n_cycles_per_m. When the file's sidecar records the model (generate -o writes it),
+    /// the targets and the band-averaged errors are included under "target".
+    #[command(verbatim_doc_comment)]
+    Psd(PsdArgs),
+}
+
+/// Options of `afsv terrain generate`.
+#[derive(clap::Args)]
+#[command(allow_negative_numbers = true)]
+pub struct GenerateArgs {
+    /// ISO 8608 class A-H: G_d(n0 = 0.1 cycles/m) = 16e-6 * 4^k m^3 (A 16e-6, B 64e-6,
+    /// C 256e-6, D 1024e-6, E 4096e-6, F 16384e-6, G 65536e-6, H 262144e-6), waviness 2,
+    /// i.e. alpha_r = G_d(n0) * 0.01 (Table 2.4 for A-E). Default: E.
+    #[arg(long, value_name = "A..H")]
+    pub class: Option<String>,
+    /// Off-road terrain of Tables 1.2/2.4: forestry (alpha_r 1.00e-4, w 1.76), pasture
+    /// (3.00e-4, 1.60), mvee (3.16e-4, 2.27) or plowed (6.50e-4, 1.60).
+    #[arg(long, value_name = "NAME")]
+    pub terrain: Option<String>,
+    /// Roughness coefficient alpha_r > 0 of G_d(n) = alpha_r n^-w (Eq 2.8), n in cycles/m,
+    /// G_d in m^3 (4.096e-5 is class E); requires --waviness.
+    #[arg(long, value_name = "ALPHA_R")]
+    pub alpha: Option<f64>,
+    /// Waviness w of Eq 2.8, 0 <= w <= 10 (ISO 8608: 2); requires --alpha.
+    #[arg(long, value_name = "W")]
+    pub waviness: Option<f64>,
+    /// Spatial band N_MIN,N_MAX in cycles/m outside which the PSD is zero
+    /// (0 < N_MIN < N_MAX <= 1/(2 dx)).
+    #[arg(long, value_name = "N_MIN,N_MAX", default_value = "0.02,5")]
+    pub band: String,
+    /// Coherence of the two tracks: piecewise:M_C (Eq 2.10/6.5, gamma^2 = 1 - 0.9 n/M_C up
+    /// to M_C cycles/m, 0.1 above), bogsjo:RHO (Eq 1.9, gamma = exp(-2 RHO T n), needs
+    /// --half-track), zhang (Eq 1.8, 1 - 0.45 f up to f = n u = 2 Hz, 0.1 above, needs
+    /// --speed), full (identical tracks) or none (independent tracks).
+    #[arg(long, value_name = "MODEL", default_value = "piecewise:0.3")]
+    pub coherence: String,
+    /// Half-track width T in m for --coherence bogsjo:RHO (e.g. 1.14 for the 2.28 m track
+    /// of Table 6.1).
+    #[arg(long, value_name = "M")]
+    pub half_track: Option<f64>,
+    /// Forward speed u in m/s for --coherence zhang (50 km/h = 13.89 m/s).
+    #[arg(long, value_name = "M_PER_S")]
+    pub speed: Option<f64>,
+    /// Profile length in m; samples x_i = i dx for i = 0..=round(length/dx).
+    #[arg(long, value_name = "M", default_value_t = 100.0)]
+    pub length: f64,
+    /// Sample spacing dx in m.
+    #[arg(long, value_name = "M", default_value_t = 0.05)]
+    pub dx: f64,
+    /// Seed of the random phases (ChaCha8); the same seed gives the same profile.
+    #[arg(long, default_value_t = 1)]
+    pub seed: u64,
+    /// Write the profile as CSV (x_m,left_m,right_m) to this file and the model to the
+    /// sidecar FILE.json; stdout then gets a short JSON summary.
+    #[arg(short, long, value_name = "FILE")]
+    pub output: Option<PathBuf>,
+}
+
+/// Options of `afsv terrain psd`.
+#[derive(clap::Args)]
+#[command(allow_negative_numbers = true)]
+pub struct PsdArgs {
+    /// Profile CSV with columns x_m, left_m and optionally right_m.
+    #[arg(short, long, value_name = "FILE")]
+    pub input: PathBuf,
+    /// Welch segment length in m (rounded to whole samples; frequency resolution is
+    /// 1/segment). Default: the largest power-of-two number of samples <= 1/8 of the
+    /// record (>= 15 half-overlapping segments).
+    #[arg(long, value_name = "M")]
+    pub segment_m: Option<f64>,
+    /// Fractional overlap of consecutive segments, 0 <= overlap < 1.
+    #[arg(long, value_name = "FRACTION", default_value_t = 0.5)]
+    pub overlap: f64,
+    /// Segment window: hann (periodic Hann) or rectangular.
+    #[arg(long, value_name = "WINDOW", default_value = "hann")]
+    pub window: String,
+    /// Per-segment detrending: none, mean or linear.
+    #[arg(long, value_name = "DETREND", default_value = "mean")]
+    pub detrend: String,
+    /// Track width B in m for the cross-slope angle (left - right)/B (default: the 2.28 m
+    /// track of the 35-t AFSV, Table 6.1).
+    #[arg(long, value_name = "M", default_value_t = DEFAULT_TRACK_WIDTH_M)]
+    pub track_width: f64,
+    /// Report only frequencies N_MIN <= n <= N_MAX (cycles/m); default: all bins from 0 to
+    /// the Nyquist frequency 1/(2 dx).
+    #[arg(long, value_name = "N_MIN,N_MAX")]
+    pub band: Option<String>,
+}
+
+/// Run `afsv terrain ...`.
+pub fn run(cmd: Command) -> CmdResult {
+    match cmd {
+        Command::Generate(a) => generate(a),
+        Command::Psd(a) => psd(a),
+    }
+}
+
+/// The PSD model chosen by the options, with a description.
+fn psd_model(a: &GenerateArgs) -> Result<(PowerLawPsd, String), String> {
+    let chosen = [a.class.is_some(), a.terrain.is_some(), a.alpha.is_some()];
+    if chosen.iter().filter(|c| **c).count() > 1 {
+        return Err("choose one PSD model: --class, --terrain or --alpha/--waviness".into());
+    }
+    if a.alpha.is_some() != a.waviness.is_some() {
+        return Err("--alpha and --waviness go together (G_d = alpha_r n^-w, Eq 2.8)".into());
+    }
+    if let (Some(alpha), Some(w)) = (a.alpha, a.waviness) {
+        let m = PowerLawPsd::new(alpha, w).map_err(|e| format!("--alpha/--waviness: {e}"))?;
+        return Ok((
+            m,
+            format!("user power law alpha_r = {alpha:e}, w = {w} (Eq 2.8)"),
+        ));
+    }
+    if let Some(t) = &a.terrain {
+        let t: OffRoadTerrain = t.parse().map_err(|e| format!("--terrain: {e}"))?;
+        let m = PowerLawPsd::off_road(t);
+        return Ok((
+            m,
+            format!(
+                "off-road terrain {t} (Tables 1.2/2.4): alpha_r = {:e}, w = {}",
+                m.alpha_r, m.waviness
+            ),
+        ));
+    }
+    let class: IsoClass = match &a.class {
+        Some(c) => c.parse().map_err(|e| format!("--class: {e}"))?,
+        None => IsoClass::E,
+    };
+    let m = PowerLawPsd::iso(class);
+    Ok((
+        m,
+        format!(
+            "ISO 8608 class {class}: G_d(n0) = {:e} m^3, alpha_r = {:e}, w = 2",
+            class.gd_n0(),
+            m.alpha_r
+        ),
+    ))
+}
+
+fn coherence_model(a: &GenerateArgs) -> Result<CoherenceModel, String> {
+    let c = CoherenceModel::parse(&a.coherence, a.half_track, a.speed)
+        .map_err(|e| format!("--coherence: {e}"))?;
+    if a.half_track.is_some() && !matches!(c, CoherenceModel::Bogsjo { .. }) {
+        return Err("--half-track is only used with --coherence bogsjo:RHO".into());
+    }
+    if a.speed.is_some() && !matches!(c, CoherenceModel::Zhang { .. }) {
+        return Err("--speed is only used with --coherence zhang".into());
+    }
+    Ok(c)
+}
+
+/// `x_i = i dx`, rounded to 1 nm when dx >= 1 um so that the CSV shows 0.15, not
+/// 0.15000000000000002.
+fn x_column(n: usize, dx: f64) -> Vec<f64> {
+    (0..n)
+        .map(|i| {
+            let x = i as f64 * dx;
+            if dx >= 1e-6 {
+                (x * 1e9).round() / 1e9
+            } else {
+                x
+            }
+        })
+        .collect()
+}
+
+fn rms(v: &[f64]) -> f64 {
+    let m = v.iter().sum::<f64>() / v.len() as f64;
+    (v.iter().map(|x| (x - m) * (x - m)).sum::<f64>() / v.len() as f64).sqrt()
+}
+
+fn generate(a: GenerateArgs) -> CmdResult {
+    let (psd, model) = psd_model(&a)?;
+    let band: Band = a.band.parse().map_err(|e| format!("--band: {e}"))?;
+    let coherence = coherence_model(&a)?;
+    let spec = TwoTrackSpec::new(psd, band, coherence)?;
+    let prof = synthesize(&spec, a.length, a.dx, a.seed)?;
+    let meta = json!({
+        "generator": "afsv terrain generate",
+        "description": format!("{model}; band {}-{} cycles/m; coherence {}", band.n_min, band.n_max, coherence),
+        "terrain": spec,
+        "seed": a.seed,
+        "length_m": prof.length_m(),
+        "dx_m": a.dx,
+        "samples": prof.len(),
+        "rms_target_m": spec.variance().sqrt(),
+    });
+    match &a.output {
+        Some(path) => {
+            if path
+                .extension()
+                .is_some_and(|e| e.eq_ignore_ascii_case("json"))
+            {
+                return Err(format!(
+                    "-o {}: the profile is CSV and its sidecar takes the .json name; use e.g. profile.csv",
+                    path.display()
+                )
+                .into());
+            }
+            let mut rec = Record::new();
+            rec.push_column("x_m", x_column(prof.len(), a.dx))?;
+            rec.push_column("left_m", prof.left_m.clone())?;
+            rec.push_column("right_m", prof.right_m.clone())?;
+            rec.meta = meta.clone();
+            rec.write(path)?;
+            let mut out = meta;
+            out["output"] = json!(path.display().to_string());
+            out["sidecar"] = json!(path.with_extension("json").display().to_string());
+            out["rms_left_m"] = json!(rms(&prof.left_m));
+            out["rms_right_m"] = json!(rms(&prof.right_m));
+            afsv::output::print_json(&out)?;
+        }
+        None => {
+            let mut out = meta;
+            out["rms_left_m"] = json!(rms(&prof.left_m));
+            out["rms_right_m"] = json!(rms(&prof.right_m));
+            out["x_m"] = json!(x_column(prof.len(), a.dx));
+            out["left_m"] = json!(prof.left_m);
+            out["right_m"] = json!(prof.right_m);
+            afsv::output::print_json(&out)?;
+        }
+    }
+    Ok(())
+}
+
+/// Uniform spacing of the `x_m` column.
+fn spacing(x: &[f64], path: &Path) -> Result<f64, String> {
+    let p = path.display();
+    if x.len() < 2 {
+        return Err(format!("{p}: needs at least 2 rows, has {}", x.len()));
+    }
+    let dx = (x[x.len() - 1] - x[0]) / (x.len() - 1) as f64;
+    if dx.is_nan() || dx <= 0.0 {
+        return Err(format!("{p}: x_m must increase"));
+    }
+    for (i, w) in x.windows(2).enumerate() {
+        let step = w[1] - w[0];
+        if (step - dx).abs() > 1e-6 * dx {
+            return Err(format!(
+                "{p}: x_m is not uniformly spaced (row {}: step {step} m, mean step {dx} m)",
+                i + 3
+            ));
+        }
+    }
+    Ok(dx)
+}
+
+fn select(v: &[f64], keep: &[usize]) -> Vec<f64> {
+    keep.iter().map(|&k| v[k]).collect()
+}
+
+fn psd(a: PsdArgs) -> CmdResult {
+    let rec = Record::read(&a.input)?;
+    let x = rec.require("x_m", &a.input)?;
+    let left = rec.require("left_m", &a.input)?;
+    let right = rec.column("right_m");
+    let dx = spacing(x, &a.input)?;
+    let mut cfg = match a.segment_m {
+        Some(s) => WelchConfig::with_segment_m(s, dx).map_err(|e| format!("--segment-m: {e}"))?,
+        None => WelchConfig::auto(left.len())?,
+    };
+    cfg.overlap = a.overlap;
+    cfg.window = a
+        .window
+        .parse::<Window>()
+        .map_err(|e| format!("--window: {e}"))?;
+    cfg.detrend = a
+        .detrend
+        .parse::<Detrend>()
+        .map_err(|e| format!("--detrend: {e}"))?;
+    cfg.validate(left.len())
+        .map_err(|e| format!("{}: {e}", a.input.display()))?;
+    if !(a.track_width.is_finite() && a.track_width > 0.0) {
+        return Err(format!(
+            "--track-width {}: must be a finite number > 0",
+            a.track_width
+        )
+        .into());
+    }
+    let band: Option<Band> = match &a.band {
+        Some(b) => Some(b.parse().map_err(|e| format!("--band: {e}"))?),
+        None => None,
+    };
+    let left_spec = welch_psd(left, dx, &cfg)?;
+    let keep: Vec<usize> = (0..left_spec.freq.len())
+        .filter(|&k| band.is_none_or(|b| b.contains(left_spec.freq[k])))
+        .collect();
+    let freq = select(&left_spec.freq, &keep);
+    let mut out = json!({
+        "input": a.input.display().to_string(),
+        "samples": left.len(),
+        "dx_m": dx,
+        "length_m": dx * (left.len() - 1) as f64,
+        "welch": {
+            "segment_samples": cfg.segment_len,
+            "segment_m": cfg.segment_len as f64 * dx,
+            "overlap": cfg.overlap,
+            "window": cfg.window.to_string(),
+            "detrend": cfg.detrend.to_string(),
+            "segments": left_spec.segments,
+            "resolution_cycles_per_m": left_spec.df,
+        },
+        "variance_left_m2": rms(left).powi(2),
+        "psd_integral_left_m2": left_spec.integral(),
+    });
+    let mut spectrum = json!({
+        "n_cycles_per_m": freq,
+        "psd_left_m3": select(&left_spec.psd, &keep),
+    });
+    if let Some(right) = right {
+        let cs = cross_spectrum(left, right, dx, &cfg)?;
+        let slope = cross_slope_psd(left, right, dx, a.track_width, &cfg)?;
+        out["variance_right_m2"] = json!(rms(right).powi(2));
+        out["psd_integral_right_m2"] = json!(cs.pyy.iter().sum::<f64>() * cs.df);
+        out["track_width_m"] = json!(a.track_width);
+        out["cross_slope_rms_rad"] = json!(rms(&left
+            .iter()
+            .zip(right)
+            .map(|(l, r)| (l - r) / a.track_width)
+            .collect::<Vec<_>>()));
+        spectrum["psd_right_m3"] = json!(select(&cs.pyy, &keep));
+        spectrum["csd_re_m3"] = json!(select(&cs.csd_re, &keep));
+        spectrum["csd_im_m3"] = json!(select(&cs.csd_im, &keep));
+        spectrum["coherence"] = json!(select(&cs.coherence, &keep));
+        spectrum["cross_slope_psd_rad2_per_cycle_per_m"] = json!(select(&slope.psd, &keep));
+        if let Some(spec) = sidecar_spec(&rec.meta) {
+            out["target"] = target_report(&spec, &freq, &keep, &cs, a.track_width);
+        }
+    }
+    out["spectrum"] = spectrum;
+    afsv::output::print_json(&out)?;
+    Ok(())
+}
+
+/// The terrain model recorded in a sidecar by `afsv terrain generate`, if any.
+fn sidecar_spec(meta: &Value) -> Option<TwoTrackSpec> {
+    let spec: TwoTrackSpec = serde_json::from_value(meta.get("terrain")?.clone()).ok()?;
+    spec.validate().ok().map(|_| spec)
+}
+
+/// Targets on the reported bins and band-averaged errors of the estimates.
+fn target_report(
+    spec: &TwoTrackSpec,
+    freq: &[f64],
+    keep: &[usize],
+    cs: &terrain_psd::CrossSpectrum,
+    track_width: f64,
+) -> Value {
+    let mut db = Vec::new();
+    let mut coh = Vec::new();
+    for (&n, &k) in freq.iter().zip(keep) {
+        if spec.band.contains(n) {
+            let g = spec.target_psd(n);
+            db.push(5.0 * ((cs.pxx[k] / g).log10() + (cs.pyy[k] / g).log10()));
+            coh.push(cs.coherence[k] - spec.target_msc(n));
+        }
+    }
+    let mean = |v: &[f64]| {
+        if v.is_empty() {
+            Value::Null
+        } else {
+            json!(v.iter().sum::<f64>() / v.len() as f64)
+        }
+    };
+    json!({
+        "terrain": spec,
+        "variance_m2": spec.variance(),
+        "band_bins": db.len(),
+        "psd_mean_error_db": mean(&db),
+        "coherence_mean_error": mean(&coh),
+        "psd_m3": freq.iter().map(|&n| spec.target_psd(n)).collect::<Vec<_>>(),
+        "coherence": freq.iter().map(|&n| spec.target_msc(n)).collect::<Vec<_>>(),
+        "cross_slope_psd_rad2_per_cycle_per_m": freq
+            .iter()
+            .map(|&n| spec.target_cross_slope_psd(n, track_width))
+            .collect::<Vec<_>>(),
+    })
+}
