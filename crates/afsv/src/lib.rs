@@ -7,3 +7,4 @@ pub mod discover;
 pub mod output;
 pub mod plot;
 pub mod record;
+pub mod synth;

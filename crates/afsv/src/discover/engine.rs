@@ -29,7 +29,7 @@ impl Default for DiscoveryOptions {
         Self {
             rule: SignificanceRule::default(),
             max_effects: 4,
-            max_iter: 40,
+            max_iter: 30,
             candidates: None,
             refit_baseline: true,
             split_hz: 2.0,
@@ -145,8 +145,9 @@ type Fitted = (FitOutcome, Config, f64);
 struct Layout {
     channels: Vec<String>,
     scales: Vec<f64>,
-    /// Per record: (channel index, offset into the residual vector, length).
-    segments: Vec<Vec<(usize, usize, usize)>>,
+    /// Per record: (channel index, first sample compared, offset into the residual vector,
+    /// length).
+    segments: Vec<Vec<(usize, usize, usize, usize)>>,
     n: usize,
 }
 
@@ -166,8 +167,9 @@ impl Layout {
             for (c, name) in channels.iter().enumerate() {
                 if let (Some(meas), Some(Some(p))) = (rec.column(name), pred.get(c)) {
                     let len = meas.len().min(p.len());
-                    segs.push((c, n, len));
-                    n += len;
+                    let skip = model.skip_samples(rec).min(len);
+                    segs.push((c, skip, n, len - skip));
+                    n += len - skip;
                 }
             }
             segments.push(segs);
@@ -201,7 +203,7 @@ impl Layout {
             .collect();
         for ((rec, segs), pred) in records.iter().zip(&self.segments).zip(preds) {
             let pred = pred?;
-            for &(c, off, len) in segs {
+            for &(c, skip, off, len) in segs {
                 let meas = rec
                     .column(&self.channels[c])
                     .ok_or("record lost a channel")?;
@@ -209,12 +211,12 @@ impl Layout {
                     .get(c)
                     .and_then(|p| p.as_ref())
                     .ok_or_else(|| format!("model stopped predicting `{}`", self.channels[c]))?;
-                if p.len() < len {
+                if p.len() < skip + len || meas.len() < skip + len {
                     return Err(format!("prediction of `{}` is too short", self.channels[c]));
                 }
                 let s = self.scales[c];
                 for i in 0..len {
-                    out[off + i] = (p[i] - meas[i]) / s;
+                    out[off + i] = (p[skip + i] - meas[skip + i]) / s;
                 }
             }
         }
@@ -225,7 +227,7 @@ impl Layout {
         self.segments
             .iter()
             .flatten()
-            .map(|&(_, off, len)| &r[off..off + len])
+            .map(|&(_, _, off, len)| &r[off..off + len])
             .collect()
     }
 }
@@ -353,7 +355,7 @@ impl<M: DiscoveryModel + ?Sized> Context<'_, M> {
                     xtol: 1e-8,
                     lower: Some(lower),
                     upper: Some(upper),
-                    diff_step: 1e-5,
+                    diff_step: 1e-3,
                     typical: Some(typical),
                 },
             )
@@ -496,7 +498,7 @@ impl<M: DiscoveryModel + ?Sized> Context<'_, M> {
         (0..layout.channels.len())
             .map(|c| {
                 let (mut s, mut n) = (0.0, 0usize);
-                for &(ch, off, len) in layout.segments.iter().flatten() {
+                for &(ch, _, off, len) in layout.segments.iter().flatten() {
                     if ch == c {
                         s += r[off..off + len].iter().map(|v| v * v).sum::<f64>();
                         n += len;
@@ -534,7 +536,7 @@ pub fn evaluate_errors<M: DiscoveryModel + ?Sized>(
     Ok((0..channels.len())
         .map(|c| {
             let (mut s, mut n) = (0.0, 0usize);
-            for &(ch, off, len) in layout.segments.iter().flatten() {
+            for &(ch, _, off, len) in layout.segments.iter().flatten() {
                 if ch == c {
                     s += r[off..off + len].iter().map(|v| v * v).sum::<f64>();
                     n += len;
@@ -700,7 +702,37 @@ fn discover_inner<M: DiscoveryModel + ?Sized>(
     let mut steps = Vec::new();
     let mut named = Vec::new();
     let mut best_unnamed = None;
+    // Noise floor of the held-out records in normalised units.
+    let mut noise_sum = 0.0;
+    let mut noise_n = 0usize;
+    for (rec, segs) in holdout.iter().zip(&ctx.lh.segments) {
+        for &(c, skip, _, len) in segs {
+            if let Some(meas) = rec.column(&channels[c]) {
+                noise_sum += stats::noise_variance(&meas[skip..skip + len])
+                    / (scales[c] * scales[c])
+                    * len as f64;
+                noise_n += len;
+            }
+        }
+    }
+    let holdout_noise_mse = if noise_n > 0 {
+        noise_sum / noise_n as f64
+    } else {
+        0.0
+    };
+    let baseline_gap = (calibrated.holdout_mse - holdout_noise_mse).max(0.0);
     while search && named.len() < opts.max_effects {
+        if !named.is_empty() {
+            // Refit the model as it stands, so that candidates are not credited with the
+            // improvement that more iterations on the same model would give anyway.
+            let (o, cfg, ne) = ctx.fit(current_cfg.clone(), Some(n_eff))?;
+            if o.train_mse <= current.train_mse {
+                current = o;
+                current_cfg = cfg;
+                n_eff = ne;
+            }
+            progress.fit_done("refit of the current model");
+        }
         let tried: Vec<usize> = (0..ctx.catalogue.len())
             .filter(|&e| !current_cfg.effects.iter().any(|(a, _)| *a == e))
             .filter(|&e| {
@@ -776,7 +808,13 @@ fn discover_inner<M: DiscoveryModel + ?Sized>(
         let accepted = choices.first().and_then(|(c, cfg)| {
             let o = c.outcome.as_ref().ok()?;
             opts.rule
-                .accepts(ref_bic, o.bic, current.holdout_mse, o.holdout_mse)
+                .accepts(
+                    ref_bic,
+                    o.bic,
+                    current.holdout_mse,
+                    o.holdout_mse,
+                    baseline_gap,
+                )
                 .then(|| (o.clone(), cfg.clone()))
         });
         let step_named = accepted
@@ -804,23 +842,6 @@ fn discover_inner<M: DiscoveryModel + ?Sized>(
         }
     }
 
-    // Noise floor of the held-out records in normalised units.
-    let mut noise_sum = 0.0;
-    let mut noise_n = 0usize;
-    for (rec, segs) in holdout.iter().zip(&ctx.lh.segments) {
-        for &(c, _, len) in segs {
-            if let Some(meas) = rec.column(&channels[c]) {
-                noise_sum +=
-                    stats::noise_variance(&meas[..len]) / (scales[c] * scales[c]) * len as f64;
-                noise_n += len;
-            }
-        }
-    }
-    let holdout_noise_mse = if noise_n > 0 {
-        noise_sum / noise_n as f64
-    } else {
-        0.0
-    };
     let gap_shrink = stats::gap_shrink(
         calibrated.holdout_mse,
         current.holdout_mse,

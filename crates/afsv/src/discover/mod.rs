@@ -14,6 +14,7 @@
 //!    and the gap shrink ([`report`]).
 
 mod engine;
+pub mod hps;
 pub mod signature;
 pub mod stats;
 
@@ -112,4 +113,9 @@ pub trait DiscoveryModel: Sync {
     ) -> Result<Vec<Option<Vec<f64>>>, String>;
     /// Phases of a record used to locate the disagreement (may be empty).
     fn phases(&self, record: &Record) -> Vec<Phase>;
+    /// Leading samples of a record left out of every comparison (start-up transient of a
+    /// simulation that starts from static equilibrium).
+    fn skip_samples(&self, _record: &Record) -> usize {
+        0
+    }
 }

@@ -90,6 +90,10 @@ pub struct SignificanceRule {
     pub min_bic_drop: f64,
     /// Required relative decrease of the held-out mean squared error.
     pub min_holdout_gain: f64,
+    /// Required decrease of the held-out error as a fraction of the calibrated baseline's
+    /// reducible gap (its held-out error above the noise floor): once most of the gap is
+    /// explained, polishing the last few percent does not name another effect.
+    pub min_gap_fraction: f64,
 }
 
 impl Default for SignificanceRule {
@@ -97,20 +101,34 @@ impl Default for SignificanceRule {
         Self {
             min_bic_drop: 10.0,
             min_holdout_gain: 0.05,
+            min_gap_fraction: 0.05,
         }
     }
 }
 
 impl SignificanceRule {
-    /// Whether going from (`bic_old`, `mse_old`) to (`bic_new`, `mse_new`) is significant.
-    pub fn accepts(&self, bic_old: f64, bic_new: f64, mse_old: f64, mse_new: f64) -> bool {
+    /// Whether going from (`bic_old`, `mse_old`) to (`bic_new`, `mse_new`) is significant,
+    /// given the calibrated baseline's reducible held-out gap `gap`.
+    pub fn accepts(
+        &self,
+        bic_old: f64,
+        bic_new: f64,
+        mse_old: f64,
+        mse_new: f64,
+        gap: f64,
+    ) -> bool {
         let bic_ok = bic_old - bic_new >= self.min_bic_drop;
         let gain = if mse_old > 0.0 {
             (mse_old - mse_new) / mse_old
         } else {
             0.0
         };
-        bic_ok && gain >= self.min_holdout_gain
+        let of_gap = if gap > 0.0 {
+            (mse_old - mse_new) / gap
+        } else {
+            0.0
+        };
+        bic_ok && gain >= self.min_holdout_gain && of_gap >= self.min_gap_fraction
     }
 }
 
@@ -168,11 +186,13 @@ mod tests {
     }
 
     #[test]
-    fn rule_needs_both_bic_and_holdout() {
+    fn rule_needs_bic_holdout_and_gap() {
         let r = SignificanceRule::default();
-        assert!(r.accepts(100.0, 50.0, 1.0, 0.5));
-        assert!(!r.accepts(100.0, 95.0, 1.0, 0.5));
-        assert!(!r.accepts(100.0, 50.0, 1.0, 0.99));
+        assert!(r.accepts(100.0, 50.0, 1.0, 0.5, 1.0));
+        assert!(!r.accepts(100.0, 95.0, 1.0, 0.5, 1.0));
+        assert!(!r.accepts(100.0, 50.0, 1.0, 0.99, 1.0));
+        // A 20 % gain on what is left after a 99 % shrink is not a new effect.
+        assert!(!r.accepts(100.0, 50.0, 0.01, 0.008, 1.0));
     }
 
     #[test]

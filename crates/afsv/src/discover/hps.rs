@@ -1,0 +1,364 @@
+//! The hydro-pneumatic strut as a [`DiscoveryModel`]: prescribed displacement in, force and
+//! chamber pressures out (bench records of DESIGN.md).
+//!
+//! Baseline: the strut without gas-oil emulsion (`gamma_0 = 0`) unless the user's parameter
+//! file says otherwise. Calibrated first: polytropic exponent `n`, static pressure `P_h0`,
+//! gas volume `V_g0`, Coulomb friction `F_c`, viscous friction `mu_v`, bleed-orifice
+//! discharge coefficient `C_b`. Catalogue (each a switchable extension of `hps-emulsion`):
+//! gas heat transfer, emulsion gas fraction with velocity growth, asymmetric seal friction,
+//! check-valve opening lag.
+
+use super::{ActiveEffect, DiscoveryModel, EffectSpec, ParamSpec, Phase};
+use crate::record::Record;
+use hps_emulsion::{
+    simulate_displacement, AsymmetricFriction, Excitation, GasFractionGrowth, HeatTransfer,
+    HpsExtensions, SimOptions, StrutParams, ValveLag,
+};
+
+/// Channels the strut model predicts (DESIGN.md bench-record names).
+pub const CHANNELS: [&str; 3] = ["force_n", "p_piston_pa", "p_rod_pa"];
+
+/// Catalogue names, in catalogue order.
+pub const EFFECTS: [&str; 4] = [
+    "gas-heat-transfer",
+    "gas-fraction",
+    "asymmetric-friction",
+    "check-valve-lag",
+];
+
+/// The strut model for the discovery workflow.
+#[derive(Debug, Clone)]
+pub struct HpsStrutModel {
+    /// Baseline parameters (calibrated parameters start from these values).
+    pub params: StrutParams,
+    /// Integrator settings.
+    pub sim: SimOptions,
+}
+
+impl HpsStrutModel {
+    /// Model around `params`.
+    pub fn new(params: StrutParams) -> Self {
+        Self {
+            params,
+            sim: SimOptions::default(),
+        }
+    }
+
+    /// The default discovery baseline: the front-axle strut of Table 6.3 without emulsion.
+    pub fn default_baseline() -> StrutParams {
+        StrutParams::front_axle()
+            .with_gamma0(0.0)
+            .expect("the front-axle strut is valid with pure oil")
+    }
+
+    /// Parameters with the baseline vector applied (order of [`Self::baseline_params`]).
+    pub fn apply_baseline(&self, v: &[f64]) -> Result<StrutParams, String> {
+        let mut p = self.params;
+        p.n = v[0];
+        p.p_h0 = v[1];
+        p.v_g0 = v[2];
+        p.friction.f_c = v[3];
+        p.friction.mu_v = v[4];
+        p.c_b = v[5];
+        p.validate().map_err(|e| e.to_string())?;
+        Ok(p)
+    }
+
+    /// Extensions and parameter changes for the active effects.
+    pub fn apply_effects(
+        &self,
+        params: StrutParams,
+        effects: &[ActiveEffect<'_>],
+    ) -> Result<(StrutParams, HpsExtensions), String> {
+        let mut p = params;
+        let mut ext = HpsExtensions::none();
+        for e in effects {
+            let v = e.values;
+            match e.index {
+                0 => {
+                    ext.heat_transfer = Some(HeatTransfer {
+                        tau: v[0],
+                        kappa: 1.4,
+                    })
+                }
+                1 => {
+                    p = p.with_gamma0(v[0]).map_err(|e| e.to_string())?;
+                    ext.gas_fraction_growth = Some(GasFractionGrowth { k_gamma: v[1] });
+                }
+                2 => {
+                    ext.asymmetric_friction = Some(AsymmetricFriction {
+                        compression: v[0],
+                        extension: v[1],
+                    })
+                }
+                3 => ext.valve_lag = Some(ValveLag { tau: v[0] }),
+                i => return Err(format!("no effect {i} in the strut catalogue")),
+            }
+        }
+        Ok((p, ext))
+    }
+}
+
+/// Strut velocity for replaying a record, consistent with its displacement.
+///
+/// The displacement is differentiated by a local cubic least-squares fit (Savitzky-Golay)
+/// over about +-10 ms. When the record also has a measured `velocity_m_s`, that signal is
+/// kept for its low noise but its slow part is replaced by the displacement's (a
+/// complementary filter with a 0.25 s moving average): an offset or drift in a measured
+/// velocity would otherwise integrate into a gas-volume error that grows over the record
+/// (0.5 mm/s over 20 s shifts the static pressure by tens of kPa).
+pub fn velocity_of(rec: &Record) -> Option<Vec<f64>> {
+    let t = rec.column("time_s")?;
+    let z = rec.column("displacement_m")?;
+    let n = t.len();
+    if n < 9 {
+        return None;
+    }
+    let dt = (t[n - 1] - t[0]) / (n - 1) as f64;
+    if dt.is_nan() || dt <= 0.0 {
+        return None;
+    }
+    let m = ((0.010 / dt).round() as usize).clamp(3, (n - 1) / 2);
+    let w = cubic_derivative_weights(m);
+    let from_z: Vec<f64> = (0..n)
+        .map(|i| {
+            if i >= m && i + m < n {
+                w.iter()
+                    .enumerate()
+                    .map(|(j, wj)| wj * z[i + j - m])
+                    .sum::<f64>()
+                    / dt
+            } else {
+                // Near the ends: slope of a local line through the available points.
+                let a = i.saturating_sub(m);
+                let b = (i + m).min(n - 1);
+                let k = (b - a + 1) as f64;
+                let tm = t[a..=b].iter().sum::<f64>() / k;
+                let zm = z[a..=b].iter().sum::<f64>() / k;
+                let (mut num, mut den) = (0.0, 0.0);
+                for j in a..=b {
+                    num += (t[j] - tm) * (z[j] - zm);
+                    den += (t[j] - tm) * (t[j] - tm);
+                }
+                num / den
+            }
+        })
+        .collect();
+    let Some(measured) = rec.column("velocity_m_s") else {
+        return Some(from_z);
+    };
+    // Complementary filter: measured velocity plus the slow part of (dz/dt - measured).
+    let half = ((0.125 / dt).round() as usize).max(1);
+    let diff: Vec<f64> = from_z.iter().zip(measured).map(|(a, b)| a - b).collect();
+    let mut prefix = vec![0.0; n + 1];
+    for i in 0..n {
+        prefix[i + 1] = prefix[i] + diff[i];
+    }
+    Some(
+        (0..n)
+            .map(|i| {
+                let a = i.saturating_sub(half);
+                let b = (i + half + 1).min(n);
+                measured[i] + (prefix[b] - prefix[a]) / (b - a) as f64
+            })
+            .collect(),
+    )
+}
+
+/// Weights `w_j` (j = 0..2m) such that `sum w_j z[i - m + j]` is the first derivative (per
+/// sample) of the cubic least-squares fit to the window at its centre.
+fn cubic_derivative_weights(m: usize) -> Vec<f64> {
+    // Normal equations of the Vandermonde matrix with powers 0..3 of x = j - m.
+    let xs: Vec<f64> = (0..=2 * m).map(|j| j as f64 - m as f64).collect();
+    let mut a = [[0.0f64; 4]; 4];
+    for x in &xs {
+        for (r, row) in a.iter_mut().enumerate() {
+            for (c, v) in row.iter_mut().enumerate() {
+                *v += x.powi((r + c) as i32);
+            }
+        }
+    }
+    // Row 1 of A^-1 (the derivative coefficient) by Gauss-Jordan elimination.
+    let mut inv = [[0.0f64; 4]; 4];
+    for (i, row) in inv.iter_mut().enumerate() {
+        row[i] = 1.0;
+    }
+    for col in 0..4 {
+        let piv = (col..4)
+            .max_by(|&p, &q| a[p][col].abs().total_cmp(&a[q][col].abs()))
+            .unwrap_or(col);
+        a.swap(col, piv);
+        inv.swap(col, piv);
+        let d = a[col][col];
+        a[col].iter_mut().for_each(|v| *v /= d);
+        inv[col].iter_mut().for_each(|v| *v /= d);
+        let (pivot_a, pivot_inv) = (a[col], inv[col]);
+        for r in (0..4).filter(|&r| r != col) {
+            let f = a[r][col];
+            for c in 0..4 {
+                a[r][c] -= f * pivot_a[c];
+                inv[r][c] -= f * pivot_inv[c];
+            }
+        }
+    }
+    xs.iter()
+        .map(|x| (0..4).map(|k| inv[1][k] * x.powi(k as i32)).sum())
+        .collect()
+}
+
+impl DiscoveryModel for HpsStrutModel {
+    fn name(&self) -> &str {
+        "hps-strut"
+    }
+
+    fn channels(&self) -> Vec<String> {
+        CHANNELS.iter().map(|s| s.to_string()).collect()
+    }
+
+    fn baseline_params(&self) -> Vec<ParamSpec> {
+        let p = &self.params;
+        vec![
+            ParamSpec::new("n", p.n, 1.0, 1.8),
+            ParamSpec::new("p_h0_pa", p.p_h0, 0.5 * p.p_h0, 1.5 * p.p_h0),
+            ParamSpec::new("v_g0_m3", p.v_g0, 0.5 * p.v_g0, 1.5 * p.v_g0),
+            ParamSpec {
+                typical: p.friction.f_c.abs().max(100.0),
+                ..ParamSpec::new(
+                    "f_c_n",
+                    p.friction.f_c,
+                    0.0,
+                    20.0 * p.friction.f_c.max(100.0),
+                )
+            },
+            ParamSpec {
+                typical: p.friction.mu_v.abs().max(100.0),
+                ..ParamSpec::new(
+                    "mu_v_n_s_m",
+                    p.friction.mu_v,
+                    0.0,
+                    50.0 * p.friction.mu_v.max(100.0),
+                )
+            },
+            ParamSpec::new("c_b", p.c_b, 0.2, 1.0),
+        ]
+    }
+
+    fn catalogue(&self) -> Vec<EffectSpec> {
+        vec![
+            EffectSpec {
+                name: EFFECTS[0].into(),
+                description: "heat exchange between the gas and the strut body: the gas law moves from adiabatic (fast) towards isothermal (slow) with a thermal time constant, which opens a hysteresis loop at low frequency".into(),
+                citation: "section 5.4.2 (low-frequency hysteresis attributed to gas heat transfer); thermal time-constant model of Pourmovahed & Otis (1990)".into(),
+                params: vec![ParamSpec::new("tau_s", 2.0, 0.05, 100.0)],
+            },
+            EffectSpec {
+                name: EFFECTS[1].into(),
+                description: "gas entrained in the oil (gas-oil emulsion) softening and lightening the oil, with a gas fraction that grows with strut velocity".into(),
+                citation: "Eqs 5.8-5.11, Fig 5.4b, sections 5.3.2 and 5.4.3".into(),
+                params: vec![
+                    ParamSpec {
+                        typical: 0.03,
+                        ..ParamSpec::new("gamma0", 0.02, 0.0, 0.3)
+                    },
+                    ParamSpec {
+                        typical: 0.1,
+                        ..ParamSpec::new("k_gamma_s_m", 0.0, 0.0, 2.0)
+                    },
+                ],
+            },
+            EffectSpec {
+                name: EFFECTS[2].into(),
+                description: "seal friction that differs between compression and extension (structural asymmetry of the seals)".into(),
+                citation: "section 5.4.2 (model underestimates compression friction)".into(),
+                params: vec![
+                    ParamSpec::new("compression_factor", 1.0, 0.1, 10.0),
+                    ParamSpec::new("extension_factor", 1.0, 0.1, 10.0),
+                ],
+            },
+            EffectSpec {
+                name: EFFECTS[3].into(),
+                description: "check valves that open and close with a first-order lag (valve inertia and spring)".into(),
+                citation: "section 5.3.2 (valve construction and dynamics), Eq 5.12".into(),
+                params: vec![ParamSpec::new("tau_s", 0.01, 1e-4, 0.5)],
+            },
+        ]
+    }
+
+    fn simulate(
+        &self,
+        record: &Record,
+        baseline: &[f64],
+        effects: &[ActiveEffect<'_>],
+    ) -> Result<Vec<Option<Vec<f64>>>, String> {
+        let t = record
+            .column("time_s")
+            .ok_or("record has no time_s column")?;
+        let z = record
+            .column("displacement_m")
+            .ok_or("record has no displacement_m column")?;
+        let v = velocity_of(record).ok_or("cannot derive the strut velocity")?;
+        let p = self.apply_baseline(baseline)?;
+        let (p, ext) = self.apply_effects(p, effects)?;
+        let exc = Excitation::Samples {
+            time_s: t.to_vec(),
+            displacement_m: z.to_vec(),
+            velocity_m_s: Some(v),
+        };
+        let out = simulate_displacement(&p, &ext, &exc, &self.sim).map_err(|e| e.to_string())?;
+        Ok(vec![Some(out.force), Some(out.p_piston), Some(out.p_rod)])
+    }
+
+    fn phases(&self, record: &Record) -> Vec<Phase> {
+        let Some(v) = velocity_of(record) else {
+            return Vec::new();
+        };
+        vec![
+            Phase {
+                name: "compression".into(),
+                mask: v.iter().map(|x| *x > 0.0).collect(),
+            },
+            Phase {
+                name: "extension".into(),
+                mask: v.iter().map(|x| *x < 0.0).collect(),
+            },
+        ]
+    }
+
+    fn skip_samples(&self, record: &Record) -> usize {
+        record.len() / 4
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn cubic_derivative_is_exact_for_cubics() {
+        let w = cubic_derivative_weights(4);
+        let f = |x: f64| 0.3 - 1.2 * x + 0.5 * x * x - 0.07 * x * x * x;
+        let d: f64 = w
+            .iter()
+            .enumerate()
+            .map(|(j, wj)| wj * f(j as f64 - 4.0))
+            .sum();
+        assert!((d - -1.2).abs() < 1e-10, "{d}");
+    }
+
+    #[test]
+    fn velocity_of_a_sine_record() {
+        let mut r = Record::new();
+        let t: Vec<f64> = (0..3600).map(|i| i as f64 / 360.0).collect();
+        let w = 2.0 * std::f64::consts::PI * 4.0;
+        r.push_column("time_s", t.clone()).unwrap();
+        r.push_column(
+            "displacement_m",
+            t.iter().map(|t| 0.01 * (w * t).sin()).collect(),
+        )
+        .unwrap();
+        let v = velocity_of(&r).unwrap();
+        for i in 10..3590 {
+            assert!((v[i] - 0.01 * w * (w * t[i]).cos()).abs() < 2e-4, "{i}");
+        }
+    }
+}
