@@ -5,6 +5,10 @@
 //!   (`p` may stand for the decimal point: `_sim1p25s`), and the table adds its real-time
 //!   factor = simulated seconds / wall seconds.
 //! - `bench --summary`: only print the table from the last run's results.
+//! - `validate [--fixtures DIR] [--out DIR]`: compare our models with the dissertation's
+//!   reported numbers (`fixtures/reported/`, see `docs/validation.md`), print the table,
+//!   write `target/validation/report.md`, `report.json` and SVG plots; exit non-zero only
+//!   when a quantity the fixtures mark as reproduced regresses.
 
 use std::path::{Path, PathBuf};
 use std::process::{Command, ExitCode};
@@ -13,6 +17,7 @@ fn main() -> ExitCode {
     let args: Vec<String> = std::env::args().skip(1).collect();
     let result = match args.first().map(String::as_str) {
         Some("bench") => bench(&args[1..]),
+        Some("validate") => validate(&args[1..]),
         Some("-h") | Some("--help") | None => {
             println!("{}", HELP);
             Ok(())
@@ -28,13 +33,53 @@ fn main() -> ExitCode {
     }
 }
 
-const HELP: &str = "usage: cargo xtask <task>\n\ntasks:\n  bench [--summary] [ARGS...]  run the criterion benches (ARGS go to the bench harness) and print mean times and real-time factors";
+const HELP: &str = "usage: cargo xtask <task>\n\ntasks:\n  bench [--summary] [ARGS...]  run the criterion benches (ARGS go to the bench harness) and print mean times and real-time factors\n  validate [--fixtures DIR] [--out DIR]  compare the models with fixtures/reported/ and write target/validation/report.md";
 
 fn workspace_root() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR"))
         .parent()
         .expect("xtask lives one level below the workspace root")
         .to_path_buf()
+}
+
+fn validate(args: &[String]) -> Result<(), String> {
+    let root = workspace_root();
+    let mut fixtures = root.join("fixtures").join("reported");
+    let mut out = root.join("target").join("validation");
+    let mut it = args.iter();
+    while let Some(a) = it.next() {
+        let mut value = || {
+            it.next()
+                .map(PathBuf::from)
+                .ok_or_else(|| format!("`{a}` needs a directory"))
+        };
+        match a.as_str() {
+            "--fixtures" => fixtures = value()?,
+            "--out" => out = value()?,
+            other => return Err(format!("validate: unknown argument `{other}`")),
+        }
+    }
+    let report = afsv::validate::run(&fixtures).map_err(|e| e.to_string())?;
+    print!("{}", report.table_text());
+    afsv::validate::write_outputs(&report, &out).map_err(|e| e.to_string())?;
+    println!("report: {}", out.join("report.md").display());
+    for (name, e) in &report.failed_checks {
+        eprintln!("xtask: check `{name}` failed: {e}");
+    }
+    let regs = report.regressions();
+    if regs.is_empty() {
+        Ok(())
+    } else {
+        let list: Vec<String> = regs
+            .iter()
+            .map(|r| format!("  {}: {}", r.label(), r.note))
+            .collect();
+        Err(format!(
+            "{} quantities marked reproduced no longer are:\n{}",
+            regs.len(),
+            list.join("\n")
+        ))
+    }
 }
 
 fn bench(args: &[String]) -> Result<(), String> {

@@ -8,3 +8,4 @@ pub mod output;
 pub mod plot;
 pub mod record;
 pub mod synth;
+pub mod validate;
