@@ -18,6 +18,7 @@ fn main() -> ExitCode {
     let result = match args.first().map(String::as_str) {
         Some("bench") => bench(&args[1..]),
         Some("validate") => validate(&args[1..]),
+        Some("discover-matrix") => discover_matrix(),
         Some("-h") | Some("--help") | None => {
             println!("{}", HELP);
             Ok(())
@@ -33,7 +34,34 @@ fn main() -> ExitCode {
     }
 }
 
-const HELP: &str = "usage: cargo xtask <task>\n\ntasks:\n  bench [--summary] [ARGS...]  run the criterion benches (ARGS go to the bench harness) and print mean times and real-time factors\n  validate [--fixtures DIR] [--out DIR]  compare the models with fixtures/reported/ and write target/validation/report.md";
+const HELP: &str = "usage: cargo xtask <task>\n\ntasks:\n  bench [--summary] [ARGS...]  run the criterion benches (ARGS go to the bench harness) and print mean times and real-time factors\n  validate [--fixtures DIR] [--out DIR]  compare the models with fixtures/reported/ and write target/validation/report.md\n  discover-matrix  run the discovery workflow on every catalogue effect of both models and print the detection table (minutes)";
+
+/// The full detection matrix of the discovery workflow (the slow tests of
+/// `crates/afsv/tests/discover_matrix.rs`).
+fn discover_matrix() -> Result<(), String> {
+    let status = Command::new(std::env::var("CARGO").unwrap_or_else(|_| "cargo".into()))
+        .current_dir(workspace_root())
+        .args([
+            "test",
+            "--release",
+            "-p",
+            "afsv",
+            "--test",
+            "discover_matrix",
+            "--",
+            "--ignored",
+            "--nocapture",
+            "--test-threads",
+            "1",
+        ])
+        .status()
+        .map_err(|e| format!("cannot run cargo test: {e}"))?;
+    if status.success() {
+        Ok(())
+    } else {
+        Err(format!("the detection matrix has failures ({status})"))
+    }
+}
 
 fn workspace_root() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR"))

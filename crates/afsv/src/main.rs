@@ -20,6 +20,10 @@ struct Cli {
 enum Command {
     /// Run the main job on the built-in default vehicle and print its assessment as JSON.
     Evaluate(cmd::evaluate::Args),
+    /// Find which physical effect a model is missing from measured records, add it, report the gap shrink.
+    Discover(cmd::discover::DiscoverArgs),
+    /// Write measurement-like records from a truth model with hidden effects and sensor noise.
+    Synth(cmd::discover::SynthArgs),
     /// Hydro-pneumatic suspension strut with gas-oil emulsion: `harmonic`, `characterize`, `identify`.
     #[command(subcommand)]
     Hps(cmd::hps::Command),
@@ -45,9 +49,26 @@ fn main() -> ExitCode {
     std::panic::set_hook(Box::new(|info| {
         eprintln!("afsv: internal error (please report): {info}");
     }));
-    let cli = Cli::parse();
+    let cli = match Cli::try_parse() {
+        Ok(cli) => cli,
+        Err(e) if !e.use_stderr() => {
+            // --help and --version: print as clap renders them.
+            let _ = e.print();
+            return ExitCode::SUCCESS;
+        }
+        Err(e) => {
+            // One line: clap's first line names the problem; the usage is one --help away.
+            let text = e.render().to_string();
+            let first = text.lines().next().unwrap_or("invalid arguments");
+            let first = first.strip_prefix("error: ").unwrap_or(first);
+            eprintln!("afsv: error: {first} (see `afsv --help`)");
+            return ExitCode::from(2);
+        }
+    };
     let result = match cli.command {
         Command::Evaluate(args) => cmd::evaluate::run(args),
+        Command::Discover(args) => cmd::discover::run_discover_cmd(args),
+        Command::Synth(args) => cmd::discover::run_synth(args),
         Command::Hps(c) => cmd::hps::run(c),
         Command::Measures(c) => cmd::measures::run(c),
         Command::Terrain(c) => cmd::terrain::run(c),

@@ -7,6 +7,7 @@
 //! never into the records' sidecars.
 
 use crate::discover::hps::HpsStrutModel;
+use crate::discover::yaw::{apply_play, YawPlaneModel};
 use crate::discover::{ActiveEffect, DiscoveryModel, EffectSpec};
 use crate::record::Record;
 use hps_emulsion::{simulate_displacement, Excitation, HarmonicTest};
@@ -305,6 +306,217 @@ pub fn hps_records(
         );
         out.push(SynthRecord {
             name,
+            holdout,
+            record: r,
+        });
+    }
+    Ok(out)
+}
+
+/// Sensor noise of vehicle steering records (standard deviations, white).
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
+pub struct YawNoise {
+    /// Steering-wheel angle (deg).
+    pub steer_deg: f64,
+    /// Forward speed (m/s).
+    pub speed_m_s: f64,
+    /// Articulation angle (deg).
+    pub articulation_deg: f64,
+    /// Strut displacement (m).
+    pub strut_m: f64,
+    /// Chamber pressures (Pa).
+    pub pressure_pa: f64,
+    /// Yaw rate (deg/s).
+    pub yaw_rate_deg_s: f64,
+}
+
+impl YawNoise {
+    /// Typical field instrumentation: steering encoder 0.02 deg (an optical encoder's
+    /// quantisation, not an analog jitter), potentiometer 0.05 deg, string pot 0.1 mm,
+    /// transducers 20 kPa, gyro 0.2 deg/s, speed 0.05 m/s.
+    pub fn default_levels() -> Self {
+        Self {
+            steer_deg: 0.02,
+            speed_m_s: 0.05,
+            articulation_deg: 0.05,
+            strut_m: 1e-4,
+            pressure_pa: 2e4,
+            yaw_rate_deg_s: 0.2,
+        }
+    }
+
+    /// No noise.
+    pub fn none() -> Self {
+        Self {
+            steer_deg: 0.0,
+            speed_m_s: 0.0,
+            articulation_deg: 0.0,
+            strut_m: 0.0,
+            pressure_pa: 0.0,
+            yaw_rate_deg_s: 0.0,
+        }
+    }
+}
+
+/// Realistic size of each vehicle effect when `afsv synth` is given only its name.
+pub fn yaw_default_size(name: &str) -> Vec<f64> {
+    match name {
+        "sensor-backlash" => vec![0.5],
+        "velocity-leakage" => vec![1.8e-10],
+        "supply-droop" => vec![1.5e9],
+        "strut-coulomb-friction" => vec![4000.0],
+        "entrained-air" => vec![0.03],
+        "tire-relaxation" => vec![0.6],
+        _ => Vec::new(),
+    }
+}
+
+/// The manoeuvres `afsv synth` records for the vehicle (section 3.3 inputs and the Fig 3.6
+/// field courses), with their hold-out role.
+pub fn yaw_programme() -> Vec<(afsv_dynamics::Manoeuvre, bool)> {
+    use afsv_dynamics::{
+        driver::Course, table_3_2_speeds_kmh, FieldCourse, Load, Manoeuvre, PathDriver, SteerInput,
+    };
+    let kmh = |v: f64| v / 3.6;
+    let steady = table_3_2_speeds_kmh(FieldCourse::SteadyTurn, Load::Loaded)[0];
+    let change = table_3_2_speeds_kmh(FieldCourse::PathChange, Load::Loaded)[0];
+    vec![
+        (Manoeuvre::pulse(kmh(50.0), 30.0), false),
+        // A driver's "step" takes about 0.1 s: an ideal step would make the recorded
+        // (sampled) input differ from the truth's between two samples.
+        (
+            Manoeuvre::open_loop(kmh(50.0), 10.0, fast_step(30.0), "step"),
+            false,
+        ),
+        (
+            Manoeuvre::open_loop(
+                kmh(30.0),
+                8.0,
+                SteerInput::pulse_deg(-20.0, 0.2, 0.5),
+                "pulse",
+            ),
+            true,
+        ),
+        (
+            Manoeuvre::open_loop(kmh(40.0), 8.0, fast_step(-15.0), "step"),
+            false,
+        ),
+        (
+            Manoeuvre::open_loop(
+                kmh(30.0),
+                8.0,
+                SteerInput::Ramp {
+                    rate_rad_s: 20f64.to_radians(),
+                    start_s: 0.5,
+                    limit_rad: 40f64.to_radians(),
+                },
+                "ramp",
+            ),
+            true,
+        ),
+        (
+            Manoeuvre::course(
+                kmh(steady),
+                20.0,
+                PathDriver::new(Course::steady_turn_fig_3_6()),
+                "steady-turn",
+            ),
+            false,
+        ),
+        (
+            Manoeuvre::course(
+                kmh(change),
+                12.0,
+                PathDriver::new(Course::path_change_fig_3_6()),
+                "path-change",
+            ),
+            true,
+        ),
+        (
+            Manoeuvre::open_loop(
+                kmh(40.0),
+                8.0,
+                SteerInput::pulse_deg(40.0, 0.2, 0.5),
+                "pulse",
+            ),
+            false,
+        ),
+    ]
+}
+
+/// A steering step of `amplitude_deg` applied at 300 deg/s from t = 0.5 s.
+fn fast_step(amplitude_deg: f64) -> afsv_dynamics::SteerInput {
+    afsv_dynamics::SteerInput::Ramp {
+        rate_rad_s: 300f64.to_radians() * amplitude_deg.signum(),
+        start_s: 0.5,
+        limit_rad: amplitude_deg.abs().to_radians(),
+    }
+}
+
+/// Vehicle steering records from the truth model `model` + `hidden`, with noise.
+pub fn yaw_records(
+    model: &YawPlaneModel,
+    hidden: &[HiddenEffect],
+    noise: YawNoise,
+    seed: u64,
+) -> Result<Vec<SynthRecord>, String> {
+    let active: Vec<ActiveEffect<'_>> = hidden
+        .iter()
+        .map(|h| ActiveEffect {
+            index: h.index,
+            values: &h.values,
+        })
+        .collect();
+    let base: Vec<f64> = model.baseline_params().iter().map(|s| s.initial).collect();
+    let (params, ext, play) = model.apply_effects(model.apply_baseline(&base), &active)?;
+    let sys = afs_hydraulics::AfsSystem::new(params.afs.clone())
+        .and_then(|s| s.with_extensions(ext))
+        .map_err(|e| e.to_string())?;
+    let mut gauss = Gaussian::new(seed);
+    let mut out = Vec::new();
+    for (k, (man, holdout)) in yaw_programme().into_iter().enumerate() {
+        let rec = afsv_dynamics::simulate(&params.vehicle, &sys, &man, &model.sim)
+            .map_err(|e| e.to_string())?;
+        let mut art = rec.articulation_deg.clone();
+        apply_play(&mut art, play);
+        let mut cols = [
+            (
+                "steer_wheel_deg",
+                rec.steer_wheel_deg.clone(),
+                noise.steer_deg,
+            ),
+            ("speed_m_s", rec.speed_m_s.clone(), noise.speed_m_s),
+            ("articulation_deg", art, noise.articulation_deg),
+            (
+                "strut_left_disp_m",
+                rec.strut_left_disp_m.clone(),
+                noise.strut_m,
+            ),
+            ("p_c_pa", rec.p_c_pa.clone(), noise.pressure_pa),
+            ("p_r_pa", rec.p_r_pa.clone(), noise.pressure_pa),
+            (
+                "yaw_rate_front_deg_s",
+                rec.yaw_rate_front_deg_s.clone(),
+                noise.yaw_rate_deg_s,
+            ),
+        ];
+        let mut r = Record::new();
+        r.push_column("time_s", rec.time_s.clone())
+            .map_err(|e| e.to_string())?;
+        for (name, values, sigma) in cols.iter_mut() {
+            gauss.add(values, *sigma);
+            r.push_column(name, std::mem::take(values))
+                .map_err(|e| e.to_string())?;
+        }
+        r.meta = serde_json::json!({
+            "model": "yaw-plane",
+            "manoeuvre": man.label,
+            "speed_m_s": man.speed_m_s,
+            "load": "loaded",
+            "sample_rate_hz": 1.0 / model.sim.output_dt_s,
+        });
+        out.push(SynthRecord {
+            name: format!("yaw_{k:02}_{}", man.label),
             holdout,
             record: r,
         });

@@ -441,7 +441,9 @@ impl<M: DiscoveryModel + ?Sized> Context<'_, M> {
         let specs = &self.catalogue[e].params;
         let nominal: Vec<f64> = specs.iter().map(|s| s.initial).collect();
         let fractions = [0.5, 0.1, 0.9, 0.3, 0.7];
-        let mut starts = vec![nominal.clone()];
+        // The lower bounds switch most effects off (zero play, leakage, droop, friction):
+        // starting there, the candidate can only improve on the model as it stands.
+        let mut starts = vec![nominal.clone(), specs.iter().map(|s| s.lower).collect()];
         for k in 0..fractions.len() {
             starts.push(
                 specs
@@ -722,6 +724,13 @@ fn discover_inner<M: DiscoveryModel + ?Sized>(
     };
     let baseline_gap = (calibrated.holdout_mse - holdout_noise_mse).max(0.0);
     while search && named.len() < opts.max_effects {
+        // No candidate can pass the gap-fraction test when less than that fraction of the
+        // baseline's gap is left: stop without trying.
+        if !named.is_empty()
+            && current.holdout_mse - holdout_noise_mse < opts.rule.min_gap_fraction * baseline_gap
+        {
+            break;
+        }
         if !named.is_empty() {
             // Refit the model as it stands, so that candidates are not credited with the
             // improvement that more iterations on the same model would give anyway.

@@ -15,8 +15,10 @@
 
 mod engine;
 pub mod hps;
+pub mod report;
 pub mod signature;
 pub mod stats;
+pub mod yaw;
 
 pub use engine::{
     calibrate, discover, evaluate_errors, ChannelError, Discovery, DiscoveryOptions, EffectChoice,

@@ -100,7 +100,7 @@ impl Default for SignificanceRule {
     fn default() -> Self {
         Self {
             min_bic_drop: 10.0,
-            min_holdout_gain: 0.05,
+            min_holdout_gain: 0.10,
             min_gap_fraction: 0.05,
         }
     }
