@@ -1,9 +1,11 @@
 //! Discovery on vehicle steering records synthesized with hidden effects (issue 6). The
 //! full matrix (every catalogue effect) is `cargo xtask discover-matrix`; these run in CI.
 
+mod common;
 use afsv::discover::yaw::YawPlaneModel;
 use afsv::discover::{discover, Discovery, DiscoveryModel, DiscoveryOptions};
 use afsv::synth::{parse_effects, yaw_default_size, yaw_records, YawNoise};
+use common::summary;
 
 fn run(effects: &str, seed: u64) -> Discovery {
     let model = YawPlaneModel::new(YawPlaneModel::default_baseline());
@@ -22,25 +24,6 @@ fn run(effects: &str, seed: u64) -> Discovery {
         &(),
     )
     .unwrap()
-}
-
-fn summary(d: &Discovery) -> String {
-    let mut s = format!("named {:?}, shrink {:.3}\n", d.named, d.gap_shrink);
-    for st in &d.steps {
-        for c in &st.candidates {
-            s += &format!(
-                "  {} gain {:.4} bic_drop {:.1} {:?}\n",
-                c.effect,
-                c.holdout_gain,
-                c.bic_drop,
-                c.outcome
-                    .as_ref()
-                    .map(|o| o.effect_params.clone())
-                    .map_err(|e| e.clone())
-            );
-        }
-    }
-    s
 }
 
 #[test]

@@ -245,7 +245,6 @@ fn plot_sweep(
     kappas: &[f64],
     alphas: &[f64],
 ) -> Result<(), String> {
-    use plotters::prelude::*;
     let lateral = alphas.len() > 1;
     if !lateral && kappas.len() < 2 {
         return Err("--plot needs a swept --alpha-deg or --kappa (a range)".into());
@@ -279,22 +278,6 @@ fn plot_sweep(
             curves.len()
         ));
     }
-    let all = curves.iter().flat_map(|c| c.1.iter());
-    let (mut x0, mut x1, mut y0, mut y1) = (f64::MAX, f64::MIN, f64::MAX, f64::MIN);
-    for &(x, y) in all {
-        x0 = x0.min(x);
-        x1 = x1.max(x);
-        y0 = y0.min(y);
-        y1 = y1.max(y);
-    }
-    if y1 <= y0 {
-        y0 -= 1.0;
-        y1 += 1.0;
-    }
-    let pad = 0.05 * (y1 - y0);
-    let err = |e: &dyn std::fmt::Display| format!("{}: {e}", path.display());
-    let root = SVGBackend::new(path, (900, 560)).into_drawing_area();
-    root.fill(&WHITE).map_err(|e| err(&e))?;
     let (title, xd, yd) = if lateral {
         ("Fiala lateral force", "slip angle alpha (deg)", "F_y (kN)")
     } else {
@@ -304,36 +287,16 @@ fn plot_sweep(
             "F_x (kN)",
         )
     };
-    let mut chart = ChartBuilder::on(&root)
-        .caption(title, ("sans-serif", 20))
-        .margin(12)
-        .x_label_area_size(40)
-        .y_label_area_size(70)
-        .build_cartesian_2d(x0..x1, (y0 - pad)..(y1 + pad))
-        .map_err(|e| err(&e))?;
-    chart
-        .configure_mesh()
-        .x_desc(xd)
-        .y_desc(yd)
-        .draw()
-        .map_err(|e| err(&e))?;
-    for (i, (label, pts)) in curves.into_iter().enumerate() {
-        let color = Palette99::pick(i).to_rgba();
-        chart
-            .draw_series(LineSeries::new(pts, color.stroke_width(2)))
-            .map_err(|e| err(&e))?
-            .label(label)
-            .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], color));
-    }
-    chart
-        .configure_series_labels()
-        .background_style(WHITE.mix(0.8))
-        .border_style(BLACK)
-        .position(SeriesLabelPosition::UpperLeft)
-        .draw()
-        .map_err(|e| err(&e))?;
-    root.present().map_err(|e| err(&e))?;
-    Ok(())
+    let xy: Vec<(Vec<f64>, Vec<f64>)> = curves
+        .iter()
+        .map(|(_, pts)| pts.iter().copied().unzip())
+        .collect();
+    let series: Vec<afsv::plot::Series<'_>> = curves
+        .iter()
+        .zip(&xy)
+        .map(|((label, _), (x, y))| afsv::plot::Series { label, x, y })
+        .collect();
+    afsv::plot::line_plot(path, title, xd, yd, &series)
 }
 
 #[derive(serde::Serialize)]
