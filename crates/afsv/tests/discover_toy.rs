@@ -123,7 +123,7 @@ fn records(truth: Truth, seeds: &[u64]) -> Vec<Record> {
         .map(|&seed| {
             let n = 2000;
             let t: Vec<f64> = (0..n).map(|i| i as f64 * 0.005).collect();
-            let f = 0.4 + 0.3 * seed as f64;
+            let f = 0.2 + 0.2 * seed as f64;
             let u: Vec<f64> = t
                 .iter()
                 .map(|t| 1.5 * (2.0 * std::f64::consts::PI * f * t).sin())
@@ -146,8 +146,8 @@ fn records(truth: Truth, seeds: &[u64]) -> Vec<Record> {
 }
 
 fn run(truth: Truth) -> afsv::discover::Discovery {
-    let train = records(truth, &[1, 2, 3]);
-    let hold = records(truth, &[4, 5]);
+    let train = records(truth, &[1, 3, 5]);
+    let hold = records(truth, &[2, 4]);
     discover(
         &Toy,
         &train,

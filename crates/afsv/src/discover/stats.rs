@@ -101,7 +101,7 @@ impl Default for SignificanceRule {
         Self {
             min_bic_drop: 10.0,
             min_holdout_gain: 0.10,
-            min_gap_fraction: 0.05,
+            min_gap_fraction: 0.02,
         }
     }
 }
