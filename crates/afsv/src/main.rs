@@ -58,10 +58,17 @@ fn main() -> ExitCode {
         }
         Err(e) => {
             // One line: clap's first line names the problem; the usage is one --help away.
+            // clap's message runs until the first blank line (e.g. "required arguments were
+            // not provided:" followed by their names); join it into one line.
             let text = e.render().to_string();
-            let first = text.lines().next().unwrap_or("invalid arguments");
-            let first = first.strip_prefix("error: ").unwrap_or(first);
-            eprintln!("afsv: error: {first} (see `afsv --help`)");
+            let message: Vec<&str> = text
+                .lines()
+                .take_while(|l| !l.trim().is_empty() && !l.starts_with("Usage:"))
+                .map(str::trim)
+                .collect();
+            let message = message.join(" ");
+            let message = message.strip_prefix("error: ").unwrap_or(&message);
+            eprintln!("afsv: error: {message} (see `afsv --help`)");
             return ExitCode::from(2);
         }
     };
