@@ -241,6 +241,22 @@ pub fn hps_programme() -> Vec<(HarmonicTest, f64, bool)> {
     ]
 }
 
+/// The truth configuration: the model's nominal baseline values and the hidden effects.
+fn truth_of<'a, M: DiscoveryModel>(
+    model: &M,
+    hidden: &'a [HiddenEffect],
+) -> (Vec<f64>, Vec<ActiveEffect<'a>>) {
+    let base = model.baseline_params().iter().map(|s| s.initial).collect();
+    let active = hidden
+        .iter()
+        .map(|h| ActiveEffect {
+            index: h.index,
+            values: &h.values,
+        })
+        .collect();
+    (base, active)
+}
+
 /// Strut bench records from the truth model `model` + `hidden`, sampled at `rate_hz`, with noise.
 pub fn hps_records(
     model: &HpsStrutModel,
@@ -249,14 +265,7 @@ pub fn hps_records(
     seed: u64,
     rate_hz: f64,
 ) -> Result<Vec<SynthRecord>, String> {
-    let active: Vec<ActiveEffect<'_>> = hidden
-        .iter()
-        .map(|h| ActiveEffect {
-            index: h.index,
-            values: &h.values,
-        })
-        .collect();
-    let base: Vec<f64> = model.baseline_params().iter().map(|s| s.initial).collect();
+    let (base, active) = truth_of(model, hidden);
     let params = model.apply_baseline(&base)?;
     let (params, ext) = model.apply_effects(params, &active)?;
     let mut gauss = Gaussian::new(seed);
@@ -460,14 +469,7 @@ pub fn yaw_records(
     noise: YawNoise,
     seed: u64,
 ) -> Result<Vec<SynthRecord>, String> {
-    let active: Vec<ActiveEffect<'_>> = hidden
-        .iter()
-        .map(|h| ActiveEffect {
-            index: h.index,
-            values: &h.values,
-        })
-        .collect();
-    let base: Vec<f64> = model.baseline_params().iter().map(|s| s.initial).collect();
+    let (base, active) = truth_of(model, hidden);
     let (params, ext, play) = model.apply_effects(model.apply_baseline(&base), &active)?;
     let sys = afs_hydraulics::AfsSystem::new(params.afs.clone())
         .and_then(|s| s.with_extensions(ext))
