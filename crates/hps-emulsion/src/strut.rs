@@ -11,7 +11,7 @@
 //! | 2 (heat transfer on) | `theta = T_g / T_0`, gas temperature | - | [`crate::HeatTransfer`] |
 //! | last (valve lag on) | `x_v`, check-valve opening | - | [`crate::ValveLag`] |
 
-use crate::emulsion::{emulsion, emulsion_volume};
+use crate::emulsion::{emulsion, emulsion_volume, Emulsion};
 use crate::error::HpsError;
 use crate::extensions::HpsExtensions;
 use crate::flow::{check_valve_flow, orifice_flow};
@@ -227,6 +227,26 @@ impl HpsStrut {
         }
     }
 
+    /// Flow from the piston-side to the rod-side chamber (m^3/s, Eq 5.12: bleed orifices,
+    /// check valves scaled by the valve-lag opening when that extension is on, laminar
+    /// leakage) and the emulsion properties of both chambers (Eqs 5.9-5.11).
+    #[inline]
+    fn chamber_flow(&self, p_c: f64, p_r: f64, state: &[f64]) -> (f64, Emulsion, Emulsion) {
+        let p = &self.params;
+        let ec = emulsion(p_c, p.p_h0, p.n, p.beta_h, p.rho_h, p.gamma0);
+        let er = emulsion(p_r, p.p_h0, p.n, p.beta_h, p.rho_h, p.gamma0);
+        let rho_bar = 0.5 * (ec.rho + er.rho);
+        let dp = p_c - p_r;
+        let opening = match self.idx_valve {
+            Some(i) => state[i].clamp(0.0, 1.0),
+            None => 1.0,
+        };
+        let q = orifice_flow(self.ca_b, dp, rho_bar, p.p_reg)
+            + check_valve_flow(self.ca_v, dp, rho_bar, p.p_reg, opening)
+            + p.k_l * dp;
+        (q, ec, er)
+    }
+
     /// State derivatives at deflection `z` (m), velocity `zdot` (m/s): Eq 5.5 for the gas
     /// volume (with Eq 5.4 giving P_hc'), Eq 5.6 for P_hr, flows of Eq 5.12, emulsion
     /// properties of Eqs 5.9-5.11, volumes of Eq 5.7 (`x` of Eq 5.7 is `z_s`). No allocation.
@@ -240,17 +260,8 @@ impl HpsStrut {
         // Eq 5.7 (x = z_s); emulsion volumes cannot go below zero.
         let vc = (p.v_c0 + p.v_g0 - p.a_hc * z - vg).max(0.0);
         let vr = (p.v_r0 + self.a_ann * z).max(1e-12);
-        let ec = emulsion(p_c, p.p_h0, p.n, p.beta_h, p.rho_h, p.gamma0);
-        let er = emulsion(p_r, p.p_h0, p.n, p.beta_h, p.rho_h, p.gamma0);
-        let rho_bar = 0.5 * (ec.rho + er.rho);
+        let (q, ec, er) = self.chamber_flow(p_c, p_r, state);
         let dp = p_c - p_r;
-        let opening = match self.idx_valve {
-            Some(i) => state[i].clamp(0.0, 1.0),
-            None => 1.0,
-        };
-        let q = orifice_flow(self.ca_b, dp, rho_bar, p.p_reg)
-            + check_valve_flow(self.ca_v, dp, rho_bar, p.p_reg, opening)
-            + p.k_l * dp;
         // Eq 5.5 with P_hc' = -n P_hc V_g'/V_g (Eq 5.4), or the heat-transfer gas law.
         let (n_eff, heat) = match (self.idx_theta, self.ext.heat_transfer) {
             (Some(i), Some(h)) => {
@@ -292,17 +303,7 @@ impl HpsStrut {
         let p_r = (state[1] * p.p_h0).max(p.p_vap.max(1.0));
         let f_f = friction_force(&p.friction, &self.levels, z, zdot, self.v_h);
         let force = p_c * p.a_hc - p_r * self.a_ann - p.p_amb * p.a_hr + f_f;
-        let ec = emulsion(p_c, p.p_h0, p.n, p.beta_h, p.rho_h, p.gamma0);
-        let er = emulsion(p_r, p.p_h0, p.n, p.beta_h, p.rho_h, p.gamma0);
-        let rho_bar = 0.5 * (ec.rho + er.rho);
-        let dp = p_c - p_r;
-        let opening = match self.idx_valve {
-            Some(i) => state[i].clamp(0.0, 1.0),
-            None => 1.0,
-        };
-        let flow = orifice_flow(self.ca_b, dp, rho_bar, p.p_reg)
-            + check_valve_flow(self.ca_v, dp, rho_bar, p.p_reg, opening)
-            + p.k_l * dp;
+        let (flow, _, _) = self.chamber_flow(p_c, p_r, state);
         StrutOutputs {
             force,
             p_piston: p_c,

@@ -223,6 +223,33 @@ impl Layout {
         Ok(())
     }
 
+    /// Per-channel RMS of normalised residuals `r` (NaN everywhere when `ok` is false, i.e.
+    /// the configuration could not be simulated).
+    fn per_channel(&self, r: &[f64], ok: bool) -> Vec<ChannelError> {
+        (0..self.channels.len())
+            .map(|c| {
+                let (mut s, mut n) = (0.0, 0usize);
+                for &(ch, _, off, len) in self.segments.iter().flatten() {
+                    if ch == c {
+                        s += r[off..off + len].iter().map(|v| v * v).sum::<f64>();
+                        n += len;
+                    }
+                }
+                let nrmse = if ok && n > 0 {
+                    (s / n as f64).sqrt()
+                } else {
+                    f64::NAN
+                };
+                ChannelError {
+                    channel: self.channels[c].clone(),
+                    rmse: nrmse * self.scales[c],
+                    nrmse,
+                    samples: n,
+                }
+            })
+            .collect()
+    }
+
     fn segment_slices<'a>(&self, r: &'a [f64]) -> Vec<&'a [f64]> {
         self.segments
             .iter()
@@ -497,28 +524,7 @@ impl<M: DiscoveryModel + ?Sized> Context<'_, M> {
                 &mut r,
             )
             .is_ok();
-        (0..layout.channels.len())
-            .map(|c| {
-                let (mut s, mut n) = (0.0, 0usize);
-                for &(ch, _, off, len) in layout.segments.iter().flatten() {
-                    if ch == c {
-                        s += r[off..off + len].iter().map(|v| v * v).sum::<f64>();
-                        n += len;
-                    }
-                }
-                let nrmse = if ok && n > 0 {
-                    (s / n as f64).sqrt()
-                } else {
-                    f64::NAN
-                };
-                ChannelError {
-                    channel: layout.channels[c].clone(),
-                    rmse: nrmse * layout.scales[c],
-                    nrmse,
-                    samples: n,
-                }
-            })
-            .collect()
+        layout.per_channel(&r, ok)
     }
 }
 
@@ -535,28 +541,7 @@ pub fn evaluate_errors<M: DiscoveryModel + ?Sized>(
     let layout = Layout::new(model, records, &channels, &scales, baseline)?;
     let mut r = vec![0.0; layout.n];
     layout.residuals(model, records, baseline, effects, &mut r)?;
-    Ok((0..channels.len())
-        .map(|c| {
-            let (mut s, mut n) = (0.0, 0usize);
-            for &(ch, _, off, len) in layout.segments.iter().flatten() {
-                if ch == c {
-                    s += r[off..off + len].iter().map(|v| v * v).sum::<f64>();
-                    n += len;
-                }
-            }
-            let nrmse = if n > 0 {
-                (s / n as f64).sqrt()
-            } else {
-                f64::NAN
-            };
-            ChannelError {
-                channel: channels[c].clone(),
-                rmse: nrmse * scales[c],
-                nrmse,
-                samples: n,
-            }
-        })
-        .collect())
+    Ok(layout.per_channel(&r, true))
 }
 
 fn channel_scales(records: &[Record], channels: &[String]) -> Vec<f64> {
