@@ -129,6 +129,16 @@ pub struct SimOptions {
     pub max_articulation_deg: f64,
     /// Initial articulation angle (rad).
     pub initial_articulation_rad: f64,
+    /// Record the energy channels (`kinetic_energy_j`, `actuator_energy_j`). With entrained
+    /// air the stored hydraulic energy is a quadrature per output sample, 100x the cost of
+    /// the integration itself; fits that only compare measured channels switch it off.
+    /// When off, both channels are empty and left out of [`YawRecord::columns`].
+    #[serde(default = "record_energy_default")]
+    pub record_energy: bool,
+}
+
+fn record_energy_default() -> bool {
+    true
 }
 
 impl Default for SimOptions {
@@ -143,6 +153,7 @@ impl Default for SimOptions {
             form: EquationForm::EnergyConsistent,
             max_articulation_deg: 60.0,
             initial_articulation_rad: 0.0,
+            record_energy: true,
         }
     }
 }
@@ -232,9 +243,9 @@ pub struct YawRecord {
     pub supply_power_w: Vec<f64>,
     /// Longitudinal force holding u_f constant (N).
     pub traction_force_n: Vec<f64>,
-    /// Kinetic energy of both units (J).
+    /// Kinetic energy of both units (J); empty unless [`SimOptions::record_energy`].
     pub kinetic_energy_j: Vec<f64>,
-    /// Energy stored in the actuator (J).
+    /// Energy stored in the actuator (J); empty unless [`SimOptions::record_energy`].
     pub actuator_energy_j: Vec<f64>,
     /// Every integrated state in SI units, `(name, values)`; see [`crate::model`] for
     /// the layout.
@@ -285,9 +296,11 @@ impl YawRecord {
             ("supply_power_w".into(), &self.supply_power_w),
             ("supply_pressure_pa".into(), &self.supply_pressure_pa),
             ("traction_force_n".into(), &self.traction_force_n),
-            ("kinetic_energy_j".into(), &self.kinetic_energy_j),
-            ("actuator_energy_j".into(), &self.actuator_energy_j),
         ];
+        if !self.kinetic_energy_j.is_empty() {
+            c.push(("kinetic_energy_j".into(), &self.kinetic_energy_j));
+            c.push(("actuator_energy_j".into(), &self.actuator_energy_j));
+        }
         for (name, v) in &self.states {
             c.push((format!("state_{name}"), v.as_slice()));
         }
@@ -445,12 +458,14 @@ pub fn simulate<A: SteeringActuator>(
                 rec.supply_power_w.push(e.actuator.supply_power);
                 rec.supply_pressure_pa.push(e.actuator.supply_pressure);
                 rec.traction_force_n.push(e.acc.traction_force);
-                rec.kinetic_energy_j.push(kinetic_energy(vehicle, &m));
-                rec.actuator_energy_j.push(model.actuator.energy(
-                    y[0],
-                    e.steer_wheel,
-                    &xs[..layout.n_act],
-                ));
+                if options.record_energy {
+                    rec.kinetic_energy_j.push(kinetic_energy(vehicle, &m));
+                    rec.actuator_energy_j.push(model.actuator.energy(
+                        y[0],
+                        e.steer_wheel,
+                        &xs[..layout.n_act],
+                    ));
+                }
                 for (i, s) in states.iter_mut().enumerate() {
                     s.push(model.state_si(i, y));
                 }

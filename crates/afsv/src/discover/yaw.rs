@@ -46,12 +46,14 @@ pub struct YawPlaneModel {
 impl YawPlaneModel {
     /// Model around `params`. The integrator runs at `rtol = 1e-4` (the measures change by
     /// about 1e-5 when the default 1e-5 is halved, docs/afs-yaw-plane.md; the fits use
-    /// finite-difference steps of 1e-3, far above that integration noise).
+    /// finite-difference steps of 1e-3, far above that integration noise). Energy channels
+    /// are not recorded: no record has them, and with entrained air they cost 100x the run.
     pub fn new(params: YawPlaneParams) -> Self {
         Self {
             params,
             sim: SimOptions {
                 rtol: 1e-4,
+                record_energy: false,
                 ..SimOptions::default()
             },
         }
