@@ -107,6 +107,10 @@ pub struct Step {
     pub candidates: Vec<EffectChoice>,
     /// The effect named in this round, if any was significant.
     pub named: Option<String>,
+    /// Set when the best candidate failed the attribution check: refitting the model as it
+    /// stood, started from that candidate's solution, explained the same gap, so the round
+    /// was repeated against the better-fitted model.
+    pub attribution: Option<String>,
 }
 
 /// Everything the workflow found.
@@ -459,12 +463,19 @@ impl<M: DiscoveryModel + ?Sized> Context<'_, M> {
         Ok((outcome, fitted, n_eff_here))
     }
 
-    /// Start values for effect `e` added to `base`: its nominal start and a few points spread
-    /// over its bounds (log-spaced where the range spans decades), whichever gives the
-    /// smallest training error. Guards against starting where the effect is inactive
-    /// (a saturation limit above the signal, a dead zone of zero width) and the gradient
-    /// is zero.
-    fn best_start(&self, base: &Config, e: usize) -> Vec<f64> {
+    /// Start values `(baseline, effect)` for effect `e` added to `base`: the effect's nominal
+    /// start, its "off" corner and a few points spread over its bounds (log-spaced where the
+    /// range spans decades), each with the baseline as fitted and at its nominal values,
+    /// whichever gives the smallest training error. Guards against starting where the
+    /// effect is inactive (a saturation limit above the signal, a dead zone of zero width)
+    /// and the gradient is zero, and against a calibration that has bent the baseline
+    /// towards the missing effect.
+    fn best_start(
+        &self,
+        base: &Config,
+        nominal_baseline: &[f64],
+        e: usize,
+    ) -> (Vec<f64>, Vec<f64>) {
         let specs = &self.catalogue[e].params;
         let nominal: Vec<f64> = specs.iter().map(|s| s.initial).collect();
         let fractions = [0.5, 0.1, 0.9, 0.3, 0.7];
@@ -489,23 +500,30 @@ impl<M: DiscoveryModel + ?Sized> Context<'_, M> {
                     .collect(),
             );
         }
+        // The calibrated baseline may have absorbed part of the missing effect (viscous
+        // friction standing in for Coulomb friction): each start is also tried with the
+        // baseline back at its nominal values.
+        let bases = [base.baseline.clone(), nominal_baseline.to_vec()];
         let mut r = vec![0.0; self.lt.n];
-        let mut best = (f64::INFINITY, nominal);
-        for start in starts {
-            let mut cfg = base.clone();
-            cfg.effects.push((e, start.clone()));
-            if self
-                .lt
-                .residuals(self.model, self.train, &cfg.baseline, &cfg.active(), &mut r)
-                .is_ok()
-            {
-                let rss: f64 = r.iter().map(|v| v * v).sum();
-                if rss < best.0 {
-                    best = (rss, start);
+        let mut best = (f64::INFINITY, base.baseline.clone(), nominal);
+        for b in &bases {
+            for start in &starts {
+                let mut cfg = base.clone();
+                cfg.baseline.clone_from(b);
+                cfg.effects.push((e, start.clone()));
+                if self
+                    .lt
+                    .residuals(self.model, self.train, &cfg.baseline, &cfg.active(), &mut r)
+                    .is_ok()
+                {
+                    let rss: f64 = r.iter().map(|v| v * v).sum();
+                    if rss < best.0 {
+                        best = (rss, b.clone(), start.clone());
+                    }
                 }
             }
         }
-        best.1
+        (best.1, best.2)
     }
 
     fn channel_errors(
@@ -708,6 +726,10 @@ fn discover_inner<M: DiscoveryModel + ?Sized>(
         0.0
     };
     let baseline_gap = (calibrated.holdout_mse - holdout_noise_mse).max(0.0);
+    // Rounds repeated after a failed attribution check (each lowers the reference's training
+    // error, so this only bounds the run time).
+    const MAX_REPEATS: usize = 2;
+    let mut repeats = 0;
     while search && named.len() < opts.max_effects {
         // No candidate can pass the gap-fraction test when less than that fraction of the
         // baseline's gap is left: stop without trying.
@@ -716,7 +738,7 @@ fn discover_inner<M: DiscoveryModel + ?Sized>(
         {
             break;
         }
-        if !named.is_empty() {
+        if !named.is_empty() && repeats == 0 {
             // Refit the model as it stands, so that candidates are not credited with the
             // improvement that more iterations on the same model would give anyway.
             let (o, cfg, ne) = ctx.fit(current_cfg.clone(), Some(n_eff))?;
@@ -747,7 +769,13 @@ fn discover_inner<M: DiscoveryModel + ?Sized>(
                 } else {
                     Vec::new()
                 };
-                cfg.effects.push((e, ctx.best_start(&current_cfg, e)));
+                let (base_start, effect_start) = if opts.refit_baseline {
+                    ctx.best_start(&current_cfg, &nominal_base, e)
+                } else {
+                    ctx.best_start(&current_cfg, &current_cfg.baseline, e)
+                };
+                cfg.baseline = base_start;
+                cfg.effects.push((e, effect_start));
                 let r = ctx.fit(cfg, Some(n_eff));
                 progress.fit_done(&ctx.catalogue[e].name);
                 (e, r)
@@ -811,6 +839,53 @@ fn discover_inner<M: DiscoveryModel + ?Sized>(
                 )
                 .then(|| (o.clone(), cfg.clone()))
         });
+        // Attribution check: the gain must come from the effect, not from a better optimum
+        // of the model as it stands. Refit that model started from the candidate's solution
+        // (without the candidate); if it comes as close, the round is repeated against it.
+        let mut attribution = None;
+        if let Some((o, Some((cfg, _)))) = &accepted {
+            let mut probe = cfg.clone();
+            probe.effects.pop();
+            let (ro, rcfg, rne) = ctx.fit(probe, Some(n_eff))?;
+            progress.fit_done("attribution check");
+            let ref_bic_probe = stats::bic(
+                ro.train_mse * ctx.lt.n as f64,
+                ctx.lt.n as f64,
+                n_eff,
+                k_ref,
+            );
+            if ro.train_mse < current.train_mse
+                && !opts.rule.accepts(
+                    ref_bic_probe,
+                    o.bic,
+                    ro.holdout_mse,
+                    o.holdout_mse,
+                    baseline_gap,
+                )
+            {
+                attribution = Some(format!(
+                    "{} failed the attribution check: the model without it, refitted from its solution, reaches train MSE {:.3e} / held-out MSE {:.3e}; round repeated",
+                    o.effects.last().map_or("?", String::as_str),
+                    ro.train_mse,
+                    ro.holdout_mse
+                ));
+                current = ro;
+                current_cfg = rcfg;
+                n_eff = rne;
+            }
+        }
+        if attribution.is_some() {
+            steps.push(Step {
+                candidates: choices.into_iter().map(|(c, _)| c).collect(),
+                named: None,
+                attribution,
+            });
+            repeats += 1;
+            if repeats <= MAX_REPEATS {
+                continue;
+            }
+            break;
+        }
         let step_named = accepted
             .as_ref()
             .map(|(o, _)| o.effects.last().cloned().unwrap_or_default());
@@ -824,10 +899,12 @@ fn discover_inner<M: DiscoveryModel + ?Sized>(
         steps.push(Step {
             candidates: choices.into_iter().map(|(c, _)| c).collect(),
             named: step_named.clone(),
+            attribution: None,
         });
         match (accepted, step_named) {
             (Some((o, Some((cfg, ne)))), Some(name)) => {
                 named.push(name);
+                repeats = 0;
                 current = o;
                 current_cfg = cfg;
                 n_eff = ne;

@@ -217,9 +217,16 @@ pub fn markdown(d: &Discovery, plots: &[PathBuf], dir: &Path) -> String {
     for (k, st) in d.steps.iter().enumerate() {
         let _ = writeln!(
             s,
-            "Round {} (named: {}):\n\n| candidate | held-out gain | BIC drop | train MSE | held-out MSE |\n|---|---|---|---|---|",
+            "Round {} (named: {}):\n",
             k + 1,
             st.named.as_deref().unwrap_or("none")
+        );
+        if let Some(note) = &st.attribution {
+            let _ = writeln!(s, "> {note}\n");
+        }
+        let _ = writeln!(
+            s,
+            "| candidate | held-out gain | BIC drop | train MSE | held-out MSE |\n|---|---|---|---|---|"
         );
         for c in &st.candidates {
             match &c.outcome {
