@@ -3,27 +3,15 @@
 
 mod common;
 use afsv::discover::yaw::YawPlaneModel;
-use afsv::discover::{discover, Discovery, DiscoveryModel, DiscoveryOptions};
+use afsv::discover::{Discovery, DiscoveryModel};
 use afsv::synth::{parse_effects, yaw_default_size, yaw_records, YawNoise};
-use common::summary;
+use common::{run_on, summary, yaw_other_implementation, yaw_outside_catalogue};
 
 fn run(effects: &str, seed: u64) -> Discovery {
     let model = YawPlaneModel::new(YawPlaneModel::default_baseline());
     let hidden = parse_effects(effects, &model.catalogue(), yaw_default_size).unwrap();
     let recs = yaw_records(&model, &hidden, YawNoise::default_levels(), seed).unwrap();
-    let (hold, train): (Vec<_>, Vec<_>) = recs.into_iter().partition(|r| r.holdout);
-    let train: Vec<_> = train.into_iter().map(|r| r.record).collect();
-    let hold: Vec<_> = hold.into_iter().map(|r| r.record).collect();
-    discover(
-        &model,
-        &train,
-        &hold,
-        &[],
-        &[],
-        &DiscoveryOptions::default(),
-        &(),
-    )
-    .unwrap()
+    run_on(&model, recs)
 }
 
 #[test]
@@ -44,4 +32,53 @@ fn hidden_sensor_backlash_is_named_and_the_gap_shrinks() {
 fn vehicle_without_hidden_effect_names_nothing() {
     let d = run("none", 21);
     assert!(d.named.is_empty(), "{}", summary(&d));
+}
+
+/// The calibrated baseline trades seal viscous friction for the hidden Coulomb friction;
+/// without the attribution check a second, spurious effect was named on these records.
+#[test]
+fn hidden_coulomb_friction_is_named_alone() {
+    let d = run("strut-coulomb-friction", 203);
+    assert_eq!(
+        d.named,
+        vec!["strut-coulomb-friction".to_string()],
+        "{}",
+        summary(&d)
+    );
+    assert!(d.gap_shrink >= 0.7, "{}", summary(&d));
+}
+
+fn other_implementation(effects: &str, seed: u64) -> Discovery {
+    let (model, recs) = yaw_other_implementation(effects, seed);
+    run_on(&model, recs)
+}
+
+#[test]
+fn other_implementation_still_names_the_hidden_effect() {
+    let d = other_implementation("velocity-leakage", 41);
+    assert_eq!(
+        d.named,
+        vec!["velocity-leakage".to_string()],
+        "{}",
+        summary(&d)
+    );
+    assert!(d.gap_shrink >= 0.7, "{}", summary(&d));
+}
+
+#[test]
+fn other_implementation_without_effect_names_nothing() {
+    let d = other_implementation("none", 42);
+    assert!(d.named.is_empty(), "{}", summary(&d));
+}
+
+#[test]
+fn an_effect_outside_the_catalogue_is_not_claimed_as_explained() {
+    let (model, recs) = yaw_outside_catalogue(43);
+    let d = run_on(&model, recs);
+    assert!(
+        d.named.is_empty() || d.gap_shrink < 0.7,
+        "claims {:.2} of a gap it cannot explain: {}",
+        d.gap_shrink,
+        summary(&d)
+    );
 }
