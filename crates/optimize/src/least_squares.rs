@@ -2,6 +2,11 @@
 //! (Marquardt 1963; Nocedal & Wright, *Numerical Optimization*, ch. 10), forward-difference
 //! Jacobian, and parameter standard errors from the Jacobian at the solution:
 //! `cov = s^2 (J^T J)^-1`, `s^2 = RSS / (m - n)`.
+//!
+//! The normal equations are solved in parameters scaled by their typical magnitudes
+//! (`p_j / typical_j`, as MINPACK's `diag`): physical parameters span many decades (a bulk
+//! modulus of 1e9 Pa beside a leakage coefficient of 1e-13 m³/(s·Pa)), and unscaled
+//! `J^T J` would then lose every digit in the Cholesky factorisation.
 
 use nalgebra::{DMatrix, DVector};
 
@@ -32,7 +37,8 @@ pub struct FitOptions {
     pub upper: Option<Vec<f64>>,
     /// Relative forward-difference step for the Jacobian.
     pub diff_step: f64,
-    /// Typical magnitude of each parameter (sets the difference step when `p` is near zero).
+    /// Typical magnitude of each parameter: scales the parameter in the linear algebra and
+    /// sets the difference step when `p` is near zero. Default: `|p0|`, or 1 where `p0` is 0.
     pub typical: Option<Vec<f64>>,
 }
 
@@ -140,7 +146,18 @@ pub fn fit<P: Problem + ?Sized>(
             "start {p0:?} is not finite"
         )));
     }
-    let typical = opts.typical.clone().unwrap_or_else(|| vec![1.0; n]);
+    let typical = opts.typical.clone().unwrap_or_else(|| {
+        p0.iter()
+            .map(|v| if *v != 0.0 { v.abs() } else { 1.0 })
+            .collect()
+    });
+    if typical.len() != n || typical.iter().any(|t| !t.is_finite() || *t == 0.0) {
+        return Err(LeastSquaresError::Invalid(
+            "typical magnitudes must have one finite, non-zero entry per parameter".into(),
+        ));
+    }
+    // Column scales of the Jacobian: work in q_j = p_j / scale_j.
+    let scale: Vec<f64> = typical.iter().map(|t| t.abs()).collect();
     let mut p = p0.to_vec();
     project(&mut p, &lo, &hi);
     let mut r = vec![0.0; m];
@@ -174,7 +191,11 @@ pub fn fit<P: Problem + ?Sized>(
             *evals += 1;
             let ok = problem.residuals(&pp, &mut rr).is_ok() && rr.iter().all(|v| v.is_finite());
             for i in 0..m {
-                jac[(i, j)] = if ok { (rr[i] - r[i]) / h } else { 0.0 };
+                jac[(i, j)] = if ok {
+                    (rr[i] - r[i]) / h * scale[j]
+                } else {
+                    0.0
+                };
             }
             pp[j] = p[j];
         }
@@ -187,17 +208,20 @@ pub fn fit<P: Problem + ?Sized>(
         let jtr = jac.transpose() * DVector::from_column_slice(&r);
         let mut improved = false;
         let mut small_step = false;
+        // A parameter the residuals do not depend on gets a small damping floor, so that
+        // the damped matrix stays positive definite.
+        let floor = 1e-12 * (0..n).map(|d| jtj[(d, d)]).fold(f64::MIN_POSITIVE, f64::max);
         for _ in 0..30 {
             let mut a = jtj.clone();
             for d in 0..n {
-                a[(d, d)] += lambda * jtj[(d, d)].max(1e-12);
+                a[(d, d)] += lambda * jtj[(d, d)].max(floor);
             }
             let Some(step) = a.clone().cholesky().map(|c| c.solve(&(-&jtr))) else {
                 lambda *= 10.0;
                 continue;
             };
             for j in 0..n {
-                p_try[j] = p[j] + step[j];
+                p_try[j] = p[j] + step[j] * scale[j];
             }
             project(&mut p_try, &lo, &hi);
             small_step =
@@ -246,7 +270,8 @@ pub fn fit<P: Problem + ?Sized>(
     let s2 = rss / dof;
     let (covariance, std_errors) = match jtj.clone().try_inverse() {
         Some(inv) if inv.iter().all(|v| v.is_finite()) => {
-            let cov = inv * s2;
+            // Back from scaled parameters: cov_ij = scale_i scale_j (J_s^T J_s)^-1_ij s^2.
+            let cov = DMatrix::from_fn(n, n, |i, j| inv[(i, j)] * scale[i] * scale[j] * s2);
             let se = (0..n)
                 .map(|i| {
                     let v = cov[(i, i)];

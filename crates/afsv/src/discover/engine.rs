@@ -22,7 +22,14 @@ pub struct DiscoveryOptions {
     pub refit_baseline: bool,
     /// Band split for the residual signatures (Hz).
     pub split_hz: f64,
+    /// Start points scouted per candidate: each gets a short fit of
+    /// [`SCOUT_ITERATIONS`], and the best is fitted to convergence. 1 = fit the best start
+    /// point only.
+    pub starts: usize,
 }
+
+/// Levenberg-Marquardt iterations of a scouting fit (see [`DiscoveryOptions::starts`]).
+pub const SCOUT_ITERATIONS: usize = 6;
 
 impl Default for DiscoveryOptions {
     fn default() -> Self {
@@ -33,6 +40,7 @@ impl Default for DiscoveryOptions {
             candidates: None,
             refit_baseline: true,
             split_hz: 2.0,
+            starts: 3,
         }
     }
 }
@@ -366,6 +374,16 @@ impl<M: DiscoveryModel + ?Sized> Context<'_, M> {
     /// and score it on the held-out records. `n_eff` fixes the effective sample size used in
     /// the information criteria so that models compared within a round share it.
     fn fit(&self, config: Config, n_eff: Option<f64>) -> Result<Fitted, String> {
+        self.fit_for(config, n_eff, self.opts.max_iter)
+    }
+
+    /// [`Self::fit`] with an iteration limit.
+    fn fit_for(
+        &self,
+        config: Config,
+        n_eff: Option<f64>,
+        max_iter: usize,
+    ) -> Result<Fitted, String> {
         let p0 = config.pack();
         let (params, se, converged) = if p0.is_empty() {
             (Vec::new(), Vec::new(), true)
@@ -381,7 +399,7 @@ impl<M: DiscoveryModel + ?Sized> Context<'_, M> {
                 &obj,
                 &p0,
                 &FitOptions {
-                    max_iter: self.opts.max_iter,
+                    max_iter,
                     ftol: 1e-8,
                     xtol: 1e-8,
                     lower: Some(lower),
@@ -463,19 +481,19 @@ impl<M: DiscoveryModel + ?Sized> Context<'_, M> {
         Ok((outcome, fitted, n_eff_here))
     }
 
-    /// Start values `(baseline, effect)` for effect `e` added to `base`: the effect's nominal
-    /// start, its "off" corner and a few points spread over its bounds (log-spaced where the
-    /// range spans decades), each with the baseline as fitted and at its nominal values,
-    /// whichever gives the smallest training error. Guards against starting where the
+    /// Start values `(baseline, effect)` for effect `e` added to `base`, best training error
+    /// first: the effect's nominal start, its "off" corner and a few points spread over its
+    /// bounds (log-spaced where the range spans decades), each with the better of the
+    /// baseline as fitted and at its nominal values. Guards against starting where the
     /// effect is inactive (a saturation limit above the signal, a dead zone of zero width)
     /// and the gradient is zero, and against a calibration that has bent the baseline
     /// towards the missing effect.
-    fn best_start(
+    fn ranked_starts(
         &self,
         base: &Config,
         nominal_baseline: &[f64],
         e: usize,
-    ) -> (Vec<f64>, Vec<f64>) {
+    ) -> Vec<(Vec<f64>, Vec<f64>)> {
         let specs = &self.catalogue[e].params;
         let nominal: Vec<f64> = specs.iter().map(|s| s.initial).collect();
         let fractions = [0.5, 0.1, 0.9, 0.3, 0.7];
@@ -505,9 +523,11 @@ impl<M: DiscoveryModel + ?Sized> Context<'_, M> {
         // baseline back at its nominal values.
         let bases = [base.baseline.clone(), nominal_baseline.to_vec()];
         let mut r = vec![0.0; self.lt.n];
-        let mut best = (f64::INFINITY, base.baseline.clone(), nominal);
-        for b in &bases {
-            for start in &starts {
+        // Per effect start: the better of the two baselines.
+        let mut ranked: Vec<(f64, Vec<f64>, Vec<f64>)> = Vec::new();
+        for start in starts {
+            let mut best: Option<(f64, Vec<f64>)> = None;
+            for b in &bases {
                 let mut cfg = base.clone();
                 cfg.baseline.clone_from(b);
                 cfg.effects.push((e, start.clone()));
@@ -517,13 +537,75 @@ impl<M: DiscoveryModel + ?Sized> Context<'_, M> {
                     .is_ok()
                 {
                     let rss: f64 = r.iter().map(|v| v * v).sum();
-                    if rss < best.0 {
-                        best = (rss, b.clone(), start.clone());
+                    if best.as_ref().is_none_or(|(b_rss, _)| rss < *b_rss) {
+                        best = Some((rss, b.clone()));
                     }
                 }
             }
+            if let Some((rss, b)) = best {
+                if !ranked.iter().any(|(_, _, s)| *s == start) {
+                    ranked.push((rss, b, start));
+                }
+            }
         }
-        (best.1, best.2)
+        ranked.sort_by(|a, b| a.0.total_cmp(&b.0));
+        if ranked.is_empty() {
+            ranked.push((f64::INFINITY, base.baseline.clone(), nominal));
+        }
+        ranked.into_iter().map(|(_, b, s)| (b, s)).collect()
+    }
+
+    /// Fit candidate effect `e` added to `current`: scout the best few start points
+    /// ([`DiscoveryOptions::starts`]) with short fits, then fit the best to convergence.
+    /// The error surface of an effect parameter is often not convex once the baseline has
+    /// been calibrated without it (a tire relaxation length trades against the cornering
+    /// stiffness, so a tiny length can look better than the true one from the calibrated
+    /// point), and the start with the lowest initial error is then the wrong basin.
+    fn fit_candidate(
+        &self,
+        current: &Config,
+        nominal_baseline: &[f64],
+        e: usize,
+        n_eff: f64,
+    ) -> Result<Fitted, String> {
+        let all_base: Vec<usize> = (0..current.baseline.len()).collect();
+        let starts = if self.opts.refit_baseline {
+            self.ranked_starts(current, nominal_baseline, e)
+        } else {
+            self.ranked_starts(current, &current.baseline, e)
+        };
+        let config_at = |(b, s): &(Vec<f64>, Vec<f64>)| {
+            let mut cfg = current.clone();
+            cfg.free_baseline = if self.opts.refit_baseline {
+                all_base.clone()
+            } else {
+                Vec::new()
+            };
+            cfg.baseline.clone_from(b);
+            cfg.effects.push((e, s.clone()));
+            cfg
+        };
+        let k = self.opts.starts.max(1).min(starts.len());
+        if k == 1 {
+            return self.fit(config_at(&starts[0]), Some(n_eff));
+        }
+        let mut best: Option<Fitted> = None;
+        let mut last_err = String::new();
+        for start in &starts[..k] {
+            match self.fit_for(config_at(start), Some(n_eff), SCOUT_ITERATIONS) {
+                Ok(f) => {
+                    if best
+                        .as_ref()
+                        .is_none_or(|b| f.0.train_mse < b.0.train_mse)
+                    {
+                        best = Some(f);
+                    }
+                }
+                Err(msg) => last_err = msg,
+            }
+        }
+        let (_, cfg, _) = best.ok_or(last_err)?;
+        self.fit(cfg, Some(n_eff))
     }
 
     fn channel_errors(
@@ -763,20 +845,7 @@ fn discover_inner<M: DiscoveryModel + ?Sized>(
         let results: Vec<(usize, Result<Fitted, String>)> = tried
             .par_iter()
             .map(|&e| {
-                let mut cfg = current_cfg.clone();
-                cfg.free_baseline = if opts.refit_baseline {
-                    all_base.clone()
-                } else {
-                    Vec::new()
-                };
-                let (base_start, effect_start) = if opts.refit_baseline {
-                    ctx.best_start(&current_cfg, &nominal_base, e)
-                } else {
-                    ctx.best_start(&current_cfg, &current_cfg.baseline, e)
-                };
-                cfg.baseline = base_start;
-                cfg.effects.push((e, effect_start));
-                let r = ctx.fit(cfg, Some(n_eff));
+                let r = ctx.fit_candidate(&current_cfg, &nominal_base, e, n_eff);
                 progress.fit_done(&ctx.catalogue[e].name);
                 (e, r)
             })
