@@ -406,8 +406,16 @@ pub fn yaw_programme() -> Vec<(afsv_dynamics::Manoeuvre, bool)> {
             ),
             true,
         ),
+        // The field path change (held out below) is large, slow steering at high pressure
+        // and flow; without a record of that kind in training, seal friction's Coulomb and
+        // viscous parts cannot be told apart and the held-out path change extrapolates.
         (
-            Manoeuvre::open_loop(kmh(40.0), 8.0, fast_step(-15.0), "step"),
+            Manoeuvre::course(
+                kmh(0.8 * change),
+                14.0,
+                PathDriver::new(Course::path_change_fig_3_6()),
+                "path-change",
+            ),
             false,
         ),
         (
