@@ -149,6 +149,8 @@ impl Record {
             column,
             message,
         };
+        // Spreadsheet exports often start with a UTF-8 byte-order mark.
+        let text = text.strip_prefix('\u{feff}').unwrap_or(text);
         let mut reader = csv::ReaderBuilder::new()
             .has_headers(true)
             .trim(csv::Trim::All)
@@ -308,6 +310,14 @@ mod tests {
         assert!(e.to_string().starts_with("rec.csv:3:"), "{e}");
         let e = Record::parse_csv("time_s,force_n\n0,nan\n", p()).unwrap_err();
         assert!(e.to_string().starts_with("rec.csv:2:2:"), "{e}");
+    }
+
+    #[test]
+    fn spreadsheet_exports_with_bom_crlf_and_quotes_parse() {
+        let text = "\u{feff}\"time_s\",force_n\r\n0,1.5\r\n0.1,2.5e0\r\n";
+        let r = Record::parse_csv(text, p()).unwrap();
+        assert_eq!(r.column("time_s").unwrap(), &[0.0, 0.1]);
+        assert_eq!(r.column("force_n").unwrap(), &[1.5, 2.5]);
     }
 
     #[test]

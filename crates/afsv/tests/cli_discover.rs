@@ -138,3 +138,81 @@ fn list_effects_prints_the_catalogue() {
     let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
     assert_eq!(v["catalogue"].as_array().unwrap().len(), 6);
 }
+
+/// Records as another tool would write them: columns in another order, an extra column, a
+/// byte-order mark and CRLF line ends, 100 Hz instead of 200 Hz, a clock that starts at
+/// 1000 s, and no sidecar (speed from its column).
+#[test]
+fn records_written_elsewhere_are_read_and_the_effect_is_named() {
+    let data = tmp("elsewhere-synth");
+    let foreign = tmp("elsewhere");
+    let report = tmp("elsewhere-report");
+    let out = afsv(&[
+        "synth",
+        "--model",
+        "yaw-plane",
+        "--effects",
+        "velocity-leakage",
+        "--seed",
+        "11",
+        "-o",
+        data.to_str().unwrap(),
+    ]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    for set in ["train", "holdout"] {
+        std::fs::create_dir_all(foreign.join(set)).unwrap();
+        for entry in std::fs::read_dir(data.join(set)).unwrap().flatten() {
+            let path = entry.path();
+            if path.extension().is_none_or(|e| e != "csv") {
+                continue;
+            }
+            let rec = afsv::record::Record::read(&path).unwrap();
+            let mut names: Vec<String> = rec.names().to_vec();
+            names.reverse();
+            let mut text = String::from("\u{feff}");
+            text += &names.join(",");
+            text += ",oil_temp_c\r\n";
+            for i in (0..rec.len()).step_by(2) {
+                for name in &names {
+                    let mut v = rec.column(name).unwrap()[i];
+                    if name == "time_s" {
+                        v += 1000.0;
+                    }
+                    text += &format!("{v:.9e},");
+                }
+                text += "41.5\r\n";
+            }
+            std::fs::write(foreign.join(set).join(path.file_name().unwrap()), text).unwrap();
+        }
+    }
+    let out = afsv(&[
+        "discover",
+        "--model",
+        "yaw-plane",
+        "--train",
+        foreign.join("train").to_str().unwrap(),
+        "--holdout",
+        foreign.join("holdout").to_str().unwrap(),
+        "-o",
+        report.to_str().unwrap(),
+    ]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert_eq!(v["named"], serde_json::json!(["velocity-leakage"]), "{v}");
+    assert!(
+        v["gap_shrink"].as_f64().unwrap() > 0.7,
+        "{}",
+        v["gap_shrink"]
+    );
+    for d in [&data, &foreign, &report] {
+        let _ = std::fs::remove_dir_all(d);
+    }
+}

@@ -210,7 +210,10 @@ pub fn fit<P: Problem + ?Sized>(
         let mut small_step = false;
         // A parameter the residuals do not depend on gets a small damping floor, so that
         // the damped matrix stays positive definite.
-        let floor = 1e-12 * (0..n).map(|d| jtj[(d, d)]).fold(f64::MIN_POSITIVE, f64::max);
+        let floor = 1e-12
+            * (0..n)
+                .map(|d| jtj[(d, d)])
+                .fold(f64::MIN_POSITIVE, f64::max);
         for _ in 0..30 {
             let mut a = jtj.clone();
             for d in 0..n {

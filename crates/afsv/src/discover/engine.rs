@@ -594,10 +594,7 @@ impl<M: DiscoveryModel + ?Sized> Context<'_, M> {
         for start in &starts[..k] {
             match self.fit_for(config_at(start), Some(n_eff), SCOUT_ITERATIONS) {
                 Ok(f) => {
-                    if best
-                        .as_ref()
-                        .is_none_or(|b| f.0.train_mse < b.0.train_mse)
-                    {
+                    if best.as_ref().is_none_or(|b| f.0.train_mse < b.0.train_mse) {
                         best = Some(f);
                     }
                 }
