@@ -175,12 +175,14 @@ impl Record {
             rec.columns.push(Vec::new());
         }
         let header_line = headers_line(&reader);
+        let mut row_lines = Vec::new();
         for row in reader.records() {
             let row = row.map_err(|e| {
                 let line = e.position().map_or(header_line, |p| p.line());
                 perr(line, 1, format!("{e}"))
             })?;
             let line = row.position().map_or(0, |p| p.line());
+            row_lines.push(line);
             if row.len() != rec.names.len() {
                 return Err(perr(
                     line,
@@ -204,6 +206,18 @@ impl Record {
                     ));
                 }
                 rec.columns[j].push(v);
+            }
+        }
+        // Every model replays records in time: a clock that stalls or runs back is an error
+        // in the file, reported where it happens.
+        if let Some(j) = rec.names.iter().position(|n| n == "time_s") {
+            let t = &rec.columns[j];
+            if let Some(i) = (1..t.len()).find(|&i| t[i] <= t[i - 1]) {
+                return Err(perr(
+                    row_lines[i],
+                    j + 1,
+                    format!("time_s does not increase ({} after {})", t[i], t[i - 1]),
+                ));
             }
         }
         Ok(rec)
@@ -318,6 +332,12 @@ mod tests {
         let r = Record::parse_csv(text, p()).unwrap();
         assert_eq!(r.column("time_s").unwrap(), &[0.0, 0.1]);
         assert_eq!(r.column("force_n").unwrap(), &[1.5, 2.5]);
+    }
+
+    #[test]
+    fn time_that_does_not_increase_is_reported_where_it_happens() {
+        let e = Record::parse_csv("force_n,time_s\n1,0\n2,0.1\n3,0.1\n", p()).unwrap_err();
+        assert!(e.to_string().starts_with("rec.csv:4:2:"), "{e}");
     }
 
     #[test]

@@ -182,11 +182,23 @@ pub fn markdown(d: &Discovery, plots: &[PathBuf], dir: &Path) -> String {
         );
     }
     let _ = writeln!(s, "\n## Error per channel (NRMSE = RMS error / channel standard deviation)\n\n| channel | train before | train after | held-out before | held-out after |\n|---|---|---|---|---|");
+    // A channel no record has is not compared: shown as "not recorded", not as NaN.
+    let cell = |e: &super::ChannelError| {
+        if e.samples == 0 {
+            "not recorded".to_string()
+        } else {
+            format!("{:.4}", e.nrmse)
+        }
+    };
     for (tb, ta, hb, ha) in &d.channel_errors {
         let _ = writeln!(
             s,
-            "| {} | {:.4} | {:.4} | {:.4} | {:.4} |",
-            tb.channel, tb.nrmse, ta.nrmse, hb.nrmse, ha.nrmse
+            "| {} | {} | {} | {} | {} |",
+            tb.channel,
+            cell(tb),
+            cell(ta),
+            cell(hb),
+            cell(ha)
         );
     }
     let _ = writeln!(s, "\n## Where the calibrated baseline disagrees most\n\n| record | channel | NRMSE | bias | lag (s) | amplitude ratio | freq. shift (%) | low-band share | zero-crossing ratio | worst phase |\n|---|---|---|---|---|---|---|---|---|---|");
