@@ -5,7 +5,7 @@ mod common;
 use afsv::discover::yaw::YawPlaneModel;
 use afsv::discover::{Discovery, DiscoveryModel};
 use afsv::synth::{parse_effects, yaw_default_size, yaw_records, YawNoise};
-use common::{run_on, summary, yaw_other_implementation, yaw_outside_catalogue};
+use common::{assert_named, run_on, summary, yaw_other_implementation, yaw_outside_catalogue};
 
 fn run(effects: &str, seed: u64) -> Discovery {
     let model = YawPlaneModel::new(YawPlaneModel::default_baseline());
@@ -17,13 +17,7 @@ fn run(effects: &str, seed: u64) -> Discovery {
 #[test]
 fn hidden_sensor_backlash_is_named_and_the_gap_shrinks() {
     let d = run("sensor-backlash", 1);
-    assert_eq!(
-        d.named,
-        vec!["sensor-backlash".to_string()],
-        "{}",
-        summary(&d)
-    );
-    assert!(d.gap_shrink >= 0.7, "{}", summary(&d));
+    assert_named(&d, &["sensor-backlash"], 0.7);
     let w = d.final_model.effect_params[0][0].1;
     assert!((w - 0.5).abs() < 0.1, "half width {w}");
 }
@@ -39,13 +33,7 @@ fn vehicle_without_hidden_effect_names_nothing() {
 #[test]
 fn hidden_coulomb_friction_is_named_alone() {
     let d = run("strut-coulomb-friction", 203);
-    assert_eq!(
-        d.named,
-        vec!["strut-coulomb-friction".to_string()],
-        "{}",
-        summary(&d)
-    );
-    assert!(d.gap_shrink >= 0.7, "{}", summary(&d));
+    assert_named(&d, &["strut-coulomb-friction"], 0.7);
 }
 
 fn other_implementation(effects: &str, seed: u64) -> Discovery {
@@ -56,13 +44,7 @@ fn other_implementation(effects: &str, seed: u64) -> Discovery {
 #[test]
 fn other_implementation_still_names_the_hidden_effect() {
     let d = other_implementation("velocity-leakage", 41);
-    assert_eq!(
-        d.named,
-        vec!["velocity-leakage".to_string()],
-        "{}",
-        summary(&d)
-    );
-    assert!(d.gap_shrink >= 0.7, "{}", summary(&d));
+    assert_named(&d, &["velocity-leakage"], 0.7);
 }
 
 #[test]

@@ -13,6 +13,17 @@ use afsv::synth::{
 };
 use afsv_dynamics::SolverKind;
 
+/// Assert that exactly `effects` were named (in any order) and the held-out gap shrank by
+/// at least `min_shrink`; on failure, show every candidate's score.
+pub fn assert_named(d: &Discovery, effects: &[&str], min_shrink: f64) {
+    let mut named = d.named.clone();
+    named.sort();
+    let mut want: Vec<String> = effects.iter().map(|e| e.to_string()).collect();
+    want.sort();
+    assert_eq!(named, want, "{}", summary(d));
+    assert!(d.gap_shrink >= min_shrink, "{}", summary(d));
+}
+
 /// Split synthesized records into (training, held-out) by their role.
 pub fn split(recs: Vec<SynthRecord>) -> (Vec<Record>, Vec<Record>) {
     let (hold, train): (Vec<_>, Vec<_>) = recs.into_iter().partition(|r| r.holdout);
