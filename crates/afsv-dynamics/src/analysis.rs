@@ -333,6 +333,48 @@ pub struct SensitivityTable {
     pub rows: Vec<SensitivityRow>,
 }
 
+impl SensitivityTable {
+    /// Plain-text table: a header, one line per row (percent change of each measure), and
+    /// the nominal measures per load.
+    pub fn to_text(&self) -> String {
+        use std::fmt::Write as _;
+        let mut s = format!(
+            "{:<9} {:<6} {:>5}  {:>9} {:>9} {:>9} {:>9} {:>9} {:>9}\n",
+            "load", "param", "var%", "freq", "damping", "gain", "rate", "overshoot", "effic."
+        );
+        for r in &self.rows {
+            let c = r.change;
+            let _ = writeln!(
+                s,
+                "{:<9} {:<6} {:>+5.0}  {:>+9.2} {:>+9.2} {:>+9.2} {:>+9.2} {:>+9.2} {:>+9.2}",
+                r.load.name(),
+                r.parameter.symbol(),
+                r.variation_percent,
+                c.frequency,
+                c.damping,
+                c.gain,
+                c.response_rate,
+                c.overshoot,
+                c.efficiency
+            );
+        }
+        for n in &self.nominal {
+            let _ = writeln!(
+                s,
+                "nominal {:<9}: f = {:.3} Hz, zeta = {:.4}, gain = {:.4}, rise = {:.3} s, OS = {:.1} %, eta = {:.4}",
+                n.load.map(|l| l.name()).unwrap_or("-"),
+                n.natural_frequency_hz,
+                n.damping_ratio,
+                n.steering_gain,
+                n.rise_time_s,
+                n.overshoot_percent,
+                n.power_efficiency
+            );
+        }
+        s
+    }
+}
+
 /// Variations of section 3.4.3 (%).
 pub const VARIATIONS_PERCENT: [f64; 4] = [-30.0, -15.0, 15.0, 30.0];
 

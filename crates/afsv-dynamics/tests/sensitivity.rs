@@ -22,21 +22,7 @@ fn change(
 #[test]
 fn directions_of_section_3_4_3() {
     let t = sensitivity(U50, &MeasureSpec::default()).unwrap();
-    for r in &t.rows {
-        let c = r.change;
-        eprintln!(
-            "{:8} {:6} {:+4.0}%: f {:+6.2} zeta {:+6.2} gain {:+6.2} rate {:+6.2} OS {:+6.2} eta {:+6.2}",
-            r.load.name(),
-            r.parameter.symbol(),
-            r.variation_percent,
-            c.frequency,
-            c.damping,
-            c.gain,
-            c.response_rate,
-            c.overshoot,
-            c.efficiency
-        );
-    }
+    eprint!("{}", t.to_text());
     use SensitivityParam::*;
     for load in Load::ALL {
         // Higher B_eff: higher frequency, lower overshoot.

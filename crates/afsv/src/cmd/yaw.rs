@@ -328,45 +328,7 @@ pub fn run(cmd: Command) -> CmdResult {
                     "Percent change of the measures (section 3.4.3), {speed_kmh} km/h, {:?}",
                     spec.options.form
                 );
-                println!(
-                    "{:<9} {:<6} {:>5}  {:>9} {:>9} {:>9} {:>9} {:>9} {:>9}",
-                    "load",
-                    "param",
-                    "var%",
-                    "freq",
-                    "damping",
-                    "gain",
-                    "rate",
-                    "overshoot",
-                    "effic."
-                );
-                for r in &t.rows {
-                    let c = r.change;
-                    println!(
-                        "{:<9} {:<6} {:>+5.0}  {:>+9.2} {:>+9.2} {:>+9.2} {:>+9.2} {:>+9.2} {:>+9.2}",
-                        r.load.name(),
-                        r.parameter.symbol(),
-                        r.variation_percent,
-                        c.frequency,
-                        c.damping,
-                        c.gain,
-                        c.response_rate,
-                        c.overshoot,
-                        c.efficiency
-                    );
-                }
-                for n in &t.nominal {
-                    println!(
-                        "nominal {:<9}: f = {:.3} Hz, zeta = {:.4}, gain = {:.4}, rise = {:.3} s, OS = {:.1} %, eta = {:.4}",
-                        n.load.map(|l| l.name()).unwrap_or("-"),
-                        n.natural_frequency_hz,
-                        n.damping_ratio,
-                        n.steering_gain,
-                        n.rise_time_s,
-                        n.overshoot_percent,
-                        n.power_efficiency
-                    );
-                }
+                print!("{}", t.to_text());
             } else {
                 afsv::output::print_json(&t)?;
             }
