@@ -1,20 +1,7 @@
 //! `afsv synth` and `afsv discover` from the command line.
 
-use std::path::PathBuf;
-use std::process::Command;
-
-fn afsv(args: &[&str]) -> std::process::Output {
-    Command::new(env!("CARGO_BIN_EXE_afsv"))
-        .args(args)
-        .output()
-        .expect("afsv runs")
-}
-
-fn tmp(name: &str) -> PathBuf {
-    let d = std::env::temp_dir().join(format!("afsv-cli-discover-{}-{name}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&d);
-    d
-}
+mod cli_support;
+use cli_support::{afsv, scratch};
 
 #[test]
 fn synth_then_discover_names_the_hidden_effect() {
@@ -215,4 +202,8 @@ fn records_written_elsewhere_are_read_and_the_effect_is_named() {
     for d in [&data, &foreign, &report] {
         let _ = std::fs::remove_dir_all(d);
     }
+}
+
+fn tmp(name: &str) -> std::path::PathBuf {
+    scratch("discover", name)
 }

@@ -1,19 +1,7 @@
 //! CLI tests of `afsv hps`.
 
-use std::process::Command;
-
-fn afsv(args: &[&str]) -> std::process::Output {
-    Command::new(env!("CARGO_BIN_EXE_afsv"))
-        .args(args)
-        .output()
-        .unwrap()
-}
-
-fn tmp(name: &str) -> std::path::PathBuf {
-    let d = std::env::temp_dir().join(format!("afsv_cli_hps_{}", std::process::id()));
-    std::fs::create_dir_all(&d).unwrap();
-    d.join(name)
-}
+mod cli_support;
+use cli_support::{afsv, scratch};
 
 #[test]
 fn harmonic_writes_record_sidecar_and_plot_then_identify_reads_it() {
@@ -124,4 +112,8 @@ fn errors_are_one_line() {
     }
     let out = afsv(&["hps", "harmonic", "--help"]);
     assert!(String::from_utf8_lossy(&out.stdout).contains("--amp-mm"));
+}
+
+fn tmp(name: &str) -> std::path::PathBuf {
+    scratch("hps", name)
 }

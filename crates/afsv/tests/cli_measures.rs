@@ -1,24 +1,10 @@
 //! `afsv measures ...` end to end.
 
+mod cli_support;
+use cli_support::{afsv, json, scratch};
+
 use std::f64::consts::PI;
 use std::fmt::Write as _;
-use std::process::Command;
-
-fn afsv(args: &[&str]) -> std::process::Output {
-    Command::new(env!("CARGO_BIN_EXE_afsv"))
-        .args(args)
-        .output()
-        .expect("run afsv")
-}
-
-fn json(out: &std::process::Output) -> serde_json::Value {
-    assert!(
-        out.status.success(),
-        "stderr: {}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    serde_json::from_slice(&out.stdout).expect("JSON on stdout")
-}
 
 fn one_line_error(out: &std::process::Output, needle: &str) {
     assert!(!out.status.success());
@@ -26,12 +12,6 @@ fn one_line_error(out: &std::process::Output, needle: &str) {
     assert_eq!(err.trim_end().lines().count(), 1, "{err}");
     assert!(err.contains(needle), "{err}");
     assert!(!err.contains("panicked"), "{err}");
-}
-
-fn tmp(name: &str) -> std::path::PathBuf {
-    let dir = std::env::temp_dir().join(format!("afsv-cli-measures-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
-    dir.join(name)
 }
 
 fn write_csv(name: &str, header: &str, rows: impl Iterator<Item = Vec<f64>>) -> String {
@@ -261,4 +241,8 @@ fn help_is_complete() {
     for opt in ["--input", "--hours", "--weighting", "--k", "--method"] {
         assert!(text.contains(opt), "{text}");
     }
+}
+
+fn tmp(name: &str) -> std::path::PathBuf {
+    scratch("measures", name)
 }

@@ -1,29 +1,7 @@
 //! `afsv terrain generate` and `afsv terrain psd` end to end.
 
-use std::path::PathBuf;
-use std::process::{Command, Output};
-
-fn afsv(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_afsv"))
-        .args(args)
-        .output()
-        .expect("run afsv")
-}
-
-fn json(out: &Output) -> serde_json::Value {
-    assert!(
-        out.status.success(),
-        "stderr: {}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    serde_json::from_slice(&out.stdout).expect("JSON on stdout")
-}
-
-fn tmp(name: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("afsv-cli-terrain-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
-    dir.join(name)
-}
+mod cli_support;
+use cli_support::{afsv, json, scratch};
 
 /// A failing run: non-zero exit, one stderr line naming `needle`, no panic.
 fn fails_with(args: &[&str], needle: &str) {
@@ -287,4 +265,8 @@ fn bad_input_gives_one_line_errors() {
         "track-width",
     );
     fails_with(&["terrain", "psd", "-i", s, "--band", "1,0.5"], "band");
+}
+
+fn tmp(name: &str) -> std::path::PathBuf {
+    scratch("terrain", name)
 }

@@ -1,28 +1,7 @@
 //! `afsv tire sweep` and `afsv tire envelope` end to end.
 
-use std::process::Command;
-
-fn afsv(args: &[&str]) -> std::process::Output {
-    Command::new(env!("CARGO_BIN_EXE_afsv"))
-        .args(args)
-        .output()
-        .expect("run afsv")
-}
-
-fn json(out: &std::process::Output) -> serde_json::Value {
-    assert!(
-        out.status.success(),
-        "stderr: {}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    serde_json::from_slice(&out.stdout).expect("JSON on stdout")
-}
-
-fn tmp(name: &str) -> std::path::PathBuf {
-    let dir = std::env::temp_dir().join(format!("afsv-cli-tire-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
-    dir.join(name)
-}
+mod cli_support;
+use cli_support::{afsv, json, scratch};
 
 #[test]
 fn sweep_lateral_rows_and_plot() {
@@ -250,4 +229,8 @@ fn help_documents_the_options() {
     ] {
         assert!(h.contains(opt), "{opt} missing from help");
     }
+}
+
+fn tmp(name: &str) -> std::path::PathBuf {
+    scratch("tire", name)
 }

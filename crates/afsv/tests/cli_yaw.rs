@@ -1,24 +1,16 @@
 //! `afsv yaw` and `afsv params` end to end.
 
-use std::path::PathBuf;
-use std::process::Command;
+mod cli_support;
+use cli_support::scratch;
 
+/// Run `afsv`: (success, stdout, stderr).
 fn afsv(args: &[&str]) -> (bool, String, String) {
-    let out = Command::new(env!("CARGO_BIN_EXE_afsv"))
-        .args(args)
-        .output()
-        .expect("run afsv");
+    let out = cli_support::afsv(args);
     (
         out.status.success(),
         String::from_utf8_lossy(&out.stdout).into_owned(),
         String::from_utf8_lossy(&out.stderr).into_owned(),
     )
-}
-
-fn tmp(name: &str) -> PathBuf {
-    let d = std::env::temp_dir().join(format!("afsv-cli-yaw-{}", std::process::id()));
-    std::fs::create_dir_all(&d).unwrap();
-    d.join(name)
 }
 
 #[test]
@@ -177,4 +169,8 @@ fn bad_input_is_a_one_line_error() {
     }
     let (ok, stdout, _) = afsv(&["yaw", "simulate", "--help"]);
     assert!(ok && stdout.contains("csv:FILE:COLUMN") && stdout.contains("path-change"));
+}
+
+fn tmp(name: &str) -> std::path::PathBuf {
+    scratch("yaw", name)
 }
