@@ -24,6 +24,17 @@ pub fn assert_named(d: &Discovery, effects: &[&str], min_shrink: f64) {
     assert!(d.gap_shrink >= min_shrink, "{}", summary(d));
 }
 
+/// Assert the honest answer for a truth outside the catalogue: nothing named, or a shrink
+/// that admits only part of the gap is explained.
+pub fn assert_not_claimed(d: &Discovery) {
+    assert!(
+        d.named.is_empty() || d.gap_shrink < 0.7,
+        "claims {:.2} of a gap it cannot explain: {}",
+        d.gap_shrink,
+        summary(d)
+    );
+}
+
 /// Split synthesized records into (training, held-out) by their role.
 pub fn split(recs: Vec<SynthRecord>) -> (Vec<Record>, Vec<Record>) {
     let (hold, train): (Vec<_>, Vec<_>) = recs.into_iter().partition(|r| r.holdout);
