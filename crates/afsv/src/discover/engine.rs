@@ -521,7 +521,10 @@ impl<M: DiscoveryModel + ?Sized> Context<'_, M> {
         // The calibrated baseline may have absorbed part of the missing effect (viscous
         // friction standing in for Coulomb friction): each start is also tried with the
         // baseline back at its nominal values.
-        let bases = [base.baseline.clone(), nominal_baseline.to_vec()];
+        let mut bases = vec![base.baseline.clone()];
+        if nominal_baseline != base.baseline.as_slice() {
+            bases.push(nominal_baseline.to_vec());
+        }
         let mut r = vec![0.0; self.lt.n];
         // Per effect start: the better of the two baselines.
         let mut ranked: Vec<(f64, Vec<f64>, Vec<f64>)> = Vec::new();
