@@ -1,0 +1,119 @@
+//! Forward kinematics: body poses and spatial velocities by one outward pass over the
+//! tree (Featherstone, "Rigid Body Dynamics Algorithms", 2008, section 4.1 and the first
+//! loop of RNEA Table 5.1), plus point kinematics for contact and mount points.
+
+use crate::error::DynamicsError;
+use crate::model::{Link, Model};
+use crate::spatial::{angular, linear};
+use crate::workspace::Workspace;
+use nalgebra::{Matrix3, Vector3, Vector6};
+
+/// `S_i x_i` for the `nv` columns of the link's motion subspace, reading `x` at the
+/// link's velocity offset.
+pub(crate) fn subspace_times(link: &Link, x: &[f64]) -> Vector6<f64> {
+    let mut out = Vector6::zeros();
+    for k in 0..link.nv {
+        out += link.subspace.column(k) * x[link.v_offset + k];
+    }
+    out
+}
+
+/// Computes every body's transforms `i X lambda(i)`, pose `i X 0` and spatial velocity
+/// (body coordinates) at state `(q, v)`, stores `v` for the dynamics, and clears the
+/// external forces. Call once per ODE right-hand-side evaluation, before applying
+/// external forces and calling [`crate::forward_dynamics`]. Allocation free.
+///
+/// `q` has length [`Model::nq`], `v` length [`Model::nv`].
+pub fn update_kinematics(
+    model: &Model,
+    ws: &mut Workspace,
+    q: &[f64],
+    v: &[f64],
+) -> Result<(), DynamicsError> {
+    ws.check_size(model)?;
+    check_len("q", q, model.nq())?;
+    check_len("v", v, model.nv())?;
+    for (i, (body, link)) in model.bodies().iter().zip(&model.links).enumerate() {
+        let qi = &q[link.q_offset..link.q_offset + body.joint.nq()];
+        let x_up = body.joint.transform(qi).after(&link.x_tree);
+        let vj = subspace_times(link, v);
+        let (x_world, vel) = match body.parent {
+            Some(p) => (
+                x_up.after(&ws.x_world[p]),
+                x_up.apply_motion(&ws.vel[p]) + vj,
+            ),
+            None => (x_up, vj),
+        };
+        ws.x_up[i] = x_up;
+        ws.x_world[i] = x_world;
+        ws.vel[i] = vel;
+        ws.vel_joint[i] = vj;
+    }
+    ws.v.copy_from_slice(v);
+    ws.clear_external_forces();
+    ws.kinematics_ready = true;
+    Ok(())
+}
+
+/// Fails with [`DynamicsError::DimensionMismatch`] unless `x.len() == expected`.
+pub(crate) fn check_len(
+    argument: &'static str,
+    x: &[f64],
+    expected: usize,
+) -> Result<(), DynamicsError> {
+    if x.len() == expected {
+        Ok(())
+    } else {
+        Err(DynamicsError::DimensionMismatch {
+            argument,
+            expected,
+            got: x.len(),
+        })
+    }
+}
+
+impl Workspace {
+    /// Rotation matrix of `body` (body axes in world coordinates: world = R body) from the
+    /// last [`update_kinematics`].
+    ///
+    /// # Panics
+    /// If `body` is out of range.
+    pub fn body_rotation(&self, body: usize) -> Matrix3<f64> {
+        self.x_world[body].rot.transpose()
+    }
+
+    /// World position of `body`'s frame origin, m.
+    ///
+    /// # Panics
+    /// If `body` is out of range.
+    pub fn body_position(&self, body: usize) -> Vector3<f64> {
+        self.x_world[body].pos
+    }
+
+    /// Spatial velocity `[omega; v_O]` of `body` in body coordinates.
+    ///
+    /// # Panics
+    /// If `body` is out of range.
+    pub fn body_velocity(&self, body: usize) -> Vector6<f64> {
+        self.vel[body]
+    }
+
+    /// World position of the point fixed in `body` at `point` (body coordinates), m.
+    ///
+    /// # Panics
+    /// If `body` is out of range.
+    pub fn point_position(&self, body: usize, point: &Vector3<f64>) -> Vector3<f64> {
+        let x = &self.x_world[body];
+        x.pos + x.rot.transpose() * point
+    }
+
+    /// World velocity of the point fixed in `body` at `point` (body coordinates), m/s:
+    /// `R (v_O + omega x r)`.
+    ///
+    /// # Panics
+    /// If `body` is out of range.
+    pub fn point_velocity(&self, body: usize, point: &Vector3<f64>) -> Vector3<f64> {
+        let v = &self.vel[body];
+        self.x_world[body].rot.transpose() * (linear(v) + angular(v).cross(point))
+    }
+}

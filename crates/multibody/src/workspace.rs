@@ -1,0 +1,143 @@
+//! Preallocated per-model buffers and the external-force accumulator.
+//!
+//! [`Workspace::new`] allocates every per-body buffer and the `nv x nv` / `nv` matrices
+//! once; the kinematics and dynamics functions only write into them, so the hot path
+//! (one ODE right-hand-side evaluation) performs no heap allocation.
+
+use crate::error::DynamicsError;
+use crate::model::Model;
+use crate::spatial::{spatial, SpatialTransform};
+use nalgebra::{DMatrix, DVector, Matrix6, Vector3, Vector6};
+
+/// Per-evaluation state of one [`Model`]: transforms, velocities, accelerations, forces,
+/// composite inertias, mass matrix, bias vector, accelerations and the Cholesky buffer.
+#[derive(Debug, Clone)]
+pub struct Workspace {
+    /// `i X lambda(i)`: parent-to-body transforms.
+    pub(crate) x_up: Vec<SpatialTransform>,
+    /// `i X 0`: world-to-body transforms (body pose).
+    pub(crate) x_world: Vec<SpatialTransform>,
+    /// Body spatial velocities, body coordinates.
+    pub(crate) vel: Vec<Vector6<f64>>,
+    /// Joint velocities `S_i qdot_i`, body coordinates.
+    pub(crate) vel_joint: Vec<Vector6<f64>>,
+    /// RNEA accelerations, body coordinates.
+    pub(crate) acc: Vec<Vector6<f64>>,
+    /// RNEA joint forces, body coordinates.
+    pub(crate) force: Vec<Vector6<f64>>,
+    /// External forces on each body, body coordinates, about the body origin.
+    pub(crate) f_ext: Vec<Vector6<f64>>,
+    /// CRBA composite inertias, body coordinates.
+    pub(crate) ic: Vec<Matrix6<f64>>,
+    /// Joint velocities of the last kinematics update.
+    pub(crate) v: DVector<f64>,
+    /// Joint-space mass matrix `H(q)`.
+    pub(crate) h: DMatrix<f64>,
+    /// Bias forces `C(q, v)`.
+    pub(crate) c: DVector<f64>,
+    /// Joint accelerations of the last forward-dynamics call.
+    pub(crate) vdot: DVector<f64>,
+    /// Cholesky factor storage (lent to nalgebra during the solve).
+    pub(crate) chol: DMatrix<f64>,
+    /// Whether `update_kinematics` has filled the pose and velocity buffers.
+    pub(crate) kinematics_ready: bool,
+}
+
+impl Workspace {
+    /// Allocates all buffers for `model` (the only allocation of the crate's hot path).
+    pub fn new(model: &Model) -> Self {
+        let nb = model.num_bodies();
+        let nv = model.nv();
+        Self {
+            x_up: vec![SpatialTransform::identity(); nb],
+            x_world: vec![SpatialTransform::identity(); nb],
+            vel: vec![Vector6::zeros(); nb],
+            vel_joint: vec![Vector6::zeros(); nb],
+            acc: vec![Vector6::zeros(); nb],
+            force: vec![Vector6::zeros(); nb],
+            f_ext: vec![Vector6::zeros(); nb],
+            ic: vec![Matrix6::zeros(); nb],
+            v: DVector::zeros(nv),
+            h: DMatrix::zeros(nv, nv),
+            c: DVector::zeros(nv),
+            vdot: DVector::zeros(nv),
+            chol: DMatrix::zeros(nv, nv),
+            kinematics_ready: false,
+        }
+    }
+
+    /// Fails unless this workspace was built for `model` and the kinematics are current.
+    pub(crate) fn check(&self, model: &Model) -> Result<(), DynamicsError> {
+        self.check_size(model)?;
+        if self.kinematics_ready {
+            Ok(())
+        } else {
+            Err(DynamicsError::KinematicsNotUpdated)
+        }
+    }
+
+    /// Fails unless this workspace was built for `model`.
+    pub(crate) fn check_size(&self, model: &Model) -> Result<(), DynamicsError> {
+        if self.x_up.len() == model.num_bodies() && self.v.len() == model.nv() {
+            Ok(())
+        } else {
+            Err(DynamicsError::WorkspaceMismatch {
+                workspace_bodies: self.x_up.len(),
+                workspace_nv: self.v.len(),
+                model_bodies: model.num_bodies(),
+                model_nv: model.nv(),
+            })
+        }
+    }
+
+    /// Joint-space mass matrix of the last [`crate::mass_matrix`] or
+    /// [`crate::forward_dynamics`] call.
+    pub fn mass_matrix(&self) -> &DMatrix<f64> {
+        &self.h
+    }
+
+    /// Bias forces of the last [`crate::bias_forces`] or [`crate::forward_dynamics`] call.
+    pub fn bias_forces(&self) -> &DVector<f64> {
+        &self.c
+    }
+
+    /// Joint accelerations of the last [`crate::forward_dynamics`] call.
+    pub fn accelerations(&self) -> &DVector<f64> {
+        &self.vdot
+    }
+
+    /// Removes all external forces (done by [`crate::update_kinematics`]).
+    pub fn clear_external_forces(&mut self) {
+        self.f_ext.iter_mut().for_each(|f| *f = Vector6::zeros());
+    }
+
+    /// Adds a world-frame force `force` (N) acting at the world point `point` (m) on
+    /// `body`, using the pose of the last [`crate::update_kinematics`] call.
+    ///
+    /// # Panics
+    /// If `body` is out of range.
+    pub fn apply_force_world(&mut self, body: usize, force: &Vector3<f64>, point: &Vector3<f64>) {
+        let x = &self.x_world[body];
+        let f = x.rot * force;
+        let r = x.rot * (point - x.pos);
+        self.f_ext[body] += spatial(&r.cross(&f), &f);
+    }
+
+    /// Adds a body-frame force `force` (N) acting at the body point `point` (m, body
+    /// coordinates) on `body`.
+    ///
+    /// # Panics
+    /// If `body` is out of range.
+    pub fn apply_force_body(&mut self, body: usize, force: &Vector3<f64>, point: &Vector3<f64>) {
+        self.f_ext[body] += spatial(&point.cross(force), force);
+    }
+
+    /// Adds a pure world-frame moment `moment` (N m) on `body`.
+    ///
+    /// # Panics
+    /// If `body` is out of range.
+    pub fn apply_moment_world(&mut self, body: usize, moment: &Vector3<f64>) {
+        let m = self.x_world[body].rot * moment;
+        self.f_ext[body] += spatial(&m, &Vector3::zeros());
+    }
+}
