@@ -33,13 +33,43 @@ pub fn truck(gravity: Vector3<f64>) -> Model {
         placement: Isometry3::identity(),
         mass: 20_000.0,
         com: Vector3::new(0.2, 0.0, 0.3),
-        inertia: Matrix3::new(12_000.0, 0.0, 1_500.0, 0.0, 40_000.0, 0.0, 1_500.0, 0.0, 45_000.0),
+        inertia: Matrix3::new(
+            12_000.0, 0.0, 1_500.0, 0.0, 40_000.0, 0.0, 1_500.0, 0.0, 45_000.0,
+        ),
     });
-    let fl = b.add_body(body("carrier_fl", 0, bounce, [1.8, 1.0, -0.5], 400.0, [20.0; 3]));
-    let fr = b.add_body(body("carrier_fr", 0, bounce, [1.8, -1.0, -0.5], 400.0, [20.0; 3]));
-    let axle_bounce = b.add_body(body("axle_bounce", 0, bounce, [-1.6, 0.0, -0.5], 0.0, [0.0; 3]));
+    let fl = b.add_body(body(
+        "carrier_fl",
+        0,
+        bounce,
+        [1.8, 1.0, -0.5],
+        400.0,
+        [20.0; 3],
+    ));
+    let fr = b.add_body(body(
+        "carrier_fr",
+        0,
+        bounce,
+        [1.8, -1.0, -0.5],
+        400.0,
+        [20.0; 3],
+    ));
+    let axle_bounce = b.add_body(body(
+        "axle_bounce",
+        0,
+        bounce,
+        [-1.6, 0.0, -0.5],
+        0.0,
+        [0.0; 3],
+    ));
     let roll = Joint::Revolute { axis: Vector3::x() };
-    let mut axle = body("axle_roll", axle_bounce, roll, [0.0; 3], 1_200.0, [900.0, 80.0, 900.0]);
+    let mut axle = body(
+        "axle_roll",
+        axle_bounce,
+        roll,
+        [0.0; 3],
+        1_200.0,
+        [900.0, 80.0, 900.0],
+    );
     axle.com = Vector3::new(0.0, 0.0, -0.1);
     let axle = b.add_body(axle);
     let wheel = [250.0, 450.0, 250.0];

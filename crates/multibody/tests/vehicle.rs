@@ -1,0 +1,157 @@
+//! Vehicle-like tree checks: energy conservation with suspension springs under gravity,
+//! equivalence of point-force and force + moment application, and static equilibrium of
+//! a body on four vertical point springs.
+#[path = "support/rk4.rs"]
+mod rk4;
+#[path = "support/vehicle.rs"]
+mod vehicle;
+
+use multibody::{
+    forward_dynamics, kinetic_energy, potential_energy, update_kinematics, Body, Joint,
+    ModelBuilder, Workspace,
+};
+use nalgebra::{Isometry3, Matrix3, UnitQuaternion, Vector3};
+use rk4::rk4_step;
+use vehicle::{springs, truck};
+
+const GRAVITY: Vector3<f64> = Vector3::new(0.0, 0.0, -9.81);
+
+/// Perturbed truck state: tilted chassis, moving and rotating, springs deflected,
+/// wheels spinning.
+fn perturbed_state(orientation: UnitQuaternion<f64>) -> (Vec<f64>, Vec<f64>) {
+    let c = orientation.into_inner();
+    let q = vec![
+        0.0, 0.0, 1.5, c.w, c.i, c.j, c.k, 0.05, -0.03, 0.02, 0.04, 0.3, -1.0, 2.0, 0.5,
+    ];
+    let v = vec![
+        0.3, -0.2, 0.1, 5.0, 0.0, 1.0, 0.2, -0.4, 0.3, -0.5, 10.0, 10.0, 11.0, 9.0,
+    ];
+    (q, v)
+}
+
+#[test]
+fn sprung_truck_conserves_total_energy() {
+    let model = truck(GRAVITY);
+    assert_eq!((model.nq(), model.nv()), (15, 14));
+    let mut ws = Workspace::new(&model);
+    let (mut q, mut v) = perturbed_state(UnitQuaternion::from_euler_angles(0.1, 0.05, 0.3));
+    let mut tau = vec![0.0; model.nv()];
+    let mut energy = |ws: &mut Workspace, q: &[f64], v: &[f64]| {
+        update_kinematics(&model, ws, q, v).unwrap();
+        let ke = kinetic_energy(&model, ws).unwrap();
+        let spring = springs(&model, q, &mut tau);
+        (
+            ke + potential_energy(&model, ws).unwrap() + spring,
+            ke + spring,
+        )
+    };
+    let (e0, scale) = energy(&mut ws, &q, &v);
+    let mut tau_rhs = vec![0.0; model.nv()];
+    let mut f = |ws: &mut Workspace, q: &[f64], v: &[f64], vd: &mut [f64]| {
+        update_kinematics(&model, ws, q, v).unwrap();
+        springs(&model, q, &mut tau_rhs);
+        vd.copy_from_slice(forward_dynamics(&model, ws, &tau_rhs).unwrap().as_slice());
+    };
+    let mut max_rel = 0.0_f64;
+    for _ in 0..3_000 {
+        rk4_step(&model, &mut ws, &mut q, &mut v, 1e-3, &mut f);
+        let (e, _) = energy(&mut ws, &q, &v);
+        max_rel = max_rel.max((e - e0).abs() / scale);
+    }
+    assert!(
+        max_rel < 1e-6,
+        "energy drift {max_rel:e} of the initial kinetic + spring energy"
+    );
+}
+
+#[test]
+fn point_force_equals_force_plus_moment_at_the_origin() {
+    let model = truck(GRAVITY);
+    let mut ws = Workspace::new(&model);
+    let (q, v) = perturbed_state(UnitQuaternion::from_euler_angles(0.5, -0.2, 1.0));
+    let mut tau = vec![0.0; model.nv()];
+    springs(&model, &q, &mut tau);
+    let axle = model.body_index("axle_roll").unwrap();
+    let force = Vector3::new(1.0e4, -3.0e3, 8.0e4);
+    let solve = |ws: &mut Workspace, apply: &dyn Fn(&mut Workspace)| {
+        update_kinematics(&model, ws, &q, &v).unwrap();
+        apply(ws);
+        forward_dynamics(&model, ws, &tau).unwrap().clone()
+    };
+    let point_body = Vector3::new(0.2, 1.3, -0.6);
+    update_kinematics(&model, &mut ws, &q, &v).unwrap();
+    let point = ws.point_position(axle, &point_body);
+    let origin = ws.body_position(axle);
+    let r_world = ws.body_rotation(axle);
+    let at_point = solve(&mut ws, &|ws| ws.apply_force_world(axle, &force, &point));
+    let split = solve(&mut ws, &|ws| {
+        ws.apply_force_world(axle, &force, &origin);
+        ws.apply_moment_world(axle, &(point - origin).cross(&force));
+    });
+    let body_frame = solve(&mut ws, &|ws| {
+        ws.apply_force_body(axle, &(r_world.transpose() * force), &point_body);
+    });
+    let free = solve(&mut ws, &|_| {});
+    assert!((&at_point - &free).norm() > 1.0, "the force has an effect");
+    assert!((&at_point - &split).norm() < 1e-12 * at_point.norm());
+    assert!((&at_point - &body_frame).norm() < 1e-12 * at_point.norm());
+}
+
+#[test]
+fn body_on_four_point_springs_settles_to_loads_summing_to_weight() {
+    let mass = 1_500.0;
+    let com = Vector3::new(0.3, -0.1, 0.0);
+    let mut b = ModelBuilder::new(GRAVITY);
+    b.add_body(Body {
+        name: "box".into(),
+        parent: None,
+        joint: Joint::Floating,
+        placement: Isometry3::identity(),
+        mass,
+        com,
+        inertia: Matrix3::from_diagonal(&Vector3::new(400.0, 900.0, 1_100.0)),
+    });
+    let model = b.build().unwrap();
+    let corners =
+        [(1.2, 0.8), (1.2, -0.8), (-1.2, 0.8), (-1.2, -0.8)].map(|(x, y)| Vector3::new(x, y, -0.4));
+    let (k, c) = (1.0e5, 3.0e3);
+    let loads = |ws: &Workspace| {
+        corners.map(|p| -k * ws.point_position(0, &p).z - c * ws.point_velocity(0, &p).z)
+    };
+    let mut f = |ws: &mut Workspace, q: &[f64], v: &[f64], vd: &mut [f64]| {
+        update_kinematics(&model, ws, q, v).unwrap();
+        for (p, fz) in corners.iter().zip(loads(ws)) {
+            let at = ws.point_position(0, p);
+            ws.apply_force_world(0, &Vector3::new(0.0, 0.0, fz), &at);
+        }
+        vd.copy_from_slice(forward_dynamics(&model, ws, &[0.0; 6]).unwrap().as_slice());
+    };
+    let tilt = UnitQuaternion::from_euler_angles(0.05, -0.04, 0.0).into_inner();
+    let mut q = vec![0.0, 0.0, 0.45, tilt.w, tilt.i, tilt.j, tilt.k];
+    let mut v = vec![0.0; 6];
+    let mut ws = Workspace::new(&model);
+    for _ in 0..7_500 {
+        rk4_step(&model, &mut ws, &mut q, &mut v, 2e-3, &mut f);
+    }
+    update_kinematics(&model, &mut ws, &q, &v).unwrap();
+    let fz = loads(&ws);
+    let weight = mass * 9.81;
+    let total: f64 = fz.iter().sum();
+    assert!(
+        (total - weight).abs() < 1e-6 * weight,
+        "loads {fz:?} sum {total}"
+    );
+    // Moment balance about the centre of mass (lever rule): loads are uneven.
+    let g = ws.point_position(0, &com);
+    let moment: Vector3<f64> = corners
+        .iter()
+        .zip(fz)
+        .map(|(p, fz)| (ws.point_position(0, p) - g).cross(&Vector3::new(0.0, 0.0, fz)))
+        .sum();
+    assert!(moment.norm() < 1e-6 * weight, "residual moment {moment}");
+    assert!(
+        fz[0] > fz[3],
+        "the front-left corner, nearer the centre of mass, carries more"
+    );
+    assert!(v.iter().all(|x| x.abs() < 1e-8), "at rest: {v:?}");
+}
