@@ -7,7 +7,7 @@ use criterion::{criterion_group, criterion_main, Criterion};
 use multibody::{bias_forces, forward_dynamics, mass_matrix, update_kinematics, Workspace};
 use nalgebra::{UnitQuaternion, Vector3};
 use std::hint::black_box;
-use vehicle::{springs, truck};
+use vehicle::{springs, truck, TRUCK_SPRINGS};
 
 fn bench(c: &mut Criterion) {
     let model = truck(Vector3::new(0.0, 0.0, -9.81));
@@ -20,7 +20,7 @@ fn bench(c: &mut Criterion) {
         0.3, -0.2, 0.1, 5.0, 0.0, 1.0, 0.2, -0.4, 0.3, -0.5, 10.0, 10.0, 11.0, 9.0,
     ];
     let mut tau = [0.0; 14];
-    springs(&model, &q, &mut tau);
+    springs(&model, &TRUCK_SPRINGS, &q, &mut tau);
     c.bench_function("truck14_forward_dynamics", |b| {
         b.iter(|| {
             update_kinematics(&model, &mut ws, black_box(&q), black_box(&v)).unwrap();

@@ -9,7 +9,7 @@ mod vehicle;
 use multibody::{forward_dynamics, update_kinematics, Body, Joint, Model, ModelBuilder, Workspace};
 use nalgebra::{Isometry3, Matrix3, Quaternion, UnitQuaternion, Vector3};
 use rk4::rk4_step;
-use vehicle::{springs, truck};
+use vehicle::{springs, truck, TRUCK_SPRINGS};
 
 fn quat(q: &[f64]) -> UnitQuaternion<f64> {
     UnitQuaternion::from_quaternion(Quaternion::new(q[3], q[4], q[5], q[6]))
@@ -25,7 +25,7 @@ fn simulate(model: &Model, q: &mut [f64], v: &mut [f64], steps: usize) {
     let mut tau = vec![0.0; model.nv()];
     let mut f = |ws: &mut Workspace, q: &[f64], v: &[f64], vd: &mut [f64]| {
         update_kinematics(model, ws, q, v).unwrap();
-        springs(model, q, &mut tau);
+        springs(model, &TRUCK_SPRINGS, q, &mut tau);
         vd.copy_from_slice(forward_dynamics(model, ws, &tau).unwrap().as_slice());
     };
     for _ in 0..steps {

@@ -7,12 +7,12 @@ mod rk4;
 mod vehicle;
 
 use multibody::{
-    forward_dynamics, kinetic_energy, potential_energy, update_kinematics, Body, Joint,
+    forward_dynamics, kinetic_energy, potential_energy, update_kinematics, Body, Joint, Model,
     ModelBuilder, Workspace,
 };
 use nalgebra::{Isometry3, Matrix3, UnitQuaternion, Vector3};
 use rk4::rk4_step;
-use vehicle::{springs, truck};
+use vehicle::{springs, truck, TRUCK_SPRINGS};
 
 const GRAVITY: Vector3<f64> = Vector3::new(0.0, 0.0, -9.81);
 
@@ -29,38 +29,160 @@ fn perturbed_state(orientation: UnitQuaternion<f64>) -> (Vec<f64>, Vec<f64>) {
     (q, v)
 }
 
+/// Integrates `steps` RK4 steps of 1 ms with the joint springs and returns the largest
+/// |E(t) - E(0)| relative to the initial kinetic + spring energy, E = kinetic +
+/// gravitational + spring.
+fn energy_drift(
+    model: &Model,
+    spring_list: &[(&str, f64)],
+    q: &mut [f64],
+    v: &mut [f64],
+    steps: usize,
+) -> f64 {
+    let mut ws = Workspace::new(model);
+    let mut tau = vec![0.0; model.nv()];
+    let mut energy = |ws: &mut Workspace, q: &[f64], v: &[f64]| {
+        update_kinematics(model, ws, q, v).unwrap();
+        let ke = kinetic_energy(model, ws).unwrap();
+        let spring = springs(model, spring_list, q, &mut tau);
+        (
+            ke + potential_energy(model, ws).unwrap() + spring,
+            ke + spring,
+        )
+    };
+    let (e0, scale) = energy(&mut ws, q, v);
+    let mut tau_rhs = vec![0.0; model.nv()];
+    let mut f = |ws: &mut Workspace, q: &[f64], v: &[f64], vd: &mut [f64]| {
+        update_kinematics(model, ws, q, v).unwrap();
+        springs(model, spring_list, q, &mut tau_rhs);
+        vd.copy_from_slice(forward_dynamics(model, ws, &tau_rhs).unwrap().as_slice());
+    };
+    let mut max_rel = 0.0_f64;
+    for _ in 0..steps {
+        rk4_step(model, &mut ws, q, v, 1e-3, &mut f);
+        let (e, _) = energy(&mut ws, q, v);
+        max_rel = max_rel.max((e - e0).abs() / scale);
+    }
+    max_rel
+}
+
 #[test]
 fn sprung_truck_conserves_total_energy() {
     let model = truck(GRAVITY);
     assert_eq!((model.nq(), model.nv()), (15, 14));
-    let mut ws = Workspace::new(&model);
     let (mut q, mut v) = perturbed_state(UnitQuaternion::from_euler_angles(0.1, 0.05, 0.3));
-    let mut tau = vec![0.0; model.nv()];
-    let mut energy = |ws: &mut Workspace, q: &[f64], v: &[f64]| {
-        update_kinematics(&model, ws, q, v).unwrap();
-        let ke = kinetic_energy(&model, ws).unwrap();
-        let spring = springs(&model, q, &mut tau);
-        (
-            ke + potential_energy(&model, ws).unwrap() + spring,
-            ke + spring,
-        )
-    };
-    let (e0, scale) = energy(&mut ws, &q, &v);
-    let mut tau_rhs = vec![0.0; model.nv()];
-    let mut f = |ws: &mut Workspace, q: &[f64], v: &[f64], vd: &mut [f64]| {
-        update_kinematics(&model, ws, q, v).unwrap();
-        springs(&model, q, &mut tau_rhs);
-        vd.copy_from_slice(forward_dynamics(&model, ws, &tau_rhs).unwrap().as_slice());
-    };
-    let mut max_rel = 0.0_f64;
-    for _ in 0..3_000 {
-        rk4_step(&model, &mut ws, &mut q, &mut v, 1e-3, &mut f);
-        let (e, _) = energy(&mut ws, &q, &v);
-        max_rel = max_rel.max((e - e0).abs() / scale);
-    }
+    let drift = energy_drift(&model, &TRUCK_SPRINGS, &mut q, &mut v, 3_000);
     assert!(
-        max_rel < 1e-6,
-        "energy drift {max_rel:e} of the initial kinetic + spring energy"
+        drift < 1e-6,
+        "energy drift {drift:e} of the initial kinetic + spring energy"
+    );
+}
+
+/// Articulated dump truck: front unit (floating) -> articulation yaw revolute -> massless
+/// intermediate body -> roll revolute -> rear unit; two prismatic front wheel carriers;
+/// four wheel spins. 14 DOF.
+fn dump_truck() -> Model {
+    let spin = Joint::Revolute { axis: Vector3::y() };
+    let bounce = Joint::Prismatic { axis: Vector3::z() };
+    let part = |name: &str, parent, joint, at: [f64; 3], mass, com: [f64; 3], i: [f64; 3]| Body {
+        name: String::from(name),
+        parent: Some(parent),
+        joint,
+        placement: Isometry3::translation(at[0], at[1], at[2]),
+        mass,
+        com: Vector3::from(com),
+        inertia: Matrix3::from_diagonal(&Vector3::from(i)),
+    };
+    let mut b = ModelBuilder::new(GRAVITY);
+    b.add_body(Body {
+        name: "front".into(),
+        parent: None,
+        joint: Joint::Floating,
+        placement: Isometry3::identity(),
+        mass: 15_000.0,
+        com: Vector3::new(0.5, 0.0, 0.4),
+        inertia: Matrix3::from_diagonal(&Vector3::new(8_000.0, 20_000.0, 22_000.0)),
+    });
+    let yaw = Joint::Revolute { axis: Vector3::z() };
+    let hitch = b.add_body(part(
+        "hitch",
+        0,
+        yaw,
+        [-1.5, 0.0, 0.0],
+        0.0,
+        [0.0; 3],
+        [0.0; 3],
+    ));
+    let roll = Joint::Revolute { axis: Vector3::x() };
+    let rear_i = [15_000.0, 50_000.0, 55_000.0];
+    let rear = b.add_body(part(
+        "rear",
+        hitch,
+        roll,
+        [-0.3, 0.0, 0.0],
+        25_000.0,
+        [-2.5, 0.0, 0.6],
+        rear_i,
+    ));
+    let fl = b.add_body(part(
+        "carrier_fl",
+        0,
+        bounce,
+        [1.5, 1.1, -0.4],
+        350.0,
+        [0.0; 3],
+        [15.0; 3],
+    ));
+    let fr = b.add_body(part(
+        "carrier_fr",
+        0,
+        bounce,
+        [1.5, -1.1, -0.4],
+        350.0,
+        [0.0; 3],
+        [15.0; 3],
+    ));
+    let wheel = [200.0, 380.0, 200.0];
+    for (name, parent, y) in [("wheel_fl", fl, 0.3), ("wheel_fr", fr, -0.3)] {
+        b.add_body(part(
+            name,
+            parent,
+            spin,
+            [0.0, y, 0.0],
+            550.0,
+            [0.0; 3],
+            wheel,
+        ));
+    }
+    for (name, y) in [("wheel_rl", 1.2), ("wheel_rr", -1.2)] {
+        b.add_body(part(
+            name,
+            rear,
+            spin,
+            [-2.5, y, -0.6],
+            550.0,
+            [0.0; 3],
+            wheel,
+        ));
+    }
+    b.build().expect("the dump-truck tree is valid")
+}
+
+#[test]
+fn articulated_dump_truck_with_massless_hitch_conserves_total_energy() {
+    let model = dump_truck();
+    assert_eq!((model.nq(), model.nv()), (15, 14));
+    let spring_list = [
+        ("hitch", 5.0e5),
+        ("rear", 1.0e6),
+        ("carrier_fl", 3.0e5),
+        ("carrier_fr", 3.0e5),
+    ];
+    let (mut q, mut v) = perturbed_state(UnitQuaternion::from_euler_angles(-0.1, 0.05, 1.0));
+    let drift = energy_drift(&model, &spring_list, &mut q, &mut v, 3_000);
+    assert!(
+        drift < 1e-6,
+        "energy drift {drift:e} of the initial kinetic + spring energy"
     );
 }
 
@@ -70,7 +192,7 @@ fn point_force_equals_force_plus_moment_at_the_origin() {
     let mut ws = Workspace::new(&model);
     let (q, v) = perturbed_state(UnitQuaternion::from_euler_angles(0.5, -0.2, 1.0));
     let mut tau = vec![0.0; model.nv()];
-    springs(&model, &q, &mut tau);
+    springs(&model, &TRUCK_SPRINGS, &q, &mut tau);
     let axle = model.body_index("axle_roll").unwrap();
     let force = Vector3::new(1.0e4, -3.0e3, 8.0e4);
     let solve = |ws: &mut Workspace, apply: &dyn Fn(&mut Workspace)| {

@@ -4,10 +4,14 @@
 use multibody::{Body, Joint, Model, ModelBuilder};
 use nalgebra::{Isometry3, Matrix3, Vector3};
 
-/// Suspension stiffness of each prismatic joint, N/m.
-pub const K_BOUNCE: f64 = 4.0e5;
-/// Torsional stiffness of the rear-axle roll joint, N m/rad.
-pub const K_ROLL: f64 = 2.0e5;
+/// Linear springs of the truck: body whose joint carries the spring, stiffness
+/// (N/m on the prismatic joints, N m/rad on the rear-axle roll joint).
+pub const TRUCK_SPRINGS: [(&str, f64); 4] = [
+    ("carrier_fl", 4.0e5),
+    ("carrier_fr", 4.0e5),
+    ("axle_bounce", 4.0e5),
+    ("axle_roll", 2.0e5),
+];
 
 fn body(name: &str, parent: usize, joint: Joint, at: [f64; 3], mass: f64, i: [f64; 3]) -> Body {
     Body {
@@ -80,22 +84,13 @@ pub fn truck(gravity: Vector3<f64>) -> Model {
     b.build().expect("the truck tree is valid")
 }
 
-/// Bodies whose joint carries a suspension spring, with the stiffness.
-fn suspension_joints(model: &Model) -> [(usize, f64); 4] {
-    let body = |name: &str| model.body_index(name).expect("body exists");
-    [
-        (body("carrier_fl"), K_BOUNCE),
-        (body("carrier_fr"), K_BOUNCE),
-        (body("axle_bounce"), K_BOUNCE),
-        (body("axle_roll"), K_ROLL),
-    ]
-}
-
-/// Linear suspension springs (rest at q = 0): writes `tau` and returns the spring energy.
-pub fn springs(model: &Model, q: &[f64], tau: &mut [f64]) -> f64 {
+/// Linear joint springs (rest at q = 0) on the named 1-DOF joints: writes `tau` and
+/// returns the spring energy.
+pub fn springs(model: &Model, springs: &[(&str, f64)], q: &[f64], tau: &mut [f64]) -> f64 {
     tau.iter_mut().for_each(|t| *t = 0.0);
     let mut energy = 0.0;
-    for (body, k) in suspension_joints(model) {
+    for &(name, k) in springs {
+        let body = model.body_index(name).expect("body exists");
         let x = q[model.q_offset(body)];
         tau[model.v_offset(body)] = -k * x;
         energy += 0.5 * k * x * x;
