@@ -1,9 +1,9 @@
 //! Joint-space dynamics `H(q) vdot + C(q, v) = tau`: the composite-rigid-body algorithm
 //! for `H` (Featherstone, "Rigid Body Dynamics Algorithms", 2008, Table 6.2), the
 //! recursive Newton-Euler algorithm for `C` and inverse dynamics (Table 5.1), and forward
-//! dynamics by a Cholesky solve (section 6.2).
+//! dynamics by a Cholesky solve of the joint-space equation (ch. 6).
 //!
-//! Gravity enters RNEA as a fictitious base acceleration `a_0 = -a_g` (section 5.3);
+//! Gravity enters RNEA as a fictitious base acceleration `a_0 = -a_g` (ch. 5);
 //! external forces are those accumulated in the [`Workspace`] since the last
 //! [`crate::update_kinematics`]. None of these functions allocate.
 
@@ -100,7 +100,7 @@ fn project(model: &Model, force: &[Vector6<f64>], tau: &mut [f64]) {
 }
 
 /// Bias forces `C(q, v)` = gravity + Coriolis/centrifugal - external forces in joint
-/// space, by RNEA with zero acceleration (Featherstone 2008, Table 5.1, section 6.1).
+/// space, by RNEA with zero acceleration (Featherstone 2008, Table 5.1, ch. 6).
 pub fn bias_forces<'w>(
     model: &Model,
     ws: &'w mut Workspace,
@@ -129,7 +129,7 @@ pub fn inverse_dynamics(
 }
 
 /// Forward dynamics: solves `H vdot = tau - C` with a Cholesky factorisation of the CRBA
-/// mass matrix (Featherstone 2008, section 6.2) and returns `vdot` (length `nv`).
+/// mass matrix (Featherstone 2008, ch. 6) and returns `vdot` (length `nv`).
 ///
 /// `tau` are the caller's joint forces (springs, dampers, drive torques); floating-joint
 /// entries are a body-coordinate wrench `[moment; force]` about the body origin.

@@ -1,6 +1,6 @@
 //! Energy and momentum of the tree at the state of the last kinematics update, for
 //! conservation checks (Featherstone, "Rigid Body Dynamics Algorithms", 2008: kinetic
-//! energy Eq 2.67, momentum section 2.13, force transforms chapter 2).
+//! energy, spatial momentum and force transforms, ch. 2).
 
 use crate::error::DynamicsError;
 use crate::model::Model;

@@ -3,7 +3,7 @@
 //! Algorithms", 2008, chapter 4, Table 4.1).
 //!
 //! All joints here have a constant motion subspace in body coordinates, so the
-//! velocity-product term `c_J` of Featherstone Eq 3.42 is zero.
+//! velocity-product term `c_J` (Featherstone ch. 3/4, `c_J = S-ring qdot`) is zero.
 
 use crate::spatial::SpatialTransform;
 use nalgebra::{Matrix6, Quaternion, Rotation3, Unit, UnitQuaternion, Vector3};

@@ -1,5 +1,5 @@
 //! Forward kinematics: body poses and spatial velocities by one outward pass over the
-//! tree (Featherstone, "Rigid Body Dynamics Algorithms", 2008, section 4.1 and the first
+//! tree (Featherstone, "Rigid Body Dynamics Algorithms", 2008, ch. 4 and the first
 //! loop of RNEA Table 5.1), plus point kinematics for contact and mount points.
 
 use crate::error::DynamicsError;

@@ -18,7 +18,7 @@ pub struct Body {
     /// The joint between the parent and this body.
     pub joint: Joint,
     /// Pose of the joint frame in the parent body frame (in the world for a root): the
-    /// fixed tree transform `X_T` of Featherstone section 4.2.
+    /// fixed tree transform `X_T` of Featherstone 2008, ch. 4.
     pub placement: Isometry3<f64>,
     /// Mass in kg; zero is allowed for an intermediate body with a massive descendant.
     pub mass: f64,

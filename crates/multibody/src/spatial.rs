@@ -29,14 +29,14 @@ pub fn spatial(angular: &Vector3<f64>, linear: &Vector3<f64>) -> Vector6<f64> {
     )
 }
 
-/// Spatial motion cross product `v x m` (Featherstone 2008, Eq 2.31).
+/// Spatial motion cross product `v x m` (Featherstone 2008, ch. 2, spatial cross products).
 pub fn cross_motion(v: &Vector6<f64>, m: &Vector6<f64>) -> Vector6<f64> {
     let (w, vo) = (angular(v), linear(v));
     let (mw, mo) = (angular(m), linear(m));
     spatial(&w.cross(&mw), &(w.cross(&mo) + vo.cross(&mw)))
 }
 
-/// Spatial force cross product `v x* f` (Featherstone 2008, Eq 2.32), equal to
+/// Spatial force cross product `v x* f` (Featherstone 2008, ch. 2, spatial cross products), equal to
 /// `-(v x)^T f`.
 pub fn cross_force(v: &Vector6<f64>, f: &Vector6<f64>) -> Vector6<f64> {
     let (w, vo) = (angular(v), linear(v));
@@ -45,7 +45,7 @@ pub fn cross_force(v: &Vector6<f64>, f: &Vector6<f64>) -> Vector6<f64> {
 }
 
 /// Plücker coordinate transform `B X A` from frame A to frame B (Featherstone 2008,
-/// section 2.8, Eq 2.24): `X = [E 0; -E [r]x E]`.
+/// ch. 2, coordinate transforms): `X = [E 0; -E [r]x E]`.
 ///
 /// `rot` is `E`, the rotation taking A coordinates to B coordinates, and `pos` is `r`,
 /// the position of B's origin expressed in A coordinates.
@@ -75,7 +75,7 @@ impl SpatialTransform {
         }
     }
 
-    /// `X m`: a motion vector in A coordinates expressed in B (Featherstone 2008, Eq 2.24).
+    /// `X m`: a motion vector in A coordinates expressed in B (Featherstone 2008, ch. 2).
     pub fn apply_motion(&self, m: &Vector6<f64>) -> Vector6<f64> {
         let w = angular(m);
         let v = linear(m);
@@ -90,7 +90,7 @@ impl SpatialTransform {
     }
 
     /// `X* f = X^-T f`: a force vector in A coordinates expressed in B
-    /// (Featherstone 2008, Eq 2.25).
+    /// (Featherstone 2008, ch. 2).
     pub fn apply_force(&self, f: &Vector6<f64>) -> Vector6<f64> {
         let n = angular(f);
         let fl = linear(f);
@@ -106,7 +106,7 @@ impl SpatialTransform {
     }
 
     /// Composition `C X A = (C X B)(B X A)` with `self = C X B` and `a_to_b = B X A`
-    /// (Featherstone 2008, section 2.8).
+    /// (Featherstone 2008, ch. 2).
     pub fn after(&self, a_to_b: &SpatialTransform) -> SpatialTransform {
         SpatialTransform {
             rot: self.rot * a_to_b.rot,
@@ -125,7 +125,7 @@ impl SpatialTransform {
     }
 
     /// `X^T I X`: a spatial inertia in B coordinates expressed in A
-    /// (Featherstone 2008, Eq 2.66; used by CRBA, Table 6.2).
+    /// (Featherstone 2008, ch. 2, inertia transform; used by CRBA, Table 6.2).
     pub fn transform_inertia_to_parent(&self, inertia: &Matrix6<f64>) -> Matrix6<f64> {
         let x = self.motion_matrix();
         x.transpose() * inertia * x
@@ -133,7 +133,7 @@ impl SpatialTransform {
 }
 
 /// Spatial inertia of a rigid body about its frame origin, in its own coordinates
-/// (Featherstone 2008, Eq 2.63): `[I_c + m [c]x [c]x^T, m [c]x; m [c]x^T, m 1]`.
+/// (Featherstone 2008, ch. 2, spatial inertia): `[I_c + m [c]x [c]x^T, m [c]x; m [c]x^T, m 1]`.
 ///
 /// `mass` in kg, `com` the centre of mass in body coordinates, `inertia_com` the 3x3
 /// rotational inertia about the centre of mass in body axes.
