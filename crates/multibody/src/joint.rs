@@ -56,7 +56,8 @@ impl Joint {
     /// Joint transform `X_J(q)` from the joint frame to the body frame
     /// (Featherstone 2008, Table 4.1). `q` holds this joint's `nq()` entries. The
     /// floating-joint quaternion is normalised when read, so integration drift does not
-    /// distort the kinematics.
+    /// distort the kinematics. Revolute and prismatic axes are assumed unit length, as
+    /// [`crate::ModelBuilder::build`] stores them.
     pub fn transform(&self, q: &[f64]) -> SpatialTransform {
         match self {
             Joint::Floating => {

@@ -1,9 +1,10 @@
 //! Mass-matrix properties over random trees and states: symmetric, positive definite,
 //! equal column by column to RNEA with unit accelerations (zero velocity and gravity), and
-//! consistent with the body-sum kinetic energy 1/2 v^T H v.
+//! consistent with the body-sum kinetic energy 1/2 v^T H v; and the RNEA bias forces obey
+//! the power balance v^T C = d/dt(potential) + 1/2 v^T Hdot v (Hdot by central differences).
 use multibody::{
-    inverse_dynamics, kinetic_energy, mass_matrix, update_kinematics, Body, Joint, Model,
-    ModelBuilder, Workspace,
+    bias_forces, inverse_dynamics, kinetic_energy, mass_matrix, potential_energy,
+    update_kinematics, Body, Joint, Model, ModelBuilder, Workspace,
 };
 use nalgebra::{
     Isometry3, Matrix3, Rotation3, SymmetricEigen, Translation3, UnitQuaternion, Vector3,
@@ -141,5 +142,41 @@ proptest! {
                     "H[{i},{j}] = {} but RNEA gives {}", h[(i, j)], tau[i]);
             }
         }
+    }
+}
+
+/// Configuration `q + s qdot(q, v)`, quaternions renormalised.
+fn shifted(model: &Model, q: &[f64], v: &[f64], s: f64) -> Vec<f64> {
+    let mut qdot = vec![0.0; model.nq()];
+    model.velocity_to_qdot(q, v, &mut qdot);
+    let mut qs: Vec<f64> = q.iter().zip(&qdot).map(|(a, b)| a + s * b).collect();
+    model.normalize_quaternions(&mut qs);
+    qs
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(200))]
+    #[test]
+    fn bias_forces_satisfy_the_power_balance(
+        bodies in prop::collection::vec(random_body(), 1..9)
+    ) {
+        let (model, q, v) = random_tree(&bodies);
+        let mut ws = Workspace::new(&model);
+        let vv = nalgebra::DVector::from_column_slice(&v);
+        let zero_v = vec![0.0; model.nv()];
+        let h = 1e-6;
+        let mut at = |s: f64| {
+            update_kinematics(&model, &mut ws, &shifted(&model, &q, &v, s), &zero_v).unwrap();
+            let pe = potential_energy(&model, &ws).unwrap();
+            (mass_matrix(&model, &mut ws).unwrap().clone(), pe)
+        };
+        let ((h_plus, pe_plus), (h_minus, pe_minus)) = (at(h), at(-h));
+        let h_dot = (h_plus - h_minus) / (2.0 * h);
+        let pe_dot = (pe_plus - pe_minus) / (2.0 * h);
+        update_kinematics(&model, &mut ws, &q, &v).unwrap();
+        let power = vv.dot(bias_forces(&model, &mut ws).unwrap());
+        let expected = pe_dot + 0.5 * vv.dot(&(&h_dot * &vv));
+        let scale = 1.0 + power.abs() + pe_dot.abs();
+        prop_assert!((power - expected).abs() < 1e-6 * scale, "{power} vs {expected}");
     }
 }
