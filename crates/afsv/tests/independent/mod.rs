@@ -10,10 +10,12 @@
 
 pub mod records;
 pub mod rng;
+pub mod strut;
 pub mod yaw;
 
-use std::path::Path;
-
+#[allow(unused_imports)]
+pub use strut::{strut_record_set, STRUT_EFFECTS};
+#[allow(unused_imports)]
 pub use yaw::{yaw_record_set, YAW_EFFECTS};
 
 /// A realistic size for a hidden effect, clearly visible above the record noise:
@@ -34,6 +36,3 @@ pub fn default_size(name: &str) -> f64 {
         other => panic!("unknown hidden effect `{other}`"),
     }
 }
-
-/// Keep the signature visible for users of the module.
-pub fn _api(_: &Path) {}

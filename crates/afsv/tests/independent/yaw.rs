@@ -510,9 +510,9 @@ struct Model {
     ps: f64,
     p0: f64,
     b_mpa: f64,
-    mu_v: f64, // N s/m
-    kl0_l: f64, // L/(s MPa)
-    kl_l: f64,  // L/(s MPa) per (m/s)
+    mu_v: f64,           // N s/m
+    kl0_l: f64,          // L/(s MPa)
+    kl_l: f64,           // L/(s MPa) per (m/s)
     gerotor_ml_deg: f64, // k_theta eta_g
     kv: f64,
     x0: f64,
@@ -747,8 +747,7 @@ impl Model {
             let a_ry = dv_r + u_r * r_r;
             [
                 self.m_f * a_fy + self.m_r * (a_ry * c - a_rx * s) - yf - yr * c,
-                self.i_f * drf + self.m_f * a_fy * self.l_f2 - yf * (self.l_f1 + self.l_f2)
-                    + mzf
+                self.i_f * drf + self.m_f * a_fy * self.l_f2 - yf * (self.l_f1 + self.l_f2) + mzf
                     - torque,
                 self.i_r * drr - self.m_r * a_ry * self.l_r2
                     + yr * (self.l_r1 + self.l_r2)
@@ -840,8 +839,11 @@ pub fn simulate_yaw(
         run.time_s.push(t);
         run.steer_wheel_deg.push(steer.deg(t));
         run.speed_m_s.push(speed_m_s);
-        run.articulation_deg
-            .push(if backlash.is_some() { sensor_deg } else { y[0] / DEG });
+        run.articulation_deg.push(if backlash.is_some() {
+            sensor_deg
+        } else {
+            y[0] / DEG
+        });
         run.strut_left_disp_m.push(aux.strut_left_disp);
         run.p_c_pa.push(y[8] * 1e6);
         run.p_r_pa.push(y[9] * 1e6);
@@ -947,7 +949,9 @@ fn steer_json(s: &Steer) -> serde_json::Value {
             amp_deg,
             dur_s,
             start_s,
-        } => serde_json::json!({"kind": "pulse", "amplitude_deg": amp_deg, "duration_s": dur_s, "start_s": start_s}),
+        } => {
+            serde_json::json!({"kind": "pulse", "amplitude_deg": amp_deg, "duration_s": dur_s, "start_s": start_s})
+        }
         Steer::Step { amp_deg, start_s } => {
             serde_json::json!({"kind": "step", "amplitude_deg": amp_deg, "start_s": start_s})
         }
@@ -955,13 +959,17 @@ fn steer_json(s: &Steer) -> serde_json::Value {
             rate_deg_s,
             start_s,
             limit_deg,
-        } => serde_json::json!({"kind": "ramp", "rate_deg_s": rate_deg_s, "start_s": start_s, "limit_deg": limit_deg}),
+        } => {
+            serde_json::json!({"kind": "ramp", "rate_deg_s": rate_deg_s, "start_s": start_s, "limit_deg": limit_deg})
+        }
         Steer::Sine {
             amp_deg,
             freq_hz,
             start_s,
             cycles,
-        } => serde_json::json!({"kind": "sine", "amplitude_deg": amp_deg, "frequency_hz": freq_hz, "start_s": start_s, "cycles": cycles}),
+        } => {
+            serde_json::json!({"kind": "sine", "amplitude_deg": amp_deg, "frequency_hz": freq_hz, "start_s": start_s, "cycles": cycles})
+        }
     }
 }
 
