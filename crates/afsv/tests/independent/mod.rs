@@ -7,6 +7,8 @@
 //! Used by `tests/independent_yaw.rs` and `tests/independent_strut.rs` (each `mod independent;`),
 //! which also hold the cross-checks against the crates' models.
 #![allow(dead_code)]
+// Index loops over the state vectors read like the equations (RK4 stages, 3x3 solve).
+#![allow(clippy::needless_range_loop)]
 
 pub mod records;
 pub mod rng;

@@ -160,7 +160,7 @@ impl StrutData {
     }
 
     /// JSON for truth.json.
-    pub fn to_json(&self) -> serde_json::Value {
+    pub fn json(&self) -> serde_json::Value {
         serde_json::json!({
             "a_hc_m2": self.a_hc, "a_hr_m2": self.a_hr, "n_b": self.n_b, "a_b_mm2": self.a_b_mm2,
             "c_b": self.c_b, "n_v": self.n_v, "a_v_mm2": self.a_v_mm2, "c_v": self.c_v,
@@ -613,7 +613,7 @@ pub fn strut_record_set(dir: &Path, hidden: Option<(&str, f64)>, seed: u64) {
         },
         "note": "truth = Eqs 5.1-5.12 with the gas-oil emulsion (gamma_0 > 0) at the perturbed parameters",
         "perturbations": STRUT_PERTURBATION.iter().map(|(n, v)| (n.to_string(), serde_json::json!(v))).collect::<serde_json::Map<_, _>>(),
-        "parameters": d.to_json(),
+        "parameters": d.json(),
         "noise_sd": STRUT_NOISE.iter().map(|(n, v)| (n.to_string(), serde_json::json!(v))).collect::<serde_json::Map<_, _>>(),
         "seed": seed,
         "integrator": {"method": "classic RK4, fixed step", "max_step_s": STRUT_MAX_STEP_S},

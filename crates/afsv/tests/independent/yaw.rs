@@ -262,7 +262,7 @@ impl YawParams {
     }
 
     /// JSON for truth.json.
-    pub fn to_json(&self) -> serde_json::Value {
+    pub fn json(&self) -> serde_json::Value {
         let v = &self.vehicle;
         let s = &self.steering;
         serde_json::json!({
@@ -789,8 +789,9 @@ fn solve3(mut a: [[f64; 3]; 3], mut b: [f64; 3]) -> [f64; 3] {
         b.swap(k, piv);
         for i in k + 1..3 {
             let f = a[i][k] / a[k][k];
-            for j in k..3 {
-                a[i][j] -= f * a[k][j];
+            let row_k = a[k];
+            for (aij, akj) in a[i].iter_mut().zip(row_k.iter()).skip(k) {
+                *aij -= f * akj;
             }
             b[i] -= f * b[k];
         }
@@ -991,7 +992,7 @@ pub fn yaw_record_set(
         Some((name, size)) => YawHidden::from_name(name, size),
         None => YawHidden::None,
     };
-    let mut rng = Noise::new(seed, 0x7961_77);
+    let mut rng = Noise::new(seed, 0x0079_6177);
     // training speeds: evenly spread, shuffled (Fisher-Yates)
     let mut speeds: Vec<f64> = (0..n_train)
         .map(|i| {
@@ -1087,8 +1088,8 @@ pub fn yaw_record_set(
         },
         "note": "truth = the full paper model (tire relaxation Eq 3.16 and velocity leakage Eq 3.6 present) at the perturbed parameters",
         "perturbations": YAW_PERTURBATION.iter().map(|(n, v)| (n.to_string(), serde_json::json!(v))).collect::<serde_json::Map<_, _>>(),
-        "parameters": {"loaded": YawParams::perturbed(YawLoad::Loaded).to_json(),
-                       "unloaded": YawParams::perturbed(YawLoad::Unloaded).to_json()},
+        "parameters": {"loaded": YawParams::perturbed(YawLoad::Loaded).json(),
+                       "unloaded": YawParams::perturbed(YawLoad::Unloaded).json()},
         "noise_sd": YAW_NOISE.iter().map(|(n, v)| (n.to_string(), serde_json::json!(v))).collect::<serde_json::Map<_, _>>(),
         "duration_s": duration_s,
         "seed": seed,
