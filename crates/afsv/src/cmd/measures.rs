@@ -1,7 +1,7 @@
 //! `afsv measures`: ISO 2631-1 weightings and whole-body vibration exposure, free-decay
 //! (yaw-mode) fit, step-response metrics and the weighting check (crate `perf-measures`).
 
-use super::CmdResult;
+use super::{args, CmdResult};
 use afsv::record::Record;
 use perf_measures::iso2631::{
     assess_whole_body, Axis, AxisInput, FilterMethod, IirWeighting, KFactors, Weighting,
@@ -51,11 +51,12 @@ pub struct WeightingArgs {
         value_name = "HZ,...",
         value_delimiter = ',',
         required = true,
-        allow_hyphen_values = true
+        allow_hyphen_values = true,
+        value_parser = args::positive_f64
     )]
     pub freqs: Vec<f64>,
     /// Also report the IIR filter's magnitude at this sampling rate (Hz).
-    #[arg(long, value_name = "HZ")]
+    #[arg(long, value_name = "HZ", allow_hyphen_values = true, value_parser = args::positive_f64)]
     pub fs: Option<f64>,
 }
 
@@ -66,7 +67,7 @@ pub struct WbvArgs {
     #[arg(long, short = 'i', value_name = "CSV")]
     pub input: PathBuf,
     /// Daily exposure duration in hours for A(8) and the caution zone.
-    #[arg(long, value_name = "H", default_value_t = 8.0)]
+    #[arg(long, value_name = "H", default_value_t = 8.0, allow_hyphen_values = true, value_parser = args::positive_f64)]
     pub hours: f64,
     /// Weighting of an axis, AXIS=W (repeatable), e.g. --weighting z=wk --weighting x=wd.
     /// Defaults are the seat-pan health weightings: x=wd, y=wd, z=wk.
@@ -77,7 +78,8 @@ pub struct WbvArgs {
         long,
         value_name = "KX,KY,KZ",
         value_delimiter = ',',
-        default_value = "1.4,1.4,1"
+        default_value = "1.4,1.4,1",
+        allow_hyphen_values = true, value_parser = args::nonneg_f64
     )]
     pub k: Vec<f64>,
     /// Weighting method: fft (exact analog response, default) or iir (bilinear filter;
@@ -97,10 +99,10 @@ pub struct DecayArgs {
     pub column: String,
     /// Start of the free decay (s); default: the time of the largest deviation from the
     /// final value (mean of the last 10 % of the record).
-    #[arg(long, value_name = "S", allow_hyphen_values = true)]
+    #[arg(long, value_name = "S", allow_hyphen_values = true, value_parser = args::finite_f64)]
     pub start_s: Option<f64>,
     /// End of the fitted window (s); default: end of the record.
-    #[arg(long, value_name = "S", allow_hyphen_values = true)]
+    #[arg(long, value_name = "S", allow_hyphen_values = true, value_parser = args::finite_f64)]
     pub end_s: Option<f64>,
 }
 
@@ -118,14 +120,14 @@ pub struct StepArgs {
     pub output: String,
     /// Step time (s); default: the first time the input departs from its initial value by
     /// 2 % of the step.
-    #[arg(long, value_name = "S", allow_hyphen_values = true)]
+    #[arg(long, value_name = "S", allow_hyphen_values = true, value_parser = args::finite_f64)]
     pub t_step: Option<f64>,
     /// Step amplitude in the input column's unit; default: the mean of the input over
     /// the final --settle-fraction minus its initial value.
-    #[arg(long, value_name = "X", allow_hyphen_values = true)]
+    #[arg(long, value_name = "X", allow_hyphen_values = true, value_parser = args::finite_f64)]
     pub amplitude: Option<f64>,
     /// Final fraction of the post-step record averaged for the steady values.
-    #[arg(long, value_name = "F", default_value_t = 0.1)]
+    #[arg(long, value_name = "F", default_value_t = 0.1, allow_hyphen_values = true, value_parser = args::open_fraction_f64)]
     pub settle_fraction: f64,
 }
 
@@ -133,7 +135,7 @@ pub struct StepArgs {
 #[derive(clap::Args)]
 pub struct CheckArgs {
     /// Sampling rate (Hz) of the IIR filters compared.
-    #[arg(long, value_name = "HZ", default_value_t = perf_measures::iso2631::check::CHECK_IIR_FS_HZ)]
+    #[arg(long, value_name = "HZ", default_value_t = perf_measures::iso2631::check::CHECK_IIR_FS_HZ, allow_hyphen_values = true, value_parser = args::positive_f64)]
     pub iir_fs: f64,
 }
 
@@ -166,15 +168,17 @@ fn weighting(a: WeightingArgs) -> CmdResult {
         let mut row = json!({
             "f_hz": f,
             "magnitude": h.norm(),
-            "magnitude_db": 20.0 * h.norm().log10(),
+            "magnitude_db": afsv::output::finite_or_null(20.0 * h.norm().log10()),
             "phase_deg": h.arg().to_degrees(),
         });
         if let Some(iir) = &iir {
-            row["iir_magnitude"] = if f < 0.5 * iir.fs_hz() {
-                json!(iir.magnitude(f))
+            if f < 0.5 * iir.fs_hz() {
+                row["iir_magnitude"] = afsv::output::finite_or_null(iir.magnitude(f));
             } else {
-                serde_json::Value::Null
-            };
+                row["iir_magnitude"] = serde_json::Value::Null;
+                row["iir_magnitude_reason"] =
+                    json!("at or above the IIR filter's Nyquist frequency --fs/2");
+            }
         }
         rows.push(row);
     }
@@ -265,10 +269,26 @@ fn window<'a>(
     start: Option<f64>,
     end: Option<f64>,
 ) -> Result<(&'a [f64], &'a [f64]), String> {
+    let nothing = || {
+        format!(
+            "{}: the window [{}, {}] s holds no samples (the record spans {} to {} s)",
+            path.display(),
+            start.map_or("start".into(), |v| v.to_string()),
+            end.map_or("end".into(), |v| v.to_string()),
+            t.first().copied().unwrap_or(f64::NAN),
+            t.last().copied().unwrap_or(f64::NAN),
+        )
+    };
+    if start.is_some_and(|v| !v.is_finite()) || end.is_some_and(|v| !v.is_finite()) {
+        return Err(nothing());
+    }
     let i1 = match end {
         Some(e) => t.partition_point(|&v| v <= e),
         None => t.len(),
     };
+    if i1 < 2 {
+        return Err(nothing());
+    }
     let i0 = match start {
         Some(s) => t.partition_point(|&v| v < s),
         None => {
@@ -280,12 +300,7 @@ fn window<'a>(
         }
     };
     if i1 <= i0 + 1 {
-        return Err(format!(
-            "{}: the window [{:?}, {:?}] s holds no samples",
-            path.display(),
-            start,
-            end
-        ));
+        return Err(nothing());
     }
     Ok((&t[i0..i1], &y[i0..i1]))
 }
