@@ -334,7 +334,7 @@ fn describe_state(names: &[String], y: &[f64]) -> String {
 }
 
 /// Most output samples (`duration_s / output_dt_s`) one [`simulate`] run produces.
-pub const MAX_OUTPUT_SAMPLES: f64 = 1e7;
+pub const MAX_OUTPUT_SAMPLES: f64 = 1e6;
 
 /// Run one manoeuvre of the yaw-plane vehicle with the given articulation actuator
 /// (normally [`afs_hydraulics::AfsSystem`]).

@@ -4,8 +4,17 @@
 //!
 //! Use as `#[arg(long, allow_hyphen_values = true, value_parser = args::positive_f64)]`.
 
-/// Largest number of samples (time or space steps, rows) a command allocates for one record.
+/// Largest number of samples (time or space steps, rows) a command allocates for one record
+/// of a few columns (strut records, terrain profiles: about 1 GB of memory at the limit).
 pub const MAX_SAMPLES: f64 = 1e7;
+
+/// Largest number of output samples of a strut run on the command line (the CSV of 1e7
+/// rows alone takes half a minute to write).
+pub const MAX_HPS_SAMPLES: f64 = 1e6;
+
+/// Largest number of output samples of a yaw-plane run (about 40 columns and the solver's
+/// dense output: 1.3 GB of memory and 0.7 GB of CSV at the limit).
+pub const MAX_YAW_SAMPLES: f64 = afsv_dynamics::simulate::MAX_OUTPUT_SAMPLES;
 
 fn number(s: &str) -> Result<f64, String> {
     let t = s.trim();
@@ -75,14 +84,15 @@ pub fn show(v: f64) -> String {
     }
 }
 
-/// `count` samples (e.g. duration/dt) must not exceed [`MAX_SAMPLES`]: the error names
-/// `option` and what was counted.
-pub fn check_samples(option: &str, what: &str, count: f64) -> Result<(), String> {
-    if count.is_finite() && count <= MAX_SAMPLES {
+/// `count` samples (e.g. duration/dt) must not exceed `max` (e.g. [`MAX_SAMPLES`]): the
+/// error names `option` and what was counted.
+pub fn check_samples(option: &str, what: &str, count: f64, max: f64) -> Result<(), String> {
+    if count.is_finite() && count <= max {
         Ok(())
     } else {
         Err(format!(
-            "{option}: at most {MAX_SAMPLES:e} samples ({what}); got {count:e}"
+            "{option}: at most {max:e} samples ({what}); got {}",
+            show(count)
         ))
     }
 }
@@ -108,11 +118,13 @@ mod tests {
         assert_eq!(nonneg_f64("0").unwrap(), 0.0);
         assert!(fraction_f64("1").is_err());
         assert!(open_fraction_f64("0").is_err());
-        assert!(check_samples("--duration", "duration/dt", 1e308)
-            .unwrap_err()
-            .contains("--duration"));
-        assert!(check_samples("--duration", "duration/dt", f64::INFINITY).is_err());
-        assert!(check_samples("--duration", "duration/dt", 2001.0).is_ok());
+        assert!(
+            check_samples("--duration", "duration/dt", 1e308, MAX_SAMPLES)
+                .unwrap_err()
+                .contains("--duration")
+        );
+        assert!(check_samples("--duration", "duration/dt", f64::INFINITY, MAX_SAMPLES).is_err());
+        assert!(check_samples("--duration", "duration/dt", 2001.0, MAX_SAMPLES).is_ok());
     }
 
     proptest! {
@@ -146,7 +158,7 @@ mod tests {
 
         #[test]
         fn sample_bound_is_exact(n in 0.0f64..2e7) {
-            prop_assert_eq!(check_samples("--x", "n", n).is_ok(), n <= MAX_SAMPLES);
+            prop_assert_eq!(check_samples("--x", "n", n, MAX_SAMPLES).is_ok(), n <= MAX_SAMPLES);
         }
     }
 }

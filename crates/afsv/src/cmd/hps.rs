@@ -95,7 +95,7 @@ pub struct HarmonicArgs {
     /// Excitation amplitude (mm), > 0; deflection positive in compression.
     #[arg(long = "amp-mm", default_value_t = 7.5, allow_hyphen_values = true, value_parser = args::positive_f64)]
     pub amp_mm: f64,
-    /// Number of cycles simulated (metrics are from the last); at most 1e7 samples
+    /// Number of cycles simulated (metrics are from the last); at most 1e6 samples
     /// (cycles / freq * rate).
     #[arg(long, default_value_t = 5.0, allow_hyphen_values = true, value_parser = args::positive_f64)]
     pub cycles: f64,
@@ -175,6 +175,7 @@ fn harmonic(a: HarmonicArgs) -> CmdResult {
             args::show(a.rate)
         ),
         a.cycles / a.freq * a.rate,
+        args::MAX_HPS_SAMPLES,
     )?;
     let mut guard = OutputGuard::new(a.force);
     if let Some(path) = &a.output {

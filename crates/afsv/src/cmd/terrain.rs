@@ -218,6 +218,7 @@ fn generate(a: GenerateArgs) -> CmdResult {
         &format!("--length {}", args::show(a.length)),
         &format!("length/dx with --dx {}", args::show(a.dx)),
         a.length / a.dx,
+        args::MAX_SAMPLES,
     )?;
     if let Some(path) = &a.output {
         OutputGuard::new(a.force).output("-o", path, OutputKind::Record)?;

@@ -96,7 +96,7 @@ pub enum Command {
         /// Input time of pulse, step and ramp (s).
         #[arg(long, default_value_t = 0.5, allow_hyphen_values = true, value_parser = args::nonneg_f64)]
         input_time: f64,
-        /// Simulated time (s); at most 1e7 samples (duration/dt).
+        /// Simulated time (s); at most 1e6 samples (duration/dt).
         #[arg(long, default_value_t = 10.0, allow_hyphen_values = true, value_parser = args::positive_f64)]
         duration: f64,
         /// Output sample interval (s).
@@ -281,6 +281,7 @@ pub fn run(cmd: Command) -> CmdResult {
                 &format!("--duration {}", args::show(duration)),
                 &format!("duration/dt with --dt {}", args::show(dt)),
                 duration / dt,
+                args::MAX_YAW_SAMPLES,
             )?;
             let mut guard = OutputGuard::new(force);
             if let Some(p) = &vehicle.params {
