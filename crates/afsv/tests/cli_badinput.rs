@@ -68,9 +68,9 @@ fn decay_window_outside_the_record_is_an_error_not_a_panic() {
         v.extend_from_slice(extra);
         v
     };
-    fails(&with(&["--end-s=-1"]), &["holds no samples"]);
-    fails(&with(&["--end-s", "0"]), &["holds no samples"]);
-    fails(&with(&["--start-s", "5"]), &["holds no samples"]);
+    fails(&with(&["--end-s=-1"]), &["fewer than 2 samples"]);
+    fails(&with(&["--end-s", "0"]), &["fewer than 2 samples"]);
+    fails(&with(&["--start-s", "5"]), &["fewer than 2 samples"]);
     fails(
         &with(&["--end-s", "nan"]),
         &["--end-s", "not a finite number"],

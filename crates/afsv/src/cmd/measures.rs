@@ -3,13 +3,14 @@
 
 use super::{args, CmdResult};
 use afsv::record::Record;
+use perf_measures::decay::decay_window;
 use perf_measures::iso2631::{
     assess_whole_body, Axis, AxisInput, FilterMethod, IirWeighting, KFactors, Weighting,
 };
 use perf_measures::signal::sample_rate;
 use perf_measures::{fit_free_decay, step_metrics_with, StepOptions};
 use serde_json::json;
-use std::path::{Path, PathBuf};
+use std::path::PathBuf;
 
 /// Subcommands of `afsv measures`.
 #[derive(clap::Subcommand)]
@@ -262,49 +263,6 @@ fn wbv(a: WbvArgs) -> CmdResult {
     Ok(())
 }
 
-fn window<'a>(
-    path: &Path,
-    t: &'a [f64],
-    y: &'a [f64],
-    start: Option<f64>,
-    end: Option<f64>,
-) -> Result<(&'a [f64], &'a [f64]), String> {
-    let nothing = || {
-        format!(
-            "{}: the window [{}, {}] s holds no samples (the record spans {} to {} s)",
-            path.display(),
-            start.map_or("start".into(), |v| v.to_string()),
-            end.map_or("end".into(), |v| v.to_string()),
-            t.first().copied().unwrap_or(f64::NAN),
-            t.last().copied().unwrap_or(f64::NAN),
-        )
-    };
-    if start.is_some_and(|v| !v.is_finite()) || end.is_some_and(|v| !v.is_finite()) {
-        return Err(nothing());
-    }
-    let i1 = match end {
-        Some(e) => t.partition_point(|&v| v <= e),
-        None => t.len(),
-    };
-    if i1 < 2 {
-        return Err(nothing());
-    }
-    let i0 = match start {
-        Some(s) => t.partition_point(|&v| v < s),
-        None => {
-            let n_tail = (i1 / 10).max(1);
-            let fin = y[i1 - n_tail..i1].iter().sum::<f64>() / n_tail as f64;
-            (0..i1)
-                .max_by(|&a, &b| (y[a] - fin).abs().total_cmp(&(y[b] - fin).abs()))
-                .unwrap_or(0)
-        }
-    };
-    if i1 <= i0 + 1 {
-        return Err(nothing());
-    }
-    Ok((&t[i0..i1], &y[i0..i1]))
-}
-
 fn decay(a: DecayArgs) -> CmdResult {
     let rec = Record::read(&a.input)?;
     let t = rec.require("time_s", &a.input)?;
@@ -312,7 +270,9 @@ fn decay(a: DecayArgs) -> CmdResult {
     if t.is_empty() {
         return Err(format!("{}: the record is empty", a.input.display()).into());
     }
-    let (tw, yw) = window(&a.input, t, y, a.start_s, a.end_s)?;
+    let w = decay_window(t, y, a.start_s, a.end_s)
+        .map_err(|e| format!("{}: {e}", a.input.display()))?;
+    let (tw, yw) = (&t[w.clone()], &y[w]);
     let fit = fit_free_decay(tw, yw).map_err(|e| format!("{}: {e}", a.input.display()))?;
     afsv::output::print_json(&json!({
         "column": a.column,
