@@ -143,6 +143,8 @@ struct Gen<'a> {
     args: Vec<String>,
     files: Vec<(String, Vec<u8>)>,
     yaw_params: &'a str,
+    /// Scales the probability of a bad option value: 0 leaves the damage to the files.
+    scale: f64,
 }
 
 impl Gen<'_> {
@@ -154,7 +156,7 @@ impl Gen<'_> {
     }
     /// `--name` with a bad value (probability `p_bad`), its good value, or left out.
     fn num(&mut self, name: &str, good: &str, p_bad: f64) {
-        if self.rng.chance(p_bad) {
+        if self.rng.chance(p_bad * self.scale) {
             let v = self.bad();
             self.push_opt(name, &v);
         } else if self.rng.chance(0.5) {
@@ -227,6 +229,47 @@ const PROFILE_COLS: &[&str] = &["x_m", "left_m", "right_m"];
 
 fn bad_csv(rng: &mut Rng, cols: &[&str]) -> Vec<u8> {
     let mut names: Vec<String> = cols.iter().map(|c| c.to_string()).collect();
+    // Two in five files are well formed, so that the options and later stages are reached.
+    if rng.chance(0.4) {
+        let rows = *rng.pick(&[&40usize, &200, &400]);
+        let step = *rng.pick(&[&0.005f64, &0.01, &0.05]);
+        let mut text = names.join(",") + "\n";
+        for i in 0..rows {
+            let cells: Vec<String> = names
+                .iter()
+                .enumerate()
+                .map(|(j, n)| {
+                    let t = i as f64 * step;
+                    let v = if j == 0 {
+                        t
+                    } else if n == "steer_wheel_deg" {
+                        if t > 0.2 {
+                            30.0
+                        } else {
+                            0.0
+                        }
+                    } else {
+                        let a = if n.starts_with("p_") {
+                            1e6
+                        } else if n == "force_n" {
+                            1e5
+                        } else if n == "displacement_m" {
+                            0.01
+                        } else if n == "velocity_m_s" {
+                            0.07
+                        } else {
+                            1.0
+                        };
+                        a * (-(0.5 * t)).exp() * (7.0 * t + j as f64).cos()
+                    };
+                    format!("{v}")
+                })
+                .collect();
+            text += &cells.join(",");
+            text.push('\n');
+        }
+        return text.into_bytes();
+    }
     // Header damage.
     match rng.below(12) {
         0 => {
@@ -470,7 +513,9 @@ fn make_case(seed: u64, id: usize, groups: &[(&'static str, u32)], yaw_params: &
         args: Vec::new(),
         files: Vec::new(),
         yaw_params,
+        scale: 1.0,
     };
+    g.scale = *g.rng.pick(&[&0.0, &0.3, &1.0, &1.5]);
     let total: u32 = groups.iter().map(|g| g.1).sum();
     let mut k = (g.rng.next() % total as u64) as u32;
     let mut group = groups[0].0;
@@ -515,7 +560,7 @@ fn make_case(seed: u64, id: usize, groups: &[(&'static str, u32)], yaw_params: &
             }
             g.num("--speed-kmh", "50", 0.15);
             g.num("--input-time", "0.5", 0.1);
-            if g.rng.chance(0.3) {
+            if g.rng.chance(0.3 * g.scale) {
                 let v = g.bad();
                 g.push_opt("--duration", &v);
             } else {
@@ -551,7 +596,7 @@ fn make_case(seed: u64, id: usize, groups: &[(&'static str, u32)], yaw_params: &
         "hps harmonic" => {
             g.num("--freq", "2", 0.2);
             g.num("--amp-mm", "7.5", 0.15);
-            if g.rng.chance(0.2) {
+            if g.rng.chance(0.2 * g.scale) {
                 let v = g.bad();
                 g.push_opt("--cycles", &v);
             } else {
@@ -719,9 +764,24 @@ fn make_case(seed: u64, id: usize, groups: &[(&'static str, u32)], yaw_params: &
                 };
                 g.push_opt("--coherence", &c);
             }
-            g.num("--half-track", "1.14", 0.1);
-            g.num("--speed", "13.9", 0.1);
-            if g.rng.chance(0.3) {
+            let coherence = g.args.join(" ");
+            if coherence.contains("bogsjo") || g.rng.chance(0.03) {
+                if g.rng.chance(0.3 * g.scale) {
+                    let v = g.bad();
+                    g.push_opt("--half-track", &v);
+                } else {
+                    g.push_opt("--half-track", "1.14");
+                }
+            }
+            if coherence.contains("zhang") || g.rng.chance(0.03) {
+                if g.rng.chance(0.3 * g.scale) {
+                    let v = g.bad();
+                    g.push_opt("--speed", &v);
+                } else {
+                    g.push_opt("--speed", "13.9");
+                }
+            }
+            if g.rng.chance(0.3 * g.scale) {
                 let v = g.bad();
                 g.push_opt("--length", &v);
             } else {
@@ -1251,6 +1311,13 @@ pub fn fuzz(args: &[String], root: &Path) -> Result<(), String> {
         "multi-line errors     {} (not a failure)",
         results.iter().filter(|r| r.multi_line).count()
     );
+    for r in results.iter().filter(|r| r.multi_line).take(5) {
+        println!(
+            "    multi-line error, case {}: afsv {}",
+            r.id,
+            quote(&r.args)
+        );
+    }
     println!("time                  {:.1} s", elapsed.as_secs_f64());
     println!();
     let mut table: BTreeMap<&str, [usize; 3]> = BTreeMap::new();
