@@ -6,7 +6,8 @@
 //! headers, NaN/inf cells, huge and tiny time steps, BOMs, ragged rows, 0 and 1 rows, ...),
 //! bad sidecars, bad parameter JSONs and bad option values (nan, inf, -1, 0, 1e308,
 //! 1e-320, 2^64, empty, ...), and output names that collide with inputs. Every case runs
-//! the release binary in its own scratch folder (`target/fuzz/`) with a timeout and an
+//! the release binary in its own scratch folder (`target/fuzz/`) with a timeout (20 s; three
+//! times that for the iterative fits of `SLOW_GROUPS`) and an
 //! address-space limit (`ulimit -v` through `sh`), and is classified as
 //!
 //! - a clean rejection: exit 1 or 2 with one `afsv: error:` line on stderr;
@@ -1010,6 +1011,7 @@ struct Result1 {
     detail: String,
     args: Vec<String>,
     multi_line: bool,
+    seconds: f64,
 }
 
 fn fnv(bytes: &[u8]) -> u64 {
@@ -1042,7 +1044,27 @@ fn non_finite_token(text: &str) -> Option<String> {
     None
 }
 
+/// Groups whose successes are iterative fits (identification, discovery, sweeps of many
+/// simulations): a well-formed but hard record may take several seconds, so they get
+/// three times the timeout.
+const SLOW_GROUPS: &[&str] = &[
+    "hps identify",
+    "discover",
+    "synth",
+    "yaw sensitivity",
+    "evaluate",
+];
+
+fn timeout_of(group: &str, opts: &Opts) -> Duration {
+    if SLOW_GROUPS.contains(&group) {
+        opts.timeout * 3
+    } else {
+        opts.timeout
+    }
+}
+
 fn run_case(bin: &Path, dir: &Path, case: &Case, opts: &Opts) -> (Outcome, String, bool) {
+    let timeout = timeout_of(case.group, opts);
     let _ = std::fs::remove_dir_all(dir);
     std::fs::create_dir_all(dir).expect("scratch folder");
     let mut hashes = Vec::new();
@@ -1076,7 +1098,7 @@ fn run_case(bin: &Path, dir: &Path, case: &Case, opts: &Opts) -> (Outcome, Strin
     let status = loop {
         match child.try_wait() {
             Ok(Some(s)) => break Some(s),
-            Ok(None) if start.elapsed() > opts.timeout => {
+            Ok(None) if start.elapsed() > timeout => {
                 let _ = child.kill();
                 let _ = child.wait();
                 break None;
@@ -1113,11 +1135,7 @@ fn run_case(bin: &Path, dir: &Path, case: &Case, opts: &Opts) -> (Outcome, Strin
         }
     }
     let Some(status) = status else {
-        return (
-            Outcome::Hang,
-            format!("no exit after {:?}", opts.timeout),
-            false,
-        );
+        return (Outcome::Hang, format!("no exit after {timeout:?}"), false);
     };
     if stderr.contains("panicked") || stderr.contains("internal error") {
         return (Outcome::Panic, first_err, false);
@@ -1156,7 +1174,12 @@ fn run_case(bin: &Path, dir: &Path, case: &Case, opts: &Opts) -> (Outcome, Strin
         }
         Some(1) | Some(2) if first_err.starts_with("afsv: error:") => {
             let multi = stderr.trim_end().lines().count() > 1;
-            (Outcome::Rejected, first_err, multi)
+            if multi {
+                let all: String = stderr.chars().take(300).collect();
+                (Outcome::Rejected, format!("{all:?}"), true)
+            } else {
+                (Outcome::Rejected, first_err, false)
+            }
         }
         Some(c) => (Outcome::Abort, format!("exit {c}; {first_err}"), false),
         None => (Outcome::Abort, first_err, false),
@@ -1246,11 +1269,12 @@ pub fn fuzz(args: &[String], root: &Path) -> Result<(), String> {
     let _ = std::fs::remove_dir_all(&scratch);
     std::fs::create_dir_all(&scratch).map_err(|e| format!("{}: {e}", scratch.display()))?;
     println!(
-        "fuzz: {} cases, seed {}, {} jobs, timeout {:?}, memory limit {} MiB, binary {}",
+        "fuzz: {} cases, seed {}, {} jobs, timeout {:?} ({} x3), memory limit {} MiB, binary {}",
         opts.cases,
         opts.seed,
         opts.jobs,
         opts.timeout,
+        SLOW_GROUPS.join(", "),
         opts.mem_mib,
         bin.display()
     );
@@ -1267,7 +1291,9 @@ pub fn fuzz(args: &[String], root: &Path) -> Result<(), String> {
                 }
                 let case = make_case(opts.seed, id, &groups, &yaw_params);
                 let dir = scratch.join(format!("case-{id:05}"));
+                let started = Instant::now();
                 let (outcome, detail, multi_line) = run_case(&bin, &dir, &case, &opts);
+                let seconds = started.elapsed().as_secs_f64();
                 if !outcome.failed() && !opts.keep {
                     let _ = std::fs::remove_dir_all(&dir);
                 }
@@ -1278,6 +1304,7 @@ pub fn fuzz(args: &[String], root: &Path) -> Result<(), String> {
                     detail,
                     args: case.args,
                     multi_line,
+                    seconds,
                 });
                 let n = done.fetch_add(1, Ordering::Relaxed) + 1;
                 if n.checked_rem(1000) == Some(0) {
@@ -1299,11 +1326,7 @@ pub fn fuzz(args: &[String], root: &Path) -> Result<(), String> {
     println!("clean rejections      {}", count(Outcome::Rejected));
     println!("successes             {}", count(Outcome::Success));
     println!("panics                {}", count(Outcome::Panic));
-    println!(
-        "hangs (> {:?})        {}",
-        opts.timeout,
-        count(Outcome::Hang)
-    );
+    println!("hangs                 {}", count(Outcome::Hang));
     println!("aborts/crashes        {}", count(Outcome::Abort));
     println!("non-finite outputs    {}", count(Outcome::NonFinite));
     println!("input files modified  {}", count(Outcome::Modified));
@@ -1313,9 +1336,19 @@ pub fn fuzz(args: &[String], root: &Path) -> Result<(), String> {
     );
     for r in results.iter().filter(|r| r.multi_line).take(5) {
         println!(
-            "    multi-line error, case {}: afsv {}",
+            "    multi-line error, case {}: afsv {}\n        {}",
             r.id,
-            quote(&r.args)
+            quote(&r.args),
+            r.detail
+        );
+    }
+    if let Some(slow) = results
+        .iter()
+        .max_by(|a, b| a.seconds.total_cmp(&b.seconds))
+    {
+        println!(
+            "slowest case          {:.1} s (case {}, {})",
+            slow.seconds, slow.id, slow.group
         );
     }
     println!("time                  {:.1} s", elapsed.as_secs_f64());

@@ -486,3 +486,15 @@ fn stdout_has_no_unexplained_null() {
         }
     }
 }
+
+#[test]
+fn a_column_name_with_line_breaks_gives_a_one_line_error() {
+    // A quoted header field that runs over several lines becomes a column name with
+    // line breaks (the reader accepts it); the message shows them escaped.
+    let p = tmp("quoted.csv");
+    std::fs::write(&p, "\"x_m\",\"left_m\",\"right_m\n0, 1, 2\"\n").unwrap();
+    fails(
+        &["tire", "envelope", "--profile", s(&p), "--track", "right"],
+        &["right_m\\n0"],
+    );
+}
