@@ -97,6 +97,22 @@ pub fn annotate_nulls(v: &mut Value) {
     }
 }
 
+/// Give every `null` field of the object `v` (not nested) the sibling `"<field>_reason":
+/// reason`, unless it has one. Returns `v`.
+pub fn explain_nulls(mut v: Value, reason: &str) -> Value {
+    if let Some(obj) = v.as_object_mut() {
+        let absent: Vec<String> = obj
+            .iter()
+            .filter(|(k, v)| v.is_null() && !obj.contains_key(&format!("{k}_reason")))
+            .map(|(k, _)| format!("{k}_reason"))
+            .collect();
+        for k in absent {
+            obj.insert(k, Value::from(reason));
+        }
+    }
+    v
+}
+
 /// Every `null` in `v` that is not explained (the rule of [`annotate_nulls`]), as JSON
 /// pointer-like paths. Also used by `cargo xtask fuzz`.
 pub fn unexplained_nulls(v: &Value) -> Vec<String> {

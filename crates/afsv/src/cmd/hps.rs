@@ -10,6 +10,7 @@ use hps_emulsion::{
     FitParam, HarmonicTest, HpsExtensions, IdentifyOptions, LabConfig, Measured, SimOptions,
     Solver, StrutParams, StrutRecord,
 };
+use serde_json::json;
 use std::path::{Path, PathBuf};
 
 /// Built-in strut parameter sets.
@@ -341,8 +342,8 @@ fn identify_cmd(a: IdentifyArgs) -> CmdResult {
         "strut": strut.name(),
         "strut_source": strut_source,
         "fitted": fitted,
-        "nrmse_initial": res.nrmse_initial,
-        "nrmse": res.nrmse,
+        "nrmse_initial": afsv::output::explain_nulls(json!(res.nrmse_initial), NO_CHANNEL),
+        "nrmse": afsv::output::explain_nulls(json!(res.nrmse), NO_CHANNEL),
         "iterations": res.iterations,
         "converged": converged,
         "optimizer_converged": res.converged,
@@ -351,6 +352,9 @@ fn identify_cmd(a: IdentifyArgs) -> CmdResult {
     }))?;
     Ok(())
 }
+
+/// Reason of a `null` NRMSE.
+const NO_CHANNEL: &str = "channel not in the record";
 
 /// The strut of `hps identify`: --strut, else the sidecar's `"strut"`, else lab-1orifice.
 fn identify_strut(

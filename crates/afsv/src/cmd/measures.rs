@@ -183,12 +183,20 @@ fn weighting(a: WeightingArgs) -> CmdResult {
         }
         rows.push(row);
     }
-    afsv::output::print_json(&json!({
+    let params = afsv::output::explain_nulls(
+        json!(a.weighting.params()),
+        "this weighting has no such stage",
+    );
+    let mut out = json!({
         "weighting": a.weighting,
-        "params": a.weighting.params(),
+        "params": params,
         "iir_fs_hz": a.fs,
         "rows": rows,
-    }))?;
+    });
+    if a.fs.is_none() {
+        out["iir_fs_hz_reason"] = json!("no --fs given");
+    }
+    afsv::output::print_json(&out)?;
     Ok(())
 }
 
