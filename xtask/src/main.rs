@@ -9,6 +9,12 @@
 //!   reported numbers (`fixtures/reported/`, see `docs/validation.md`), print the table,
 //!   write `target/validation/report.md`, `report.json` and SVG plots; exit non-zero only
 //!   when a quantity the fixtures mark as reproduced regresses.
+//! - `fuzz [--cases N] [--seed S] [--jobs J] [--timeout SECS] [--mem-mib MIB] [--bin PATH]
+//!   [--only GROUPS] [--skip GROUPS] [--keep]`: run the release `afsv` binary on N (default
+//!   10,000) generated bad inputs and fail on any panic, hang, abort, non-finite output or
+//!   modified input (see `fuzz.rs`).
+
+mod fuzz;
 
 use std::path::{Path, PathBuf};
 use std::process::{Command, ExitCode};
@@ -19,6 +25,7 @@ fn main() -> ExitCode {
         Some("bench") => bench(&args[1..]),
         Some("validate") => validate(&args[1..]),
         Some("discover-matrix") => discover_matrix(),
+        Some("fuzz") => fuzz::fuzz(&args[1..], &workspace_root()),
         Some("-h") | Some("--help") | None => {
             println!("{}", HELP);
             Ok(())
@@ -34,7 +41,7 @@ fn main() -> ExitCode {
     }
 }
 
-const HELP: &str = "usage: cargo xtask <task>\n\ntasks:\n  bench [--summary] [ARGS...]  run the criterion benches (ARGS go to the bench harness) and print mean times and real-time factors\n  validate [--fixtures DIR] [--out DIR]  compare the models with fixtures/reported/ and write target/validation/report.md\n  discover-matrix  run the discovery workflow on every catalogue effect of both models and print the detection table (minutes)";
+const HELP: &str = "usage: cargo xtask <task>\n\ntasks:\n  bench [--summary] [ARGS...]  run the criterion benches (ARGS go to the bench harness) and print mean times and real-time factors\n  validate [--fixtures DIR] [--out DIR]  compare the models with fixtures/reported/ and write target/validation/report.md\n  fuzz [--cases N] [--seed S] [--jobs J] [--timeout SECS] [--mem-mib MIB] [--bin PATH] [--only GROUPS] [--skip GROUPS] [--keep]  run afsv on N generated bad inputs (default 10000); fail on panics, hangs, aborts, non-finite output or modified inputs\n  discover-matrix  run the discovery workflow on every catalogue effect of both models and print the detection table (minutes)";
 
 /// The full detection matrix of the discovery workflow (the slow tests of
 /// `crates/afsv/tests/discover_matrix.rs`).

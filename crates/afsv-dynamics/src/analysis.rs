@@ -346,32 +346,41 @@ impl SensitivityTable {
             let c = r.change;
             let _ = writeln!(
                 s,
-                "{:<9} {:<6} {:>+5.0}  {:>+9.2} {:>+9.2} {:>+9.2} {:>+9.2} {:>+9.2} {:>+9.2}",
+                "{:<9} {:<6} {:>+5.0}  {:>9} {:>9} {:>9} {:>9} {:>9} {:>9}",
                 r.load.name(),
                 r.parameter.symbol(),
                 r.variation_percent,
-                c.frequency,
-                c.damping,
-                c.gain,
-                c.response_rate,
-                c.overshoot,
-                c.efficiency
+                na(c.frequency, 2, true),
+                na(c.damping, 2, true),
+                na(c.gain, 2, true),
+                na(c.response_rate, 2, true),
+                na(c.overshoot, 2, true),
+                na(c.efficiency, 2, true)
             );
         }
         for n in &self.nominal {
             let _ = writeln!(
                 s,
-                "nominal {:<9}: f = {:.3} Hz, zeta = {:.4}, gain = {:.4}, rise = {:.3} s, OS = {:.1} %, eta = {:.4}",
+                "nominal {:<9}: f = {} Hz, zeta = {}, gain = {}, rise = {} s, OS = {} %, eta = {}",
                 n.load.map(|l| l.name()).unwrap_or("-"),
-                n.natural_frequency_hz,
-                n.damping_ratio,
-                n.steering_gain,
-                n.rise_time_s,
-                n.overshoot_percent,
-                n.power_efficiency
+                na(n.natural_frequency_hz, 3, false),
+                na(n.damping_ratio, 4, false),
+                na(n.steering_gain, 4, false),
+                na(n.rise_time_s, 3, false),
+                na(n.overshoot_percent, 1, false),
+                na(n.power_efficiency, 4, false)
             );
         }
         s
+    }
+}
+
+/// `v` with `prec` decimals (and a sign when `signed`), or `n/a` when it is not finite.
+fn na(v: f64, prec: usize, signed: bool) -> String {
+    match (v.is_finite(), signed) {
+        (false, _) => "n/a".into(),
+        (true, true) => format!("{v:+.prec$}"),
+        (true, false) => format!("{v:.prec$}"),
     }
 }
 
@@ -530,4 +539,17 @@ pub fn gain_efficiency_correlation(
         steering_gain: gains,
         power_efficiency: effs,
     })
+}
+
+#[cfg(test)]
+mod na_tests {
+    use super::na;
+
+    #[test]
+    fn non_finite_cells_read_n_a() {
+        assert_eq!(na(f64::NAN, 2, true), "n/a");
+        assert_eq!(na(f64::INFINITY, 2, false), "n/a");
+        assert_eq!(na(1.234, 2, true), "+1.23");
+        assert_eq!(na(-1.0, 1, false), "-1.0");
+    }
 }

@@ -333,6 +333,9 @@ fn describe_state(names: &[String], y: &[f64]) -> String {
         .join(", ")
 }
 
+/// Most output samples (`duration_s / output_dt_s`) one [`simulate`] run produces.
+pub const MAX_OUTPUT_SAMPLES: f64 = 1e6;
+
 /// Run one manoeuvre of the yaw-plane vehicle with the given articulation actuator
 /// (normally [`afs_hydraulics::AfsSystem`]).
 ///
@@ -364,6 +367,12 @@ pub fn simulate<A: SteeringActuator>(
     );
     let names = model.state_names();
     let layout = model.layout();
+    let samples = manoeuvre.duration_s / options.output_dt_s;
+    if samples.is_nan() || samples > MAX_OUTPUT_SAMPLES {
+        return Err(DynError::InvalidInput(format!(
+            "`duration_s` / `output_dt_s` = {samples:e} output samples, at most {MAX_OUTPUT_SAMPLES:e}"
+        )));
+    }
     let grid = odeint::output_grid(0.0, manoeuvre.duration_s, options.output_dt_s);
     let t_end = *grid.last().expect("grid has t0");
     let mut cuts: Vec<f64> = manoeuvre

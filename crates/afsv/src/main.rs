@@ -47,7 +47,10 @@ enum Command {
 fn main() -> ExitCode {
     // A bug must not greet the user with a backtrace: one line, non-zero exit.
     std::panic::set_hook(Box::new(|info| {
-        eprintln!("afsv: internal error (please report): {info}");
+        eprintln!(
+            "afsv: internal error (please report): {}",
+            one_line(&info.to_string())
+        );
     }));
     let cli = match Cli::try_parse() {
         Ok(cli) => cli,
@@ -68,7 +71,7 @@ fn main() -> ExitCode {
                 .collect();
             let message = message.join(" ");
             let message = message.strip_prefix("error: ").unwrap_or(&message);
-            eprintln!("afsv: error: {message} (see `afsv --help`)");
+            eprintln!("afsv: error: {} (see `afsv --help`)", one_line(message));
             return ExitCode::from(2);
         }
     };
@@ -86,8 +89,23 @@ fn main() -> ExitCode {
     match result {
         Ok(()) => ExitCode::SUCCESS,
         Err(e) => {
-            eprintln!("afsv: error: {e}");
+            eprintln!("afsv: error: {}", one_line(&e.to_string()));
             ExitCode::FAILURE
         }
     }
+}
+
+/// `text` on one line: line breaks and other control characters (e.g. from a column name
+/// read out of a malformed file) are shown escaped.
+fn one_line(text: &str) -> String {
+    text.trim_end()
+        .chars()
+        .flat_map(|c| {
+            if c.is_control() {
+                c.escape_default().collect::<Vec<char>>()
+            } else {
+                vec![c]
+            }
+        })
+        .collect()
 }

@@ -132,8 +132,8 @@ impl FitParam {
         }
     }
 
-    /// Bounds of the physical range searched.
-    fn bounds(self) -> (f64, f64) {
+    /// Bounds of the physical range searched (in the parameter's own unit).
+    pub fn bounds(self) -> (f64, f64) {
         match self {
             FitParam::N => (1.0, 1.7),
             FitParam::Fc | FitParam::Fs => (0.0, 1e5),
@@ -319,6 +319,12 @@ pub fn identify(
     opts: &IdentifyOptions,
 ) -> Result<IdentifyResult, HpsError> {
     start.validate()?;
+    if !(opts.warmup_s.is_finite() && opts.warmup_s >= 0.0) {
+        return Err(HpsError::Identification(format!(
+            "`warmup_s` must be finite and >= 0, got {}",
+            opts.warmup_s
+        )));
+    }
     if which.is_empty() {
         return Err(HpsError::Identification("no parameter to fit".into()));
     }

@@ -361,6 +361,9 @@ pub fn simulate_displacement(
     simulate_strut(&strut, excitation, opts)
 }
 
+/// Most output samples one harmonic run produces (duration times output rate).
+pub const MAX_OUTPUT_SAMPLES: f64 = 1e7;
+
 /// As [`simulate_displacement`] for an already built strut (its own `v_peak`).
 pub fn simulate_strut(
     strut: &HpsStrut,
@@ -382,6 +385,12 @@ pub fn simulate_strut(
             ..
         } => {
             let t_end = excitation.duration();
+            let samples = t_end * opts.output_rate_hz;
+            if samples.is_nan() || samples > MAX_OUTPUT_SAMPLES {
+                return Err(HpsError::InvalidExcitation(format!(
+                    "`cycles` / `frequency_hz` * `output_rate_hz` = {samples:e} output samples, at most {MAX_OUTPUT_SAMPLES:e}"
+                )));
+            }
             let dt = 1.0 / opts.output_rate_hz;
             let mut ts = odeint::output_grid(0.0, t_end, dt);
             if t_end - ts[ts.len() - 1] > 1e-9 * t_end.max(1.0) {

@@ -214,6 +214,66 @@ fn zero_crossing_estimate(tau: &[f64], y: &[f64], c: f64) -> Option<(f64, f64)> 
     Some((wd, zeta.clamp(-0.3, 0.95)))
 }
 
+/// The samples `i0..i1` of a free decay to fit: from the first sample at or after `start_s`
+/// (default: the sample of the largest deviation from the final value, the mean of the last
+/// 10 % up to `end_s`) to the last sample at or before `end_s` (default: the end). A window
+/// that holds fewer than two samples, a non-finite bound, or columns of unequal length is
+/// an error naming `start_s`/`end_s`, never a panic.
+pub fn decay_window(
+    t: &[f64],
+    y: &[f64],
+    start_s: Option<f64>,
+    end_s: Option<f64>,
+) -> Result<std::ops::Range<usize>, MeasureError> {
+    same_len("t", t, "y", y)?;
+    for (field, v) in [("start_s", start_s), ("end_s", end_s)] {
+        if let Some(v) = v.filter(|v| !v.is_finite()) {
+            return Err(crate::error::invalid(
+                field,
+                format!("must be finite, got {v}"),
+            ));
+        }
+    }
+    let empty = |field: &'static str| {
+        let show = |v: Option<f64>, d: &str| v.map_or(d.to_string(), |v| v.to_string());
+        crate::error::invalid(
+            field,
+            format!(
+                "the window [{}, {}] s holds fewer than 2 samples (the record spans {} to {} s)",
+                show(start_s, "start"),
+                show(end_s, "end"),
+                show(t.first().copied(), "-"),
+                show(t.last().copied(), "-"),
+            ),
+        )
+    };
+    let i1 = match end_s {
+        Some(e) => t.partition_point(|&v| v <= e),
+        None => t.len(),
+    };
+    if i1 < 2 {
+        return Err(empty(if end_s.is_some() { "end_s" } else { "t" }));
+    }
+    let i0 = match start_s {
+        Some(s) => t.partition_point(|&v| v < s),
+        None => {
+            let n_tail = (i1 / 10).max(1);
+            let fin = y[i1 - n_tail..i1].iter().sum::<f64>() / n_tail as f64;
+            (0..i1)
+                .max_by(|&a, &b| (y[a] - fin).abs().total_cmp(&(y[b] - fin).abs()))
+                .unwrap_or(0)
+        }
+    };
+    if i1 <= i0 + 1 {
+        return Err(empty(if start_s.is_some() {
+            "start_s"
+        } else {
+            "end_s"
+        }));
+    }
+    Ok(i0..i1)
+}
+
 /// Fit the single-DOF free decay `y = offset + A exp(-zeta wn t) cos(wd t + phi)` to a
 /// history `(t, y)` that starts at the free-decay onset (see the module documentation).
 /// Needs at least 8 samples covering at least half a damped cycle.

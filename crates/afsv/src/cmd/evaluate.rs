@@ -14,7 +14,7 @@ pub struct Args {
     #[arg(long, default_value_t = 1)]
     pub seed: u64,
     /// Forward speed for the yaw-plane measures (km/h; section 3.3 uses 50).
-    #[arg(long, default_value_t = 50.0)]
+    #[arg(long, default_value_t = 50.0, allow_hyphen_values = true, value_parser = super::args::positive_f64)]
     pub speed_kmh: f64,
 }
 

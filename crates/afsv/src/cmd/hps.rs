@@ -2,13 +2,15 @@
 //! harmonic runs with loops, the laboratory characterisation programme, and parameter
 //! identification from a measured record.
 
-use super::CmdResult;
+use super::{args, CmdResult};
+use afsv::output::{OutputGuard, OutputKind};
 use afsv::record::Record;
 use hps_emulsion::{
     characterize, identify, lab_programme, loop_metrics, simulate_displacement, Excitation,
     FitParam, HarmonicTest, HpsExtensions, IdentifyOptions, LabConfig, Measured, SimOptions,
     Solver, StrutParams, StrutRecord,
 };
+use serde_json::json;
 use std::path::{Path, PathBuf};
 
 /// Built-in strut parameter sets.
@@ -38,6 +40,11 @@ impl StrutChoice {
             StrutChoice::Lab1Orifice => "lab-1orifice",
             StrutChoice::Lab2Orifice => "lab-2orifice",
         }
+    }
+    fn from_name(name: &str) -> Option<Self> {
+        [Self::FrontAxle, Self::Lab1Orifice, Self::Lab2Orifice]
+            .into_iter()
+            .find(|s| s.name() == name)
     }
 }
 
@@ -84,19 +91,20 @@ pub struct HarmonicArgs {
     #[arg(long, value_enum, default_value = "front-axle")]
     pub strut: StrutChoice,
     /// Excitation frequency (Hz).
-    #[arg(long, default_value_t = 2.0)]
+    #[arg(long, default_value_t = 2.0, allow_hyphen_values = true, value_parser = args::positive_f64)]
     pub freq: f64,
-    /// Excitation amplitude (mm); deflection positive in compression.
-    #[arg(long = "amp-mm", default_value_t = 7.5)]
+    /// Excitation amplitude (mm), > 0; deflection positive in compression.
+    #[arg(long = "amp-mm", default_value_t = 7.5, allow_hyphen_values = true, value_parser = args::positive_f64)]
     pub amp_mm: f64,
-    /// Number of cycles simulated (metrics are from the last).
-    #[arg(long, default_value_t = 5.0)]
+    /// Number of cycles simulated (metrics are from the last); at most 1e6 samples
+    /// (cycles / freq * rate).
+    #[arg(long, default_value_t = 5.0, allow_hyphen_values = true, value_parser = args::positive_f64)]
     pub cycles: f64,
     /// Gas volume fraction of the emulsion, e.g. 0.03 (gas moved from the free gas volume).
-    #[arg(long)]
+    #[arg(long, allow_hyphen_values = true, value_parser = args::nonneg_f64)]
     pub gamma0: Option<f64>,
     /// Output sample rate of the record (Hz).
-    #[arg(long, default_value_t = 360.0)]
+    #[arg(long, default_value_t = 360.0, allow_hyphen_values = true, value_parser = args::positive_f64)]
     pub rate: f64,
     /// Integrator.
     #[arg(long, value_enum, default_value = "auto")]
@@ -107,6 +115,10 @@ pub struct HarmonicArgs {
     /// Draw pressure-deflection, force-deflection, force-velocity and damping-force loops (SVG).
     #[arg(long)]
     pub plot: Option<PathBuf>,
+    /// Replace existing output files afsv did not write (never a foreign JSON at the
+    /// sidecar's name).
+    #[arg(long)]
+    pub force: bool,
 }
 
 /// Options of `afsv hps characterize`.
@@ -116,7 +128,7 @@ pub struct CharacterizeArgs {
     #[arg(long, value_enum, default_value = "lab-1orifice")]
     pub strut: StrutChoice,
     /// Gas volume fraction of the emulsion, e.g. 0.03.
-    #[arg(long)]
+    #[arg(long, allow_hyphen_values = true, value_parser = args::nonneg_f64)]
     pub gamma0: Option<f64>,
 }
 
@@ -129,11 +141,13 @@ pub struct IdentifyArgs {
     /// Parameters to fit, comma-separated, from: n, fc, fs, muv, gamma0, cb, cv, kl.
     #[arg(long, default_value = "n,gamma0,cb")]
     pub fit: String,
-    /// Strut whose other parameters are taken as known (and start values).
-    #[arg(long, value_enum, default_value = "lab-1orifice")]
-    pub strut: StrutChoice,
-    /// Simulate but do not compare the first seconds (start-up transient).
-    #[arg(long, default_value_t = 0.0)]
+    /// Strut whose other parameters are taken as known (and start values). Default: the
+    /// `"strut"` named in the record's sidecar, else lab-1orifice. A --strut that differs
+    /// from the sidecar's is an error.
+    #[arg(long, value_enum)]
+    pub strut: Option<StrutChoice>,
+    /// Simulate but do not compare the first seconds (start-up transient), >= 0.
+    #[arg(long, default_value_t = 0.0, allow_hyphen_values = true, value_parser = args::nonneg_f64)]
     pub warmup: f64,
 }
 
@@ -154,6 +168,23 @@ fn with_gamma0(p: StrutParams, g: Option<f64>) -> Result<StrutParams, Box<dyn st
 }
 
 fn harmonic(a: HarmonicArgs) -> CmdResult {
+    args::check_samples(
+        &format!("--cycles {}", args::show(a.cycles)),
+        &format!(
+            "cycles / freq * rate with --freq {} --rate {}",
+            args::show(a.freq),
+            args::show(a.rate)
+        ),
+        a.cycles / a.freq * a.rate,
+        args::MAX_HPS_SAMPLES,
+    )?;
+    let mut guard = OutputGuard::new(a.force);
+    if let Some(path) = &a.output {
+        guard.output("-o", path, OutputKind::Record)?;
+    }
+    if let Some(path) = &a.plot {
+        guard.output("--plot", path, OutputKind::Svg)?;
+    }
     let params = with_gamma0(a.strut.params(), a.gamma0)?;
     let test = HarmonicTest {
         frequency_hz: a.freq,
@@ -175,6 +206,7 @@ fn harmonic(a: HarmonicArgs) -> CmdResult {
             r.push_column(name, v)?;
         }
         r.meta = serde_json::json!({
+            "written_by": "afsv hps harmonic",
             "model": "hps-emulsion",
             "strut": a.strut.name(),
             "sample_rate_hz": a.rate,
@@ -187,6 +219,7 @@ fn harmonic(a: HarmonicArgs) -> CmdResult {
     }
     if let Some(path) = &a.plot {
         plot_loops(path, &rec, &test)?;
+        afsv::output::mark_svg(path)?;
     }
     afsv::output::print_json(&serde_json::json!({
         "strut": a.strut.name(),
@@ -231,29 +264,127 @@ fn identify_cmd(a: IdentifyArgs) -> CmdResult {
         warmup_s: a.warmup,
         ..IdentifyOptions::default()
     };
-    let start = a.strut.params();
+    let (strut, strut_source) = identify_strut(&a, &rec.meta)?;
+    let start = strut.params();
     let res = identify(&meas, &start, &HpsExtensions::none(), &which, &opts)
         .map_err(|e| format!("{}: {e}", a.input.display()))?;
+    let mut at_bound = Vec::new();
     let fitted: Vec<serde_json::Value> = res
         .fitted
         .iter()
         .map(|f| {
-            serde_json::json!({
-                "param": f.param.name(), "initial": f.initial, "value": f.value,
-                "std_error": if f.std_error.is_finite() { Some(f.std_error) } else { None },
-            })
+            let (lo, hi) = f.param.bounds();
+            let tol = 1e-6 * (hi - lo);
+            let bound = if f.value <= lo + tol {
+                Some("lower")
+            } else if f.value >= hi - tol {
+                Some("upper")
+            } else {
+                None
+            };
+            if bound.is_some() {
+                at_bound.push(f.param.name());
+            }
+            let mut v = serde_json::json!({
+                "param": f.param.name(), "initial": f.initial,
+                "value": afsv::output::finite_or_null(f.value),
+                "bounds": [lo, hi],
+                "at_bound": bound,
+                "std_error": afsv::output::finite_or_null(f.std_error),
+            });
+            if !f.std_error.is_finite() {
+                v["std_error_reason"] = "not determined (singular Jacobian at the solution)".into();
+            }
+            if bound.is_none() {
+                v["at_bound_reason"] = "inside the bounds".into();
+            }
+            v
         })
         .collect();
+    let channels = |c: &hps_emulsion::ChannelNrmse| {
+        [
+            ("force", c.force),
+            ("p_piston", c.p_piston),
+            ("p_rod", c.p_rod),
+        ]
+    };
+    let worse_channels: Vec<&str> = channels(&res.nrmse_initial)
+        .into_iter()
+        .zip(channels(&res.nrmse))
+        .filter_map(|((name, before), (_, after))| match (before, after) {
+            (Some(b), Some(a)) if a.is_nan() || a > b * (1.0 + 1e-9) => Some(name),
+            _ => None,
+        })
+        .collect();
+    let worse = !worse_channels.is_empty();
+    let mut problems = Vec::new();
+    if !at_bound.is_empty() {
+        problems.push(format!(
+            "ended on a bound of {} (the optimum may lie outside the searched range, or the strut/start is wrong)",
+            at_bound.join(", ")
+        ));
+    }
+    if worse {
+        problems.push(format!(
+            "the fit ended worse than its start in {}",
+            worse_channels.join(", ")
+        ));
+    }
+    if !res.converged {
+        problems.push(format!(
+            "no convergence test met in {} iterations",
+            res.iterations
+        ));
+    }
+    let converged = res.converged && problems.is_empty();
     afsv::output::print_json(&serde_json::json!({
         "input": a.input.display().to_string(),
-        "strut": a.strut.name(),
+        "strut": strut.name(),
+        "strut_source": strut_source,
         "fitted": fitted,
-        "nrmse_initial": res.nrmse_initial,
-        "nrmse": res.nrmse,
+        "nrmse_initial": afsv::output::explain_nulls(json!(res.nrmse_initial), NO_CHANNEL),
+        "nrmse": afsv::output::explain_nulls(json!(res.nrmse), NO_CHANNEL),
         "iterations": res.iterations,
-        "converged": res.converged,
+        "converged": converged,
+        "optimizer_converged": res.converged,
+        "improved": !worse,
+        "problems": problems,
     }))?;
     Ok(())
+}
+
+/// Reason of a `null` NRMSE.
+const NO_CHANNEL: &str = "channel not in the record";
+
+/// The strut of `hps identify`: --strut, else the sidecar's `"strut"`, else lab-1orifice.
+fn identify_strut(
+    a: &IdentifyArgs,
+    meta: &serde_json::Value,
+) -> Result<(StrutChoice, &'static str), String> {
+    let side = match meta.get("strut") {
+        None | Some(serde_json::Value::Null) => None,
+        Some(v) => {
+            let name = v.as_str().unwrap_or_default();
+            Some(StrutChoice::from_name(name).ok_or_else(|| {
+                format!(
+                    "{}: the sidecar names strut {v}, not one of front-axle, lab-1orifice, lab-2orifice",
+                    a.input.with_extension("json").display()
+                )
+            })?)
+        }
+    };
+    match (a.strut, side) {
+        (Some(s), Some(t)) if s.name() != t.name() => Err(format!(
+            "--strut {}: the record's sidecar {} says the strut is {}; drop --strut or give --strut {}",
+            s.name(),
+            a.input.with_extension("json").display(),
+            t.name(),
+            t.name()
+        )),
+        (Some(s), _) => Ok((s, "--strut")),
+        (None, Some(t)) => Ok((t, "sidecar")),
+        (None, None) => Ok((StrutChoice::Lab1Orifice, "default")),
+    }
 }
 
 fn plot_loops(path: &Path, rec: &StrutRecord, test: &HarmonicTest) -> Result<(), String> {

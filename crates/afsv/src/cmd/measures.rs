@@ -1,15 +1,16 @@
 //! `afsv measures`: ISO 2631-1 weightings and whole-body vibration exposure, free-decay
 //! (yaw-mode) fit, step-response metrics and the weighting check (crate `perf-measures`).
 
-use super::CmdResult;
+use super::{args, CmdResult};
 use afsv::record::Record;
+use perf_measures::decay::decay_window;
 use perf_measures::iso2631::{
     assess_whole_body, Axis, AxisInput, FilterMethod, IirWeighting, KFactors, Weighting,
 };
 use perf_measures::signal::sample_rate;
 use perf_measures::{fit_free_decay, step_metrics_with, StepOptions};
 use serde_json::json;
-use std::path::{Path, PathBuf};
+use std::path::PathBuf;
 
 /// Subcommands of `afsv measures`.
 #[derive(clap::Subcommand)]
@@ -51,11 +52,12 @@ pub struct WeightingArgs {
         value_name = "HZ,...",
         value_delimiter = ',',
         required = true,
-        allow_hyphen_values = true
+        allow_hyphen_values = true,
+        value_parser = args::positive_f64
     )]
     pub freqs: Vec<f64>,
     /// Also report the IIR filter's magnitude at this sampling rate (Hz).
-    #[arg(long, value_name = "HZ")]
+    #[arg(long, value_name = "HZ", allow_hyphen_values = true, value_parser = args::positive_f64)]
     pub fs: Option<f64>,
 }
 
@@ -66,7 +68,7 @@ pub struct WbvArgs {
     #[arg(long, short = 'i', value_name = "CSV")]
     pub input: PathBuf,
     /// Daily exposure duration in hours for A(8) and the caution zone.
-    #[arg(long, value_name = "H", default_value_t = 8.0)]
+    #[arg(long, value_name = "H", default_value_t = 8.0, allow_hyphen_values = true, value_parser = args::positive_f64)]
     pub hours: f64,
     /// Weighting of an axis, AXIS=W (repeatable), e.g. --weighting z=wk --weighting x=wd.
     /// Defaults are the seat-pan health weightings: x=wd, y=wd, z=wk.
@@ -77,7 +79,8 @@ pub struct WbvArgs {
         long,
         value_name = "KX,KY,KZ",
         value_delimiter = ',',
-        default_value = "1.4,1.4,1"
+        default_value = "1.4,1.4,1",
+        allow_hyphen_values = true, value_parser = args::nonneg_f64
     )]
     pub k: Vec<f64>,
     /// Weighting method: fft (exact analog response, default) or iir (bilinear filter;
@@ -97,10 +100,10 @@ pub struct DecayArgs {
     pub column: String,
     /// Start of the free decay (s); default: the time of the largest deviation from the
     /// final value (mean of the last 10 % of the record).
-    #[arg(long, value_name = "S", allow_hyphen_values = true)]
+    #[arg(long, value_name = "S", allow_hyphen_values = true, value_parser = args::finite_f64)]
     pub start_s: Option<f64>,
     /// End of the fitted window (s); default: end of the record.
-    #[arg(long, value_name = "S", allow_hyphen_values = true)]
+    #[arg(long, value_name = "S", allow_hyphen_values = true, value_parser = args::finite_f64)]
     pub end_s: Option<f64>,
 }
 
@@ -118,14 +121,14 @@ pub struct StepArgs {
     pub output: String,
     /// Step time (s); default: the first time the input departs from its initial value by
     /// 2 % of the step.
-    #[arg(long, value_name = "S", allow_hyphen_values = true)]
+    #[arg(long, value_name = "S", allow_hyphen_values = true, value_parser = args::finite_f64)]
     pub t_step: Option<f64>,
     /// Step amplitude in the input column's unit; default: the mean of the input over
     /// the final --settle-fraction minus its initial value.
-    #[arg(long, value_name = "X", allow_hyphen_values = true)]
+    #[arg(long, value_name = "X", allow_hyphen_values = true, value_parser = args::finite_f64)]
     pub amplitude: Option<f64>,
     /// Final fraction of the post-step record averaged for the steady values.
-    #[arg(long, value_name = "F", default_value_t = 0.1)]
+    #[arg(long, value_name = "F", default_value_t = 0.1, allow_hyphen_values = true, value_parser = args::open_fraction_f64)]
     pub settle_fraction: f64,
 }
 
@@ -133,7 +136,7 @@ pub struct StepArgs {
 #[derive(clap::Args)]
 pub struct CheckArgs {
     /// Sampling rate (Hz) of the IIR filters compared.
-    #[arg(long, value_name = "HZ", default_value_t = perf_measures::iso2631::check::CHECK_IIR_FS_HZ)]
+    #[arg(long, value_name = "HZ", default_value_t = perf_measures::iso2631::check::CHECK_IIR_FS_HZ, allow_hyphen_values = true, value_parser = args::positive_f64)]
     pub iir_fs: f64,
 }
 
@@ -166,24 +169,34 @@ fn weighting(a: WeightingArgs) -> CmdResult {
         let mut row = json!({
             "f_hz": f,
             "magnitude": h.norm(),
-            "magnitude_db": 20.0 * h.norm().log10(),
+            "magnitude_db": afsv::output::finite_or_null(20.0 * h.norm().log10()),
             "phase_deg": h.arg().to_degrees(),
         });
         if let Some(iir) = &iir {
-            row["iir_magnitude"] = if f < 0.5 * iir.fs_hz() {
-                json!(iir.magnitude(f))
+            if f < 0.5 * iir.fs_hz() {
+                row["iir_magnitude"] = afsv::output::finite_or_null(iir.magnitude(f));
             } else {
-                serde_json::Value::Null
-            };
+                row["iir_magnitude"] = serde_json::Value::Null;
+                row["iir_magnitude_reason"] =
+                    json!("at or above the IIR filter's Nyquist frequency --fs/2");
+            }
         }
         rows.push(row);
     }
-    afsv::output::print_json(&json!({
+    let params = afsv::output::explain_nulls(
+        json!(a.weighting.params()),
+        "this weighting has no such stage",
+    );
+    let mut out = json!({
         "weighting": a.weighting,
-        "params": a.weighting.params(),
+        "params": params,
         "iir_fs_hz": a.fs,
         "rows": rows,
-    }))?;
+    });
+    if a.fs.is_none() {
+        out["iir_fs_hz_reason"] = json!("no --fs given");
+    }
+    afsv::output::print_json(&out)?;
     Ok(())
 }
 
@@ -258,38 +271,6 @@ fn wbv(a: WbvArgs) -> CmdResult {
     Ok(())
 }
 
-fn window<'a>(
-    path: &Path,
-    t: &'a [f64],
-    y: &'a [f64],
-    start: Option<f64>,
-    end: Option<f64>,
-) -> Result<(&'a [f64], &'a [f64]), String> {
-    let i1 = match end {
-        Some(e) => t.partition_point(|&v| v <= e),
-        None => t.len(),
-    };
-    let i0 = match start {
-        Some(s) => t.partition_point(|&v| v < s),
-        None => {
-            let n_tail = (i1 / 10).max(1);
-            let fin = y[i1 - n_tail..i1].iter().sum::<f64>() / n_tail as f64;
-            (0..i1)
-                .max_by(|&a, &b| (y[a] - fin).abs().total_cmp(&(y[b] - fin).abs()))
-                .unwrap_or(0)
-        }
-    };
-    if i1 <= i0 + 1 {
-        return Err(format!(
-            "{}: the window [{:?}, {:?}] s holds no samples",
-            path.display(),
-            start,
-            end
-        ));
-    }
-    Ok((&t[i0..i1], &y[i0..i1]))
-}
-
 fn decay(a: DecayArgs) -> CmdResult {
     let rec = Record::read(&a.input)?;
     let t = rec.require("time_s", &a.input)?;
@@ -297,7 +278,9 @@ fn decay(a: DecayArgs) -> CmdResult {
     if t.is_empty() {
         return Err(format!("{}: the record is empty", a.input.display()).into());
     }
-    let (tw, yw) = window(&a.input, t, y, a.start_s, a.end_s)?;
+    let w = decay_window(t, y, a.start_s, a.end_s)
+        .map_err(|e| format!("{}: {e}", a.input.display()))?;
+    let (tw, yw) = (&t[w.clone()], &y[w]);
     let fit = fit_free_decay(tw, yw).map_err(|e| format!("{}: {e}", a.input.display()))?;
     afsv::output::print_json(&json!({
         "column": a.column,

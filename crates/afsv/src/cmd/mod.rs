@@ -1,6 +1,7 @@
 //! One module per subcommand group. Each has a clap `Args` (or `Subcommand`) type and a
 //! `run` function returning [`CmdResult`].
 
+pub mod args;
 pub mod discover;
 pub mod evaluate;
 pub mod hps;

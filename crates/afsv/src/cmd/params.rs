@@ -24,9 +24,13 @@ pub enum Command {
         /// Load condition of the vehicle columns.
         #[arg(long, value_enum, default_value = "loaded")]
         load: super::yaw::LoadChoice,
-        /// Write to this file instead of standard output.
+        /// Write to this file instead of standard output; an existing file needs --force
+        /// (a parameter file carries no afsv marker, so it may be the user's edited set).
         #[arg(short = 'o', long)]
         output: Option<PathBuf>,
+        /// Replace an existing -o file.
+        #[arg(long)]
+        force: bool,
     },
     /// Read and validate a parameter file; prints `{"valid": true, ...}` or fails with
     /// the offending field.
@@ -42,7 +46,19 @@ pub enum Command {
 /// Run an `afsv params` subcommand.
 pub fn run(cmd: Command) -> CmdResult {
     match cmd {
-        Command::Dump { set, load, output } => {
+        Command::Dump {
+            set,
+            load,
+            output,
+            force,
+        } => {
+            if let Some(path) = &output {
+                afsv::output::OutputGuard::new(force).output(
+                    "-o",
+                    path,
+                    afsv::output::OutputKind::Other,
+                )?;
+            }
             let value = match set {
                 ParamSet::YawPlane => serde_json::to_value(YawPlaneParams::nominal(load.into()))?,
             };

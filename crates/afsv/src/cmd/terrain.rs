@@ -1,6 +1,7 @@
 //! `afsv terrain`: two-track terrain synthesis and spectral estimates (crate `terrain-psd`).
 
-use super::CmdResult;
+use super::{args, CmdResult};
+use afsv::output::{OutputGuard, OutputKind};
 use afsv::record::Record;
 use serde_json::{json, Value};
 use std::path::{Path, PathBuf};
@@ -58,10 +59,10 @@ pub struct GenerateArgs {
     pub terrain: Option<String>,
     /// Roughness coefficient alpha_r > 0 of G_d(n) = alpha_r n^-w (Eq 2.8), n in cycles/m,
     /// G_d in m^3 (4.096e-5 is class E); requires --waviness.
-    #[arg(long, value_name = "ALPHA_R")]
+    #[arg(long, value_name = "ALPHA_R", allow_hyphen_values = true, value_parser = args::finite_f64)]
     pub alpha: Option<f64>,
     /// Waviness w of Eq 2.8, 0 <= w <= 10 (ISO 8608: 2); requires --alpha.
-    #[arg(long, value_name = "W")]
+    #[arg(long, value_name = "W", allow_hyphen_values = true, value_parser = args::nonneg_f64)]
     pub waviness: Option<f64>,
     /// Spatial band N_MIN,N_MAX in cycles/m outside which the PSD is zero
     /// (0 < N_MIN < N_MAX <= 1/(2 dx)).
@@ -75,16 +76,16 @@ pub struct GenerateArgs {
     pub coherence: String,
     /// Half-track width T in m for --coherence bogsjo:RHO (e.g. 1.14 for the 2.28 m track
     /// of Table 6.1).
-    #[arg(long, value_name = "M")]
+    #[arg(long, value_name = "M", allow_hyphen_values = true, value_parser = args::positive_f64)]
     pub half_track: Option<f64>,
     /// Forward speed u in m/s for --coherence zhang (50 km/h = 13.89 m/s).
-    #[arg(long, value_name = "M_PER_S")]
+    #[arg(long, value_name = "M_PER_S", allow_hyphen_values = true, value_parser = args::positive_f64)]
     pub speed: Option<f64>,
-    /// Profile length in m; samples x_i = i dx for i = 0..=round(length/dx).
-    #[arg(long, value_name = "M", default_value_t = 100.0)]
+    /// Profile length in m; samples x_i = i dx for i = 0..=round(length/dx), at most 1e7.
+    #[arg(long, value_name = "M", default_value_t = 100.0, allow_hyphen_values = true, value_parser = args::positive_f64)]
     pub length: f64,
     /// Sample spacing dx in m.
-    #[arg(long, value_name = "M", default_value_t = 0.05)]
+    #[arg(long, value_name = "M", default_value_t = 0.05, allow_hyphen_values = true, value_parser = args::positive_f64)]
     pub dx: f64,
     /// Seed of the random phases (ChaCha8); the same seed gives the same profile.
     #[arg(long, default_value_t = 1)]
@@ -93,6 +94,10 @@ pub struct GenerateArgs {
     /// sidecar FILE.json; stdout then gets a short JSON summary.
     #[arg(short, long, value_name = "FILE")]
     pub output: Option<PathBuf>,
+    /// Replace an existing -o file afsv did not write (never a foreign JSON at the
+    /// sidecar's name).
+    #[arg(long)]
+    pub force: bool,
 }
 
 /// Options of `afsv terrain psd`.
@@ -105,10 +110,10 @@ pub struct PsdArgs {
     /// Welch segment length in m (rounded to whole samples; frequency resolution is
     /// 1/segment). Default: the largest power-of-two number of samples <= 1/8 of the
     /// record (>= 15 half-overlapping segments).
-    #[arg(long, value_name = "M")]
+    #[arg(long, value_name = "M", allow_hyphen_values = true, value_parser = args::positive_f64)]
     pub segment_m: Option<f64>,
     /// Fractional overlap of consecutive segments, 0 <= overlap < 1.
-    #[arg(long, value_name = "FRACTION", default_value_t = 0.5)]
+    #[arg(long, value_name = "FRACTION", default_value_t = 0.5, allow_hyphen_values = true, value_parser = args::fraction_f64)]
     pub overlap: f64,
     /// Segment window: hann (periodic Hann) or rectangular.
     #[arg(long, value_name = "WINDOW", default_value = "hann")]
@@ -118,7 +123,7 @@ pub struct PsdArgs {
     pub detrend: String,
     /// Track width B in m for the cross-slope angle (left - right)/B (default: the 2.28 m
     /// track of the 35-t AFSV, Table 6.1).
-    #[arg(long, value_name = "M", default_value_t = DEFAULT_TRACK_WIDTH_M)]
+    #[arg(long, value_name = "M", default_value_t = DEFAULT_TRACK_WIDTH_M, allow_hyphen_values = true, value_parser = args::positive_f64)]
     pub track_width: f64,
     /// Report only frequencies N_MIN <= n <= N_MAX (cycles/m); default: all bins from 0 to
     /// the Nyquist frequency 1/(2 dx).
@@ -209,12 +214,22 @@ fn rms(v: &[f64]) -> f64 {
 }
 
 fn generate(a: GenerateArgs) -> CmdResult {
+    args::check_samples(
+        &format!("--length {}", args::show(a.length)),
+        &format!("length/dx with --dx {}", args::show(a.dx)),
+        a.length / a.dx,
+        args::MAX_SAMPLES,
+    )?;
+    if let Some(path) = &a.output {
+        OutputGuard::new(a.force).output("-o", path, OutputKind::Record)?;
+    }
     let (psd, model) = psd_model(&a)?;
     let band: Band = a.band.parse().map_err(|e| format!("--band: {e}"))?;
     let coherence = coherence_model(&a)?;
     let spec = TwoTrackSpec::new(psd, band, coherence)?;
     let prof = synthesize(&spec, a.length, a.dx, a.seed)?;
     let meta = json!({
+        "written_by": "afsv terrain generate",
         "generator": "afsv terrain generate",
         "description": format!("{model}; band {}-{} cycles/m; coherence {}", band.n_min, band.n_max, coherence),
         "terrain": spec,
@@ -226,16 +241,6 @@ fn generate(a: GenerateArgs) -> CmdResult {
     });
     match &a.output {
         Some(path) => {
-            if path
-                .extension()
-                .is_some_and(|e| e.eq_ignore_ascii_case("json"))
-            {
-                return Err(format!(
-                    "-o {}: the profile is CSV and its sidecar takes the .json name; use e.g. profile.csv",
-                    path.display()
-                )
-                .into());
-            }
             let mut rec = Record::new();
             rec.push_column("x_m", x_column(prof.len(), a.dx))?;
             rec.push_column("left_m", prof.left_m.clone())?;

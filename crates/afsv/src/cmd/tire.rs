@@ -1,6 +1,7 @@
 //! `afsv tire`: Fiala tire force sweeps and terrain enveloping (crate `tire-fiala`).
 
-use super::CmdResult;
+use super::{args, CmdResult};
+use afsv::output::{OutputGuard, OutputKind};
 use std::path::{Path, PathBuf};
 use tire_fiala::{Envelope, EnvelopeMethod, Fiala, HandlingModel, PolylineProfile, TireParams};
 
@@ -28,7 +29,7 @@ pub enum Command {
 #[command(allow_negative_numbers = true)]
 pub struct SweepArgs {
     /// Normal load(s) F_z in N: a value (100000) or a range start:stop:step.
-    #[arg(long, value_name = "N|RANGE")]
+    #[arg(long, value_name = "N|RANGE", allow_hyphen_values = true)]
     pub fz: String,
     /// Slip angle(s) in degrees: a value or a range start:stop:step (e.g. -20:20:0.5).
     #[arg(long, value_name = "DEG|RANGE", allow_hyphen_values = true)]
@@ -41,24 +42,27 @@ pub struct SweepArgs {
     #[arg(long, value_name = "FILE")]
     pub params: Option<PathBuf>,
     /// Longitudinal slip stiffness C_slip (N per unit slip ratio).
-    #[arg(long, value_name = "N")]
+    #[arg(long, value_name = "N", allow_hyphen_values = true, value_parser = args::positive_f64)]
     pub c_slip: Option<f64>,
     /// Constant cornering stiffness C_alpha (N/rad); replaces the load-dependent table.
-    #[arg(long, value_name = "N")]
+    #[arg(long, value_name = "N", allow_hyphen_values = true, value_parser = args::positive_f64)]
     pub c_alpha_per_rad: Option<f64>,
     /// Static friction coefficient U_max.
-    #[arg(long, value_name = "X")]
+    #[arg(long, value_name = "X", allow_hyphen_values = true, value_parser = args::nonneg_f64)]
     pub u_max: Option<f64>,
     /// Sliding friction coefficient U_min.
-    #[arg(long, value_name = "X")]
+    #[arg(long, value_name = "X", allow_hyphen_values = true, value_parser = args::nonneg_f64)]
     pub u_min: Option<f64>,
     /// Tire width b in m (Fiala's R2 is half of it).
-    #[arg(long, value_name = "M")]
+    #[arg(long, value_name = "M", allow_hyphen_values = true, value_parser = args::positive_f64)]
     pub width_m: Option<f64>,
     /// Also draw the curves into this SVG file: F_y vs alpha when alpha is swept,
     /// otherwise F_x vs kappa; one curve per (F_z, kappa) or (F_z, alpha).
     #[arg(long, value_name = "SVG")]
     pub plot: Option<PathBuf>,
+    /// Replace an existing --plot file afsv did not write (never the --params file).
+    #[arg(long)]
+    pub force: bool,
 }
 
 /// Which profile column a wheel runs on.
@@ -87,7 +91,7 @@ pub struct EnvelopeArgs {
     #[arg(long, value_name = "CSV")]
     pub profile: PathBuf,
     /// Free tire radius R in m (Table 6.2: 1.0).
-    #[arg(long, default_value_t = 1.0, value_name = "M")]
+    #[arg(long, default_value_t = 1.0, value_name = "M", allow_hyphen_values = true, value_parser = args::positive_f64)]
     pub radius: f64,
     /// Enveloping method.
     #[arg(long, value_enum, default_value = "cams")]
@@ -97,10 +101,10 @@ pub struct EnvelopeArgs {
     pub track: TrackSide,
     /// Tire deflection held constant along the profile, m (0.1 m is the default
     /// 29.5R29 table at about 160 kN).
-    #[arg(long, default_value_t = 0.1, value_name = "M")]
+    #[arg(long, default_value_t = 0.1, value_name = "M", allow_hyphen_values = true, value_parser = args::nonneg_f64)]
     pub deflection_m: f64,
     /// Sampling step of the profile under the tire, m.
-    #[arg(long, default_value_t = 0.01, value_name = "M")]
+    #[arg(long, default_value_t = 0.01, value_name = "M", allow_hyphen_values = true, value_parser = args::positive_f64)]
     pub spacing_m: f64,
 }
 
@@ -194,7 +198,21 @@ struct SweepRow {
 }
 
 fn sweep(args: SweepArgs) -> CmdResult {
+    let mut guard = OutputGuard::new(args.force);
+    if let Some(p) = &args.params {
+        guard.input("--params", p)?;
+    }
+    if let Some(p) = &args.plot {
+        guard.output("--plot", p, OutputKind::Svg)?;
+    }
     let fzs = parse_range(&args.fz, "--fz")?;
+    if let Some(bad) = fzs.iter().find(|&&f| f <= 0.0) {
+        return Err(format!(
+            "--fz {}: normal loads must be > 0 N (got {bad}); a tire off the ground has no forces to sweep",
+            args.fz
+        )
+        .into());
+    }
     let (alphas, kappas) = match (&args.alpha_deg, &args.kappa) {
         (None, None) => (parse_range("-20:20:0.5", "--alpha-deg")?, vec![0.0]),
         (a, k) => (
@@ -232,6 +250,7 @@ fn sweep(args: SweepArgs) -> CmdResult {
     }
     if let Some(path) = &args.plot {
         plot_sweep(path, &rows, &fzs, &kappas, &alphas)?;
+        afsv::output::mark_svg(path)?;
     }
     afsv::output::print_json(&rows)?;
     Ok(())

@@ -2,7 +2,8 @@
 //! simulate a manoeuvre into a record, the yaw-plane measures, the sensitivity table and
 //! the leakage analyses.
 
-use super::CmdResult;
+use super::{args, CmdResult};
+use afsv::output::{OutputGuard, OutputKind};
 use afsv::record::Record;
 use afsv_dynamics::analysis::{
     gain_efficiency_correlation, measures_for, steady_turn_decay, MeasureSpec,
@@ -69,7 +70,7 @@ pub struct VehicleArgs {
     #[arg(long, value_enum, default_value = "loaded")]
     pub load: LoadChoice,
     /// Constant forward speed (km/h).
-    #[arg(long, default_value_t = 50.0)]
+    #[arg(long, default_value_t = 50.0, allow_hyphen_values = true, value_parser = args::nonneg_f64)]
     pub speed_kmh: f64,
     /// Parameter file (JSON, as written by `afsv params dump yaw-plane`), validated.
     #[arg(long)]
@@ -93,23 +94,28 @@ pub enum Command {
         #[arg(long, default_value = "pulse")]
         input: String,
         /// Input time of pulse, step and ramp (s).
-        #[arg(long, default_value_t = 0.5)]
+        #[arg(long, default_value_t = 0.5, allow_hyphen_values = true, value_parser = args::nonneg_f64)]
         input_time: f64,
-        /// Simulated time (s).
-        #[arg(long, default_value_t = 10.0)]
+        /// Simulated time (s); at most 1e6 samples (duration/dt).
+        #[arg(long, default_value_t = 10.0, allow_hyphen_values = true, value_parser = args::positive_f64)]
         duration: f64,
         /// Output sample interval (s).
-        #[arg(long, default_value_t = 0.005)]
+        #[arg(long, default_value_t = 0.005, allow_hyphen_values = true, value_parser = args::positive_f64)]
         dt: f64,
         /// Integrator.
         #[arg(long, value_enum, default_value = "dopri")]
         solver: SolverChoice,
         /// Relative tolerance of the adaptive integrators.
-        #[arg(long, default_value_t = 1e-5)]
+        #[arg(long, default_value_t = 1e-5, allow_hyphen_values = true, value_parser = args::positive_f64)]
         rtol: f64,
-        /// Output CSV file (the sidecar goes beside it with extension .json).
+        /// Output CSV file (the sidecar goes beside it with extension .json). It must not
+        /// be an input; an existing file afsv did not write needs --force.
         #[arg(short = 'o', long)]
         output: PathBuf,
+        /// Replace an existing output file that afsv did not write (never an input, never
+        /// a foreign JSON at the sidecar's name).
+        #[arg(long)]
+        force: bool,
     },
     /// Yaw-mode frequency and damping (0.2 s pulse), steering gain, 0-100 % rise time,
     /// overshoot (30 deg step) and power efficiency (Eq 4.7), as JSON.
@@ -121,7 +127,7 @@ pub enum Command {
     /// loaded and unloaded (section 3.4.3), as JSON or a readable table.
     Sensitivity {
         /// Constant forward speed (km/h).
-        #[arg(long, default_value_t = 50.0)]
+        #[arg(long, default_value_t = 50.0, allow_hyphen_values = true, value_parser = args::nonneg_f64)]
         speed_kmh: f64,
         /// Form of the yaw equations.
         #[arg(long, value_enum, default_value = "energy-consistent")]
@@ -134,7 +140,7 @@ pub enum Command {
     /// (section 3.4.1) and the gain-efficiency correlation over a leakage sweep (Fig 4.7).
     Leakage {
         /// Steering-wheel angle held in the steady turn (deg).
-        #[arg(long, default_value_t = 300.0)]
+        #[arg(long, default_value_t = 300.0, value_parser = args::finite_f64, allow_hyphen_values = true)]
         steer_wheel_deg: f64,
     },
 }
@@ -170,6 +176,15 @@ fn parse_number(what: &str, s: &str) -> Result<f64, String> {
         .ok()
         .filter(|v| v.is_finite())
         .ok_or_else(|| format!("--input {what}: `{s}` is not a finite number"))
+}
+
+/// The file of a `csv:FILE:COLUMN` input specification.
+fn csv_input_file(spec: &str) -> Option<&str> {
+    let parts: Vec<&str> = spec.splitn(3, ':').collect();
+    match parts.as_slice() {
+        ["csv", file, _] => Some(file),
+        _ => None,
+    }
 }
 
 /// Parse the `--input` specification into a manoeuvre.
@@ -260,7 +275,22 @@ pub fn run(cmd: Command) -> CmdResult {
             solver,
             rtol,
             output,
+            force,
         } => {
+            args::check_samples(
+                &format!("--duration {}", args::show(duration)),
+                &format!("duration/dt with --dt {}", args::show(dt)),
+                duration / dt,
+                args::MAX_YAW_SAMPLES,
+            )?;
+            let mut guard = OutputGuard::new(force);
+            if let Some(p) = &vehicle.params {
+                guard.input("--params", p)?;
+            }
+            if let Some(file) = csv_input_file(&input) {
+                guard.record_input("--input", Path::new(file))?;
+            }
+            guard.output("-o", &output, OutputKind::Record)?;
             let p = load_params(&vehicle)?;
             let speed = kmh(vehicle.speed_kmh)?;
             let sys = p.afs_system()?;
@@ -284,6 +314,7 @@ pub fn run(cmd: Command) -> CmdResult {
             }
             let form: EquationForm = vehicle.form.into();
             out.meta = serde_json::json!({
+                "written_by": "afsv yaw simulate",
                 "sample_rate_hz": 1.0 / dt,
                 "model": "afsv-dynamics yaw-plane (chapter 3)",
                 "equation_form": form,

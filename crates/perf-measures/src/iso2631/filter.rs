@@ -207,6 +207,9 @@ pub fn fast_fft_len(min: usize) -> usize {
     }
 }
 
+/// Longest FFT (record plus settling padding) the FFT method runs: 2^25 samples.
+pub const MAX_FFT_LEN: usize = 1 << 25;
+
 /// Samples of zero padding the FFT method appends: the time for the slowest pole of the
 /// weighting to decay by `exp(-14)`.
 pub fn settling_samples(p: &WeightingParams, fs_hz: f64) -> usize {
@@ -240,7 +243,16 @@ pub fn weight_fft_params(
     p.validate()?;
     check_record(x, fs_hz)?;
     let n = x.len();
-    let len = fast_fft_len(n + settling_samples(p, fs_hz));
+    let pad = settling_samples(p, fs_hz);
+    if pad > MAX_FFT_LEN || n > MAX_FFT_LEN - pad {
+        return Err(invalid(
+            "fs_hz",
+            format!(
+                "{fs_hz:e} Hz needs {pad} samples of settling padding beside {n} samples, at most {MAX_FFT_LEN} in all (use the IIR method or resample the record)"
+            ),
+        ));
+    }
+    let len = fast_fft_len(n + pad);
     let mean = x.iter().sum::<f64>() / n as f64;
     let mut planner = RealFftPlanner::<f64>::new();
     let r2c = planner.plan_fft_forward(len);
