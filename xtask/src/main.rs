@@ -155,6 +155,45 @@ fn bench(args: &[String]) -> Result<(), String> {
             .unwrap_or_default();
         println!("{:<60} {:>14} {:>16}", id, human_time(ns), rtf);
     }
+    if !summary_only && !args.iter().any(|a| a == "--no-discovery") {
+        discovery_rows(&root)?;
+    }
+    Ok(())
+}
+
+/// Whole discovery runs on independently generated records (64 vehicle records, the
+/// 7-record strut programme), timed by an ignored test of the afsv crate.
+fn discovery_rows(root: &std::path::Path) -> Result<(), String> {
+    let out = Command::new(std::env::var("CARGO").unwrap_or_else(|_| "cargo".into()))
+        .current_dir(root)
+        .args([
+            "test",
+            "--release",
+            "-q",
+            "-p",
+            "afsv",
+            "--test",
+            "discover_independent",
+            "--",
+            "--ignored",
+            "--exact",
+            "timing",
+            "--nocapture",
+        ])
+        .output()
+        .map_err(|e| format!("cannot run the discovery timing: {e}"))?;
+    if !out.status.success() {
+        return Err(format!(
+            "discovery timing failed: {}",
+            String::from_utf8_lossy(&out.stderr)
+        ));
+    }
+    for line in String::from_utf8_lossy(&out.stdout).lines() {
+        if let Some(row) = line.strip_prefix("bench-row ") {
+            let (id, rest) = row.split_once(' ').unwrap_or((row, ""));
+            println!("{id:<60} {rest}");
+        }
+    }
     Ok(())
 }
 

@@ -33,6 +33,7 @@ fn bench(c: &mut Criterion) {
             polytropic_index: 1.0,
             atmospheric_pressure_pa: 101_325.0,
         }),
+        valve_lag: None,
         constant_leakage_only: false,
     };
     let sys_ext = sys.clone().with_extensions(ext).expect("valid extensions");

@@ -53,6 +53,18 @@ impl EntrainedAir {
     }
 }
 
+/// First-order lag of the steering valve's opening (section 3.4.2 names "delays in the
+/// steering valve flows" among the causes of the measured lag): the spool displacement that
+/// meters the flows, `x_v`, follows the commanded displacement `X = theta_sw - theta_h`
+/// (Eq 3.9) through `dx_v/dt = (X - x_v) / tau` (pilot-stage and spool inertia, flow-force
+/// settling). Adds one state (rad) to the steering system.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct ValveLag {
+    /// tau, time constant of the valve opening (s), e.g. 0.04.
+    pub tau_s: f64,
+}
+
 /// The set of switchable extensions. `Default` = all off = baseline.
 #[derive(Debug, Clone, Copy, PartialEq, Default, Serialize, Deserialize)]
 #[serde(deny_unknown_fields, default)]
@@ -63,6 +75,8 @@ pub struct AfsExtensions {
     pub coulomb_friction: Option<CoulombFriction>,
     /// Pressure-dependent bulk modulus from entrained air (replaces the constant B_eff).
     pub entrained_air: Option<EntrainedAir>,
+    /// First-order lag of the valve opening (adds the lagged spool state).
+    pub valve_lag: Option<ValveLag>,
     /// Drop the velocity-dependent term of Eq 3.6 and use the constant-coefficient leakage
     /// of Eq 3.5 (k_lL = k_lR = k_l0, the model of refs [10, 12, 19]).
     pub constant_leakage_only: bool,
@@ -91,6 +105,14 @@ impl AfsExtensions {
                 c.velocity_scale_m_s,
                 c.velocity_scale_m_s > 0.0,
                 "must be > 0",
+            )?;
+        }
+        if let Some(v) = &self.valve_lag {
+            check(
+                "valve_lag.tau_s",
+                v.tau_s,
+                v.tau_s > 0.0 && v.tau_s <= 10.0,
+                "must lie in (0, 10] s",
             )?;
         }
         if let Some(a) = &self.entrained_air {

@@ -22,7 +22,7 @@ mod system;
 pub mod valve;
 
 pub use error::AfsError;
-pub use extensions::{AfsExtensions, CoulombFriction, EntrainedAir, SupplyDroop};
+pub use extensions::{AfsExtensions, CoulombFriction, EntrainedAir, SupplyDroop, ValveLag};
 pub use kinematics::{strut_kinematics, StrutKinematics};
 pub use params::AfsParams;
 pub use sensor::backlash;

@@ -69,7 +69,9 @@ pub struct AfsOutput {
 /// - `state[0]` = P_c (Pa, absolute): left piston side + right rod side, Eq 3.4 line 1;
 /// - `state[1]` = P_r (Pa, absolute): left rod side + right piston side, Eq 3.4 line 2;
 /// - `state[2]` = theta_h (rad): valve housing / gerotor angle, Eq 3.10 in rate form
-///   dtheta_h/dt = sign(X)·|q_1|/(k_theta eta_g).
+///   dtheta_h/dt = sign(X)·|q_1|/(k_theta eta_g);
+/// - `state[3]` = x_v (rad), only with the [`crate::ValveLag`] extension: the lagged spool
+///   displacement that meters the flows ([`AfsSystem::n_states`] = 4).
 ///
 /// Tolerances: pressures are 1e4..1.4e7 Pa and theta_h is O(0.1..10) rad. With a
 /// scalar `atol` (odeint) use rtol 1e-6 and atol 1e-8: the pressure components are then
@@ -110,6 +112,12 @@ impl AfsSystem {
         ext.validate()?;
         self.ext = ext;
         Ok(self)
+    }
+
+    /// Number of states of this configuration: [`Self::N_STATES`], plus the lagged spool
+    /// displacement x_v (rad, index 3) when the valve-lag extension is on.
+    pub fn n_states(&self) -> usize {
+        Self::N_STATES + usize::from(self.ext.valve_lag.is_some())
     }
 
     /// The parameters.
@@ -257,7 +265,7 @@ impl AfsSystem {
     /// - Eqs 3.9-3.12: X = theta_sw - theta_h, q_1, q_2 with the normalised opening.
     /// - Eq 3.10: dtheta_h/dt = sign(X) q_1/(k_theta eta_g).
     ///
-    /// `state.len()` and `dstate.len()` must be at least 3.
+    /// `state.len()` and `dstate.len()` must be at least [`Self::n_states`].
     pub fn derivatives(&self, input: &AfsInput, state: &[f64], dstate: &mut [f64]) -> AfsOutput {
         let p = &self.params;
         let (pc, pr, theta_h) = (state[0], state[1], state[2]);
@@ -292,8 +300,16 @@ impl AfsSystem {
         };
         let q_leak = (kll + klr) * (pc - pr);
 
-        // valve (Eqs 3.9, 3.11, 3.12)
-        let x = input.steer_wheel - theta_h;
+        // valve (Eqs 3.9, 3.11, 3.12); with the valve-lag extension the metering spool
+        // follows the commanded X with a first-order lag (state 3)
+        let x_cmd = input.steer_wheel - theta_h;
+        let x = match &self.ext.valve_lag {
+            None => x_cmd,
+            Some(lag) => {
+                dstate[3] = (x_cmd - state[3]) / lag.tau_s;
+                state[3]
+            }
+        };
         let xi = normalised_opening(x, p.dead_band_rad, p.spool_limit_rad);
         let (mut q_c, mut q_r, mut q1, mut q2, mut p_sup) =
             (0.0, 0.0, 0.0, 0.0, p.supply_pressure_pa);

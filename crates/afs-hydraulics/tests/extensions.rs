@@ -145,3 +145,42 @@ fn constant_leakage_ignores_strut_speed() {
         }
     }
 }
+
+#[test]
+fn valve_lag_meters_the_flow_by_the_lagged_spool() {
+    use afs_hydraulics::ValveLag;
+    let tau = 0.04;
+    let lag = sys(AfsExtensions {
+        valve_lag: Some(ValveLag { tau_s: tau }),
+        ..Default::default()
+    });
+    let base = sys(AfsExtensions::default());
+    assert_eq!(lag.n_states(), 4);
+    assert_eq!(base.n_states(), 3);
+    let inp = AfsInput {
+        theta: 0.0,
+        theta_dot: 0.0,
+        steer_wheel: 10.0 * DEG,
+    };
+    // Spool still centred: no flow yet, and the spool moves towards X at (X - x_v)/tau.
+    let mut d = [0.0; 4];
+    let o = lag.derivatives(&inp, &[2.0e6, 2.0e6, 0.0, 0.0], &mut d);
+    assert_eq!(o.q_supply, 0.0);
+    assert!((d[3] - 10.0 * DEG / tau).abs() < 1e-12);
+    // Spool at the commanded opening: the same flows and pressure rates as without the lag.
+    let o_lag = lag.derivatives(&inp, &[2.0e6, 2.0e6, 0.0, 10.0 * DEG], &mut d);
+    assert!(d[3].abs() < 1e-12);
+    let mut d0 = [0.0; 3];
+    let o_base = base.derivatives(&inp, &[2.0e6, 2.0e6, 0.0], &mut d0);
+    assert!((o_lag.q_supply - o_base.q_supply).abs() < 1e-12 * o_base.q_supply.abs());
+    assert!((d[0] - d0[0]).abs() <= 1e-9 * d0[0].abs());
+    // A non-positive time constant is refused with the field named.
+    let err = AfsSystem::new(AfsParams::nominal())
+        .unwrap()
+        .with_extensions(AfsExtensions {
+            valve_lag: Some(ValveLag { tau_s: 0.0 }),
+            ..Default::default()
+        })
+        .unwrap_err();
+    assert!(err.to_string().contains("valve_lag.tau_s"), "{err}");
+}

@@ -27,6 +27,7 @@ fn all_extensions() -> AfsExtensions {
             polytropic_index: 1.2,
             atmospheric_pressure_pa: 101_325.0,
         }),
+        valve_lag: None,
         constant_leakage_only: true,
     }
 }

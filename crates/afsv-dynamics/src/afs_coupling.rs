@@ -1,25 +1,27 @@
 //! [`afs_hydraulics::AfsSystem`] as the articulation actuator of the yaw-plane model.
 //!
 //! States P_c, P_r (Pa) are integrated in MPa (scale 1e-6) and theta_h in rad, so a single
-//! absolute tolerance of 1e-8 suits every state of the coupled model.
+//! absolute tolerance of 1e-8 suits every state of the coupled model. With the valve-lag
+//! extension a fourth state, the lagged spool displacement x_v (rad, starts centred), follows.
 
 use crate::actuator::{ActuatorOutput, SteeringActuator};
 use afs_hydraulics::{AfsInput, AfsSystem};
 
-const NAMES: [&str; 3] = ["p_c_pa", "p_r_pa", "theta_h_rad"];
+const NAMES: [&str; 4] = ["p_c_pa", "p_r_pa", "theta_h_rad", "valve_spool_rad"];
 
 impl SteeringActuator for AfsSystem {
     fn n_states(&self) -> usize {
-        AfsSystem::N_STATES
+        AfsSystem::n_states(self)
     }
     fn state_scale(&self, i: usize) -> f64 {
-        1.0 / AfsSystem::STATE_SCALE[i]
+        AfsSystem::STATE_SCALE.get(i).map_or(1.0, |s| 1.0 / s)
     }
     fn state_name(&self, i: usize) -> &'static str {
         NAMES[i]
     }
     fn initial_state(&self, theta: f64, out: &mut [f64]) {
-        out.copy_from_slice(&AfsSystem::initial_state(self, theta));
+        out.fill(0.0);
+        out[..AfsSystem::N_STATES].copy_from_slice(&AfsSystem::initial_state(self, theta));
     }
     #[inline]
     fn evaluate(

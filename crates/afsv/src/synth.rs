@@ -202,7 +202,7 @@ impl HpsNoise {
 pub fn hps_default_size(name: &str) -> Vec<f64> {
     match name {
         "gas-heat-transfer" => vec![3.0],
-        "gas-fraction" => vec![0.04, 0.1],
+        "gas-fraction-growth" => vec![0.15],
         "asymmetric-friction" => vec![2.0, 0.5],
         "check-valve-lag" => vec![0.03],
         _ => Vec::new(),
@@ -267,7 +267,7 @@ pub fn hps_records(
 ) -> Result<Vec<SynthRecord>, String> {
     let (base, active) = truth_of(model, hidden);
     let params = model.apply_baseline(&base)?;
-    let (params, ext) = model.apply_effects(params, &active)?;
+    let ext = model.apply_effects(&active)?;
     let mut gauss = Gaussian::new(seed);
     let mut out = Vec::new();
     for (k, (test, cycles, holdout)) in hps_programme().into_iter().enumerate() {
@@ -301,6 +301,7 @@ pub fn hps_records(
         push(&mut r, "p_rod_pa", pr)?;
         r.meta = serde_json::json!({
             "model": "hps-strut",
+            "strut": model.strut,
             "excitation": "harmonic",
             "frequency_hz": test.frequency_hz,
             "amplitude_m": test.amplitude_m,
@@ -371,18 +372,18 @@ impl YawNoise {
 pub fn yaw_default_size(name: &str) -> Vec<f64> {
     match name {
         "sensor-backlash" => vec![0.5],
-        "velocity-leakage" => vec![1.8e-10],
         "supply-droop" => vec![1.5e9],
         "strut-coulomb-friction" => vec![4000.0],
         "entrained-air" => vec![0.03],
-        "tire-relaxation" => vec![0.6],
+        "valve-lag" => vec![0.04],
         _ => Vec::new(),
     }
 }
 
 /// The manoeuvres `afsv synth` records for the vehicle (section 3.3 inputs and the Fig 3.6
-/// field courses), with their hold-out role.
-pub fn yaw_programme() -> Vec<(afsv_dynamics::Manoeuvre, bool)> {
+/// field courses), with the load and the hold-out role of each. Both loads appear in
+/// training and in the held-out records, as in field data (Table 3.2).
+pub fn yaw_programme() -> Vec<(afsv_dynamics::Manoeuvre, afsv_dynamics::Load, bool)> {
     use afsv_dynamics::{
         driver::Course, table_3_2_speeds_kmh, FieldCourse, Load, Manoeuvre, PathDriver, SteerInput,
     };
@@ -390,11 +391,12 @@ pub fn yaw_programme() -> Vec<(afsv_dynamics::Manoeuvre, bool)> {
     let steady = table_3_2_speeds_kmh(FieldCourse::SteadyTurn, Load::Loaded)[0];
     let change = table_3_2_speeds_kmh(FieldCourse::PathChange, Load::Loaded)[0];
     vec![
-        (Manoeuvre::pulse(kmh(50.0), 30.0), false),
+        (Manoeuvre::pulse(kmh(50.0), 30.0), Load::Loaded, false),
         // A driver's "step" takes about 0.1 s: an ideal step would make the recorded
         // (sampled) input differ from the truth's between two samples.
         (
             Manoeuvre::open_loop(kmh(50.0), 10.0, fast_step(30.0), "step"),
+            Load::Loaded,
             false,
         ),
         (
@@ -404,6 +406,7 @@ pub fn yaw_programme() -> Vec<(afsv_dynamics::Manoeuvre, bool)> {
                 SteerInput::pulse_deg(-20.0, 0.2, 0.5),
                 "pulse",
             ),
+            Load::Unloaded,
             true,
         ),
         // The field path change (held out below) is large, slow steering at high pressure
@@ -416,6 +419,7 @@ pub fn yaw_programme() -> Vec<(afsv_dynamics::Manoeuvre, bool)> {
                 PathDriver::new(Course::path_change_fig_3_6()),
                 "path-change",
             ),
+            Load::Loaded,
             false,
         ),
         (
@@ -429,6 +433,7 @@ pub fn yaw_programme() -> Vec<(afsv_dynamics::Manoeuvre, bool)> {
                 },
                 "ramp",
             ),
+            Load::Loaded,
             true,
         ),
         (
@@ -438,6 +443,7 @@ pub fn yaw_programme() -> Vec<(afsv_dynamics::Manoeuvre, bool)> {
                 PathDriver::new(Course::steady_turn_fig_3_6()),
                 "steady-turn",
             ),
+            Load::Loaded,
             false,
         ),
         (
@@ -447,6 +453,7 @@ pub fn yaw_programme() -> Vec<(afsv_dynamics::Manoeuvre, bool)> {
                 PathDriver::new(Course::path_change_fig_3_6()),
                 "path-change",
             ),
+            Load::Loaded,
             true,
         ),
         (
@@ -456,6 +463,7 @@ pub fn yaw_programme() -> Vec<(afsv_dynamics::Manoeuvre, bool)> {
                 SteerInput::pulse_deg(40.0, 0.2, 0.5),
                 "pulse",
             ),
+            Load::Unloaded,
             false,
         ),
     ]
@@ -478,13 +486,18 @@ pub fn yaw_records(
     seed: u64,
 ) -> Result<Vec<SynthRecord>, String> {
     let (base, active) = truth_of(model, hidden);
-    let (params, ext, play) = model.apply_effects(model.apply_baseline(&base), &active)?;
-    let sys = afs_hydraulics::AfsSystem::new(params.afs.clone())
-        .and_then(|s| s.with_extensions(ext))
-        .map_err(|e| e.to_string())?;
+    let (ext, play) = model.apply_effects(&active)?;
     let mut gauss = Gaussian::new(seed);
     let mut out = Vec::new();
-    for (k, (man, holdout)) in yaw_programme().into_iter().enumerate() {
+    for (k, (man, load, holdout)) in yaw_programme().into_iter().enumerate() {
+        let vehicle = match load {
+            afsv_dynamics::Load::Loaded => &model.loaded,
+            afsv_dynamics::Load::Unloaded => &model.unloaded,
+        };
+        let params = model.apply_baseline(vehicle, &base);
+        let sys = afs_hydraulics::AfsSystem::new(params.afs.clone())
+            .and_then(|s| s.with_extensions(ext))
+            .map_err(|e| e.to_string())?;
         let rec = afsv_dynamics::simulate(&params.vehicle, &sys, &man, &model.sim)
             .map_err(|e| e.to_string())?;
         let mut art = rec.articulation_deg.clone();
@@ -522,7 +535,7 @@ pub fn yaw_records(
             "model": "yaw-plane",
             "manoeuvre": man.label,
             "speed_m_s": man.speed_m_s,
-            "load": "loaded",
+            "load": load.name(),
             "sample_rate_hz": 1.0 / model.sim.output_dt_s,
         });
         out.push(SynthRecord {
@@ -560,7 +573,7 @@ mod tests {
 
     #[test]
     fn parses_effect_lists() {
-        let m = HpsStrutModel::new(HpsStrutModel::default_baseline());
+        let m = HpsStrutModel::nominal();
         let cat = m.catalogue();
         let e = parse_effects(
             "gas-heat-transfer, asymmetric-friction=1.5:0.7",

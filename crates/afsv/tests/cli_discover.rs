@@ -123,12 +123,36 @@ fn list_effects_prints_the_catalogue() {
         String::from_utf8_lossy(&out.stderr)
     );
     let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
-    assert_eq!(v["catalogue"].as_array().unwrap().len(), 6);
+    let names: Vec<&str> = v["catalogue"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|e| e["name"].as_str().unwrap())
+        .collect();
+    // Only mechanisms the paper's model lacks: leakage growth and tire lag are calibrated.
+    assert_eq!(
+        names,
+        [
+            "sensor-backlash",
+            "supply-droop",
+            "strut-coulomb-friction",
+            "entrained-air",
+            "valve-lag"
+        ]
+    );
+    let base: Vec<&str> = v["baseline_params"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|e| e["name"].as_str().unwrap())
+        .collect();
+    assert!(base.contains(&"leak_velocity_m3_pa_m") && base.contains(&"relaxation_length_m"));
 }
 
 /// Records as another tool would write them: columns in another order, an extra column, a
 /// byte-order mark and CRLF line ends, 100 Hz instead of 200 Hz, a clock that starts at
-/// 1000 s, and no sidecar (speed from its column).
+/// 1000 s, and no sidecar (speed from its column). Their load is then unknown: refused with
+/// the field named, then given with `--load` and, for the unloaded records, `--params-for`.
 #[test]
 fn records_written_elsewhere_are_read_and_the_effect_is_named() {
     let data = tmp("elsewhere-synth");
@@ -139,7 +163,7 @@ fn records_written_elsewhere_are_read_and_the_effect_is_named() {
         "--model",
         "yaw-plane",
         "--effects",
-        "velocity-leakage",
+        "valve-lag",
         "--seed",
         "11",
         "-o",
@@ -176,30 +200,209 @@ fn records_written_elsewhere_are_read_and_the_effect_is_named() {
             std::fs::write(foreign.join(set).join(path.file_name().unwrap()), text).unwrap();
         }
     }
-    let out = afsv(&[
+    let train = foreign.join("train");
+    let holdout = foreign.join("holdout");
+    let base = [
         "discover",
         "--model",
         "yaw-plane",
         "--train",
-        foreign.join("train").to_str().unwrap(),
+        train.to_str().unwrap(),
         "--holdout",
-        foreign.join("holdout").to_str().unwrap(),
+        holdout.to_str().unwrap(),
+        "--effects",
+        "valve-lag,sensor-backlash",
         "-o",
         report.to_str().unwrap(),
+    ];
+    let out = afsv(&base);
+    assert!(!out.status.success());
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(err.trim().lines().count(), 1, "{err}");
+    assert!(err.contains("`load`") && err.contains("--load"), "{err}");
+    assert!(!report.exists());
+    let unloaded = foreign.join("unloaded.json");
+    let out = afsv(&[
+        "params",
+        "dump",
+        "yaw-plane",
+        "--load",
+        "unloaded",
+        "-o",
+        unloaded.to_str().unwrap(),
     ]);
     assert!(
         out.status.success(),
         "{}",
         String::from_utf8_lossy(&out.stderr)
     );
+    // The programme's unloaded records (see `afsv::synth::yaw_programme`).
+    let own = |set: &std::path::Path, stem: &str| {
+        format!("{}={}", set.join(stem).display(), unloaded.display())
+    };
+    let (own_train, own_holdout) = (
+        own(&train, "yaw_07_pulse.csv"),
+        own(&holdout, "yaw_02_pulse.csv"),
+    );
+    let mut args = base.to_vec();
+    args.extend([
+        "--load",
+        "loaded",
+        "--params-for",
+        own_train.as_str(),
+        "--params-for",
+        own_holdout.as_str(),
+    ]);
+    let out = afsv(&args);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
     let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
-    assert_eq!(v["named"], serde_json::json!(["velocity-leakage"]), "{v}");
+    assert_eq!(v["named"], serde_json::json!(["valve-lag"]), "{v}");
+    let rep: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(report.join("report.json")).unwrap())
+            .unwrap();
+    let conditions = rep["conditions"].as_array().unwrap();
+    let of = |name: &str| {
+        conditions
+            .iter()
+            .find(|c| c["record"] == name)
+            .map(|c| c["condition"].as_str().unwrap().to_string())
+            .unwrap()
+    };
+    assert!(
+        of("yaw_07_pulse").starts_with("own parameters"),
+        "{}",
+        of("yaw_07_pulse")
+    );
+    assert!(
+        of("yaw_00_pulse").starts_with("loaded, 50.0 km/h"),
+        "{}",
+        of("yaw_00_pulse")
+    );
     assert!(
         v["gap_shrink"].as_f64().unwrap() > 0.7,
         "{}",
         v["gap_shrink"]
     );
     for d in [&data, &foreign, &report] {
+        let _ = std::fs::remove_dir_all(d);
+    }
+}
+
+/// Strut records whose sidecars state the convention in words are refused, with both ways
+/// forward named; `--assume-convention afsv-v1` reads them, and a per-channel statement is
+/// honoured (a force written tension-positive is flipped back).
+#[test]
+fn sign_conventions_in_words_are_refused_and_both_ways_forward_work() {
+    let data = tmp("conv-synth");
+    let out = afsv(&[
+        "synth",
+        "--model",
+        "hps-strut",
+        "--effects",
+        "gas-heat-transfer=3",
+        "--seed",
+        "9",
+        "-o",
+        data.to_str().unwrap(),
+    ]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let words = tmp("conv-words");
+    let flipped = tmp("conv-flipped");
+    for set in ["train", "holdout"] {
+        for dir in [&words, &flipped] {
+            std::fs::create_dir_all(dir.join(set)).unwrap();
+        }
+        for entry in std::fs::read_dir(data.join(set)).unwrap().flatten() {
+            let path = entry.path();
+            if path.extension().is_none_or(|e| e != "csv") {
+                continue;
+            }
+            let name = path.file_name().unwrap();
+            let rec = afsv::record::Record::read(&path).unwrap();
+            std::fs::copy(&path, words.join(set).join(name)).unwrap();
+            let mut meta = rec.meta.clone();
+            meta["sign_convention"] =
+                "z_s > 0 = compression (piston into the gas chamber), force > 0 = compressive"
+                    .into();
+            std::fs::write(
+                words.join(set).join(name).with_extension("json"),
+                meta.to_string(),
+            )
+            .unwrap();
+            let mut text = rec.names().join(",") + "\n";
+            let force = rec.names().iter().position(|n| n == "force_n").unwrap();
+            for i in 0..rec.len() {
+                let row: Vec<String> = rec
+                    .names()
+                    .iter()
+                    .enumerate()
+                    .map(|(j, n)| {
+                        let v = rec.column(n).unwrap()[i];
+                        format!("{}", if j == force { -v } else { v })
+                    })
+                    .collect();
+                text += &(row.join(",") + "\n");
+            }
+            std::fs::write(flipped.join(set).join(name), text).unwrap();
+            meta["sign_convention"] = serde_json::json!({"displacement_m": "compression_positive", "force_n": "tension_positive"});
+            std::fs::write(
+                flipped.join(set).join(name).with_extension("json"),
+                meta.to_string(),
+            )
+            .unwrap();
+        }
+    }
+    let run = |dir: &std::path::Path, extra: &[&str]| {
+        let report = dir.join("report");
+        let mut args = vec![
+            "discover",
+            "--model",
+            "hps-strut",
+            "--effects",
+            "gas-heat-transfer",
+            "--max-effects",
+            "1",
+        ];
+        let (t, h, r) = (dir.join("train"), dir.join("holdout"), report);
+        let (t, h, r) = (
+            t.to_str().unwrap().to_string(),
+            h.to_str().unwrap().to_string(),
+            r.to_str().unwrap().to_string(),
+        );
+        args.extend(["--train", &t, "--holdout", &h, "-o", &r]);
+        args.extend(extra);
+        afsv(&args)
+    };
+    let out = run(&words, &[]);
+    assert!(!out.status.success());
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(err.trim().lines().count(), 1, "{err}");
+    assert!(
+        err.contains("--assume-convention afsv-v1") && err.contains("tension_positive"),
+        "{err}"
+    );
+    for (dir, extra) in [
+        (&words, vec!["--assume-convention", "afsv-v1"]),
+        (&flipped, vec![]),
+    ] {
+        let out = run(dir, &extra);
+        assert!(
+            out.status.success(),
+            "{}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+        assert_eq!(v["named"], serde_json::json!(["gas-heat-transfer"]), "{v}");
+    }
+    for d in [&data, &words, &flipped] {
         let _ = std::fs::remove_dir_all(d);
     }
 }

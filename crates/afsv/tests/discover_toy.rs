@@ -55,6 +55,13 @@ fn simulate(t: &[f64], u: &[f64], p: Truth) -> Vec<f64> {
 }
 
 impl DiscoveryModel for Toy {
+    type Prepared = Record;
+    fn prepare(&self, rec: &Record) -> Result<Record, String> {
+        Ok(rec.clone())
+    }
+    fn condition(&self, _: &Record) -> String {
+        "toy".into()
+    }
     fn name(&self) -> &str {
         "toy"
     }
@@ -173,7 +180,7 @@ fn names_a_hidden_dead_zone_and_shrinks_the_gap() {
     let d = run(Truth { dead: 0.3, ..BASE });
     assert_eq!(d.named, vec!["dead-zone".to_string()], "{:#?}", d.steps);
     assert!(d.gap_shrink > 0.7, "shrink {}", d.gap_shrink);
-    let w = d.final_model.effect_params[0][0].1;
+    let w = d.final_model.effect_params[0][0].value;
     assert!((w - 0.3).abs() < 0.02, "width {w}");
 }
 

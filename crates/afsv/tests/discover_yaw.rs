@@ -1,58 +1,60 @@
-//! Discovery on vehicle steering records synthesized with hidden effects (issue 6). The
-//! full matrix (every catalogue effect) is `cargo xtask discover-matrix`; these run in CI.
+//! Discovery on vehicle steering records: synthesized by the toolkit's own model with hidden
+//! effects, and written by the independent implementation in `tests/independent`. The full
+//! matrix is `cargo xtask discover-matrix`; these run in CI.
 
 mod common;
+mod independent;
+
 use afsv::discover::yaw::YawPlaneModel;
 use afsv::discover::{Discovery, DiscoveryModel};
 use afsv::synth::{parse_effects, yaw_default_size, yaw_records, YawNoise};
 use common::{
-    assert_named, assert_not_claimed, run_on, summary, yaw_other_implementation,
-    yaw_outside_catalogue,
+    assert_named, assert_not_claimed, run_dir, run_on, scratch, summary, yaw_outside_catalogue,
 };
 
 fn run(effects: &str, seed: u64) -> Discovery {
-    let model = YawPlaneModel::new(YawPlaneModel::default_baseline());
+    let model = YawPlaneModel::nominal();
     let hidden = parse_effects(effects, &model.catalogue(), yaw_default_size).unwrap();
     let recs = yaw_records(&model, &hidden, YawNoise::default_levels(), seed).unwrap();
     run_on(&model, recs)
+}
+
+/// Discovery on a small record set of the independent implementation (8 + 8 records of 12 s,
+/// both loads, 15-50 km/h, pulse/step/ramp/sine).
+fn independent(hidden: Option<&str>, seed: u64) -> Discovery {
+    let dir = scratch(&format!("ind-yaw-{}-{seed}", hidden.unwrap_or("none")));
+    let h = hidden.map(|e| (e, independent::default_size(e)));
+    independent::yaw_record_set(&dir, h, 8, 8, 12.0, seed);
+    let d = run_dir(&YawPlaneModel::nominal(), &dir);
+    std::fs::remove_dir_all(&dir).unwrap();
+    d
 }
 
 #[test]
 fn hidden_sensor_backlash_is_named_and_the_gap_shrinks() {
     let d = run("sensor-backlash", 1);
     assert_named(&d, &["sensor-backlash"], 0.7);
-    let w = d.final_model.effect_params[0][0].1;
+    let w = d.final_model.effect_params[0][0].value;
     assert!((w - 0.5).abs() < 0.1, "half width {w}");
 }
 
 #[test]
-fn vehicle_without_hidden_effect_names_nothing() {
-    let d = run("none", 21);
-    assert!(d.named.is_empty(), "{}", summary(&d));
-}
-
-/// The calibrated baseline trades seal viscous friction for the hidden Coulomb friction;
-/// without the attribution check a second, spurious effect was named on these records.
-#[test]
-fn hidden_coulomb_friction_is_named_alone() {
-    let d = run("strut-coulomb-friction", 203);
-    assert_named(&d, &["strut-coulomb-friction"], 0.7);
-}
-
-fn other_implementation(effects: &str, seed: u64) -> Discovery {
-    let (model, recs) = yaw_other_implementation(effects, seed);
-    run_on(&model, recs)
+fn independent_records_with_a_valve_lag_name_it_first() {
+    let d = independent(Some("valve-lag"), 5);
+    assert_eq!(
+        d.named.first().map(String::as_str),
+        Some("valve-lag"),
+        "{}",
+        summary(&d)
+    );
+    assert!(d.gap_shrink >= 0.7, "{}", summary(&d));
+    let tau = d.final_model.effect_params[0][0].value;
+    assert!((tau - 0.04).abs() < 0.01, "tau {tau}");
 }
 
 #[test]
-fn other_implementation_still_names_the_hidden_effect() {
-    let d = other_implementation("velocity-leakage", 41);
-    assert_named(&d, &["velocity-leakage"], 0.7);
-}
-
-#[test]
-fn other_implementation_without_effect_names_nothing() {
-    let d = other_implementation("none", 42);
+fn independent_records_without_a_hidden_effect_name_nothing() {
+    let d = independent(None, 6);
     assert!(d.named.is_empty(), "{}", summary(&d));
 }
 

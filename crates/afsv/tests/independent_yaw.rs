@@ -63,7 +63,6 @@ fn crate_run(
             dur_s,
             start_s,
         } => SteerInput::pulse_deg(amp_deg, dur_s, start_s),
-        Steer::Step { amp_deg, start_s } => SteerInput::step_deg(amp_deg, start_s),
         Steer::Ramp {
             rate_deg_s,
             start_s,
@@ -73,8 +72,9 @@ fn crate_run(
             start_s,
             limit_rad: limit_deg.to_radians(),
         },
-        // the crate has no sine input: a 1 ms table (interpolation error < 1e-5 relative)
-        Steer::Sine { .. } => {
+        // the crate has no sine and no smooth-step input: a 1 ms table (interpolation
+        // error < 1e-5 relative)
+        Steer::Sine { .. } | Steer::Step { .. } => {
             let t: Vec<f64> = (0..=(duration * 1000.0).round() as usize)
                 .map(|k| k as f64 * 1e-3)
                 .collect();

@@ -5,7 +5,7 @@ use afsv::discover::hps::HpsStrutModel;
 use afsv::discover::report::{write_report, REPORT_FILES};
 use afsv::discover::yaw::YawPlaneModel;
 use afsv::discover::{discover, DiscoveryModel, DiscoveryOptions, Progress};
-use afsv::record::Record;
+use afsv::record::{ReadOptions, Record};
 use afsv::synth;
 use std::path::{Path, PathBuf};
 
@@ -27,10 +27,22 @@ pub struct DiscoverArgs {
     #[arg(long, value_enum)]
     pub model: ModelKind,
     /// Baseline parameters as JSON (strut: `StrutParams`; vehicle: `afsv params dump yaw-plane`
-    /// format). Default: the front-axle strut without emulsion / the loaded vehicle with
-    /// constant leakage and no tire lag.
+    /// format). Default: the paper's full model, the one `afsv hps harmonic` / `afsv yaw
+    /// simulate` run: the front-axle strut of Table 6.3 / the vehicle of Table 3.1 for the
+    /// load each record states. A vehicle file that states a load replaces that load's
+    /// vehicle; one without a load is used for every record.
     #[arg(long)]
     pub params: Option<PathBuf>,
+    /// Vehicle: the load of records whose sidecar states none.
+    #[arg(long, value_parser = ["loaded", "unloaded"])]
+    pub load: Option<String>,
+    /// Vehicle: a record's own parameter file, `RECORD.csv=params.json` (repeatable).
+    #[arg(long = "params-for", value_name = "RECORD=PARAMS")]
+    pub params_for: Vec<String>,
+    /// Read records whose sidecar describes its sign convention in words as this convention
+    /// (only `afsv-v1`, docs/records.md), after checking that the words mean it.
+    #[arg(long = "assume-convention", value_parser = ["afsv-v1"])]
+    pub assume_convention: Option<String>,
     /// Training records: CSV files or folders of them (repeatable).
     #[arg(long, num_args = 1.., required_unless_present = "list_effects")]
     pub train: Vec<PathBuf>,
@@ -82,29 +94,53 @@ fn read_json<T: serde::de::DeserializeOwned>(path: &Path) -> Result<T, String> {
 }
 
 fn hps_model(params: Option<&Path>) -> Result<HpsStrutModel, String> {
-    let p = match params {
+    match params {
         Some(path) => {
             let p: hps_emulsion::StrutParams = read_json(path)?;
             p.validate()
                 .map_err(|e| format!("{}: {e}", path.display()))?;
-            p
+            Ok(HpsStrutModel::new(p, None))
         }
-        None => HpsStrutModel::default_baseline(),
-    };
-    Ok(HpsStrutModel::new(p))
+        None => Ok(HpsStrutModel::nominal()),
+    }
 }
 
-fn yaw_model(params: Option<&Path>) -> Result<YawPlaneModel, String> {
-    let p = match params {
-        Some(path) => {
-            let p: afsv_dynamics::YawPlaneParams = read_json(path)?;
-            p.validate()
-                .map_err(|e| format!("{}: {e}", path.display()))?;
-            p
-        }
-        None => YawPlaneModel::default_baseline(),
+fn read_vehicle(path: &Path) -> Result<afsv_dynamics::YawPlaneParams, String> {
+    let p: afsv_dynamics::YawPlaneParams = read_json(path)?;
+    p.validate()
+        .map_err(|e| format!("{}: {e}", path.display()))?;
+    Ok(p)
+}
+
+fn yaw_model(
+    params: Option<&Path>,
+    load: Option<&str>,
+    params_for: &[String],
+) -> Result<YawPlaneModel, String> {
+    let mut m = match params {
+        Some(path) => YawPlaneModel::with_vehicle(read_vehicle(path)?),
+        None => YawPlaneModel::nominal(),
     };
-    Ok(YawPlaneModel::new(p))
+    m.conditions.default_load = load
+        .map(|l| l.parse::<afsv_dynamics::Load>())
+        .transpose()
+        .map_err(|e| format!("--load: {e}"))?;
+    for item in params_for {
+        let (rec, file) = item
+            .split_once('=')
+            .ok_or_else(|| format!("--params-for {item}: expected RECORD.csv=params.json"))?;
+        let rec = PathBuf::from(rec);
+        if !rec.is_file() {
+            return Err(format!(
+                "--params-for {item}: no record file {}",
+                rec.display()
+            ));
+        }
+        m.conditions
+            .per_record
+            .push((rec, read_vehicle(Path::new(file))?));
+    }
+    Ok(m)
 }
 
 /// CSV files of the given files and folders (folders: their `*.csv`, sorted).
@@ -131,11 +167,11 @@ fn csv_files(inputs: &[PathBuf]) -> Result<Vec<PathBuf>, String> {
     Ok(out)
 }
 
-fn load(files: &[PathBuf]) -> Result<(Vec<Record>, Vec<String>), String> {
+fn load(files: &[PathBuf], opts: &ReadOptions) -> Result<(Vec<Record>, Vec<String>), String> {
     let mut recs = Vec::new();
     let mut names = Vec::new();
     for f in files {
-        recs.push(Record::read(f).map_err(|e| e.to_string())?);
+        recs.push(Record::read_with(f, opts).map_err(|e| e.to_string())?);
         names.push(
             f.file_stem()
                 .map(|s| s.to_string_lossy().into_owned())
@@ -145,13 +181,56 @@ fn load(files: &[PathBuf]) -> Result<(Vec<Record>, Vec<String>), String> {
     Ok((recs, names))
 }
 
-/// A terminal spinner counting finished fits (hidden when stderr is not a terminal).
-struct Spinner(indicatif::ProgressBar);
+/// Progress of the fits: a spinner on a terminal, otherwise one line per finished fit on
+/// stderr (with the count and the time so far).
+enum Spinner {
+    Bar(indicatif::ProgressBar),
+    Lines {
+        start: std::time::Instant,
+        done: std::sync::atomic::AtomicUsize,
+    },
+}
+
+impl Spinner {
+    fn new() -> Result<Self, String> {
+        use std::io::IsTerminal;
+        if !std::io::stderr().is_terminal() {
+            return Ok(Spinner::Lines {
+                start: std::time::Instant::now(),
+                done: 0.into(),
+            });
+        }
+        let bar = indicatif::ProgressBar::new_spinner();
+        bar.set_style(
+            indicatif::ProgressStyle::with_template("{spinner} {pos} fits done ({elapsed}) {msg}")
+                .map_err(|e| e.to_string())?,
+        );
+        bar.enable_steady_tick(std::time::Duration::from_millis(200));
+        Ok(Spinner::Bar(bar))
+    }
+
+    fn finish(&self) {
+        if let Spinner::Bar(b) = self {
+            b.finish_and_clear();
+        }
+    }
+}
 
 impl Progress for Spinner {
     fn fit_done(&self, what: &str) {
-        self.0.inc(1);
-        self.0.set_message(format!("last: {what}"));
+        match self {
+            Spinner::Bar(b) => {
+                b.inc(1);
+                b.set_message(format!("last: {what}"));
+            }
+            Spinner::Lines { start, done } => {
+                let n = done.fetch_add(1, std::sync::atomic::Ordering::Relaxed) + 1;
+                eprintln!(
+                    "afsv discover: fit {n} done ({what}), {:.0} s",
+                    start.elapsed().as_secs_f64()
+                );
+            }
+        }
     }
 }
 
@@ -182,20 +261,18 @@ fn run_discover<M: DiscoveryModel>(model: &M, args: &DiscoverArgs) -> CmdResult 
             }
         }
     }
-    let (train, train_names) = load(&train_files)?;
-    let (hold, hold_names) = load(&hold_files)?;
+    let read = ReadOptions {
+        assume_convention: args.assume_convention.clone(),
+    };
+    read.validate()?;
+    let (train, train_names) = load(&train_files, &read)?;
+    let (hold, hold_names) = load(&hold_files, &read)?;
     let opts = DiscoveryOptions {
         candidates: args.effects.clone(),
         max_effects: args.max_effects,
         ..DiscoveryOptions::default()
     };
-    let bar = indicatif::ProgressBar::new_spinner();
-    bar.set_style(
-        indicatif::ProgressStyle::with_template("{spinner} {pos} fits done ({elapsed}) {msg}")
-            .map_err(|e| e.to_string())?,
-    );
-    bar.enable_steady_tick(std::time::Duration::from_millis(200));
-    let spinner = Spinner(bar);
+    let spinner = Spinner::new()?;
     let d = discover(
         model,
         &train,
@@ -205,10 +282,11 @@ fn run_discover<M: DiscoveryModel>(model: &M, args: &DiscoverArgs) -> CmdResult 
         &opts,
         &spinner,
     )?;
-    spinner.0.finish_and_clear();
+    spinner.finish();
     let written = write_report(model, &d, &hold, &hold_names, output)?;
     afsv::output::print_json(&serde_json::json!({
         "model": d.model,
+        "summary": afsv::discover::report::headline(&d),
         "named": d.named,
         "effect_params": d.final_model.effect_params,
         "gap_shrink": d.gap_shrink,
@@ -226,8 +304,20 @@ fn run_discover<M: DiscoveryModel>(model: &M, args: &DiscoverArgs) -> CmdResult 
 /// Run `afsv discover`.
 pub fn run_discover_cmd(args: DiscoverArgs) -> CmdResult {
     match args.model {
-        ModelKind::HpsStrut => run_discover(&hps_model(args.params.as_deref())?, &args),
-        ModelKind::YawPlane => run_discover(&yaw_model(args.params.as_deref())?, &args),
+        ModelKind::HpsStrut => {
+            if args.load.is_some() || !args.params_for.is_empty() {
+                return Err("--load and --params-for apply to --model yaw-plane only".into());
+            }
+            run_discover(&hps_model(args.params.as_deref())?, &args)
+        }
+        ModelKind::YawPlane => run_discover(
+            &yaw_model(
+                args.params.as_deref(),
+                args.load.as_deref(),
+                &args.params_for,
+            )?,
+            &args,
+        ),
     }
 }
 
@@ -266,7 +356,7 @@ pub fn run_synth(args: SynthArgs) -> CmdResult {
             )
         }
         ModelKind::YawPlane => {
-            let m = yaw_model(args.params.as_deref())?;
+            let m = yaw_model(args.params.as_deref(), None, &[])?;
             let hidden =
                 synth::parse_effects(&args.effects, &m.catalogue(), synth::yaw_default_size)?;
             let noise = if noiseless {

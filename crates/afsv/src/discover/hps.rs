@@ -1,12 +1,13 @@
 //! The hydro-pneumatic strut as a [`DiscoveryModel`]: prescribed displacement in, force and
-//! chamber pressures out (bench records of DESIGN.md).
+//! chamber pressures out (bench records of docs/records.md).
 //!
-//! Baseline: the strut without gas-oil emulsion (`gamma_0 = 0`) unless the user's parameter
-//! file says otherwise. Calibrated first: polytropic exponent `n`, static pressure `P_h0`,
-//! gas volume `V_g0`, Coulomb friction `F_c`, viscous friction `mu_v`, bleed-orifice
-//! discharge coefficient `C_b`. Catalogue (each a switchable extension of `hps-emulsion`):
-//! gas heat transfer, emulsion gas fraction with velocity growth, asymmetric seal friction,
-//! check-valve opening lag.
+//! Baseline: the paper's full model, the one `afsv hps harmonic` runs: the front-axle strut of
+//! Table 6.3 with its gas-oil emulsion (gamma_0 = 2 %), or the user's parameter file.
+//! Calibrated first: polytropic exponent `n`, static pressure `P_h0`, gas volume `V_g0`,
+//! Coulomb friction `F_c`, viscous friction `mu_v`, bleed-orifice discharge coefficient
+//! `C_b` and the emulsion's gas fraction `gamma_0`. Catalogue (each a switchable extension of
+//! `hps-emulsion`, none of them in the paper's model): gas heat transfer, growth of the gas
+//! fraction with strut velocity, asymmetric seal friction, check-valve opening lag.
 
 use super::{ActiveEffect, DiscoveryModel, EffectSpec, ParamSpec, Phase};
 use crate::record::Record;
@@ -15,13 +16,13 @@ use hps_emulsion::{
     HpsExtensions, SimOptions, StrutParams, ValveLag,
 };
 
-/// Channels the strut model predicts (DESIGN.md bench-record names).
+/// Channels the strut model predicts (bench-record names of docs/records.md).
 pub const CHANNELS: [&str; 3] = ["force_n", "p_piston_pa", "p_rod_pa"];
 
 /// Catalogue names, in catalogue order.
 pub const EFFECTS: [&str; 4] = [
     "gas-heat-transfer",
-    "gas-fraction",
+    "gas-fraction-growth",
     "asymmetric-friction",
     "check-valve-lag",
 ];
@@ -31,24 +32,36 @@ pub const EFFECTS: [&str; 4] = [
 pub struct HpsStrutModel {
     /// Baseline parameters (calibrated parameters start from these values).
     pub params: StrutParams,
+    /// Name of the strut the parameters describe (`front-axle`, a file name): a record whose
+    /// sidecar names another strut is refused.
+    pub strut: Option<String>,
     /// Integrator settings.
     pub sim: SimOptions,
 }
 
+/// A bench record prepared for replay: its prescribed motion.
+#[derive(Debug, Clone)]
+pub struct StrutReplay {
+    /// The recorded displacement with a velocity consistent with it ([`velocity_of`]).
+    pub excitation: Excitation,
+    /// Conditions in words.
+    pub condition: String,
+}
+
 impl HpsStrutModel {
-    /// Model around `params`.
-    pub fn new(params: StrutParams) -> Self {
+    /// Model around `params`, describing the strut `strut` (if known).
+    pub fn new(params: StrutParams, strut: Option<&str>) -> Self {
         Self {
             params,
+            strut: strut.map(str::to_string),
             sim: SimOptions::default(),
         }
     }
 
-    /// The default discovery baseline: the front-axle strut of Table 6.3 without emulsion.
-    pub fn default_baseline() -> StrutParams {
-        StrutParams::front_axle()
-            .with_gamma0(0.0)
-            .expect("the front-axle strut is valid with pure oil")
+    /// The default discovery baseline: the front-axle strut of Table 6.3 as published,
+    /// with its gas-oil emulsion.
+    pub fn nominal() -> Self {
+        Self::new(StrutParams::front_axle(), Some("front-axle"))
     }
 
     /// Parameters with the baseline vector applied (order of [`Self::baseline_params`]).
@@ -61,16 +74,11 @@ impl HpsStrutModel {
         p.friction.mu_v = v[4];
         p.c_b = v[5];
         p.validate().map_err(|e| e.to_string())?;
-        Ok(p)
+        p.with_gamma0(v[6]).map_err(|e| e.to_string())
     }
 
-    /// Extensions and parameter changes for the active effects.
-    pub fn apply_effects(
-        &self,
-        params: StrutParams,
-        effects: &[ActiveEffect<'_>],
-    ) -> Result<(StrutParams, HpsExtensions), String> {
-        let mut p = params;
+    /// Extensions for the active effects.
+    pub fn apply_effects(&self, effects: &[ActiveEffect<'_>]) -> Result<HpsExtensions, String> {
         let mut ext = HpsExtensions::none();
         for e in effects {
             let v = e.values;
@@ -81,10 +89,7 @@ impl HpsStrutModel {
                         kappa: 1.4,
                     })
                 }
-                1 => {
-                    p = p.with_gamma0(v[0]).map_err(|e| e.to_string())?;
-                    ext.gas_fraction_growth = Some(GasFractionGrowth { k_gamma: v[1] });
-                }
+                1 => ext.gas_fraction_growth = Some(GasFractionGrowth { k_gamma: v[0] }),
                 2 => {
                     ext.asymmetric_friction = Some(AsymmetricFriction {
                         compression: v[0],
@@ -95,7 +100,7 @@ impl HpsStrutModel {
                 i => return Err(format!("no effect {i} in the strut catalogue")),
             }
         }
-        Ok((p, ext))
+        Ok(ext)
     }
 }
 
@@ -207,6 +212,8 @@ fn cubic_derivative_weights(m: usize) -> Vec<f64> {
 }
 
 impl DiscoveryModel for HpsStrutModel {
+    type Prepared = StrutReplay;
+
     fn name(&self) -> &str {
         "hps-strut"
     }
@@ -240,6 +247,10 @@ impl DiscoveryModel for HpsStrutModel {
                 )
             },
             ParamSpec::new("c_b", p.c_b, 0.2, 1.0),
+            ParamSpec {
+                typical: p.gamma0.max(0.01),
+                ..ParamSpec::new("gamma0", p.gamma0, 0.0, 0.3)
+            },
         ]
     }
 
@@ -253,18 +264,12 @@ impl DiscoveryModel for HpsStrutModel {
             },
             EffectSpec {
                 name: EFFECTS[1].into(),
-                description: "gas entrained in the oil (gas-oil emulsion) softening and lightening the oil, with a gas fraction that grows with strut velocity".into(),
-                citation: "Eqs 5.8-5.11, Fig 5.4b, sections 5.3.2 and 5.4.3".into(),
-                params: vec![
-                    ParamSpec {
-                        typical: 0.03,
-                        ..ParamSpec::new("gamma0", 0.02, 0.0, 0.3)
-                    },
-                    ParamSpec {
-                        typical: 0.1,
-                        ..ParamSpec::new("k_gamma_s_m", 0.0, 0.0, 2.0)
-                    },
-                ],
+                description: "a gas fraction of the emulsion that grows with the strut's peak velocity (more gas entrained by faster flow), beyond the fixed gamma_0 of Eqs 5.8-5.11".into(),
+                citation: "Fig 5.4b (identified gamma_0 rising with peak velocity), section 5.4.3".into(),
+                params: vec![ParamSpec {
+                    typical: 0.1,
+                    ..ParamSpec::new("k_gamma_s_m", 0.05, 0.0, 2.0)
+                }],
             },
             EffectSpec {
                 name: EFFECTS[2].into(),
@@ -284,27 +289,53 @@ impl DiscoveryModel for HpsStrutModel {
         ]
     }
 
-    fn simulate(
-        &self,
-        record: &Record,
-        baseline: &[f64],
-        effects: &[ActiveEffect<'_>],
-    ) -> Result<Vec<Option<Vec<f64>>>, String> {
+    fn prepare(&self, record: &Record) -> Result<StrutReplay, String> {
         let t = record
             .column("time_s")
             .ok_or("record has no time_s column")?;
         let z = record
             .column("displacement_m")
             .ok_or("record has no displacement_m column")?;
-        let v = velocity_of(record).ok_or("cannot derive the strut velocity")?;
+        if let (Some(mine), Some(theirs)) = (
+            &self.strut,
+            record.meta.get("strut").and_then(serde_json::Value::as_str),
+        ) {
+            if mine != theirs {
+                return Err(format!(
+                    "its sidecar names the strut `{theirs}`, the model is the `{mine}` strut;                      give that strut's parameters with --params"
+                ));
+            }
+        }
+        let v = velocity_of(record).ok_or(
+            "cannot derive the strut velocity (need at least 9 samples with increasing time_s)",
+        )?;
+        let meta = |k: &str| record.meta.get(k).and_then(serde_json::Value::as_f64);
+        let f = meta("frequency_hz").map_or(String::new(), |f| format!(", {f} Hz"));
+        let amp = meta("amplitude_m").map_or(String::new(), |a| format!(", {:.0} mm", 1000.0 * a));
+        Ok(StrutReplay {
+            excitation: Excitation::Samples {
+                time_s: t.to_vec(),
+                displacement_m: z.to_vec(),
+                velocity_m_s: Some(v),
+            },
+            condition: format!("{} strut{f}{amp}", self.strut.as_deref().unwrap_or("user")),
+        })
+    }
+
+    fn condition(&self, prepared: &StrutReplay) -> String {
+        prepared.condition.clone()
+    }
+
+    fn simulate(
+        &self,
+        prepared: &StrutReplay,
+        baseline: &[f64],
+        effects: &[ActiveEffect<'_>],
+    ) -> Result<Vec<Option<Vec<f64>>>, String> {
         let p = self.apply_baseline(baseline)?;
-        let (p, ext) = self.apply_effects(p, effects)?;
-        let exc = Excitation::Samples {
-            time_s: t.to_vec(),
-            displacement_m: z.to_vec(),
-            velocity_m_s: Some(v),
-        };
-        let out = simulate_displacement(&p, &ext, &exc, &self.sim).map_err(|e| e.to_string())?;
+        let ext = self.apply_effects(effects)?;
+        let out = simulate_displacement(&p, &ext, &prepared.excitation, &self.sim)
+            .map_err(|e| e.to_string())?;
         Ok(vec![Some(out.force), Some(out.p_piston), Some(out.p_rod)])
     }
 

@@ -14,7 +14,10 @@
 //!    and the gap shrink ([`report`]).
 
 mod engine;
+pub mod evidence;
+mod fitting;
 pub mod hps;
+mod layout;
 pub mod report;
 pub mod signature;
 pub mod stats;
@@ -22,8 +25,9 @@ pub mod yaw;
 
 pub use engine::{
     calibrate, discover, evaluate_errors, ChannelError, Discovery, DiscoveryOptions, EffectChoice,
-    FitOutcome, Progress, Step,
+    EffectParam, FitOutcome, Progress, RecordCondition, Step, SCOUT_ITERATIONS,
 };
+pub use evidence::{Evidence, RecordEvidence};
 
 use crate::record::Record;
 
@@ -94,8 +98,13 @@ pub struct Phase {
 /// A model the discovery workflow can calibrate and extend.
 ///
 /// Implementations live next to the models (strut, yaw-plane vehicle); the workflow only
-/// sees records, parameter vectors and predicted channels.
+/// sees records, parameter vectors and predicted channels. Each record is first
+/// [prepared](Self::prepare) once: its conditions (load, speed, strut) and invariant inputs
+/// (smoothed steering angle, strut velocity) are worked out there, never at every fit
+/// evaluation.
 pub trait DiscoveryModel: Sync {
+    /// A record's conditions and invariant inputs.
+    type Prepared: Send + Sync;
     /// Model name (`hps-strut`, `yaw-plane`).
     fn name(&self) -> &str;
     /// Record channels the model predicts and the workflow compares (absent ones are skipped).
@@ -104,12 +113,17 @@ pub trait DiscoveryModel: Sync {
     fn baseline_params(&self) -> Vec<ParamSpec>;
     /// The catalogue of candidate effects.
     fn catalogue(&self) -> Vec<EffectSpec>;
-    /// Simulate `record`'s inputs with the given baseline parameter values and effects;
+    /// Work out `record`'s conditions and invariant inputs. A condition that cannot be
+    /// determined is an error naming the missing field and how to give it.
+    fn prepare(&self, record: &Record) -> Result<Self::Prepared, String>;
+    /// The conditions a prepared record is replayed under, in words (for the report).
+    fn condition(&self, prepared: &Self::Prepared) -> String;
+    /// Simulate a prepared record with the given baseline parameter values and effects;
     /// returns one predicted series per entry of `channels()`, on the record's time base
     /// (`None` for a channel the model cannot predict for this record).
     fn simulate(
         &self,
-        record: &Record,
+        prepared: &Self::Prepared,
         baseline: &[f64],
         effects: &[ActiveEffect<'_>],
     ) -> Result<Vec<Option<Vec<f64>>>, String>;

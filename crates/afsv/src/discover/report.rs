@@ -34,7 +34,7 @@ pub fn write_report<M: DiscoveryModel + ?Sized>(
         .zip(&d.final_model.effect_params)
         .filter_map(|(name, params)| {
             let i = catalogue.iter().position(|e| &e.name == name)?;
-            Some((i, params.iter().map(|p| p.1).collect()))
+            Some((i, params.iter().map(|p| p.value).collect()))
         })
         .collect();
     let active: Vec<ActiveEffect<'_>> = final_effects
@@ -50,8 +50,9 @@ pub fn write_report<M: DiscoveryModel + ?Sized>(
             .get(i)
             .cloned()
             .unwrap_or_else(|| format!("holdout_{i}"));
-        let before = model.simulate(rec, &d.calibrated.baseline, &[])?;
-        let after = model.simulate(rec, &d.final_model.baseline, &active)?;
+        let prepared = model.prepare(rec)?;
+        let before = model.simulate(&prepared, &d.calibrated.baseline, &[])?;
+        let after = model.simulate(&prepared, &d.final_model.baseline, &active)?;
         let t: Vec<f64> = rec
             .column("time_s")
             .map(<[f64]>::to_vec)
@@ -136,6 +137,7 @@ fn sanitize(s: &str) -> String {
 pub fn markdown(d: &Discovery, plots: &[PathBuf], dir: &Path) -> String {
     let mut s = String::new();
     let _ = writeln!(s, "# Model-discrepancy report: {}\n", d.model);
+    let _ = writeln!(s, "{}\n", headline(d));
     if d.named.is_empty() {
         let _ = writeln!(s, "**No missing effect named.** The calibrated baseline explains the records as well as any candidate of the catalogue does, within the significance rule.");
         if let Some((name, shrink)) = &d.best_unnamed_shrink {
@@ -158,27 +160,74 @@ pub fn markdown(d: &Discovery, plots: &[PathBuf], dir: &Path) -> String {
         if d.gap_shrink < 0.7 {
             let _ = writeln!(s, "\nThe named effects explain only part of the gap: something outside the catalogue (or a different form of a named effect) remains.");
         }
-        let _ = writeln!(s, "\n## Fitted effect parameters\n\n| effect | parameter | value | standard error |\n|---|---|---|---|");
+        let _ = writeln!(s, "\n## Fitted effect parameters\n\n| effect | parameter | value | standard error | note |\n|---|---|---|---|---|");
         for (name, params) in d
             .final_model
             .effects
             .iter()
             .zip(&d.final_model.effect_params)
         {
-            for (p, v, se) in params {
-                let _ = writeln!(s, "| {name} | {p} | {v:.6e} | {se:.2e} |");
+            for p in params {
+                let note = if p.at_bound {
+                    "at a bound of its range"
+                } else {
+                    ""
+                };
+                let _ = writeln!(
+                    s,
+                    "| {name} | {} | {:.6e} | {} | {note} |",
+                    p.name,
+                    p.value,
+                    opt(p.std_error, |v| format!("{v:.2e}"))
+                );
             }
         }
+        let _ = writeln!(
+            s,
+            "\n## Evidence: where each effect's held-out gain comes from\n"
+        );
+        for ev in &d.evidence {
+            let phases = ev
+                .phases
+                .iter()
+                .map(|(p, share)| format!("{p} {:.0} %", 100.0 * share))
+                .collect::<Vec<_>>()
+                .join(", ");
+            let _ = writeln!(s, "`{}` (by phase: {phases}):\n\n| held-out record | condition | MSE before | MSE after | share of gain |\n|---|---|---|---|---|", ev.effect);
+            for r in ev.records.iter().take(10) {
+                let _ = writeln!(
+                    s,
+                    "| {} | {} | {:.3e} | {:.3e} | {:+.1} % |",
+                    r.record,
+                    r.condition,
+                    r.mse_before,
+                    r.mse_after,
+                    100.0 * r.share
+                );
+            }
+            if ev.records.len() > 10 {
+                let _ = writeln!(
+                    s,
+                    "\n({} more records in report.json)",
+                    ev.records.len() - 10
+                );
+            }
+            let _ = writeln!(s);
+        }
+    }
+    let _ = writeln!(s, "\n## Conditions each record was replayed under\n\n| record | set | condition |\n|---|---|---|");
+    for c in &d.conditions {
+        let _ = writeln!(s, "| {} | {} | {} |", c.record, c.set, c.condition);
     }
     let _ = writeln!(s, "\n## Calibrated baseline parameters\n\n| parameter | nominal | calibrated | final | standard error (calibration) |\n|---|---|---|---|---|");
     for (i, n) in d.calibrated.baseline_names.iter().enumerate() {
         let _ = writeln!(
             s,
-            "| {n} | {:.6e} | {:.6e} | {:.6e} | {:.2e} |",
+            "| {n} | {:.6e} | {:.6e} | {:.6e} | {} |",
             d.nominal.baseline[i],
             d.calibrated.baseline[i],
             d.final_model.baseline[i],
-            d.calibrated.baseline_se[i]
+            opt(d.calibrated.baseline_se[i], |v| format!("{v:.2e}"))
         );
     }
     let _ = writeln!(s, "\n## Error per channel (NRMSE = RMS error / channel standard deviation)\n\n| channel | train before | train after | held-out before | held-out after |\n|---|---|---|---|---|");
@@ -187,7 +236,7 @@ pub fn markdown(d: &Discovery, plots: &[PathBuf], dir: &Path) -> String {
         if e.samples == 0 {
             "not recorded".to_string()
         } else {
-            format!("{:.4}", e.nrmse)
+            opt(e.nrmse, |v| format!("{v:.4}"))
         }
     };
     for (tb, ta, hb, ha) in &d.channel_errors {
@@ -245,10 +294,10 @@ pub fn markdown(d: &Discovery, plots: &[PathBuf], dir: &Path) -> String {
                 Ok(o) => {
                     let _ = writeln!(
                         s,
-                        "| {} | {:+.1} % | {:.1} | {:.3e} | {:.3e} |",
+                        "| {} | {} | {} | {:.3e} | {:.3e} |",
                         c.effect,
-                        100.0 * c.holdout_gain,
-                        c.bic_drop,
+                        opt(c.holdout_gain, |g| format!("{:+.1} %", 100.0 * g)),
+                        opt(c.bic_drop, |b| format!("{b:.1}")),
                         o.train_mse,
                         o.holdout_mse
                     );
@@ -268,4 +317,72 @@ pub fn markdown(d: &Discovery, plots: &[PathBuf], dir: &Path) -> String {
         }
     }
     s
+}
+
+/// `n/a` for a quantity that could not be computed.
+fn opt(v: Option<f64>, f: impl Fn(f64) -> String) -> String {
+    v.filter(|x| x.is_finite())
+        .map_or_else(|| "n/a".to_string(), f)
+}
+
+/// One plain sentence a vehicle engineer can act on: what is missing, how big, how much of
+/// the gap it closes, and where the evidence is.
+pub fn headline(d: &Discovery) -> String {
+    let subject = if d.model == "hps-strut" {
+        "strut"
+    } else {
+        "steering"
+    };
+    if d.named.is_empty() {
+        return match &d.best_unnamed_shrink {
+            Some((name, shrink)) if *shrink > 0.0 => format!(
+                "The calibrated paper model explains these {subject} records as well as any effect of the catalogue: the best candidate, {name}, would close only {:.0} % of the remaining held-out gap and is not significant, so look outside the catalogue (sensors, inputs) if the gap matters.",
+                100.0 * shrink
+            ),
+            _ => format!(
+                "The calibrated paper model explains these {subject} records; no effect of the catalogue improves the held-out records significantly."
+            ),
+        };
+    }
+    let effects: Vec<String> = d
+        .final_model
+        .effects
+        .iter()
+        .zip(&d.final_model.effect_params)
+        .map(|(name, params)| {
+            let vals: Vec<String> = params
+                .iter()
+                .map(|p| match p.std_error {
+                    Some(se) if !p.at_bound => format!("{} = {:.3} ± {:.2}", p.name, p.value, se),
+                    _ => format!("{} = {:.3}", p.name, p.value),
+                })
+                .collect();
+            format!("{name} ({})", vals.join(", "))
+        })
+        .collect();
+    let where_ = d
+        .evidence
+        .first()
+        .and_then(|ev| {
+            let top: Vec<String> = ev
+                .records
+                .iter()
+                .take(2)
+                .filter(|r| r.share > 0.0)
+                .map(|r| format!("{} [{}]", r.record, r.condition))
+                .collect();
+            (!top.is_empty())
+                .then(|| format!("; the evidence is strongest in {}", top.join(" and ")))
+        })
+        .unwrap_or_default();
+    let partial = if d.gap_shrink < 0.7 {
+        " Part of the gap remains unexplained."
+    } else {
+        ""
+    };
+    format!(
+        "The {subject} records show what the paper model lacks: add {} — it closes {:.0} % of the held-out gap above the noise{where_}.{partial}",
+        effects.join(" and "),
+        100.0 * d.gap_shrink
+    )
 }

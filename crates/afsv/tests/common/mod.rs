@@ -1,17 +1,13 @@
-//! Helpers shared by the discovery tests: running the workflow on synthesized records, and
-//! the record sets of the issue-6 robustness cases (another implementation of the same
-//! physics, an effect outside the catalogue). Each test crate uses a subset.
+//! Helpers shared by the discovery tests: running the workflow on synthesized records or on
+//! record folders, and the record sets of the robustness cases (an effect outside the
+//! catalogue). Each test crate uses a subset.
 #![allow(dead_code)]
 
 use afsv::discover::hps::HpsStrutModel;
 use afsv::discover::yaw::YawPlaneModel;
 use afsv::discover::{discover, Discovery, DiscoveryModel, DiscoveryOptions};
 use afsv::record::Record;
-use afsv::synth::{
-    hps_default_size, hps_records, parse_effects, yaw_default_size, yaw_records, Gaussian,
-    HpsNoise, SynthRecord, YawNoise,
-};
-use afsv_dynamics::SolverKind;
+use afsv::synth::{hps_records, yaw_records, HpsNoise, SynthRecord, YawNoise};
 
 /// Assert that exactly `effects` were named (in any order) and the held-out gap shrank by
 /// at least `min_shrink`; on failure, show every candidate's score.
@@ -79,7 +75,7 @@ pub fn summary(d: &Discovery) -> String {
     for st in &d.steps {
         for c in &st.candidates {
             s += &format!(
-                "  {} gain {:.4} bic_drop {:.1} {:?}\n",
+                "  {} gain {:?} bic_drop {:?} {:?}\n",
                 c.effect,
                 c.holdout_gain,
                 c.bic_drop,
@@ -93,36 +89,10 @@ pub fn summary(d: &Discovery) -> String {
     s
 }
 
-/// Strut records from a different implementation of the same physics: another integrator
-/// and tolerance, nominal values a few percent off, noise band-limited instead of white.
-/// Returns the default discovery baseline and the records.
-pub fn hps_other_implementation(effects: &str, seed: u64) -> (HpsStrutModel, Vec<SynthRecord>) {
-    let baseline = HpsStrutModel::new(HpsStrutModel::default_baseline());
-    let mut truth_params = HpsStrutModel::default_baseline();
-    truth_params.p_h0 *= 1.03;
-    truth_params.v_g0 *= 0.95;
-    truth_params.friction.f_c *= 1.2;
-    truth_params.friction.mu_v *= 0.8;
-    truth_params.c_b *= 0.95;
-    let mut truth = HpsStrutModel::new(truth_params);
-    truth.sim.solver = hps_emulsion::Solver::Rosenbrock23;
-    truth.sim.rtol = 1e-7;
-    let hidden = parse_effects(effects, &truth.catalogue(), hps_default_size).unwrap();
-    let mut recs = hps_records(&truth, &hidden, HpsNoise::none(), seed, 360.0).unwrap();
-    let mut g = Gaussian::new(seed + 100);
-    map_columns(&mut recs, |name, v| match name {
-        "force_n" => g.add_lowpass(v, 200.0, 50.0, 360.0),
-        "p_piston_pa" | "p_rod_pa" => g.add_lowpass(v, 6e3, 50.0, 360.0),
-        "displacement_m" => g.add_lowpass(v, 2e-5, 50.0, 360.0),
-        _ => {}
-    });
-    (baseline, recs)
-}
-
 /// Strut records whose truth differs outside the catalogue: the load cell lags by 8 ms
 /// (signal conditioning), with default noise.
 pub fn hps_outside_catalogue(seed: u64) -> (HpsStrutModel, Vec<SynthRecord>) {
-    let model = HpsStrutModel::new(HpsStrutModel::default_baseline());
+    let model = HpsStrutModel::nominal();
     let mut recs = hps_records(&model, &[], HpsNoise::default_levels(), seed, 360.0).unwrap();
     map_columns(&mut recs, |name, v| {
         if name == "force_n" {
@@ -135,51 +105,63 @@ pub fn hps_outside_catalogue(seed: u64) -> (HpsStrutModel, Vec<SynthRecord>) {
     (model, recs)
 }
 
-/// Vehicle records from a different implementation of the same physics: fixed-step RK4
-/// instead of adaptive Dormand-Prince, nominal values a few percent off (including the
-/// masses and inertias, which are not calibrated), and band-limited instead of white noise.
-pub fn yaw_other_implementation(effects: &str, seed: u64) -> (YawPlaneModel, Vec<SynthRecord>) {
-    let baseline = YawPlaneModel::new(YawPlaneModel::default_baseline());
-    let mut p = YawPlaneModel::default_baseline();
-    p.afs.bulk_modulus_pa *= 0.9;
-    p.afs.dead_volume_m3 *= 1.1;
-    p.afs.seal_viscous_n_s_m *= 1.2;
-    p.afs.leak_const *= 1.3;
-    p.vehicle.c_alpha_f_n_per_rad *= 0.95;
-    p.vehicle.c_alpha_r_n_per_rad *= 0.95;
-    p.vehicle.m_f_kg *= 1.02;
-    p.vehicle.i_r_kg_m2 *= 0.98;
-    let mut truth = YawPlaneModel::new(p);
-    truth.sim.solver = SolverKind::Rk4;
-    truth.sim.rk4_step_s = 2.5e-4;
-    let hidden = parse_effects(effects, &truth.catalogue(), yaw_default_size).unwrap();
-    let mut recs = yaw_records(&truth, &hidden, YawNoise::none(), seed).unwrap();
-    let mut g = Gaussian::new(seed + 100);
-    map_columns(&mut recs, |name, v| match name {
-        "articulation_deg" => g.add_lowpass(v, 0.05, 30.0, 200.0),
-        "strut_left_disp_m" => g.add_lowpass(v, 1e-4, 30.0, 200.0),
-        "p_c_pa" | "p_r_pa" => g.add_lowpass(v, 2e4, 30.0, 200.0),
-        "yaw_rate_front_deg_s" => g.add_lowpass(v, 0.2, 30.0, 200.0),
-        "steer_wheel_deg" => g.add_lowpass(v, 0.02, 30.0, 200.0),
-        _ => {}
-    });
-    (baseline, recs)
-}
-
-/// Vehicle records whose truth differs outside the catalogue: a 40 ms transport delay
-/// between the steering wheel and the valve (a pilot line or a steer-by-wire bus), so the
-/// recorded wheel angle leads what the valve saw. Nothing in the catalogue delays the input.
+/// Vehicle records whose truth differs outside the catalogue: the P_c pressure transducer
+/// reads 0.3 MPa high (a zero offset after a temperature change). No effect of the
+/// catalogue shifts one chamber's reading alone.
 pub fn yaw_outside_catalogue(seed: u64) -> (YawPlaneModel, Vec<SynthRecord>) {
-    let model = YawPlaneModel::new(YawPlaneModel::default_baseline());
+    let model = YawPlaneModel::nominal();
     let mut recs = yaw_records(&model, &[], YawNoise::default_levels(), seed).unwrap();
-    let lead = 8; // samples at 200 Hz
     map_columns(&mut recs, |name, v| {
-        if name == "steer_wheel_deg" {
-            let last = v[v.len() - 1];
-            v.rotate_left(lead);
-            let n = v.len();
-            v[n - lead..].fill(last);
+        if name == "p_c_pa" {
+            v.iter_mut().for_each(|p| *p += 3.0e5);
         }
     });
     (model, recs)
+}
+
+/// Records of `dir/train` and `dir/holdout` (as written by `afsv synth` or
+/// `tests/independent`), read as the CLI reads them.
+pub fn read_set(dir: &std::path::Path) -> (Vec<Record>, Vec<Record>, Vec<String>, Vec<String>) {
+    let read = |sub: &str| {
+        let mut files: Vec<_> = std::fs::read_dir(dir.join(sub))
+            .unwrap()
+            .filter_map(|e| e.ok().map(|e| e.path()))
+            .filter(|p| p.extension().is_some_and(|x| x == "csv"))
+            .collect();
+        files.sort();
+        let names = files
+            .iter()
+            .map(|f| f.file_stem().unwrap().to_string_lossy().into_owned())
+            .collect();
+        (
+            files.iter().map(|f| Record::read(f).unwrap()).collect(),
+            names,
+        )
+    };
+    let (train, tn) = read("train");
+    let (hold, hn) = read("holdout");
+    (train, hold, tn, hn)
+}
+
+/// The whole workflow with default options on the record set in `dir`.
+pub fn run_dir<M: DiscoveryModel>(model: &M, dir: &std::path::Path) -> Discovery {
+    let (train, hold, tn, hn) = read_set(dir);
+    discover(
+        model,
+        &train,
+        &hold,
+        &tn,
+        &hn,
+        &DiscoveryOptions::default(),
+        &(),
+    )
+    .unwrap()
+}
+
+/// A fresh scratch folder under the system temp dir, unique per test and process.
+pub fn scratch(name: &str) -> std::path::PathBuf {
+    let d = std::env::temp_dir().join(format!("afsv-{name}-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&d);
+    std::fs::create_dir_all(&d).unwrap();
+    d
 }

@@ -393,11 +393,12 @@ impl Steer {
                 }
             }
             Steer::Step { amp_deg, start_s } => {
-                if t >= start_s {
-                    amp_deg
-                } else {
-                    0.0
-                }
+                // A driver's step: the wheel turns at 800 deg/s (no faster than 0.1 s), as
+                // fast as a hand can, not in zero time. An ideal step cannot be replayed
+                // from 100 Hz samples by any implementation.
+                let rise = (amp_deg.abs() / 800.0).max(0.1);
+                let s = ((t - start_s) / rise).clamp(0.0, 1.0);
+                amp_deg * s * s * (3.0 - 2.0 * s)
             }
             Steer::Ramp {
                 rate_deg_s,

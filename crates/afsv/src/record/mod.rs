@@ -2,14 +2,16 @@
 //! optional JSON sidecar (`record.json` beside `record.csv`), as fixed in DESIGN.md.
 //!
 //! Reading reports the line and column of any malformed cell. Unknown columns are kept (and
-//! ignored by consumers); absent columns are simply not compared. A sidecar that states a
-//! `"sign_convention"` other than [`SIGN_CONVENTION`] is refused rather than guessed at.
+//! ignored by consumers); absent columns are simply not compared. A sidecar's
+//! `"sign_convention"` is honoured when it is [`SIGN_CONVENTION`] or a per-channel statement
+//! in the vocabulary of [`convention`]; a convention in words is refused rather than
+//! guessed at, unless the user assumes it ([`ReadOptions`]).
 
+pub mod convention;
+
+pub use convention::{ReadOptions, SIGN_CONVENTION};
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
-
-/// The sign convention this toolkit writes and accepts (DESIGN.md, "Sign conventions of records").
-pub const SIGN_CONVENTION: &str = "afsv-v1";
 
 /// A column-oriented numeric record.
 #[derive(Debug, Clone, Default, PartialEq)]
@@ -18,6 +20,8 @@ pub struct Record {
     columns: Vec<Vec<f64>>,
     /// Sidecar metadata (sample rate, units, manoeuvre, ...), `Null` when there is none.
     pub meta: serde_json::Value,
+    /// The file the record was read from (`None` for records built in code).
+    pub source: Option<PathBuf>,
 }
 
 /// What went wrong reading or writing a record.
@@ -73,6 +77,7 @@ impl Record {
             names: Vec::new(),
             columns: Vec::new(),
             meta: serde_json::Value::Null,
+            source: None,
         }
     }
 
@@ -127,18 +132,53 @@ impl Record {
         })
     }
 
-    /// Read `path` (CSV) and its sidecar `path.with_extension("json")` if it exists.
+    /// Read `path` (CSV) and its sidecar `path.with_extension("json")` if it exists, with the
+    /// default [`ReadOptions`].
     pub fn read(path: &Path) -> Result<Self, RecordError> {
+        Self::read_with(path, &ReadOptions::default())
+    }
+
+    /// Read `path` and its sidecar; channels whose sign convention the sidecar states per
+    /// channel are converted to [`SIGN_CONVENTION`] (the original statement is kept in the
+    /// metadata as `converted_from`).
+    pub fn read_with(path: &Path, opts: &ReadOptions) -> Result<Self, RecordError> {
         let text = std::fs::read_to_string(path).map_err(|source| RecordError::Io {
             path: path.to_path_buf(),
             source,
         })?;
         let mut rec = Self::parse_csv(&text, path)?;
+        rec.source = Some(path.to_path_buf());
         let sidecar = path.with_extension("json");
         if sidecar.is_file() {
             rec.meta = read_sidecar(&sidecar)?;
+            rec.apply_convention(&sidecar, opts)?;
         }
         Ok(rec)
+    }
+
+    fn apply_convention(&mut self, sidecar: &Path, opts: &ReadOptions) -> Result<(), RecordError> {
+        let err = |message: String| RecordError::Sidecar {
+            path: sidecar.to_path_buf(),
+            message,
+        };
+        let stated = self.meta.get("sign_convention").cloned();
+        let conversions = convention::conversions(stated.as_ref(), opts).map_err(err)?;
+        for (channel, conversion) in conversions {
+            let Some(j) = self.names.iter().position(|n| *n == channel) else {
+                return Err(err(format!(
+                    "sign_convention names channel `{channel}`, which the record does not have (columns: {})",
+                    self.names.join(", ")
+                )));
+            };
+            convention::apply(conversion, &mut self.columns[j]);
+        }
+        if let (Some(stated), Some(obj)) = (stated, self.meta.as_object_mut()) {
+            if stated.as_str() != Some(SIGN_CONVENTION) {
+                obj.insert("converted_from".into(), stated);
+                obj.insert("sign_convention".into(), SIGN_CONVENTION.into());
+            }
+        }
+        Ok(())
     }
 
     /// Parse CSV text (`path` is only used in error messages).
@@ -285,16 +325,6 @@ fn read_sidecar(path: &Path) -> Result<serde_json::Value, RecordError> {
             message: "sidecar must be a JSON object".into(),
         });
     }
-    if let Some(conv) = meta.get("sign_convention") {
-        if conv.as_str() != Some(SIGN_CONVENTION) {
-            return Err(RecordError::Sidecar {
-                path: path.to_path_buf(),
-                message: format!(
-                    "sign_convention {conv} is not supported (this reader honours only \"{SIGN_CONVENTION}\", see DESIGN.md); convert the record first"
-                ),
-            });
-        }
-    }
     Ok(meta)
 }
 
@@ -364,6 +394,34 @@ mod tests {
             Record::read(&path),
             Err(RecordError::Sidecar { .. })
         ));
+        let assumed = ReadOptions {
+            assume_convention: Some(SIGN_CONVENTION.into()),
+        };
+        assert_eq!(
+            Record::read_with(&path, &assumed)
+                .unwrap()
+                .column("force_n"),
+            r.column("force_n")
+        );
+        std::fs::write(
+            dir.join("r.json"),
+            r#"{"sign_convention": {"force_n": "tension_positive"}}"#,
+        )
+        .unwrap();
+        let flipped = Record::read(&path).unwrap();
+        assert_eq!(flipped.column("force_n").unwrap(), &[-1.0 / 3.0, 2e-9]);
+        assert_eq!(flipped.meta["sign_convention"], SIGN_CONVENTION);
+        assert_eq!(
+            flipped.meta["converted_from"]["force_n"],
+            "tension_positive"
+        );
+        std::fs::write(
+            dir.join("r.json"),
+            r#"{"sign_convention": {"p_rod_pa": "gauge"}}"#,
+        )
+        .unwrap();
+        let e = Record::read(&path).unwrap_err().to_string();
+        assert!(e.contains("p_rod_pa") && e.contains("does not have"), "{e}");
         std::fs::remove_dir_all(&dir).unwrap();
     }
 }

@@ -1,0 +1,420 @@
+//! Fitting configurations (baseline values plus effects) to the training records and
+//! scoring them on the held-out records; start points and scouting of candidate effects.
+
+use super::engine::{DiscoveryOptions, FitOutcome, SCOUT_ITERATIONS};
+use super::layout::RecordSet;
+use super::stats;
+use super::{ActiveEffect, DiscoveryModel, EffectSpec, ParamSpec};
+use optimize::least_squares::{fit, FitOptions, Problem};
+
+/// A configuration to fit: which baseline parameters are free and which effects are on.
+#[derive(Debug, Clone, PartialEq)]
+pub(crate) struct Config {
+    pub baseline: Vec<f64>,
+    pub free_baseline: Vec<usize>,
+    pub effects: Vec<(usize, Vec<f64>)>,
+}
+
+impl Config {
+    fn pack(&self) -> Vec<f64> {
+        let mut p: Vec<f64> = self
+            .free_baseline
+            .iter()
+            .map(|&i| self.baseline[i])
+            .collect();
+        for (_, v) in &self.effects {
+            p.extend_from_slice(v);
+        }
+        p
+    }
+
+    fn unpack(&self, p: &[f64]) -> Config {
+        let mut c = self.clone();
+        for (k, &i) in self.free_baseline.iter().enumerate() {
+            c.baseline[i] = p[k];
+        }
+        let mut off = self.free_baseline.len();
+        for (_, v) in c.effects.iter_mut() {
+            let n = v.len();
+            v.copy_from_slice(&p[off..off + n]);
+            off += n;
+        }
+        c
+    }
+
+    /// The effects as the model takes them.
+    pub fn active(&self) -> Vec<ActiveEffect<'_>> {
+        self.effects
+            .iter()
+            .map(|(index, values)| ActiveEffect {
+                index: *index,
+                values,
+            })
+            .collect()
+    }
+}
+
+/// A fitted configuration with its effective sample size.
+pub(crate) type Fitted = (FitOutcome, Config, f64);
+
+struct Objective<'a, M: DiscoveryModel + ?Sized> {
+    model: &'a M,
+    set: &'a RecordSet<'a, M::Prepared>,
+    config: &'a Config,
+}
+
+impl<M: DiscoveryModel + ?Sized> Problem for Objective<'_, M> {
+    fn n_params(&self) -> usize {
+        self.config.pack().len()
+    }
+    fn n_residuals(&self) -> usize {
+        self.set.n
+    }
+    fn residuals(&self, p: &[f64], r: &mut [f64]) -> Result<(), String> {
+        let c = self.config.unpack(p);
+        self.set.residuals(self.model, &c.baseline, &c.active(), r)
+    }
+}
+
+/// What the fits of one discovery run share.
+pub(crate) struct Context<'a, M: DiscoveryModel + ?Sized> {
+    pub model: &'a M,
+    pub train: RecordSet<'a, M::Prepared>,
+    /// A subset of the training records spanning their conditions, for scouting start
+    /// points (the whole training set when it is small).
+    pub scout: Option<RecordSet<'a, M::Prepared>>,
+    pub holdout: RecordSet<'a, M::Prepared>,
+    pub base_specs: Vec<ParamSpec>,
+    pub catalogue: Vec<EffectSpec>,
+    pub opts: &'a DiscoveryOptions,
+}
+
+impl<M: DiscoveryModel + ?Sized> Context<'_, M> {
+    fn scout_set(&self) -> &RecordSet<'_, M::Prepared> {
+        self.scout.as_ref().unwrap_or(&self.train)
+    }
+
+    fn bounds(&self, config: &Config) -> (Vec<f64>, Vec<f64>, Vec<f64>) {
+        let mut lo = Vec::new();
+        let mut hi = Vec::new();
+        let mut typ = Vec::new();
+        let effect_specs = config
+            .effects
+            .iter()
+            .flat_map(|(e, _)| self.catalogue[*e].params.iter());
+        let base_specs = config.free_baseline.iter().map(|&i| &self.base_specs[i]);
+        for s in base_specs.chain(effect_specs) {
+            lo.push(s.lower);
+            hi.push(s.upper);
+            typ.push(s.typical);
+        }
+        (lo, hi, typ)
+    }
+
+    /// Least-squares fit of the free parameters of `config` on `set`; returns the fitted
+    /// configuration, the standard errors of the free parameters, whether the fit
+    /// converged, and its residual sum of squares.
+    fn fit_on(
+        &self,
+        config: &Config,
+        set: &RecordSet<'_, M::Prepared>,
+        max_iter: usize,
+    ) -> Result<(Config, Vec<f64>, bool, f64), String> {
+        let p0 = config.pack();
+        if p0.is_empty() {
+            let r = set.residual_vec(self.model, &config.baseline, &config.active())?;
+            return Ok((config.clone(), Vec::new(), true, sum_sq(&r)));
+        }
+        let (lower, upper, typical) = self.bounds(config);
+        let obj = Objective {
+            model: self.model,
+            set,
+            config,
+        };
+        let res = fit(
+            &obj,
+            &p0,
+            &FitOptions {
+                max_iter,
+                ftol: 1e-8,
+                xtol: 1e-8,
+                lower: Some(lower),
+                upper: Some(upper),
+                diff_step: 1e-3,
+                typical: Some(typical),
+            },
+        )
+        .map_err(|e| e.to_string())?;
+        Ok((
+            config.unpack(&res.params),
+            res.std_errors,
+            res.converged,
+            res.rss,
+        ))
+    }
+
+    /// Fit a configuration on the training records (or just evaluate it when nothing is free)
+    /// and score it on the held-out records. `n_eff` fixes the effective sample size used in
+    /// the information criteria so that models compared within a round share it.
+    ///
+    /// With a scouting subset, the fit runs to convergence on the subset first and is then
+    /// polished on all training records ([`DiscoveryOptions::polish_iterations`]): the
+    /// subset spans the records' conditions, so its optimum is close, and most iterations
+    /// then cost a fraction of a full replay.
+    pub fn fit(&self, config: Config, n_eff: Option<f64>) -> Result<Fitted, String> {
+        let (start, max_iter) = match &self.scout {
+            Some(scout) => (
+                self.fit_on(&config, scout, self.opts.max_iter)?.0,
+                self.opts.polish_iterations,
+            ),
+            None => (config, self.opts.max_iter),
+        };
+        self.polish(start, max_iter, n_eff)
+    }
+
+    /// Fit on all training records from `start` and score.
+    fn polish(&self, start: Config, max_iter: usize, n_eff: Option<f64>) -> Result<Fitted, String> {
+        let (fitted, se, converged, _) = self.fit_on(&start, &self.train, max_iter)?;
+        self.score(fitted, &se, converged, n_eff)
+    }
+
+    /// Residual sum of squares of a configuration on the scouting records.
+    pub fn scout_rss(&self, config: &Config) -> Result<f64, String> {
+        let r = self
+            .scout_set()
+            .residual_vec(self.model, &config.baseline, &config.active())?;
+        Ok(sum_sq(&r))
+    }
+
+    /// Score a fitted configuration on the training and held-out records.
+    fn score(
+        &self,
+        fitted: Config,
+        se: &[f64],
+        converged: bool,
+        n_eff: Option<f64>,
+    ) -> Result<Fitted, String> {
+        let rt = self
+            .train
+            .residual_vec(self.model, &fitted.baseline, &fitted.active())?;
+        let rh = self
+            .holdout
+            .residual_vec(self.model, &fitted.baseline, &fitted.active())?;
+        let rss = sum_sq(&rt);
+        let n = self.train.n as f64;
+        let n_eff_here = stats::effective_samples(&self.train.segment_slices(&rt));
+        let n_eff = n_eff.unwrap_or(n_eff_here);
+        let k = fitted.pack().len();
+        let mut baseline_se = vec![None; fitted.baseline.len()];
+        for (j, &i) in fitted.free_baseline.iter().enumerate() {
+            baseline_se[i] = se.get(j).copied().filter(|v| v.is_finite());
+        }
+        let mut off = fitted.free_baseline.len();
+        let mut effect_params = Vec::new();
+        for (e, v) in &fitted.effects {
+            let specs = &self.catalogue[*e].params;
+            effect_params.push(
+                specs
+                    .iter()
+                    .zip(v)
+                    .enumerate()
+                    .map(|(j, (s, &val))| super::EffectParam {
+                        name: s.name.clone(),
+                        value: val,
+                        std_error: se.get(off + j).copied().filter(|v| v.is_finite()),
+                        at_bound: at_bound(val, s),
+                    })
+                    .collect(),
+            );
+            off += v.len();
+        }
+        let outcome = FitOutcome {
+            effects: fitted
+                .effects
+                .iter()
+                .map(|(e, _)| self.catalogue[*e].name.clone())
+                .collect(),
+            baseline_names: self.base_specs.iter().map(|s| s.name.clone()).collect(),
+            baseline: fitted.baseline.clone(),
+            baseline_se,
+            effect_params,
+            train_mse: rss / n,
+            holdout_mse: sum_sq(&rh) / self.holdout.n as f64,
+            bic: stats::bic(rss, n, n_eff, k),
+            aic: stats::aic(rss, n, n_eff, k),
+            k,
+            converged,
+        };
+        Ok((outcome, fitted, n_eff_here))
+    }
+
+    /// Start values of effect `e`: its nominal start, its "off" corner at the lower bounds
+    /// and five points spread over its bounds (log-spaced where the range spans decades).
+    fn effect_starts(&self, e: usize) -> Vec<Vec<f64>> {
+        let specs = &self.catalogue[e].params;
+        let fractions = [0.5, 0.1, 0.9, 0.3, 0.7];
+        // The lower bounds switch most effects off (zero play, droop, friction): starting
+        // there, the candidate can only improve on the model as it stands.
+        let mut starts = vec![
+            specs.iter().map(|s| s.initial).collect(),
+            specs.iter().map(|s| s.lower).collect::<Vec<f64>>(),
+        ];
+        for k in 0..fractions.len() {
+            starts.push(
+                specs
+                    .iter()
+                    .enumerate()
+                    .map(|(j, s)| {
+                        let f = fractions[(k + j) % fractions.len()];
+                        if s.lower > 0.0 && s.upper / s.lower >= 100.0 && s.upper.is_finite() {
+                            (s.lower.ln() + f * (s.upper.ln() - s.lower.ln())).exp()
+                        } else if s.lower.is_finite() && s.upper.is_finite() {
+                            s.lower + f * (s.upper - s.lower)
+                        } else {
+                            s.initial
+                        }
+                    })
+                    .collect(),
+            );
+        }
+        starts.dedup();
+        starts
+    }
+
+    /// Start values `(baseline, effect)` for effect `e` added to `base`: each of
+    /// [`Self::effect_starts`] with the baseline as fitted and at its nominal values, in
+    /// order of scouting-set error, except that the best start on the *other* baseline
+    /// comes second. Guards against starting where the effect is inactive (a saturation
+    /// limit above the signal, a dead zone of zero width) and the gradient is zero, and
+    /// against a calibration that has bent the baseline towards the missing effect: on
+    /// independent strut records, the calibrated Coulomb friction (5x) and polytropic
+    /// exponent absorbed a hidden gas heat transfer, every start on the calibrated baseline
+    /// beat every start on the nominal one at first, and six iterations from them never
+    /// reached the truth's basin.
+    fn ranked_starts(
+        &self,
+        base: &Config,
+        nominal_baseline: &[f64],
+        e: usize,
+    ) -> Vec<(Vec<f64>, Vec<f64>)> {
+        let set = self.scout_set();
+        let mut bases = vec![base.baseline.clone()];
+        if nominal_baseline != base.baseline.as_slice() {
+            bases.push(nominal_baseline.to_vec());
+        }
+        let mut r = vec![0.0; set.n];
+        // (rss, which baseline, effect start)
+        let mut ranked: Vec<(f64, usize, Vec<f64>)> = Vec::new();
+        for start in self.effect_starts(e) {
+            for (k, b) in bases.iter().enumerate() {
+                let mut cfg = base.clone();
+                cfg.baseline.clone_from(b);
+                cfg.effects.push((e, start.clone()));
+                if set
+                    .residuals(self.model, &cfg.baseline, &cfg.active(), &mut r)
+                    .is_ok()
+                {
+                    ranked.push((sum_sq(&r), k, start.clone()));
+                }
+            }
+        }
+        ranked.sort_by(|a, b| a.0.total_cmp(&b.0));
+        if let Some(other) = ranked
+            .iter()
+            .position(|(_, k, _)| ranked.first().is_some_and(|f| f.1 != *k))
+        {
+            let item = ranked.remove(other);
+            ranked.insert(1.min(ranked.len()), item);
+        }
+        if ranked.is_empty() {
+            let nominal = self.catalogue[e].params.iter().map(|s| s.initial).collect();
+            ranked.push((f64::INFINITY, 0, nominal));
+        }
+        ranked
+            .into_iter()
+            .map(|(_, k, s)| (bases[k].clone(), s))
+            .collect()
+    }
+
+    /// Scout candidate effect `e` added to `current`: rank its start points, give the best
+    /// few ([`DiscoveryOptions::starts`]) short fits on the scouting records, and fit the
+    /// best to convergence there. Returns the configuration and its scouting-set residual
+    /// sum of squares. The error surface of an effect parameter is often not convex once
+    /// the baseline has been calibrated without it, and the start with the lowest initial
+    /// error is then the wrong basin.
+    pub fn scout_candidate(
+        &self,
+        current: &Config,
+        nominal_baseline: &[f64],
+        e: usize,
+    ) -> Result<(Config, f64), String> {
+        let all_base: Vec<usize> = (0..current.baseline.len()).collect();
+        let starts = if self.opts.refit_baseline {
+            self.ranked_starts(current, nominal_baseline, e)
+        } else {
+            self.ranked_starts(current, &current.baseline, e)
+        };
+        let config_at = |(b, s): &(Vec<f64>, Vec<f64>)| {
+            let mut cfg = current.clone();
+            cfg.free_baseline = if self.opts.refit_baseline {
+                all_base.clone()
+            } else {
+                Vec::new()
+            };
+            cfg.baseline.clone_from(b);
+            cfg.effects.push((e, s.clone()));
+            cfg
+        };
+        let set = self.scout_set();
+        let k = self.opts.starts.max(1).min(starts.len());
+        let mut best: Option<(f64, Config)> = None;
+        let mut last_err = String::new();
+        for start in &starts[..k] {
+            match self.fit_on(&config_at(start), set, SCOUT_ITERATIONS) {
+                Ok((cfg, _, _, rss)) => {
+                    if best.as_ref().is_none_or(|(b, _)| rss < *b) {
+                        best = Some((rss, cfg));
+                    }
+                }
+                Err(msg) => last_err = msg,
+            }
+        }
+        let (rss, cfg) = best.ok_or(last_err)?;
+        Ok((cfg, rss))
+    }
+
+    /// Fit a scouted candidate to convergence (on the scouting records first, then polished
+    /// on all training records, as [`Self::fit`]) and score it.
+    pub fn finish_candidate(&self, scouted: Config, n_eff: f64) -> Result<Fitted, String> {
+        self.fit(scouted, Some(n_eff))
+    }
+
+    /// Per-channel errors of a configuration on a record set.
+    pub fn channel_errors(
+        &self,
+        set: &RecordSet<'_, M::Prepared>,
+        config: &Config,
+    ) -> Vec<super::ChannelError> {
+        let r = set
+            .residual_vec(self.model, &config.baseline, &config.active())
+            .ok();
+        set.per_channel(r.as_deref())
+    }
+}
+
+/// True when `value` sits on (within 1e-6 of the range of) one of its bounds.
+fn at_bound(value: f64, spec: &ParamSpec) -> bool {
+    let span = (spec.upper - spec.lower).abs();
+    let tol = 1e-6
+        * if span.is_finite() && span > 0.0 {
+            span
+        } else {
+            value.abs().max(1.0)
+        };
+    (value - spec.lower).abs() <= tol || (spec.upper - value).abs() <= tol
+}
+
+/// Sum of squares.
+pub(crate) fn sum_sq(r: &[f64]) -> f64 {
+    r.iter().map(|v| v * v).sum()
+}
