@@ -36,9 +36,10 @@ pub struct DiscoveryOptions {
     /// Levenberg-Marquardt iterations on all training records after a fit has converged on
     /// the scouting records.
     pub polish_iterations: usize,
-    /// Candidates fitted to convergence per round, those with the lowest scouting error;
-    /// the others stop after scouting (the report lists them as pruned). Each full fit
-    /// replays every training record dozens of times.
+    /// Candidates fitted to convergence per round, those with the lowest scouting error
+    /// (beyond the best, only those that lowered the scouting error by at least half the
+    /// held-out gain the rule requires); the others stop after scouting (the report lists
+    /// them as pruned). Each full fit replays every training record dozens of times.
     pub finalists: usize,
 }
 
@@ -529,8 +530,9 @@ fn search<M: DiscoveryModel + ?Sized>(
         }
         if !s.named.is_empty() && repeats == 0 {
             // Refit the model as it stands, so that candidates are not credited with the
-            // improvement that more iterations on the same model would give anyway.
-            let refit = ctx.fit(s.current.1.clone(), Some(s.current.2))?;
+            // improvement that more iterations on the same model would give anyway (it
+            // has converged on the scouting records already: polished on all of them).
+            let refit = ctx.refit(s.current.1.clone(), Some(s.current.2))?;
             if refit.0.train_mse <= s.current.0.train_mse {
                 s.current = refit;
             }
@@ -629,7 +631,12 @@ fn round<M: DiscoveryModel + ?Sized>(
         .map(|&e| (e, ctx.scout_candidate(cfg, nominal_base, e)))
         .collect();
     let ref_rss = ctx.scout_rss(cfg)?;
-    let finalists = finalists(&scouted, opts.finalists);
+    let finalists = finalists(
+        &scouted,
+        opts.finalists,
+        ref_rss,
+        opts.rule.min_holdout_gain,
+    );
     let results: Vec<(usize, Result<Fitted, String>)> = scouted
         .into_par_iter()
         .map(|(e, r)| {
@@ -638,7 +645,7 @@ fn round<M: DiscoveryModel + ?Sized>(
                     ctx.finish_candidate(c, *n_eff)
                 } else {
                     Err(format!(
-                        "pruned after scouting: it changed the training error on the scouting records by {:+.1} %, less than the {} best candidates",
+                        "pruned after scouting: it changed the training error on the scouting records by {:+.1} % (not among the {} best, or less than half the held-out gain the rule requires)",
                         100.0 * (rss - ref_rss) / ref_rss.max(f64::MIN_POSITIVE),
                         opts.finalists
                     ))
@@ -741,12 +748,22 @@ fn attribution_check<M: DiscoveryModel + ?Sized>(
     Ok(Some((note, refit)))
 }
 
-/// The candidates worth a fit to convergence: the `k` with the lowest scouting error.
-fn finalists(scouted: &[Scouted], k: usize) -> Vec<usize> {
+/// The candidates worth a fit to convergence: the `k` with the lowest scouting error, of
+/// which all but the best must have lowered the scouting records' error (against the
+/// round's reference `ref_rss`) by at least half the held-out gain the rule requires. A
+/// candidate that has not done that on the training subset is not expected to pass on the
+/// held-out records; the best one is always fitted, so the report can say how close the
+/// round came.
+fn finalists(scouted: &[Scouted], k: usize, ref_rss: f64, min_gain: f64) -> Vec<usize> {
     let mut ok: Vec<(usize, f64)> = scouted
         .iter()
         .filter_map(|(e, r)| r.as_ref().ok().map(|(_, rss)| (*e, *rss)))
         .collect();
     ok.sort_by(|a, b| a.1.total_cmp(&b.1));
-    ok.into_iter().take(k.max(1)).map(|(e, _)| e).collect()
+    ok.into_iter()
+        .enumerate()
+        .filter(|(i, (_, rss))| *i == 0 || ref_rss - rss >= 0.5 * min_gain * ref_rss)
+        .take(k.max(1))
+        .map(|(_, (e, _))| e)
+        .collect()
 }

@@ -172,6 +172,17 @@ impl<M: DiscoveryModel + ?Sized> Context<'_, M> {
         self.polish(start, max_iter, n_eff)
     }
 
+    /// More iterations on all training records for a configuration already fitted by
+    /// [`Self::fit`], and score.
+    pub fn refit(&self, config: Config, n_eff: Option<f64>) -> Result<Fitted, String> {
+        let max_iter = if self.scout.is_some() {
+            self.opts.polish_iterations
+        } else {
+            self.opts.max_iter
+        };
+        self.polish(config, max_iter, n_eff)
+    }
+
     /// Fit on all training records from `start` and score.
     fn polish(&self, start: Config, max_iter: usize, n_eff: Option<f64>) -> Result<Fitted, String> {
         let (fitted, se, converged, _) = self.fit_on(&start, &self.train, max_iter)?;

@@ -45,7 +45,8 @@ pub fn write_report<M: DiscoveryModel + ?Sized>(
         })
         .collect();
     let mut plots = Vec::new();
-    for (i, rec) in holdout.iter().enumerate() {
+    for i in plotted_records(d, holdout_names, holdout.len()) {
+        let rec = &holdout[i];
         let label = holdout_names
             .get(i)
             .cloned()
@@ -119,6 +120,42 @@ pub fn write_report<M: DiscoveryModel + ?Sized>(
     std::fs::write(&p, md).map_err(|e| format!("{}: {e}", p.display()))?;
     written.push(p);
     Ok(written)
+}
+
+/// Held-out records that get overlay plots: at most [`MAX_PLOTTED_RECORDS`], those carrying
+/// the largest share of the first named effect's gain (or, when nothing was named, the
+/// first ones), in record order. Every record stays in report.json.
+fn plotted_records(d: &Discovery, names: &[String], n: usize) -> Vec<usize> {
+    let mut picked: Vec<usize> = match d.evidence.first() {
+        Some(ev) => ev
+            .records
+            .iter()
+            .filter_map(|r| names.iter().position(|n| *n == r.record))
+            .take(MAX_PLOTTED_RECORDS)
+            .collect(),
+        None => (0..n.min(MAX_PLOTTED_RECORDS)).collect(),
+    };
+    if picked.is_empty() {
+        picked = (0..n.min(MAX_PLOTTED_RECORDS)).collect();
+    }
+    picked.sort_unstable();
+    picked
+}
+
+/// Most held-out records plotted (two SVGs per record and channel).
+pub const MAX_PLOTTED_RECORDS: usize = 8;
+
+/// A number with three significant digits, in plain or scientific notation as fits.
+fn sig3(v: f64) -> String {
+    let a = v.abs();
+    if a == 0.0 {
+        "0".into()
+    } else if (1e-3..1e4).contains(&a) {
+        let decimals = (2 - a.log10().floor() as i32).max(0) as usize;
+        format!("{v:.decimals$}")
+    } else {
+        format!("{v:.2e}")
+    }
 }
 
 fn sanitize(s: &str) -> String {
@@ -353,8 +390,11 @@ pub fn headline(d: &Discovery) -> String {
             let vals: Vec<String> = params
                 .iter()
                 .map(|p| match p.std_error {
-                    Some(se) if !p.at_bound => format!("{} = {:.3} ± {:.2}", p.name, p.value, se),
-                    _ => format!("{} = {:.3}", p.name, p.value),
+                    Some(se) if !p.at_bound => {
+                        format!("{} = {} ± {}", p.name, sig3(p.value), sig3(se))
+                    }
+                    _ if p.at_bound => format!("{} = {} (at a bound)", p.name, sig3(p.value)),
+                    _ => format!("{} = {}", p.name, sig3(p.value)),
                 })
                 .collect();
             format!("{name} ({})", vals.join(", "))
@@ -381,8 +421,23 @@ pub fn headline(d: &Discovery) -> String {
         ""
     };
     format!(
-        "The {subject} records show what the paper model lacks: add {} — it closes {:.0} % of the held-out gap above the noise{where_}.{partial}",
+        "The {subject} records show what the paper model lacks: add {} — it closes {:.1} % of the held-out gap above the noise{where_}.{partial}",
         effects.join(" and "),
         100.0 * d.gap_shrink
     )
+}
+
+#[cfg(test)]
+mod tests {
+    use super::sig3;
+
+    #[test]
+    fn three_significant_digits() {
+        assert_eq!(sig3(0.040126), "0.0401");
+        assert_eq!(sig3(2.62e-6), "2.62e-6");
+        assert_eq!(sig3(3689.95), "3690");
+        assert_eq!(sig3(12.345), "12.3");
+        assert_eq!(sig3(-0.5), "-0.500");
+        assert_eq!(sig3(0.0), "0");
+    }
 }
