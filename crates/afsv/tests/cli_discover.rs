@@ -114,6 +114,75 @@ fn bad_input_gives_one_line_errors() {
     );
 }
 
+/// Refused before any fit: a record both in training and held out (named as `./x` and
+/// `x`), a report folder that holds input records, and `-o` onto an existing file.
+#[test]
+fn overlapping_sets_and_outputs_among_inputs_are_refused_up_front() {
+    let data = tmp("guard");
+    let out = afsv(&[
+        "synth",
+        "--model",
+        "hps-strut",
+        "--seed",
+        "3",
+        "-o",
+        data.to_str().unwrap(),
+    ]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let train = data.join("train");
+    let first = std::fs::read_dir(&train)
+        .unwrap()
+        .flatten()
+        .map(|e| e.path())
+        .find(|p| p.extension().is_some_and(|x| x == "csv"))
+        .unwrap();
+    let dotted = train.join(".").join(first.file_name().unwrap());
+    let existing = data.join("truth.json");
+    let (r1, holdout) = (data.join("r1"), data.join("holdout"));
+    let s = |p: &std::path::Path| p.to_str().unwrap().to_string();
+    let (t, h, d, r, o, e) = (
+        s(&train),
+        s(&holdout),
+        s(&dotted),
+        s(&r1),
+        s(&train),
+        s(&existing),
+    );
+    let cases: [([&str; 6], &str); 3] = [
+        (
+            ["--train", &t, "--holdout", &d, "-o", &r],
+            "both a training and a held-out",
+        ),
+        (
+            ["--train", &t, "--holdout", &h, "-o", &o],
+            "holds the input record",
+        ),
+        (
+            ["--train", &t, "--holdout", &h, "-o", &e],
+            "is not a folder",
+        ),
+    ];
+    for (args, msg) in cases {
+        let mut all = vec!["discover", "--model", "hps-strut"];
+        all.extend_from_slice(&args);
+        let out = afsv(&all);
+        assert!(!out.status.success());
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert!(err.contains(msg), "{err}");
+        assert_eq!(err.trim().lines().count(), 1, "{err}");
+    }
+    assert!(!data.join("r1").exists());
+    assert!(std::fs::read_dir(&train)
+        .unwrap()
+        .flatten()
+        .all(|e| !e.file_name().to_string_lossy().starts_with("report")));
+    std::fs::remove_dir_all(&data).unwrap();
+}
+
 #[test]
 fn list_effects_prints_the_catalogue() {
     let out = afsv(&["discover", "--model", "yaw-plane", "--list-effects"]);

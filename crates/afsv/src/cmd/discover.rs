@@ -2,7 +2,7 @@
 
 use super::CmdResult;
 use afsv::discover::hps::HpsStrutModel;
-use afsv::discover::report::{write_report, REPORT_FILES};
+use afsv::discover::report::write_report;
 use afsv::discover::yaw::YawPlaneModel;
 use afsv::discover::{discover, DiscoveryModel, DiscoveryOptions, Progress};
 use afsv::record::{ReadOptions, Record};
@@ -143,6 +143,51 @@ fn yaw_model(
     Ok(m)
 }
 
+/// Refuse, before any fit runs: an `-o` that is an existing file; an output folder that
+/// holds any input record (the report's plots would land among them); and a record given
+/// as both training and held-out (the held-out test would then measure nothing). Paths are
+/// compared canonically, so `x`, `./x` and a link to `x` are the same.
+fn check_output_folder(
+    output: &Path,
+    train: &[PathBuf],
+    holdout: &[PathBuf],
+) -> Result<(), String> {
+    if output.exists() && !output.is_dir() {
+        return Err(format!(
+            "-o {}: exists and is not a folder; the report is a folder (report.md, report.json, plots)",
+            output.display()
+        ));
+    }
+    let out = afsv::output::canonical_path(output)?;
+    let canon = |f: &PathBuf| afsv::output::canonical_path(f);
+    let train_c = train.iter().map(canon).collect::<Result<Vec<_>, _>>()?;
+    let hold_c = holdout.iter().map(canon).collect::<Result<Vec<_>, _>>()?;
+    for (f, c) in train
+        .iter()
+        .zip(&train_c)
+        .chain(holdout.iter().zip(&hold_c))
+    {
+        if c.parent() == Some(out.as_path()) {
+            return Err(format!(
+                "-o {}: holds the input record {}; choose a folder of its own for the report",
+                output.display(),
+                f.display()
+            ));
+        }
+    }
+    if let Some((f, _)) = holdout
+        .iter()
+        .zip(&hold_c)
+        .find(|(_, c)| train_c.contains(c))
+    {
+        return Err(format!(
+            "{} is both a training and a held-out record; the held-out records must be others",
+            f.display()
+        ));
+    }
+    Ok(())
+}
+
 /// CSV files of the given files and folders (folders: their `*.csv`, sorted).
 fn csv_files(inputs: &[PathBuf]) -> Result<Vec<PathBuf>, String> {
     let mut out = Vec::new();
@@ -246,21 +291,7 @@ fn run_discover<M: DiscoveryModel>(model: &M, args: &DiscoverArgs) -> CmdResult 
     let output = args.output.as_deref().ok_or("-o/--output is required")?;
     let train_files = csv_files(&args.train)?;
     let hold_files = csv_files(&args.holdout)?;
-    // Never write over an input: refuse an output folder that would hold a report file
-    // with the name of an input record or sidecar.
-    for f in train_files.iter().chain(&hold_files) {
-        for out in REPORT_FILES {
-            let target = output.join(out);
-            if target == *f || target == f.with_extension("json") {
-                return Err(format!(
-                    "{} would overwrite the input {}; choose another -o folder",
-                    target.display(),
-                    f.display()
-                )
-                .into());
-            }
-        }
-    }
+    check_output_folder(output, &train_files, &hold_files)?;
     let read = ReadOptions {
         assume_convention: args.assume_convention.clone(),
     };
