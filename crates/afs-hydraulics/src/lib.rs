@@ -7,7 +7,7 @@
 //! component owns three states (P_c, P_r, theta_h) and returns their derivatives plus the
 //! torque, strut forces, flows and powers ([`AfsOutput`]).
 //!
-//! Sign convention (DESIGN.md): positive steering-wheel angle and articulation are the
+//! Sign convention (docs/records.md): positive steering-wheel angle and articulation are the
 //! paper's right-hand turn, in which the valve feeds the P_c group (left-strut piston side +
 //! right-strut rod side) and the left strut extends. A positive torque drives theta
 //! positive. See `docs/afs-hydraulics.md` for the derivation and the unit choices.

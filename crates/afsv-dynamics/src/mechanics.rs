@@ -2,7 +2,7 @@
 //!
 //! Axes (SAE-like, mirrored consistently): x forward, y to the right, yaw positive for a
 //! right-hand turn. The articulation angle is theta = psi_f - psi_r (Eq 3.14), positive in a
-//! right-hand turn, and a positive steering torque T_s drives theta positive (DESIGN.md).
+//! right-hand turn, and a positive steering torque T_s drives theta positive (docs/records.md).
 //!
 //! Unknown accelerations: (dv_f/dt, dphi_f/dt, dphi_r/dt) with the front forward speed u_f
 //! held constant. The rear-unit velocities follow from the joint constraint (Eq 3.14) and

@@ -1,5 +1,5 @@
 //! Simulation entry point: [`simulate`] runs one [`Manoeuvre`] and returns a [`YawRecord`]
-//! with the record channels of DESIGN.md plus internal states.
+//! with the record channels of docs/records.md plus internal states.
 
 use crate::actuator::{SteeringActuator, MAX_ACTUATOR_STATES};
 use crate::driver::PathDriver;
@@ -196,7 +196,7 @@ pub struct SolverStats {
 }
 
 /// Time histories of one run. The first eight columns are the record channels of
-/// DESIGN.md (sign convention: positive = right-hand turn); the rest are internal.
+/// docs/records.md (sign convention: positive = right-hand turn); the rest are internal.
 #[derive(Debug, Clone, PartialEq, Default, Serialize, Deserialize)]
 pub struct YawRecord {
     /// Time (s).

@@ -51,7 +51,7 @@ fn steady_turn_13_5_m_at_table_3_2_speeds() {
             // lateral acceleration (3.3 m/s^2 for the unloaded truck at 24 km/h).
             let limit = if kmh > 20.0 { 2.5 } else { 1.0 };
             assert!(worst < limit, "deviation {worst}");
-            // Right-hand turn: positive articulation and wheel angle (DESIGN.md signs),
+            // Right-hand turn: positive articulation and wheel angle (docs/records.md signs),
             // close to the slip-free value for R = 13.5 m (~22 deg).
             assert!(theta > 18.0 && theta < 28.0, "theta {theta}");
             assert!(r.steer_wheel_deg[n - 1] > 0.0);

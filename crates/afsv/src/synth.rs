@@ -2,7 +2,7 @@
 //! (`afsv synth`), for testing the discovery workflow on data whose answer is known.
 //!
 //! Effects are given as `NAME` (realistic default size) or `NAME=v1:v2` (parameter values in
-//! catalogue order). Records are written as CSV + JSON sidecar (DESIGN.md) into
+//! catalogue order). Records are written as CSV + JSON sidecar (docs/records.md) into
 //! `DIR/train/` and `DIR/holdout/`; the truth (effects and values) goes to `DIR/truth.json`,
 //! never into the records' sidecars.
 

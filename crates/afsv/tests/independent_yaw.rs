@@ -426,7 +426,7 @@ fn record_set_has_the_expected_files_sidecars_and_is_deterministic() {
     }
 }
 
-/// The sign conventions of DESIGN.md on a positive (right-hand) step: positive
+/// The sign conventions of docs/records.md on a positive (right-hand) step: positive
 /// articulation, yaw rate and left-strut extension, P_c > P_r once steered.
 #[test]
 fn positive_wheel_is_a_right_hand_turn() {

@@ -145,7 +145,7 @@ impl FitParam {
     }
 }
 
-/// A measured strut record (columns of the DESIGN.md HPS bench test). Channels that are
+/// A measured strut record (columns of the HPS bench test of docs/records.md). Channels that are
 /// `None` are not compared.
 #[derive(Debug, Clone, PartialEq, Default)]
 pub struct Measured {

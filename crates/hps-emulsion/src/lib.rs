@@ -6,7 +6,7 @@
 //! chamber pressures and the seal friction; the emulsion's gas fraction, density and bulk
 //! modulus follow the pressure.
 //!
-//! Sign convention (DESIGN.md): deflection `z_s` positive in compression from the static
+//! Sign convention (docs/records.md): deflection `z_s` positive in compression from the static
 //! mid-stroke position, force positive when compressive, absolute pressures.
 //!
 //! - [`StrutParams`]: parameter sets ([`StrutParams::front_axle`], Table 6.3;

@@ -280,7 +280,7 @@ impl Default for SimOptions {
     }
 }
 
-/// Time histories of a run, in the record convention of DESIGN.md.
+/// Time histories of a run, in the record convention of docs/records.md.
 #[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
 pub struct StrutRecord {
     /// Time (s).
@@ -313,7 +313,7 @@ impl StrutRecord {
             .collect()
     }
 
-    /// Columns as `(name_unit, values)` in the record format of DESIGN.md (the first six are
+    /// Columns as `(name_unit, values)` in the record format of docs/records.md (the first six are
     /// the standard HPS bench-test columns).
     pub fn columns(&self) -> Vec<(&'static str, Vec<f64>)> {
         vec![

@@ -83,7 +83,7 @@ pub struct VehicleArgs {
 /// `afsv yaw` subcommands.
 #[derive(clap::Subcommand, Debug)]
 pub enum Command {
-    /// Simulate one manoeuvre and write the record (CSV + JSON sidecar, DESIGN.md format).
+    /// Simulate one manoeuvre and write the record (CSV + JSON sidecar, docs/records.md format).
     Simulate {
         #[command(flatten)]
         vehicle: VehicleArgs,

@@ -1,5 +1,5 @@
 //! Measured or simulated records: CSV with a one-line header of `name_unit` columns and an
-//! optional JSON sidecar (`record.json` beside `record.csv`), as fixed in DESIGN.md.
+//! optional JSON sidecar (`record.json` beside `record.csv`), as fixed in docs/records.md.
 //!
 //! Reading reports the line and column of any malformed cell. Unknown columns are kept (and
 //! ignored by consumers); absent columns are simply not compared. A sidecar's

@@ -1,4 +1,4 @@
-//! Writing records in the DESIGN.md format ("Data formats"): CSV with a `name_unit` header
+//! Writing records in the docs/records.md format ("Data formats"): CSV with a `name_unit` header
 //! and a JSON sidecar beside it. Our own writer, with fixed per-column precision so the
 //! bytes are reproducible.
 

@@ -1,6 +1,6 @@
 //! Independent implementation of the hydro-pneumatic strut with gas-oil emulsion
 //! (dissertation Chapter 5, Eqs 5.1-5.12; front-axle strut of Table 6.3), written from the
-//! equations with the conventions of `docs/hps-emulsion.md` and DESIGN.md. No toolkit model
+//! equations with the conventions of `docs/hps-emulsion.md` and docs/records.md. No toolkit model
 //! code is called from here.
 //!
 //! Units: pressures in **MPa**, volumes in **litres**, flows in L/s, areas in m^2, forces in N.
@@ -20,7 +20,7 @@
 //!
 //! Conventions and choices:
 //! * z_s positive in compression from the static mid-stroke position, force positive when
-//!   compressive, absolute pressures (DESIGN.md). Eq 5.7's `x` is z_s.
+//!   compressive, absolute pressures (docs/records.md). Eq 5.7's `x` is z_s.
 //! * Eq 5.1 with absolute pressures: the outer rod end sees the atmosphere, so
 //!   F = P_hc A_hc - P_hr (A_hc - A_hr) - p_atm A_hr + F_f (docs/hps-emulsion.md, item 5).
 //! * Eq 5.3 band only after a reversal (z z' < 0), v_h = max(0.1 v_peak, 1 mm/s)
@@ -233,7 +233,7 @@ pub struct BenchTest {
     pub sample_hz: f64,
 }
 
-/// Record channels (DESIGN.md strut bench test), true values.
+/// Record channels (strut bench test of docs/records.md), true values.
 #[derive(Debug, Clone, Default, PartialEq)]
 pub struct StrutRun {
     /// time (s)

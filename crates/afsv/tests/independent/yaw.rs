@@ -27,7 +27,7 @@
 //!   m L^2 to the inertia a second time (our own Newton-Euler derivation: eliminating the
 //!   joint force from each unit's lateral and yaw balance gives exactly Eq 3.13 with I
 //!   instead of I + m L^2; the notes make the same choice).
-//! * Axes: x forward, y right, yaw positive in the right-hand turn (DESIGN.md), so the
+//! * Axes: x forward, y right, yaw positive in the right-hand turn (docs/records.md), so the
 //!   printed equations are used as printed; positive T_s drives theta positive.
 //! * Eq 3.3 forces extending-positive for both struts; Eq 3.1 torque; Eq 3.7 volumes with
 //!   d = l - l0 for both struts; their theta-derivatives give the flow terms of Eq 3.4.
@@ -438,7 +438,7 @@ impl Steer {
     }
 }
 
-/// Record channels (DESIGN.md vehicle steering test), true values (no noise).
+/// Record channels (vehicle steering test of docs/records.md), true values (no noise).
 #[derive(Debug, Clone, Default, PartialEq)]
 pub struct YawRun {
     /// time (s)
