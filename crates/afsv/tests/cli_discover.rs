@@ -7,22 +7,7 @@ use cli_support::{afsv, scratch};
 fn synth_then_discover_names_the_hidden_effect() {
     let data = tmp("data");
     let report = tmp("report");
-    let out = afsv(&[
-        "synth",
-        "--model",
-        "hps-strut",
-        "--effects",
-        "gas-heat-transfer=3",
-        "--seed",
-        "5",
-        "-o",
-        data.to_str().unwrap(),
-    ]);
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
+    synth("hps-strut", "gas-heat-transfer=3", "5", &data);
     assert!(data.join("truth.json").is_file());
     let before: Vec<_> = std::fs::read_dir(data.join("train"))
         .unwrap()
@@ -119,20 +104,7 @@ fn bad_input_gives_one_line_errors() {
 #[test]
 fn overlapping_sets_and_outputs_among_inputs_are_refused_up_front() {
     let data = tmp("guard");
-    let out = afsv(&[
-        "synth",
-        "--model",
-        "hps-strut",
-        "--seed",
-        "3",
-        "-o",
-        data.to_str().unwrap(),
-    ]);
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
+    synth("hps-strut", "none", "3", &data);
     let train = data.join("train");
     let first = std::fs::read_dir(&train)
         .unwrap()
@@ -227,22 +199,7 @@ fn records_written_elsewhere_are_read_and_the_effect_is_named() {
     let data = tmp("elsewhere-synth");
     let foreign = tmp("elsewhere");
     let report = tmp("elsewhere-report");
-    let out = afsv(&[
-        "synth",
-        "--model",
-        "yaw-plane",
-        "--effects",
-        "valve-lag",
-        "--seed",
-        "11",
-        "-o",
-        data.to_str().unwrap(),
-    ]);
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
+    synth("yaw-plane", "valve-lag", "11", &data);
     for set in ["train", "holdout"] {
         std::fs::create_dir_all(foreign.join(set)).unwrap();
         for entry in std::fs::read_dir(data.join(set)).unwrap().flatten() {
@@ -367,22 +324,7 @@ fn records_written_elsewhere_are_read_and_the_effect_is_named() {
 #[test]
 fn sign_conventions_in_words_are_refused_and_both_ways_forward_work() {
     let data = tmp("conv-synth");
-    let out = afsv(&[
-        "synth",
-        "--model",
-        "hps-strut",
-        "--effects",
-        "gas-heat-transfer=3",
-        "--seed",
-        "9",
-        "-o",
-        data.to_str().unwrap(),
-    ]);
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
+    synth("hps-strut", "gas-heat-transfer=3", "9", &data);
     let words = tmp("conv-words");
     let flipped = tmp("conv-flipped");
     for set in ["train", "holdout"] {
@@ -474,6 +416,26 @@ fn sign_conventions_in_words_are_refused_and_both_ways_forward_work() {
     for d in [&data, &words, &flipped] {
         let _ = std::fs::remove_dir_all(d);
     }
+}
+
+/// `afsv synth --model MODEL --effects EFFECTS --seed SEED -o DIR`, which must succeed.
+fn synth(model: &str, effects: &str, seed: &str, dir: &std::path::Path) {
+    let out = afsv(&[
+        "synth",
+        "--model",
+        model,
+        "--effects",
+        effects,
+        "--seed",
+        seed,
+        "-o",
+        dir.to_str().unwrap(),
+    ]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
 }
 
 fn tmp(name: &str) -> std::path::PathBuf {
