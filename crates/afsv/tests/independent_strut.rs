@@ -25,7 +25,6 @@ use independent::strut::{
     bench_programme, simulate_strut, BenchTest, StrutData, StrutHidden, StrutRun, STRUT_NOISE,
 };
 use independent::{default_size, strut_record_set, STRUT_EFFECTS};
-use std::path::{Path, PathBuf};
 
 fn rms_diff(a: &[f64], b: &[f64]) -> f64 {
     let n = a.len().min(b.len());
@@ -209,45 +208,25 @@ fn each_hidden_effect_changes_the_outputs_beyond_the_noise() {
     }
 }
 
-fn scratch(name: &str) -> PathBuf {
-    let d = Path::new(env!("CARGO_TARGET_TMPDIR")).join(format!("independent-strut-{name}"));
-    let _ = std::fs::remove_dir_all(&d);
-    d
-}
-
-fn files(dir: &Path) -> Vec<(String, Vec<u8>)> {
-    let mut v = Vec::new();
-    for sub in ["train", "holdout"] {
-        let mut names: Vec<_> = std::fs::read_dir(dir.join(sub))
-            .unwrap()
-            .map(|e| e.unwrap().file_name().into_string().unwrap())
-            .collect();
-        names.sort();
-        for n in names {
-            v.push((
-                format!("{sub}/{n}"),
-                std::fs::read(dir.join(sub).join(&n)).unwrap(),
-            ));
-        }
-    }
-    v.push((
-        "truth.json".into(),
-        std::fs::read(dir.join("truth.json")).unwrap(),
-    ));
-    v
-}
-
 #[test]
 fn record_set_has_the_expected_files_sidecars_and_is_deterministic() {
-    let a = scratch("a");
-    let b = scratch("b");
-    let c = scratch("c");
+    let a = independent::scratch("strut-a");
+    let b = independent::scratch("strut-b");
+    let c = independent::scratch("strut-c");
     strut_record_set(&a, Some(("gas-heat-transfer", 2.0)), 3);
     strut_record_set(&b, Some(("gas-heat-transfer", 2.0)), 3);
     strut_record_set(&c, Some(("gas-heat-transfer", 2.0)), 4);
-    let fa = files(&a);
-    assert_eq!(fa, files(&b), "same seed must give identical bytes");
-    assert_ne!(fa, files(&c), "another seed must give other noise");
+    let fa = independent::set_files(&a);
+    assert_eq!(
+        fa,
+        independent::set_files(&b),
+        "same seed must give identical bytes"
+    );
+    assert_ne!(
+        fa,
+        independent::set_files(&c),
+        "another seed must give other noise"
+    );
 
     let header = "time_s,displacement_m,velocity_m_s,force_n,p_piston_pa,p_rod_pa";
     let mut freqs = std::collections::BTreeMap::new();

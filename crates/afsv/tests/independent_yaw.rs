@@ -21,7 +21,6 @@ use independent::yaw::{
     simulate_yaw, Steer, YawHidden, YawLoad, YawParams, YawRun, YAW_KINDS, YAW_NOISE,
 };
 use independent::{default_size, yaw_record_set, YAW_EFFECTS};
-use std::path::{Path, PathBuf};
 
 /// RMS difference over the standard deviation of the reference.
 fn nrmse(a: &[f64], reference: &[f64]) -> f64 {
@@ -299,45 +298,25 @@ fn each_hidden_effect_changes_the_outputs_beyond_the_noise() {
     }
 }
 
-fn scratch(name: &str) -> PathBuf {
-    let d = Path::new(env!("CARGO_TARGET_TMPDIR")).join(format!("independent-yaw-{name}"));
-    let _ = std::fs::remove_dir_all(&d);
-    d
-}
-
-fn files(dir: &Path) -> Vec<(String, Vec<u8>)> {
-    let mut v = Vec::new();
-    for sub in ["train", "holdout"] {
-        let mut names: Vec<_> = std::fs::read_dir(dir.join(sub))
-            .unwrap()
-            .map(|e| e.unwrap().file_name().into_string().unwrap())
-            .collect();
-        names.sort();
-        for n in names {
-            v.push((
-                format!("{sub}/{n}"),
-                std::fs::read(dir.join(sub).join(&n)).unwrap(),
-            ));
-        }
-    }
-    v.push((
-        "truth.json".into(),
-        std::fs::read(dir.join("truth.json")).unwrap(),
-    ));
-    v
-}
-
 #[test]
 fn record_set_has_the_expected_files_sidecars_and_is_deterministic() {
-    let a = scratch("a");
-    let b = scratch("b");
-    let c = scratch("c");
+    let a = independent::scratch("yaw-a");
+    let b = independent::scratch("yaw-b");
+    let c = independent::scratch("yaw-c");
     yaw_record_set(&a, Some(("valve-lag", 0.04)), 8, 4, 8.0, 11);
     yaw_record_set(&b, Some(("valve-lag", 0.04)), 8, 4, 8.0, 11);
     yaw_record_set(&c, Some(("valve-lag", 0.04)), 8, 4, 8.0, 12);
-    let fa = files(&a);
-    assert_eq!(fa, files(&b), "same seed must give identical bytes");
-    assert_ne!(fa, files(&c), "another seed must give other noise");
+    let fa = independent::set_files(&a);
+    assert_eq!(
+        fa,
+        independent::set_files(&b),
+        "same seed must give identical bytes"
+    );
+    assert_ne!(
+        fa,
+        independent::set_files(&c),
+        "another seed must give other noise"
+    );
 
     let header = "time_s,steer_wheel_deg,speed_m_s,articulation_deg,strut_left_disp_m,p_c_pa,p_r_pa,yaw_rate_front_deg_s";
     let mut train_speeds = Vec::new();
@@ -416,7 +395,7 @@ fn record_set_has_the_expected_files_sidecars_and_is_deterministic() {
     );
 
     // without a hidden effect, truth.json says so
-    let d = scratch("none");
+    let d = independent::scratch("yaw-none");
     yaw_record_set(&d, None, 4, 4, 3.0, 5);
     let truth: serde_json::Value =
         serde_json::from_str(&std::fs::read_to_string(d.join("truth.json")).unwrap()).unwrap();

@@ -38,3 +38,34 @@ pub fn default_size(name: &str) -> f64 {
         other => panic!("unknown hidden effect `{other}`"),
     }
 }
+
+/// A fresh folder for a record set under cargo's per-test temporary directory.
+pub fn scratch(name: &str) -> std::path::PathBuf {
+    let d = std::path::Path::new(env!("CARGO_TARGET_TMPDIR")).join(format!("independent-{name}"));
+    let _ = std::fs::remove_dir_all(&d);
+    d
+}
+
+/// Every file of a record set written by [`yaw_record_set`] or [`strut_record_set`] (train,
+/// holdout, truth.json) with its bytes, in a fixed order, for determinism checks.
+pub fn set_files(dir: &std::path::Path) -> Vec<(String, Vec<u8>)> {
+    let mut v = Vec::new();
+    for sub in ["train", "holdout"] {
+        let mut names: Vec<_> = std::fs::read_dir(dir.join(sub))
+            .unwrap()
+            .map(|e| e.unwrap().file_name().into_string().unwrap())
+            .collect();
+        names.sort();
+        for n in names {
+            v.push((
+                format!("{sub}/{n}"),
+                std::fs::read(dir.join(sub).join(&n)).unwrap(),
+            ));
+        }
+    }
+    v.push((
+        "truth.json".into(),
+        std::fs::read(dir.join("truth.json")).unwrap(),
+    ));
+    v
+}
