@@ -96,10 +96,12 @@ pub trait ParamSet {
     /// The scalar parameters, in a fixed order (the index of [`ParamSet::value`]).
     fn specs(&self) -> &'static [ParamSpec];
 
-    /// Current value of parameter `index` of [`ParamSet::specs`].
+    /// Current value of parameter `index` of [`ParamSet::specs`]. Implementations panic
+    /// for `index >= specs().len()`, like slice indexing.
     fn value(&self, index: usize) -> f64;
 
-    /// Store `value` in parameter `index` without any check.
+    /// Store `value` in parameter `index` without any check (panics like
+    /// [`ParamSet::value`]).
     fn assign(&mut self, index: usize, value: f64);
 
     /// The set's own validation of the whole set, as a message naming the bad field.
