@@ -12,8 +12,8 @@
 //! - [`summary`]: measured-vs-target summary of the nominal terrain for `afsv evaluate`.
 //! - [`surface`]: a two-track profile laid out on the ground plane as a
 //!   `vehicle_components::Terrain` ([`TwoTrackTerrain`], [`SurfaceParams`]).
-//! - [`registry`]: the synthesis spec and the surface parameters by name
-//!   (`vehicle_components::ParamSet`).
+//! - `registry`: the synthesis spec and the surface parameters by name
+//!   (`vehicle_components::ParamSet`, names in `docs/terrain-psd.md`).
 //!
 //! Units: elevations in m, spatial frequency `n` in cycles/m, PSDs in m^2/(cycle/m) = m^3.
 //! Nothing here panics on bad input: constructors and functions return [`TerrainError`].
@@ -31,7 +31,7 @@ pub mod coherence;
 pub mod error;
 mod fft;
 pub mod psd;
-pub mod registry;
+mod registry;
 pub mod spectral;
 pub mod summary;
 pub mod surface;

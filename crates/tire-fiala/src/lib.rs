@@ -29,6 +29,7 @@ pub mod error;
 pub mod fiala;
 pub mod model;
 pub mod params;
+mod registry;
 pub mod relaxation;
 mod table;
 pub mod terrain;
