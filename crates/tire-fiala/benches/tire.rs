@@ -1,9 +1,14 @@
-//! Cost of one force evaluation (target well under 100 ns) and of one enveloping contact
-//! per wheel per integration step, on a rough polyline profile.
+//! Cost of one force evaluation (target well under 100 ns), of one enveloping contact per
+//! wheel per integration step on a rough polyline profile, and of one evaluation of the
+//! whole tire assembly on a rough terrain.
 
 use criterion::{criterion_group, criterion_main, Criterion};
 use std::hint::black_box;
-use tire_fiala::{Envelope, EnvelopeMethod, Fiala, HandlingModel, PolylineProfile, TireParams};
+use tire_fiala::{
+    Envelope, EnvelopeMethod, Fiala, HandlingModel, PolylineProfile, TireAssembly, TireParams,
+    WheelInput,
+};
+use vehicle_components::{Component, Terrain, DEFAULT_FRICTION};
 
 fn forces(c: &mut Criterion) {
     let tire = Fiala::new(&TireParams::nominal()).unwrap();
@@ -44,5 +49,44 @@ fn envelope(c: &mut Criterion) {
     }
 }
 
-criterion_group!(benches, forces, envelope);
+/// The bench profile's sum of sines, with a gentle cross slope.
+struct Rough;
+
+impl Terrain for Rough {
+    fn height(&self, x: f64, y: f64) -> f64 {
+        0.03 * (1.3 * x).sin() + 0.01 * (7.1 * x).sin() + 0.004 * (23.0 * x).cos() + 0.01 * y
+    }
+    fn friction(&self, _x: f64, _y: f64) -> f64 {
+        DEFAULT_FRICTION
+    }
+}
+
+fn assembly(c: &mut Criterion) {
+    let tire = TireAssembly::new(
+        &TireParams::nominal(),
+        EnvelopeMethod::TandemCams,
+        0.02,
+        Rough,
+    )
+    .unwrap();
+    let mut x = 10.0;
+    let mut d = [0.0; 2];
+    c.bench_function("tire_assembly_cams_per_wheel_step", |b| {
+        b.iter(|| {
+            x += 0.01;
+            if x > 190.0 {
+                x = 10.0;
+            }
+            let input = WheelInput {
+                position: [x, 1.14, 0.92],
+                velocity: [10.0, 0.3, 0.0],
+                heading: 0.05,
+                spin: 10.5,
+            };
+            black_box(tire.evaluate(black_box(&input), black_box(&[0.01, 0.02]), &mut d))
+        })
+    });
+}
+
+criterion_group!(benches, forces, envelope, assembly);
 criterion_main!(benches);

@@ -7,6 +7,8 @@
 //!   cornering stiffness; [`cornering`]: the linear model of Eq 3.15, the Table 6.2
 //!   stiffness table and Eqs 1.3 / 1.4, all behind [`HandlingModel`];
 //! - [`relaxation`]: first-order slip lag (Eqs 2.7, 3.16) as state derivatives;
+//! - [`assembly`]: the four composed as one tire on any `vehicle_components::Terrain`
+//!   ([`TireAssembly`], a `vehicle_components::Component`);
 //! - [`vertical`]: point contact with lift-off (Eq 2.1) and a load-deflection table;
 //! - [`terrain`] and [`envelope`]: the single-track [`Profile`] under a wheel (from any
 //!   `vehicle_components::Terrain`) and the circle-line (Eqs 2.2-2.4) and tandem-cam
@@ -23,6 +25,7 @@
 //! assert!(f.fy > 0.0 && f.fy < 0.8 * 150e3);
 //! ```
 
+pub mod assembly;
 pub mod cornering;
 pub mod envelope;
 pub mod error;
@@ -35,6 +38,7 @@ mod table;
 pub mod terrain;
 pub mod vertical;
 
+pub use assembly::{TireAssembly, TireOutput, WheelInput};
 pub use cornering::{
     CorneringStiffnessTable, ExponentialCornering, LinearCornering, TractionDependentCornering,
 };
