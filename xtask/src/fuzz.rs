@@ -504,6 +504,7 @@ const GROUPS: &[(&str, u32)] = &[
     ("params check", 3),
     ("params dump", 1),
     ("evaluate", 1),
+    ("check", 1),
     ("synth", 2),
     ("discover", 3),
 ];
@@ -920,6 +921,10 @@ fn make_case(seed: u64, id: usize, groups: &[(&'static str, u32)], yaw_params: &
         "evaluate" => {
             let v = g.bad();
             g.push_opt("--speed-kmh", &v);
+        }
+        "check" => {
+            let v = g.bad();
+            g.push_opt("--seed", &v);
         }
         "synth" => {
             let m = g.rng.pick(&["hps-strut", "yaw-plane", "bogus"]).to_string();
