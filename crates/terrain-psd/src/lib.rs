@@ -10,6 +10,10 @@
 //! - [`spectral`]: Welch PSD, cross-spectral density, magnitude-squared coherence (Eq 2.9),
 //!   cross-slope (roll excitation) PSD of Fig 2.7.
 //! - [`summary`]: measured-vs-target summary of the nominal terrain for `afsv evaluate`.
+//! - [`surface`]: a two-track profile laid out on the ground plane as a
+//!   `vehicle_components::Terrain` ([`TwoTrackTerrain`], [`SurfaceParams`]).
+//! - `registry`: the synthesis spec and the surface parameters by name
+//!   (`vehicle_components::ParamSet`, names in `docs/terrain-psd.md`).
 //!
 //! Units: elevations in m, spatial frequency `n` in cycles/m, PSDs in m^2/(cycle/m) = m^3.
 //! Nothing here panics on bad input: constructors and functions return [`TerrainError`].
@@ -27,8 +31,10 @@ pub mod coherence;
 pub mod error;
 mod fft;
 pub mod psd;
+mod registry;
 pub mod spectral;
 pub mod summary;
+pub mod surface;
 pub mod synth;
 
 pub use coherence::CoherenceModel;
@@ -41,4 +47,5 @@ pub use spectral::{
 pub use summary::{
     default_terrain_summary, terrain_summary, Criterion, Fidelity, Summary, SummaryConfig,
 };
+pub use surface::{SurfaceParams, TwoTrackTerrain};
 pub use synth::{synthesize, synthesize_track, TwoTrackProfile, TwoTrackSpec};

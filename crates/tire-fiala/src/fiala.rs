@@ -89,13 +89,41 @@ impl Fiala {
 impl HandlingModel for Fiala {
     #[inline]
     fn forces(&self, fz: f64, kappa: f64, alpha: f64) -> TireForces {
+        self.forces_on_surface(fz, kappa, alpha, 1.0)
+    }
+}
+
+impl Fiala {
+    /// Peak friction coefficient U_max of the parameter set (-).
+    #[inline]
+    pub fn peak_friction(&self) -> f64 {
+        self.u_max
+    }
+
+    /// Forces on a surface whose friction is `friction_scale` times the one the tire's
+    /// U_max / U_min were given for: `U = friction_scale (U_max - (U_max - U_min) S)`, the
+    /// rest as in [`HandlingModel::forces`] (which is `friction_scale = 1`). A
+    /// `friction_scale` that is not finite or below 0 counts as 0 (no horizontal force).
+    #[inline]
+    pub fn forces_on_surface(
+        &self,
+        fz: f64,
+        kappa: f64,
+        alpha: f64,
+        friction_scale: f64,
+    ) -> TireForces {
         if !loaded(fz) {
             return TireForces::ZERO;
         }
+        let scale = if friction_scale.is_finite() {
+            friction_scale.max(0.0)
+        } else {
+            0.0
+        };
         let alpha = clamp_alpha(alpha);
         let tan_a = alpha.tan();
         let s = (kappa * kappa + tan_a * tan_a).sqrt().min(1.0);
-        let u = self.u_max - (self.u_max - self.u_min) * s;
+        let u = scale * (self.u_max - (self.u_max - self.u_min) * s);
         let ufz = u * fz;
 
         // Longitudinal force: linear up to the critical slip, saturating beyond.
@@ -172,6 +200,25 @@ mod tests {
         assert!((f.fx - 68_780.0).abs() < 1e-6, "{}", f.fx);
         assert_eq!(f.fy, 0.0);
         assert_eq!(f.mz, 0.0);
+    }
+
+    #[test]
+    fn surface_friction_scales_the_friction_coefficient() {
+        let t = tire();
+        // Full sliding at 60 deg: F_y = U F_z with U = U_min (S = 1).
+        let a = 60f64.to_radians();
+        assert_eq!(t.forces_on_surface(1e5, 0.0, a, 1.0), t.forces(1e5, 0.0, a));
+        let half = t.forces_on_surface(1e5, 0.0, a, 0.5);
+        assert!((half.fy - 0.5 * 0.6 * 1e5).abs() < 1e-6, "{half:?}");
+        // The linear range is friction independent, the rolling resistance too.
+        let small = t.forces_on_surface(1e5, 1e-4, 0.0, 0.5);
+        assert!((small.fx - 1e6 * 1e-4).abs() < 1e-9);
+        assert_eq!(small.my, t.forces(1e5, 1e-4, 0.0).my);
+        for bad in [0.0, -1.0, f64::NAN] {
+            let f = t.forces_on_surface(1e5, 0.2, 0.1, bad);
+            assert_eq!((f.fx, f.fy, f.mz), (0.0, 0.0, 0.0), "{bad}");
+        }
+        assert_eq!(t.peak_friction(), 0.8);
     }
 
     #[test]

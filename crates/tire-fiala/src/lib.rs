@@ -8,8 +8,9 @@
 //!   stiffness table and Eqs 1.3 / 1.4, all behind [`HandlingModel`];
 //! - [`relaxation`]: first-order slip lag (Eqs 2.7, 3.16) as state derivatives;
 //! - [`vertical`]: point contact with lift-off (Eq 2.1) and a load-deflection table;
-//! - [`terrain`] and [`envelope`]: a height-query trait and the circle-line (Eqs 2.2-2.4)
-//!   and tandem-cam (Eqs 6.1-6.3) effective contact.
+//! - [`terrain`] and [`envelope`]: the single-track [`Profile`] under a wheel (from any
+//!   `vehicle_components::Terrain`) and the circle-line (Eqs 2.2-2.4) and tandem-cam
+//!   (Eqs 6.1-6.3) effective contact.
 //!
 //! Axes and signs: ISO wheel axes (x forward, y left, z up); slip angle with the sign of
 //! Eq 3.17 (`alpha = -atan(V_sy/|V_x|)`), so `F_y ≈ C_alpha alpha` is positive to the left;
@@ -28,6 +29,7 @@ pub mod error;
 pub mod fiala;
 pub mod model;
 pub mod params;
+mod registry;
 pub mod relaxation;
 mod table;
 pub mod terrain;
@@ -45,5 +47,5 @@ pub use relaxation::{
     contact_velocity_lag_rate, regularised_speed, slip_lag_rate, Relaxation,
     LOW_SPEED_REGULARISATION,
 };
-pub use terrain::{Flat, PolylineProfile, Profile, Terrain, Track};
+pub use terrain::{PolylineProfile, Profile, Track};
 pub use vertical::{LoadDeflectionTable, VerticalContact};

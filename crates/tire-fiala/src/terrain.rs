@@ -1,29 +1,17 @@
-//! The terrain seen by a tire: a height query, so any profile source works (a synthesized
-//! two-track profile, a measured CSV, an analytic bump, a closure).
+//! The ground seen by one wheel: a single track ([`Profile`], elevation along x) for the
+//! in-plane enveloping, taken from any [`vehicle_components::Terrain`] ([`Track`]), a
+//! measured or synthesized polyline, a closure or level ground.
+
+use vehicle_components::{FlatTerrain, Terrain};
 
 use crate::error::TireError;
 
-/// Terrain elevation z (m, positive up) at a point (x, y) of the ground plane (m).
-///
-/// Implementations should return finite heights; non-finite heights are ignored by the
-/// enveloping routines (treated as "no ground there").
-pub trait Terrain {
-    /// Elevation at longitudinal position `x` and lateral position `y`.
-    fn height(&self, x: f64, y: f64) -> f64;
-}
-
 /// A single track: terrain elevation (m) along a line, as a function of `x` (m).
-/// This is what the in-plane enveloping of one wheel needs.
+/// This is what the in-plane enveloping of one wheel needs. Non-finite heights are ignored
+/// by the enveloping routines (treated as "no ground there").
 pub trait Profile {
     /// Elevation at longitudinal position `x`.
     fn height_at(&self, x: f64) -> f64;
-}
-
-impl<T: Terrain + ?Sized> Terrain for &T {
-    #[inline]
-    fn height(&self, x: f64, y: f64) -> f64 {
-        (**self).height(x, y)
-    }
 }
 
 /// Any `Fn(x) -> z` is a profile.
@@ -34,24 +22,11 @@ impl<F: Fn(f64) -> f64> Profile for F {
     }
 }
 
-/// Level ground at elevation `z` (m): both a [`Terrain`] and a [`Profile`].
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Flat {
-    /// Elevation (m).
-    pub z: f64,
-}
-
-impl Terrain for Flat {
-    #[inline]
-    fn height(&self, _x: f64, _y: f64) -> f64 {
-        self.z
-    }
-}
-
-impl Profile for Flat {
+/// Level ground is the same profile on every line.
+impl Profile for FlatTerrain {
     #[inline]
     fn height_at(&self, _x: f64) -> f64 {
-        self.z
+        self.elevation()
     }
 }
 
@@ -165,6 +140,9 @@ mod tests {
             fn height(&self, x: f64, y: f64) -> f64 {
                 0.1 * x + 0.01 * y
             }
+            fn friction(&self, _x: f64, _y: f64) -> f64 {
+                0.8
+            }
         }
         let t = Track {
             terrain: Slope,
@@ -173,6 +151,7 @@ mod tests {
         assert!((t.height_at(1.0) - 0.12).abs() < 1e-15);
         let f = |x: f64| 2.0 * x;
         assert_eq!(f.height_at(3.0), 6.0);
-        assert_eq!(Flat { z: 0.3 }.height(1.0, 2.0), 0.3);
+        let flat = FlatTerrain::new(0.3, 0.8).unwrap();
+        assert_eq!(flat.height_at(1.0), 0.3);
     }
 }

@@ -2,9 +2,14 @@
 
 use proptest::prelude::*;
 use tire_fiala::{
-    Envelope, EnvelopeMethod, Flat, LoadDeflectionTable, PolylineProfile, Profile, TireParams,
+    Envelope, EnvelopeMethod, LoadDeflectionTable, PolylineProfile, Profile, TireParams,
     VerticalContact,
 };
+use vehicle_components::{FlatTerrain, DEFAULT_FRICTION};
+
+fn flat(z: f64) -> FlatTerrain {
+    FlatTerrain::new(z, DEFAULT_FRICTION).unwrap()
+}
 
 const METHODS: [EnvelopeMethod; 2] = [EnvelopeMethod::CircleLine, EnvelopeMethod::TandemCams];
 
@@ -16,7 +21,7 @@ fn env(method: EnvelopeMethod) -> Envelope {
 fn flat_ground_gives_r_minus_wheel_height() {
     for m in METHODS {
         for ground in [0.0, 1.7, -3.2] {
-            let flat = Flat { z: ground };
+            let flat = flat(ground);
             for z in [0.9, 0.95, 0.999, 0.8] {
                 let c = env(m).contact(&flat, 12.345, ground + z);
                 assert!((c.deflection - (1.0 - z)).abs() < 1e-9, "{m:?} {z} {c:?}");
@@ -35,7 +40,7 @@ fn contact_length_follows_the_circle_geometry() {
     for m in METHODS {
         let mut prev = 0.0;
         for d in [0.01, 0.03, 0.06, 0.1, 0.15] {
-            let c = env(m).contact(&Flat { z: 0.0 }, 0.0, 1.0 - d);
+            let c = env(m).contact(&flat(0.0), 0.0, 1.0 - d);
             let expect = 2.0 * (2.0 * d - d * d).sqrt();
             assert!((c.contact_length - expect).abs() < 1e-6, "{m:?} {d} {c:?}");
             assert!(c.contact_length > prev);
@@ -58,7 +63,7 @@ fn wheel_above_ground_gives_exactly_zero_force() {
         }
     }
     // Clearance is measured: 5 cm above flat ground.
-    let c = env(EnvelopeMethod::TandemCams).contact(&Flat { z: 0.0 }, 0.0, 1.05);
+    let c = env(EnvelopeMethod::TandemCams).contact(&flat(0.0), 0.0, 1.05);
     assert!((c.deflection + 0.05).abs() < 1e-9);
 }
 
