@@ -17,6 +17,7 @@
 //! right-strut rod side) and the left strut extends. A positive torque drives theta
 //! positive. See `docs/afs-hydraulics.md` for the derivation and the unit choices.
 
+mod component;
 mod error;
 pub mod extensions;
 pub mod fluid;

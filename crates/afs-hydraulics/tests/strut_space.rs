@@ -6,6 +6,7 @@ use afs_hydraulics::{
     AfsExtensions, AfsInput, AfsParams, AfsSystem, CoulombFriction, StrutInput, ValveLag,
 };
 use proptest::prelude::*;
+use vehicle_components::{Component, StateLayout};
 
 const DEG: f64 = std::f64::consts::PI / 180.0;
 
@@ -157,4 +158,41 @@ proptest! {
         prop_assert!((de_dt + power).abs() <= 1e-5 * power.abs().max(1.0),
             "dE/dt = {de_dt}, -ΣFḋ = {}", -power);
     }
+}
+
+#[test]
+fn the_strut_core_is_a_component_of_the_layer() {
+    let sys = with_friction_and_lag();
+    let infos = Component::states(&sys);
+    assert_eq!(infos.len(), 4);
+    let names: Vec<&str> = infos.iter().map(|s| s.name).collect();
+    assert_eq!(
+        names,
+        ["p_c_pa", "p_r_pa", "theta_h_rad", "valve_spool_rad"]
+    );
+    assert_eq!(Component::states(&nominal()).len(), 3);
+    let mut layout = StateLayout::new();
+    let block = layout.add("afs", infos).unwrap();
+    assert_eq!(layout.range(block), 0..4);
+    let mut y = [0.0; 4];
+    Component::initial_state(&sys, &StrutInput::default(), &mut y);
+    let ps = sys.params().standby_pressure_pa;
+    assert_eq!(y, [ps, ps, 0.0, 0.0]);
+    // evaluate is the strut core; record writes its channels
+    let input = StrutInput {
+        disp_left: 0.02,
+        disp_right: -0.01,
+        vel_left: 0.1,
+        vel_right: -0.05,
+        steer_wheel: 0.3,
+    };
+    let (mut d1, mut d2) = ([0.0; 4], [0.0; 4]);
+    let a = Component::evaluate(&sys, &input, &y, &mut d1);
+    let b = sys.strut_derivatives(&input, &y, &mut d2);
+    assert_eq!((a, d1), (b, d2));
+    let mut row = vec![0.0; sys.channels().len()];
+    sys.record(&a, &mut row);
+    assert_eq!(row[0], a.force_left);
+    assert_eq!(row[9], a.strut_power);
+    assert!(row.iter().all(|v| v.is_finite()));
 }
