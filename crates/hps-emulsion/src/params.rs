@@ -2,7 +2,7 @@
 //! and seal friction, with validation and the two built-in struts.
 
 use crate::error::{non_negative, positive, HpsError};
-use crate::lab::{identify_lab, LabConfig, LabReported};
+use crate::lab::{lab_params, LabConfig, LabReported, LAB_GAS_LENGTH_M};
 use serde::{Deserialize, Serialize};
 
 /// Seal-friction parameters of Eqs 5.2-5.3.
@@ -154,10 +154,12 @@ impl StrutParams {
         }
     }
 
-    /// Laboratory strut of chapter 5 (one or two bleed orifices), identified from the numbers
-    /// the text reports ([`LabReported::paper`]) by [`identify_lab`]; see `docs/hps-emulsion.md`.
+    /// Laboratory strut of chapter 5 (one or two bleed orifices), derived from the numbers
+    /// the text reports ([`LabReported::paper`]) with the gas-column length
+    /// [`LAB_GAS_LENGTH_M`] that [`crate::lab::identify_lab`] fits to them (a constant: nothing
+    /// is fitted here); see `docs/hps-emulsion.md`.
     pub fn lab(config: LabConfig) -> Self {
-        identify_lab(&LabReported::paper(), config).params
+        lab_params(&LabReported::paper(), config, LAB_GAS_LENGTH_M)
     }
 
     /// Annular rod-side area `A_hc - A_hr` (m^2).
