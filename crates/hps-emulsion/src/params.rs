@@ -7,6 +7,7 @@ use serde::{Deserialize, Serialize};
 
 /// Seal-friction parameters of Eqs 5.2-5.3.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
 pub struct FrictionParams {
     /// Viscous friction coefficient mu_v (N s/m), Eq 5.2.
     pub mu_v: f64,
@@ -44,6 +45,7 @@ impl FrictionParams {
 /// Complete parameter set of one strut. SI units, absolute pressures; the reference state
 /// (subscript 0) is the static mid-stroke position `z_s = 0` at pressure `p_h0` in both chambers.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
 pub struct StrutParams {
     /// Effective piston area A_hc (m^2), Eq 5.1.
     pub a_hc: f64,
