@@ -503,7 +503,9 @@ const GROUPS: &[(&str, u32)] = &[
     ("measures check", 1),
     ("params check", 3),
     ("params dump", 1),
+    ("params list", 1),
     ("evaluate", 1),
+    ("check", 1),
     ("synth", 2),
     ("discover", 3),
 ];
@@ -905,12 +907,38 @@ fn make_case(seed: u64, id: usize, groups: &[(&'static str, u32)], yaw_params: &
             g.push_opt("--iir-fs", &v);
         }
         "params check" => {
-            g.yaw_params_file("p.json");
-            g.arg("yaw-plane");
+            let set = g
+                .rng
+                .pick(&["yaw-plane", "strut", "tire", "terrain", "surface"]);
+            if set == "yaw-plane" {
+                g.yaw_params_file("p.json");
+            } else {
+                let text = g.rng.pick(&[
+                    "{}",
+                    "{\"bogus\": 1}",
+                    "{\"a_hc\": \"x\"}",
+                    "{\"u_max\": -1e400}",
+                    "[]",
+                    "{\"friction\": {\"mu_v\": ",
+                    "{\"psd\": {\"alpha_r\": 0, \"waviness\": 2}}",
+                    "{\"track_width_m\": 1e308, \"friction\": -1}",
+                ]);
+                g.file("p.json", text.as_bytes().to_vec());
+            }
+            g.arg(set);
             g.arg("p.json");
         }
+        "params list" => {
+            let set = g
+                .rng
+                .pick(&["yaw-plane", "strut", "tire", "terrain", "surface", "bogus"]);
+            g.arg(set);
+        }
         "params dump" => {
-            g.arg("yaw-plane");
+            let set = g
+                .rng
+                .pick(&["yaw-plane", "strut", "tire", "terrain", "surface"]);
+            g.arg(set);
             if g.rng.chance(0.5) {
                 g.file("p.json", b"{\"mine\": true}\n".to_vec());
             }
@@ -920,6 +948,10 @@ fn make_case(seed: u64, id: usize, groups: &[(&'static str, u32)], yaw_params: &
         "evaluate" => {
             let v = g.bad();
             g.push_opt("--speed-kmh", &v);
+        }
+        "check" => {
+            let v = g.bad();
+            g.push_opt("--seed", &v);
         }
         "synth" => {
             let m = g.rng.pick(&["hps-strut", "yaw-plane", "bogus"]).to_string();

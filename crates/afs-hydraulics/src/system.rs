@@ -1,14 +1,14 @@
-//! The AFS component: inputs (articulation, its rate, steering-wheel angle), states
-//! (P_c, P_r, theta_h), outputs (derivatives, strut forces, torque, flows, power).
+//! The AFS component: parameters, states (P_c, P_r, theta_h), the supply flow, and the
+//! planar adapter (articulation, its rate, steering-wheel angle -> joint torque) over the
+//! strut-space core in `strut_space`.
 
 use crate::error::AfsError;
 use crate::extensions::AfsExtensions;
-use crate::fluid::{
-    cavitation_factor, chamber_energy_const, chamber_energy_general, chamber_volumes,
-};
+use crate::fluid::{chamber_energy_const, chamber_energy_general};
 use crate::kinematics::{strut_kinematics, StrutKinematics};
 use crate::params::AfsParams;
-use crate::valve::{normalised_opening, orifice_flow, orifice_flow_slope};
+use crate::strut_space::StrutInput;
+use crate::valve::{orifice_flow, orifice_flow_slope};
 
 /// Inputs from the vehicle at one instant.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
@@ -144,15 +144,17 @@ impl AfsSystem {
     /// Chamber-group volumes (V_1, V_2) at articulation `theta` (m³), Eq 3.7.
     pub fn volumes(&self, theta: f64) -> (f64, f64) {
         let k = self.kinematics(theta);
-        let p = &self.params;
-        chamber_volumes(
-            p.dead_volume_m3,
-            p.piston_area_m2,
-            p.annulus_area_m2,
-            k.disp_left,
-            k.disp_right,
-            self.v_min,
-        )
+        self.strut_volumes(k.disp_left, k.disp_right)
+    }
+
+    /// Smallest chamber-group volume the continuity equations allow (m³).
+    pub(crate) fn min_volume(&self) -> f64 {
+        self.v_min
+    }
+
+    /// 1/(k_theta eta_g), the gerotor's rad per m³ (Eq 3.10).
+    pub(crate) fn inv_gerotor(&self) -> f64 {
+        self.inv_gerotor
     }
 
     /// Static equilibrium state at articulation `theta` with the valve centred
@@ -190,7 +192,7 @@ impl AfsSystem {
     /// chamber pressure `p_fed`: Eq 3.11 (with the inlet check valve), plus the droop
     /// extension P = P_s - r q solved by safeguarded Newton iteration.
     #[inline]
-    fn supply_flow(&self, xi: f64, p_fed: f64) -> (f64, f64) {
+    pub(crate) fn supply_flow(&self, xi: f64, p_fed: f64) -> (f64, f64) {
         let p = &self.params;
         let g = |dp: f64| {
             let q = xi
@@ -255,126 +257,44 @@ impl AfsSystem {
         }
     }
 
-    /// Evaluate the state derivatives and the outputs. Allocation-free.
+    /// Evaluate the state derivatives and the outputs from the articulation joint's motion:
+    /// the planar adapter over [`AfsSystem::strut_derivatives`]. Allocation-free.
     ///
-    /// - Eq 3.3: F_L = A_c P_c - A_r P_r - mu_v h_L dtheta, F_R = A_c P_r - A_r P_c + mu_v h_R dtheta
-    ///   (+ optional Coulomb friction); Eq 3.1: T_s = F_L h_L - F_R h_R.
-    /// - Eq 3.4 / 4.5 with Eqs 3.5-3.7: V_1/B dP_c = q_c - (A_c h_L + A_r h_R) dtheta - q_l,
-    ///   V_2/B dP_r = q_r + (A_r h_L + A_c h_R) dtheta + q_l, where (q_c, q_r) = (q_1, -q_2)
-    ///   for X > X_0 and (-q_2, q_1) for X < -X_0; cavitation floor on expansion.
-    /// - Eqs 3.9-3.12: X = theta_sw - theta_h, q_1, q_2 with the normalised opening.
-    /// - Eq 3.10: dtheta_h/dt = sign(X) q_1/(k_theta eta_g).
+    /// - Eqs 3.2, 3.8: strut lengths and arms at theta; the struts extend at
+    ///   ḋ_L = h_L dtheta and ḋ_R = -h_R dtheta.
+    /// - Eqs 3.3-3.12 in strut space (see [`AfsSystem::strut_derivatives`]).
+    /// - Eq 3.1: T_s = F_L h_L - F_R h_R (virtual work).
     ///
     /// `state.len()` and `dstate.len()` must be at least [`Self::n_states`].
     pub fn derivatives(&self, input: &AfsInput, state: &[f64], dstate: &mut [f64]) -> AfsOutput {
-        let p = &self.params;
-        let (pc, pr, theta_h) = (state[0], state[1], state[2]);
         let thd = input.theta_dot;
         let k = self.kinematics(input.theta);
-        let (ac, ar) = (p.piston_area_m2, p.annulus_area_m2);
-
-        // strut extension speeds: dl_L/dt = h_L dtheta, dl_R/dt = -h_R dtheta
-        let v_left = k.arm_left * thd;
-        let v_right = -k.arm_right * thd;
-
-        // volumes (Eq 3.7) and their rates dV_1/dt = (A_c h_L + A_r h_R) dtheta = -dV_2/dt ... (Eq 3.4)
-        let (v1, v2) = chamber_volumes(
-            p.dead_volume_m3,
-            ac,
-            ar,
-            k.disp_left,
-            k.disp_right,
-            self.v_min,
+        let s = self.strut_derivatives(
+            &StrutInput {
+                disp_left: k.disp_left,
+                disp_right: k.disp_right,
+                vel_left: k.arm_left * thd,
+                vel_right: -k.arm_right * thd,
+                steer_wheel: input.steer_wheel,
+            },
+            state,
+            dstate,
         );
-        let dv1 = (ac * k.arm_left + ar * k.arm_right) * thd;
-        let dv2 = -(ar * k.arm_left + ac * k.arm_right) * thd;
-
-        // leakage (Eqs 3.5, 3.6)
-        let (kll, klr) = if self.ext.constant_leakage_only {
-            (p.leak_const, p.leak_const)
-        } else {
-            (
-                p.leak_const + p.leak_velocity * v_left.abs(),
-                p.leak_const + p.leak_velocity * v_right.abs(),
-            )
-        };
-        let q_leak = (kll + klr) * (pc - pr);
-
-        // valve (Eqs 3.9, 3.11, 3.12); with the valve-lag extension the metering spool
-        // follows the commanded X with a first-order lag (state 3)
-        let x_cmd = input.steer_wheel - theta_h;
-        let x = match &self.ext.valve_lag {
-            None => x_cmd,
-            Some(lag) => {
-                dstate[3] = (x_cmd - state[3]) / lag.tau_s;
-                state[3]
-            }
-        };
-        let xi = normalised_opening(x, p.dead_band_rad, p.spool_limit_rad);
-        let (mut q_c, mut q_r, mut q1, mut q2, mut p_sup) =
-            (0.0, 0.0, 0.0, 0.0, p.supply_pressure_pa);
-        if xi > 0.0 {
-            let ret = |p_drain: f64| {
-                p.return_factor
-                    * xi
-                    * orifice_flow(
-                        p_drain - p.reservoir_pressure_pa,
-                        p.valve_a0_per_pa,
-                        p.valve_am,
-                        p.valve_av,
-                        p.sqrt_regularisation_pa,
-                    )
-            };
-            if x > 0.0 {
-                let (ps, qs) = self.supply_flow(xi, pc);
-                let qd = ret(pr);
-                (q_c, q_r, q1, q2, p_sup) = (qs, -qd, qs, qd, ps);
-            } else {
-                let (ps, qs) = self.supply_flow(xi, pr);
-                let qd = ret(pc);
-                (q_c, q_r, q1, q2, p_sup) = (-qd, qs, -qs, -qd, ps);
-            }
-        }
-
-        // continuity with cavitation floor (Eqs 3.4 / 4.5)
-        let net_c = q_c - dv1 - q_leak;
-        let net_r = q_r - dv2 + q_leak;
-        let mut b_c = self.bulk_modulus(pc);
-        if net_c < 0.0 {
-            b_c *= cavitation_factor(pc, p.cavitation_pressure_pa, p.cavitation_band_pa);
-        }
-        let mut b_r = self.bulk_modulus(pr);
-        if net_r < 0.0 {
-            b_r *= cavitation_factor(pr, p.cavitation_pressure_pa, p.cavitation_band_pa);
-        }
-        dstate[0] = b_c / v1 * net_c;
-        dstate[1] = b_r / v2 * net_r;
-        // gerotor (Eq 3.10); q1 is signed like X
-        dstate[2] = q1 * self.inv_gerotor;
-
-        // strut forces (Eq 3.3) and torque (Eq 3.1)
-        let mut f_l = ac * pc - ar * pr - p.seal_viscous_n_s_m * v_left;
-        let mut f_r = ac * pr - ar * pc - p.seal_viscous_n_s_m * v_right;
-        if let Some(cf) = &self.ext.coulomb_friction {
-            f_l -= cf.force_n * (v_left / cf.velocity_scale_m_s).tanh();
-            f_r -= cf.force_n * (v_right / cf.velocity_scale_m_s).tanh();
-        }
-        let torque = f_l * k.arm_left - f_r * k.arm_right;
-
+        let torque = s.force_left * k.arm_left - s.force_right * k.arm_right;
         AfsOutput {
             torque,
-            force_left: f_l,
-            force_right: f_r,
-            q_supply: q1,
-            q_return: q2,
-            supply_power: p_sup * q1.abs(),
+            force_left: s.force_left,
+            force_right: s.force_right,
+            q_supply: s.q_supply,
+            q_return: s.q_return,
+            supply_power: s.supply_power,
             strut_power: torque * thd,
-            spool_opening: x.clamp(-p.spool_limit_rad, p.spool_limit_rad),
-            valve_opening: xi,
-            p_c: pc,
-            p_r: pr,
-            supply_pressure: p_sup,
-            q_leak,
+            spool_opening: s.spool_opening,
+            valve_opening: s.valve_opening,
+            p_c: s.p_c,
+            p_r: s.p_r,
+            supply_pressure: s.supply_pressure,
+            q_leak: s.q_leak,
             strut_left_disp: k.disp_left,
             strut_right_disp: k.disp_right,
             arm_left: k.arm_left,
@@ -389,6 +309,11 @@ impl AfsSystem {
     /// and not represented (it is inactive above cavitation + band pressure).
     pub fn hydraulic_energy(&self, theta: f64, state: &[f64]) -> f64 {
         let (v1, v2) = self.volumes(theta);
+        self.group_energy(v1, v2, state)
+    }
+
+    /// Compression energy of the two chamber groups at volumes `v1`, `v2` (J).
+    pub(crate) fn group_energy(&self, v1: f64, v2: f64, state: &[f64]) -> f64 {
         let pref = self.params.reservoir_pressure_pa;
         match &self.ext.entrained_air {
             None => {

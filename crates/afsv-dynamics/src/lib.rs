@@ -17,6 +17,7 @@ pub mod inputs;
 pub mod mechanics;
 pub mod model;
 pub mod params;
+pub mod registry;
 pub mod simulate;
 
 pub use actuator::{ActuatorOutput, EquivalentTorsion, SteeringActuator};
@@ -30,4 +31,5 @@ pub use inputs::SteerInput;
 pub use mechanics::EquationForm;
 pub use model::{SteerSource, YawPlaneModel};
 pub use params::{Load, VehicleParams, YawPlaneParams};
+pub use registry::{VEHICLE_PARAMS, YAW_PLANE_PARAMS};
 pub use simulate::{simulate, Manoeuvre, SimOptions, SolverKind, SolverStats, YawRecord};

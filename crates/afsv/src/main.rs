@@ -1,5 +1,6 @@
 //! `afsv`: command-line front end of the toolkit. Every subcommand prints JSON on stdout
-//! (or writes CSV with `-o`), so results can be scripted; errors go to stderr as one line
+//! (or writes CSV with `-o`), so results can be scripted (`evaluate` and `check` print a
+//! readable summary instead when stdout is a terminal); errors go to stderr as one line
 //! and the exit code is non-zero.
 
 use clap::{Parser, Subcommand};
@@ -18,8 +19,10 @@ struct Cli {
 
 #[derive(Subcommand)]
 enum Command {
-    /// Run the main job on the built-in default vehicle and print its assessment as JSON.
+    /// Assess the built-in default vehicle: a summary on a terminal, JSON with --json or when piped.
     Evaluate(cmd::evaluate::Args),
+    /// Run the toolkit's self-checks (ISO 2631-1 weightings, terrain synthesis fidelity).
+    Check(cmd::check::Args),
     /// Find which physical effect a model is missing from measured records, add it, report the gap shrink.
     Discover(cmd::discover::DiscoverArgs),
     /// Write measurement-like records from a truth model with hidden effects and sensor noise.
@@ -77,6 +80,7 @@ fn main() -> ExitCode {
     };
     let result = match cli.command {
         Command::Evaluate(args) => cmd::evaluate::run(args),
+        Command::Check(args) => cmd::check::run(args),
         Command::Discover(args) => cmd::discover::run_discover_cmd(args),
         Command::Synth(args) => cmd::discover::run_synth(args),
         Command::Hps(c) => cmd::hps::run(c),

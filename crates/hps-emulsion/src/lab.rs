@@ -156,6 +156,11 @@ impl Problem for StaticFit<'_> {
 /// Ratio A_hr / A_hc of the front-axle strut (Table 6.3), used for the laboratory strut.
 pub const AREA_RATIO: f64 = 0.0254 / 0.038;
 
+/// Gas-column length L of the laboratory strut (m): step 1's fit with n = 1.4 to the reported
+/// static pressures ([`LabReported::paper`]). A constant, so that building the nominal lab
+/// strut fits nothing; `tests/lab.rs` checks that [`identify_lab`] still gives it.
+pub const LAB_GAS_LENGTH_M: f64 = 0.182_667_631_447_125_97;
+
 /// Identify the laboratory strut from the reported numbers (steps in the module docs).
 pub fn identify_lab(rep: &LabReported, config: LabConfig) -> LabIdentification {
     let zmax = rep.static_displacements[2];
@@ -183,6 +188,36 @@ pub fn identify_lab(rep: &LabReported, config: LabConfig) -> LabIdentification {
     .map(|f| f.params[0])
     .unwrap_or(f64::NAN);
 
+    let params = lab_params(rep, config, gas_length);
+    let mid = rep.static_displacements[0];
+    let (oil_c, oil_r) = params.oil_volumes();
+    // Fresh strut (no emulsion yet, charged at the bottom): reproduce the static pressures.
+    let mut fresh = params;
+    fresh.gamma0 = 0.0;
+    fresh.v_c0 = oil_c;
+    fresh.v_r0 = oil_r;
+    fresh.p_h0 = rep.charge_pressure * (gas_length / (gas_length - mid)).powf(rep.n);
+    let mut static_pressures = [f64::NAN; 3];
+    if let Ok(s) = HpsStrut::new(&fresh, &HpsExtensions::none(), 0.0) {
+        for i in 0..3 {
+            static_pressures[i] = s
+                .static_pressure(rep.static_displacements[i] - mid)
+                .unwrap_or(f64::NAN);
+        }
+    }
+    LabIdentification {
+        params,
+        gas_length,
+        free_fit: free,
+        static_pressures,
+        mid_stroke: mid,
+    }
+}
+
+/// The laboratory strut from the reported numbers and the gas-column length `gas_length`
+/// (m, step 1): steps 2-4 of the module docs, no fitting. [`StrutParams::lab`] calls it with
+/// [`LAB_GAS_LENGTH_M`].
+pub fn lab_params(rep: &LabReported, config: LabConfig, gas_length: f64) -> StrutParams {
     // Step 2: annulus from the lowest rod pressure in compression (one-orifice strut).
     let a_b = 11e-6;
     let a_v = 8e-6;
@@ -202,7 +237,7 @@ pub fn identify_lab(rep: &LabReported, config: LabConfig) -> LabIdentification {
     };
     let oil_r = a_ann * (mid + ROD_DEAD_LENGTH);
     let oil_c = rep.oil_volume - oil_r;
-    let params = StrutParams {
+    StrutParams {
         a_hc,
         a_hr,
         n_b,
@@ -232,27 +267,6 @@ pub fn identify_lab(rep: &LabReported, config: LabConfig) -> LabIdentification {
         p_amb: P_ATM,
         p_vap: P_VAPOUR,
         p_reg: P_REG,
-    };
-    // Fresh strut (no emulsion yet, charged at the bottom): reproduce the static pressures.
-    let mut fresh = params;
-    fresh.gamma0 = 0.0;
-    fresh.v_c0 = oil_c;
-    fresh.v_r0 = oil_r;
-    fresh.p_h0 = rep.charge_pressure * (gas_length / (gas_length - mid)).powf(rep.n);
-    let mut static_pressures = [f64::NAN; 3];
-    if let Ok(s) = HpsStrut::new(&fresh, &HpsExtensions::none(), 0.0) {
-        for i in 0..3 {
-            static_pressures[i] = s
-                .static_pressure(rep.static_displacements[i] - mid)
-                .unwrap_or(f64::NAN);
-        }
-    }
-    LabIdentification {
-        params,
-        gas_length,
-        free_fit: free,
-        static_pressures,
-        mid_stroke: mid,
     }
 }
 

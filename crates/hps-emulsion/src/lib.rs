@@ -31,6 +31,7 @@ pub mod friction;
 pub mod identify;
 pub mod lab;
 pub mod params;
+pub mod registry;
 pub mod simulate;
 pub mod strut;
 
@@ -47,6 +48,7 @@ pub use identify::{
 };
 pub use lab::{identify_lab, LabConfig, LabIdentification, LabReported};
 pub use params::{FrictionParams, StrutParams};
+pub use registry::STRUT_PARAMS;
 pub use simulate::{
     simulate_displacement, simulate_strut, Excitation, SimOptions, Solver, StrutRecord,
 };

@@ -2,11 +2,12 @@
 //! and seal friction, with validation and the two built-in struts.
 
 use crate::error::{non_negative, positive, HpsError};
-use crate::lab::{identify_lab, LabConfig, LabReported};
+use crate::lab::{lab_params, LabConfig, LabReported, LAB_GAS_LENGTH_M};
 use serde::{Deserialize, Serialize};
 
 /// Seal-friction parameters of Eqs 5.2-5.3.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
 pub struct FrictionParams {
     /// Viscous friction coefficient mu_v (N s/m), Eq 5.2.
     pub mu_v: f64,
@@ -44,6 +45,7 @@ impl FrictionParams {
 /// Complete parameter set of one strut. SI units, absolute pressures; the reference state
 /// (subscript 0) is the static mid-stroke position `z_s = 0` at pressure `p_h0` in both chambers.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
 pub struct StrutParams {
     /// Effective piston area A_hc (m^2), Eq 5.1.
     pub a_hc: f64,
@@ -154,10 +156,12 @@ impl StrutParams {
         }
     }
 
-    /// Laboratory strut of chapter 5 (one or two bleed orifices), identified from the numbers
-    /// the text reports ([`LabReported::paper`]) by [`identify_lab`]; see `docs/hps-emulsion.md`.
+    /// Laboratory strut of chapter 5 (one or two bleed orifices), derived from the numbers
+    /// the text reports ([`LabReported::paper`]) with the gas-column length
+    /// [`LAB_GAS_LENGTH_M`] that [`crate::lab::identify_lab`] fits to them (a constant: nothing
+    /// is fitted here); see `docs/hps-emulsion.md`.
     pub fn lab(config: LabConfig) -> Self {
-        identify_lab(&LabReported::paper(), config).params
+        lab_params(&LabReported::paper(), config, LAB_GAS_LENGTH_M)
     }
 
     /// Annular rod-side area `A_hc - A_hr` (m^2).

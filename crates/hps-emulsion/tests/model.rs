@@ -88,6 +88,15 @@ fn lab_identification_reproduces_static_pressures() {
 }
 
 #[test]
+fn nominal_lab_struts_are_constants_that_the_identification_reproduces() {
+    for config in [LabConfig::OneOrifice, LabConfig::TwoOrifices] {
+        let id = identify_lab(&LabReported::paper(), config);
+        assert_eq!(id.gas_length, hps_emulsion::lab::LAB_GAS_LENGTH_M);
+        assert_eq!(id.params, StrutParams::lab(config), "{config:?}");
+    }
+}
+
+#[test]
 fn rod_pressure_minimum_in_compression_near_half_mpa() {
     // Section 5.4.2: P_hr during compression bounded to about 0.5 MPa (one orifice, 0.2356 m/s).
     let t = HarmonicTest::at_peak_velocity(2.0, 0.2356);

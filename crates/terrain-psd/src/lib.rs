@@ -44,6 +44,8 @@ pub use spectral::{
     cross_slope_psd, cross_spectrum, welch_psd, CrossSpectrum, Detrend, Spectrum, WelchConfig,
     Window,
 };
-pub use summary::{default_terrain_summary, terrain_summary, Summary, SummaryConfig};
+pub use summary::{
+    default_terrain_summary, terrain_summary, Criterion, Fidelity, Summary, SummaryConfig,
+};
 pub use surface::{SurfaceParams, TwoTrackTerrain};
 pub use synth::{synthesize, synthesize_track, TwoTrackProfile, TwoTrackSpec};

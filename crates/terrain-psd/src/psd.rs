@@ -18,6 +18,7 @@ pub const MAX_WAVINESS: f64 = 10.0;
 
 /// Power-law displacement PSD `G_d(n) = alpha_r * n^-w` (Eq 2.8, Eq 1.7 with `beta = w`).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
 pub struct PowerLawPsd {
     /// Roughness coefficient `alpha_r` (m^3 when `w = 2`; in general m^2/(cycle/m) at n = 1 cycle/m).
     pub alpha_r: f64,
@@ -118,6 +119,7 @@ impl Default for PowerLawPsd {
 
 /// Spatial frequency band `[n_min, n_max]` (cycles/m) outside which the PSD is zero.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
 pub struct Band {
     /// Lower limit (cycles/m), > 0.
     pub n_min: f64,

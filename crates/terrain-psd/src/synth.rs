@@ -36,6 +36,7 @@ pub const MAX_SAMPLES: usize = 1 << 26;
 
 /// What to synthesize: the displacement PSD, its band and the coherence of the two tracks.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
 pub struct TwoTrackSpec {
     /// Displacement PSD of each track (Eq 2.8).
     pub psd: PowerLawPsd,

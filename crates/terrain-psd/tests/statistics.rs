@@ -287,3 +287,16 @@ fn default_summary_is_within_tolerances() {
     assert_eq!(s.octave_bands.len(), 8);
     assert_eq!(s, default_terrain_summary(1));
 }
+
+#[test]
+fn fidelity_passes_for_the_default_and_fails_on_a_wrong_estimate() {
+    let s = default_terrain_summary(1);
+    let f = s.fidelity();
+    assert!(f.pass, "{f:?}");
+    assert_eq!(f.criteria.len(), 4);
+    let mut bad = s.clone();
+    bad.psd_mean_error_db = 3.0;
+    assert!(!bad.fidelity().pass);
+    bad.psd_mean_error_db = f64::NAN;
+    assert!(!bad.fidelity().pass, "a non-finite deviation must fail");
+}

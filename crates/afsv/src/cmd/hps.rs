@@ -27,7 +27,7 @@ pub enum StrutChoice {
 }
 
 impl StrutChoice {
-    fn params(self) -> StrutParams {
+    pub(crate) fn params(self) -> StrutParams {
         match self {
             StrutChoice::FrontAxle => StrutParams::front_axle(),
             StrutChoice::Lab1Orifice => StrutParams::lab(LabConfig::OneOrifice),

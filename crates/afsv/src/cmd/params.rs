@@ -1,16 +1,31 @@
 //! `afsv params`: dump the built-in parameter sets as JSON (to edit and load back with
-//! `--params`) and check a parameter file.
+//! `--params`), check a parameter file, and list a set's named parameters with units and
+//! bounds. Every set rejects unknown fields and names the line and column of a bad value.
 
+use super::hps::StrutChoice;
 use super::CmdResult;
 use afsv_dynamics::YawPlaneParams;
-use std::path::PathBuf;
+use hps_emulsion::StrutParams;
+use serde_json::{json, Value};
+use std::path::{Path, PathBuf};
+use terrain_psd::{SurfaceParams, TwoTrackSpec};
+use tire_fiala::TireParams;
+use vehicle_components::ParamSet as Named;
 
-/// Parameter sets that can be dumped and checked.
+/// Parameter sets that can be dumped, checked and listed.
 #[derive(Clone, Copy, Debug, clap::ValueEnum)]
 pub enum ParamSet {
     /// Yaw-plane vehicle (Table 3.1) with the hydraulic frame steering (Tables 3.1/4.1).
     #[value(name = "yaw-plane")]
     YawPlane,
+    /// Hydro-pneumatic strut (Table 6.3 front axle, or the chapter 5 laboratory strut).
+    Strut,
+    /// Tire (Fiala handling, vertical contact, enveloping).
+    Tire,
+    /// Two-track terrain synthesis (PSD, band, coherence).
+    Terrain,
+    /// Terrain surface (track width, friction).
+    Surface,
 }
 
 /// `afsv params` subcommands.
@@ -21,9 +36,12 @@ pub enum Command {
         /// Which set.
         #[arg(value_enum)]
         set: ParamSet,
-        /// Load condition of the vehicle columns.
+        /// Load condition of the vehicle columns (yaw-plane).
         #[arg(long, value_enum, default_value = "loaded")]
         load: super::yaw::LoadChoice,
+        /// Which built-in strut (strut).
+        #[arg(long, value_enum, default_value = "front-axle")]
+        strut: StrutChoice,
         /// Write to this file instead of standard output; an existing file needs --force
         /// (a parameter file carries no afsv marker, so it may be the user's edited set).
         #[arg(short = 'o', long)]
@@ -33,13 +51,20 @@ pub enum Command {
         force: bool,
     },
     /// Read and validate a parameter file; prints `{"valid": true, ...}` or fails with
-    /// the offending field.
+    /// the offending field (unknown fields are refused).
     Check {
         /// Which set.
         #[arg(value_enum)]
         set: ParamSet,
         /// The JSON file.
         file: PathBuf,
+    },
+    /// List the named parameters of a set: name, unit, bounds, typical size and nominal
+    /// value (the names that fits, sensitivity studies and designs use).
+    List {
+        /// Which set.
+        #[arg(value_enum)]
+        set: ParamSet,
     },
 }
 
@@ -49,6 +74,7 @@ pub fn run(cmd: Command) -> CmdResult {
         Command::Dump {
             set,
             load,
+            strut,
             output,
             force,
         } => {
@@ -61,26 +87,102 @@ pub fn run(cmd: Command) -> CmdResult {
             }
             let value = match set {
                 ParamSet::YawPlane => serde_json::to_value(YawPlaneParams::nominal(load.into()))?,
+                ParamSet::Strut => serde_json::to_value(strut.params())?,
+                ParamSet::Tire => serde_json::to_value(TireParams::nominal())?,
+                ParamSet::Terrain => serde_json::to_value(TwoTrackSpec::paper_nominal())?,
+                ParamSet::Surface => serde_json::to_value(SurfaceParams::default())?,
             };
             match output {
                 Some(path) => {
                     let text = serde_json::to_string_pretty(&value)? + "\n";
                     std::fs::write(&path, text).map_err(|e| format!("{}: {e}", path.display()))?;
-                    afsv::output::print_json(&serde_json::json!({ "written": path }))?;
+                    afsv::output::print_json(&json!({ "written": path }))?;
                 }
                 None => afsv::output::print_json(&value)?,
             }
         }
-        Command::Check { set, file } => match set {
-            ParamSet::YawPlane => {
-                let p = super::yaw::read_params(&file)?;
-                afsv::output::print_json(&serde_json::json!({
-                    "valid": true,
-                    "file": file,
-                    "load": p.load,
-                }))?;
-            }
-        },
+        Command::Check { set, file } => {
+            let mut report = match set {
+                ParamSet::YawPlane => {
+                    let p = super::yaw::read_params(&file)?;
+                    json!({ "load": p.load, "parameters": named(&p) })
+                }
+                ParamSet::Strut => {
+                    let p: StrutParams = read(&file)?;
+                    p.validate()
+                        .map_err(|e| format!("{}: {e}", file.display()))?;
+                    json!({ "parameters": named(&p) })
+                }
+                ParamSet::Tire => {
+                    let p: TireParams = read(&file)?;
+                    p.validate()
+                        .map_err(|e| format!("{}: {e}", file.display()))?;
+                    json!({ "parameters": named(&p) })
+                }
+                ParamSet::Terrain => {
+                    let p: TwoTrackSpec = read(&file)?;
+                    p.validate()
+                        .map_err(|e| format!("{}: {e}", file.display()))?;
+                    json!({ "parameters": named(&p) })
+                }
+                ParamSet::Surface => {
+                    let p: SurfaceParams = read(&file)?;
+                    p.validate()
+                        .map_err(|e| format!("{}: {e}", file.display()))?;
+                    json!({ "parameters": named(&p) })
+                }
+            };
+            report["valid"] = json!(true);
+            report["file"] = json!(file);
+            afsv::output::print_json(&report)?;
+        }
+        Command::List { set } => {
+            let list = match set {
+                ParamSet::YawPlane => specs(&YawPlaneParams::nominal(afsv_dynamics::Load::Loaded)),
+                ParamSet::Strut => specs(&StrutParams::front_axle()),
+                ParamSet::Tire => specs(&TireParams::nominal()),
+                ParamSet::Terrain => specs(&TwoTrackSpec::paper_nominal()),
+                ParamSet::Surface => specs(&SurfaceParams::default()),
+            };
+            afsv::output::print_json(&list)?;
+        }
     }
     Ok(())
+}
+
+/// A parameter file as `T`, refusing unknown fields; errors name the file, line and column.
+fn read<T: serde::de::DeserializeOwned>(path: &Path) -> Result<T, String> {
+    let text = std::fs::read_to_string(path).map_err(|e| format!("{}: {e}", path.display()))?;
+    serde_json::from_str(&text).map_err(|e| format!("{}: {e}", path.display()))
+}
+
+/// Every named parameter of `p` with its value.
+fn named(p: &dyn Named) -> Value {
+    let map: serde_json::Map<String, Value> = p
+        .specs()
+        .iter()
+        .enumerate()
+        .map(|(i, s)| (s.name.to_string(), afsv::output::finite_or_null(p.value(i))))
+        .collect();
+    Value::Object(map)
+}
+
+/// The specification of every named parameter of `p`, with its value in `p`.
+fn specs(p: &dyn Named) -> Value {
+    let rows: Vec<Value> = p
+        .specs()
+        .iter()
+        .enumerate()
+        .map(|(i, s)| {
+            json!({
+                "name": s.name,
+                "unit": s.unit,
+                "lower": s.lower,
+                "upper": s.upper,
+                "typical": s.typical,
+                "nominal": afsv::output::finite_or_null(p.value(i)),
+            })
+        })
+        .collect();
+    json!({ "set": p.set_name(), "parameters": rows })
 }

@@ -1,0 +1,65 @@
+//! `afsv params dump | check | list` for every parameter set.
+
+mod cli_support;
+use cli_support::{afsv, json, scratch};
+
+const SETS: [&str; 5] = ["yaw-plane", "strut", "tire", "terrain", "surface"];
+
+#[test]
+fn every_set_dumps_checks_back_and_lists_its_named_parameters() {
+    for set in SETS {
+        let path = scratch("params", &format!("{set}.json"));
+        let written = json(&afsv(&[
+            "params",
+            "dump",
+            set,
+            "-o",
+            path.to_str().unwrap(),
+        ]));
+        assert_eq!(written["written"], path.to_str().unwrap());
+        let checked = json(&afsv(&["params", "check", set, path.to_str().unwrap()]));
+        assert_eq!(checked["valid"], true, "{set}");
+        let listed = json(&afsv(&["params", "list", set]));
+        let specs = listed["parameters"].as_array().unwrap();
+        assert!(!specs.is_empty(), "{set}");
+        // check reports the value of every listed name, and it is the nominal one
+        for s in specs {
+            let name = s["name"].as_str().unwrap();
+            assert_eq!(checked["parameters"][name], s["nominal"], "{set}.{name}");
+            let (lo, hi) = (s["lower"].as_f64().unwrap(), s["upper"].as_f64().unwrap());
+            let v = s["nominal"].as_f64().unwrap();
+            assert!(lo <= v && v <= hi, "{set}.{name}: {v} outside [{lo}, {hi}]");
+        }
+    }
+}
+
+#[test]
+fn unknown_fields_are_refused_with_line_and_column_in_every_set() {
+    for set in SETS {
+        let path = scratch("params-bad", &format!("{set}.json"));
+        std::fs::write(&path, "{\n  \"no_such_field\": 1\n}\n").unwrap();
+        let out = afsv(&["params", "check", set, path.to_str().unwrap()]);
+        assert!(!out.status.success(), "{set}");
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert!(
+            err.contains("no_such_field") && err.contains("line 2"),
+            "{set}: {err}"
+        );
+        assert_eq!(err.lines().count(), 1, "{set}: {err}");
+    }
+}
+
+#[test]
+fn strut_dump_offers_every_built_in_strut() {
+    let front = json(&afsv(&["params", "dump", "strut"]));
+    let lab = json(&afsv(&[
+        "params",
+        "dump",
+        "strut",
+        "--strut",
+        "lab-1orifice",
+    ]));
+    assert_eq!(front["a_hc"], 0.038);
+    assert_ne!(front["a_hc"], lab["a_hc"]);
+    assert_eq!(lab["n_b"], 1);
+}
