@@ -7,7 +7,8 @@
 //! - [`afs_design`]: the chapter-4 design vector [A_0, l_1, l_2, a_v, B_eff] (Table 4.2)
 //!   applied to the AFS parameters, its bounds, and the A_0 of the longest steering arm;
 //! - [`hps_design`]: the chapter-6 design vector [A_hc, A_v, A_b] (Table 6.5) applied to
-//!   a strut parameter set.
+//!   a strut parameter set;
+//! - [`sweep`]: the optimum of a one-variable design sweep (parabolic peak).
 //!
 //! Every constructor validates its input and returns a [`DesignError`] naming the field.
 //! `docs/design.md` maps each equation to its code.
@@ -20,6 +21,7 @@ pub mod error;
 pub mod hps_design;
 pub mod measures;
 pub mod objective;
+pub mod sweep;
 
 pub use afs_design::{a0_of_longest_initial_arm, AfsDesign, AfsDesignBounds};
 pub use ahp::{AhpHierarchy, AhpLevels, GoalComparison};
@@ -27,3 +29,4 @@ pub use error::DesignError;
 pub use hps_design::HpsDesign;
 pub use measures::{DesignMeasures, Measure, MeasureRatios};
 pub use objective::Objective;
+pub use sweep::{parabolic_peak, SweepPeak};
