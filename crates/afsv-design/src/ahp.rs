@@ -101,6 +101,19 @@ impl AhpHierarchy {
         })
     }
 
+    /// The goals' comparisons of their related measures, in M2's order.
+    pub fn comparisons(&self) -> &[GoalComparison] {
+        &self.comparisons
+    }
+
+    /// Whether goal `goal` relates to measure `m`; an unrelated measure holds a structural
+    /// zero in that goal's column of W_III/II (Eq 4.15).
+    pub fn relates(&self, goal: usize, m: Measure) -> bool {
+        self.comparisons
+            .get(goal)
+            .is_some_and(|c| c.measures.contains(&m))
+    }
+
     /// Weights of every level (Eqs 4.12, 4.14, 4.15, 4.17).
     pub fn weights(&self) -> Result<AhpLevels, DesignError> {
         let ahp = |matrix: &str, m: &[Vec<f64>]| {
@@ -186,6 +199,9 @@ mod tests {
         }
         assert!(l.goals.consistency_ratio.abs() < 1e-12);
         assert_eq!(l.measure_columns[0], [0.5, 0.5, 0.0, 0.0, 0.0, 0.0]);
+        assert!(h.relates(0, YawFrequency) && !h.relates(0, DampingRatio));
+        assert!(!h.relates(3, StrutLength));
+        assert_eq!(h.comparisons()[2].name, "g3");
         let want = [2.0, 2.0, 1.0, 1.0, 0.5, 0.5].map(|v| v / 7.0);
         for (c, w) in l.composite.iter().zip(want) {
             assert!((c - w).abs() < 1e-12, "{:?}", l.composite);

@@ -2,7 +2,7 @@
 
 use super::fixtures::{descend, Fixtures};
 use super::report::{fmt_num, CheckResult, PlotData};
-use super::tolerance::{Status, Tolerance};
+use super::tolerance::{Echo, Status, Tolerance};
 use afsv_dynamics::SensitivityTable;
 use serde_json::Value;
 
@@ -72,7 +72,8 @@ impl<'a> Ctx<'a> {
         }
     }
 
-    /// Compare a simulated number (in the fixture's printed unit) with fixture `id` at `key`.
+    /// Compare a model-computed number (in the fixture's printed unit) with fixture `id` at
+    /// `key`: [`Status::Reproduced`] within tolerance, else [`Status::Differs`].
     pub fn compare(
         &mut self,
         id: &str,
@@ -81,9 +82,37 @@ impl<'a> Ctx<'a> {
         simulated: f64,
         note: impl Into<String>,
     ) {
+        self.compare_as(Status::Reproduced, id, key, variant, simulated, note.into());
+    }
+
+    /// Compare a number that only echoes an input or holds by construction: within
+    /// tolerance the row gets the echo's status ([`Status::Input`],
+    /// [`Status::ByConstruction`]), not [`Status::Reproduced`]; outside it, it differs.
+    pub fn echo(
+        &mut self,
+        echo: Echo,
+        id: &str,
+        key: Option<&str>,
+        variant: Option<&str>,
+        simulated: f64,
+        note: impl Into<String>,
+    ) {
+        self.compare_as(echo.status(), id, key, variant, simulated, note.into());
+    }
+
+    /// A compared row that gets `agrees` within tolerance.
+    fn compare_as(
+        &mut self,
+        agrees: Status,
+        id: &str,
+        key: Option<&str>,
+        variant: Option<&str>,
+        simulated: f64,
+        note: String,
+    ) {
         let mut r = self.row(id, key, variant);
         r.simulated = Some(simulated);
-        r.note = note.into();
+        r.note = note;
         let tol = self
             .fixtures
             .get(id)
@@ -93,7 +122,7 @@ impl<'a> Ctx<'a> {
                 r.tolerance = Some(t);
                 r.error = Some(t.error(rep, simulated));
                 r.status = if t.within(rep, simulated) {
-                    Status::Reproduced
+                    agrees
                 } else {
                     Status::Differs
                 };
@@ -174,5 +203,13 @@ mod tests {
         assert!(!ctx.results[1].regressed(), "unguarded key may differ");
         ctx.compare("q", Some("a"), None, 1.5, "");
         assert!(ctx.results[2].regressed());
+        // An echo within tolerance agrees (no regression) without counting as reproduced;
+        // outside it, it differs and regresses like any guarded row.
+        ctx.echo(Echo::Input, "q", Some("a"), None, 1.0, "");
+        assert_eq!(ctx.results[3].status, Status::Input);
+        assert!(!ctx.results[3].regressed());
+        ctx.echo(Echo::ByConstruction, "q", Some("a"), None, 1.5, "");
+        assert_eq!(ctx.results[4].status, Status::Differs);
+        assert!(ctx.results[4].regressed());
     }
 }

@@ -24,7 +24,7 @@ pub use checks::CHECKS;
 pub use ctx::Ctx;
 pub use fixtures::{load_fixtures, Fixture, Fixtures};
 pub use report::{fmt_num, write_outputs, CheckResult, PlotData, Report};
-pub use tolerance::{Status, Tolerance};
+pub use tolerance::{Echo, Status, Tolerance};
 
 use std::path::{Path, PathBuf};
 use std::time::Instant;

@@ -53,7 +53,7 @@ impl CheckResult {
 
     /// A guarded row that is no longer reproduced.
     pub fn regressed(&self) -> bool {
-        self.guarded && self.status != Status::Reproduced
+        self.guarded && !self.status.agrees()
     }
 }
 
@@ -133,13 +133,19 @@ impl Report {
         out
     }
 
-    /// One-line summary.
+    /// One-line summary: model-computed rows (reproduced, differ) apart from the echoes
+    /// (input, by-construction), so the reproduced count means model results only.
     pub fn summary_line(&self) -> String {
+        let (rep, dif) = (self.count(Status::Reproduced), self.count(Status::Differs));
         format!(
-            "{} rows: {} reproduced, {} differ, {} not reproducible; {} regressions; {:.1} s",
+            "{} rows: {} model-computed ({} reproduced, {} differ), {} echoes ({} input, {} by-construction), {} not reproducible; {} regressions; {:.1} s",
             self.results.len(),
-            self.count(Status::Reproduced),
-            self.count(Status::Differs),
+            rep + dif,
+            rep,
+            dif,
+            self.count(Status::Input) + self.count(Status::ByConstruction),
+            self.count(Status::Input),
+            self.count(Status::ByConstruction),
             self.count(Status::NotReproducible),
             self.regressions().len(),
             self.elapsed_s

@@ -96,12 +96,19 @@ impl Tolerance {
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
 #[serde(rename_all = "kebab-case")]
 pub enum Status {
-    /// Computed and within tolerance (a qualitative check passed).
+    /// Computed by a model and within tolerance (a qualitative check passed).
     Reproduced,
     /// Computed, outside tolerance (the reason is in the note).
     Differs,
     /// Needs a model or data we do not have (the reason is in the note).
     NotReproducible,
+    /// Echoes an input: the number is a parameter our parameter set carries (a nominal
+    /// value, a design bound, the current design), within tolerance. Not a model result.
+    Input,
+    /// Holds by construction: the number was used to build the model (an identification
+    /// target, a table the model interpolates at its own rows, a structural zero), within
+    /// tolerance. Not a model result.
+    ByConstruction,
 }
 
 impl Status {
@@ -111,6 +118,37 @@ impl Status {
             Status::Reproduced => "reproduced",
             Status::Differs => "differs",
             Status::NotReproducible => "not-reproducible",
+            Status::Input => "input",
+            Status::ByConstruction => "by-construction",
+        }
+    }
+
+    /// Whether the row agrees with the fixture: reproduced, or an echo within tolerance
+    /// (the regression rule accepts all three).
+    pub fn agrees(self) -> bool {
+        matches!(
+            self,
+            Status::Reproduced | Status::Input | Status::ByConstruction
+        )
+    }
+}
+
+/// Why a row's number matches the fixture without being a model result (the status an
+/// echo gets when it is within tolerance; outside it the row `differs`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Echo {
+    /// The number is an input parameter ([`Status::Input`]).
+    Input,
+    /// The number holds by construction ([`Status::ByConstruction`]).
+    ByConstruction,
+}
+
+impl Echo {
+    /// The status of a row within tolerance.
+    pub fn status(self) -> Status {
+        match self {
+            Echo::Input => Status::Input,
+            Echo::ByConstruction => Status::ByConstruction,
         }
     }
 }
@@ -119,6 +157,14 @@ impl Status {
 mod tests {
     use super::*;
     use serde_json::json;
+
+    #[test]
+    fn echoes_agree_but_are_not_reproduced() {
+        assert!(Status::Input.agrees() && Status::ByConstruction.agrees());
+        assert!(!Status::Differs.agrees() && !Status::NotReproducible.agrees());
+        assert_eq!(Echo::ByConstruction.status().as_str(), "by-construction");
+        assert_eq!(serde_json::to_value(Status::Input).unwrap(), json!("input"));
+    }
 
     #[test]
     fn relative_tolerance_inside_and_outside() {

@@ -1,19 +1,23 @@
 //! Tables 3.1, 4.1, 4.2 (design bounds), 4.3/4.4 ("current" column) and 3.2 (test speeds)
-//! against the nominal parameter sets of the yaw-plane vehicle and the AFS.
+//! against the nominal parameter sets of the yaw-plane vehicle and the AFS and the design
+//! bounds of `afsv_design`. Every row echoes an input ([`Echo::Input`]): these numbers are
+//! what the parameter sets carry, not model results.
 
 use super::{Ctx, DEG};
+use crate::validate::Echo;
 use afs_hydraulics::params::{
     MU_V_TABLE_UNIT, VALVE_A0_TABLE_UNIT, VALVE_AM_TABLE_UNIT, VALVE_AV_TABLE_UNIT,
 };
 use afs_hydraulics::AfsParams;
-use afsv_design::AfsDesign;
+use afsv_design::{AfsDesign, AfsDesignBounds};
 use afsv_dynamics::{table_3_2_speeds_kmh, FieldCourse, Load, VehicleParams};
 
-/// Table 3.1 / 4.1 / 4.2 (nominal column) and Table 3.2 against our nominal parameter sets.
+/// Table 3.1 / 4.1 / 4.2 and Table 3.2 against our nominal parameter sets and bounds.
 pub(super) fn check_yaw_parameters(ctx: &mut Ctx) -> Result<(), String> {
     vehicle_rows(ctx);
     afs_rows(ctx);
     design_rows(ctx);
+    relaxed_bound_row(ctx);
     speed_rows(ctx);
     Ok(())
 }
@@ -36,7 +40,7 @@ fn vehicle_rows(ctx: &mut Ctx) {
                 ("l_r1", v.l_r1_m),
                 ("l_r2", v.l_r2_m),
             ] {
-                ctx.compare(&format!("{t}_{name}"), k, None, val, note);
+                ctx.echo(Echo::Input, &format!("{t}_{name}"), k, None, val, note);
             }
         }
         for (name, val) in [
@@ -47,7 +51,7 @@ fn vehicle_rows(ctx: &mut Ctx) {
             ("sigma_y", v.relaxation_length_m),
             ("half_track", v.half_track_m),
         ] {
-            ctx.compare(&format!("t3_1_{name}"), k, None, val, note);
+            ctx.echo(Echo::Input, &format!("t3_1_{name}"), k, None, val, note);
         }
     }
 }
@@ -66,7 +70,7 @@ fn afs_rows(ctx: &mut Ctx) {
     ];
     for t in ["t3_1", "t4_1"] {
         for (name, val) in common {
-            ctx.compare(&format!("{t}_{name}"), None, None, val, note);
+            ctx.echo(Echo::Input, &format!("{t}_{name}"), None, None, val, note);
         }
     }
     for (name, val) in [
@@ -81,14 +85,14 @@ fn afs_rows(ctx: &mut Ctx) {
         ("k_v", a.return_factor),
         ("eta_g", a.gerotor_efficiency),
     ] {
-        ctx.compare(&format!("t3_1_{name}"), None, None, val, note);
+        ctx.echo(Echo::Input, &format!("t3_1_{name}"), None, None, val, note);
     }
     for (name, val) in [
         ("a_0", a.valve_a0_per_pa / VALVE_A0_TABLE_UNIT),
         ("a_m", a.valve_am / VALVE_AM_TABLE_UNIT),
         ("a_v", a.valve_av / VALVE_AV_TABLE_UNIT),
     ] {
-        ctx.compare(&format!("t4_1_{name}"), None, None, val, note);
+        ctx.echo(Echo::Input, &format!("t4_1_{name}"), None, None, val, note);
     }
 }
 
@@ -96,17 +100,19 @@ fn afs_rows(ctx: &mut Ctx) {
 /// of `AfsParams::nominal` (`afsv_design::AfsDesign`).
 fn design_rows(ctx: &mut Ctx) {
     let current = AfsDesign::of(&AfsParams::nominal()).table_units();
+    let bounds = AfsDesignBounds::table_4_2();
+    let (lower, upper) = (bounds.lower.table_units(), bounds.upper.table_units());
     let note = "AfsParams::nominal (table units for the unstated ones, docs/afs-hydraulics.md)";
-    for (name, val) in ["a0", "l1", "l2", "a_v", "b_eff"].into_iter().zip(current) {
-        ctx.compare(
-            &format!("t4_2_{name}_bounds"),
-            Some("nominal"),
-            None,
-            val,
-            note,
-        );
+    let bound_note = "afsv_design::AfsDesignBounds::table_4_2";
+    for (i, name) in ["a0", "l1", "l2", "a_v", "b_eff"].into_iter().enumerate() {
+        let id = format!("t4_2_{name}_bounds");
+        let val = current[i];
+        ctx.echo(Echo::Input, &id, Some("nominal"), None, val, note);
+        ctx.echo(Echo::Input, &id, Some("lower"), None, lower[i], bound_note);
+        ctx.echo(Echo::Input, &id, Some("upper"), None, upper[i], bound_note);
         for t in ["t4_3", "t4_4"] {
-            ctx.compare(
+            ctx.echo(
+                Echo::Input,
                 &format!("{t}_opt_{name}"),
                 Some("current"),
                 None,
@@ -122,6 +128,18 @@ fn design_rows(ctx: &mut Ctx) {
             }
         }
     }
+}
+
+/// Section 4.4: the relaxed B_eff bound of Table 4.4's runs.
+fn relaxed_bound_row(ctx: &mut Ctx) {
+    ctx.echo(
+        Echo::Input,
+        "s4_relaxed_b_eff_bound",
+        None,
+        None,
+        AfsDesignBounds::table_4_2_relaxed().upper.table_units()[4],
+        "afsv_design::AfsDesignBounds::table_4_2_relaxed (1.3 x the nominal 1.6 GPa)",
+    );
 }
 
 /// Table 3.2: mean test speeds.
@@ -169,6 +187,6 @@ fn speed_rows(ctx: &mut Ctx) {
             .get(i)
             .copied()
             .unwrap_or(f64::NAN);
-        ctx.compare(id, Some("mean"), None, s, note);
+        ctx.echo(Echo::Input, id, Some("mean"), None, s, note);
     }
 }
