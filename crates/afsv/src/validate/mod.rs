@@ -3,15 +3,19 @@
 //! [`load_fixtures`] reads every `fixtures/reported/*.json` file (the common schema of
 //! `fixtures/reported/README.md` and the simpler one of `hps_lab.json`). [`run`] then executes
 //! a registry of checks ([`CHECKS`]): each maps a fixture id (and, for multi-valued entries, a
-//! key) to a computation with our models, converts the simulated number to the fixture's
-//! printed unit and compares it with the fixture's tolerance. Every `result` and
+//! key) to a computation with our models and the design layer (`afsv_design`), converts the
+//! simulated number to the fixture's printed unit and compares it with the fixture's
+//! tolerance; a number that only echoes an input or holds by construction is compared with
+//! [`Ctx::echo`] and gets [`Status::Input`] or [`Status::ByConstruction`] instead of
+//! [`Status::Reproduced`]. Every `result` and
 //! `qualitative` fixture appears in the report, either computed or listed as
 //! [`Status::NotReproducible`] with the reason; [`run`] adds a row for any such fixture no
 //! check covers, so nothing is hidden.
 //!
 //! Regression rule: a fixture whose `status` is `"reproduced"` (or, for a partly reproduced
 //! multi-valued fixture, `"partially reproduced"` plus the list `reproduced_keys`) guards its
-//! rows; [`Report::regressions`] lists guarded rows that are no longer within tolerance.
+//! rows; [`Report::regressions`] lists guarded rows that no longer agree (within tolerance,
+//! whether reproduced or an echo).
 //! `docs/validation.md` describes the method and the current results.
 
 mod checks;

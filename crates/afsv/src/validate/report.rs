@@ -81,7 +81,7 @@ pub struct Report {
     pub plots: Vec<PlotData>,
     /// Checks whose computation failed (name, error); their fixtures appear as rows too.
     pub failed_checks: Vec<(String, String)>,
-    /// Wall time of [`run`] (s).
+    /// Wall time of [`super::run`] (s).
     pub elapsed_s: f64,
 }
 
