@@ -10,6 +10,10 @@ format belongs to hps-emulsion's test), sets for every fixture with rows in the 
   only if all its rows, e.g. both load cases, are reproduced);
 - leaves "pending" otherwise.
 
+A row agrees when its status is "reproduced", "input" or "by-construction" (an echo within
+tolerance); the fixture status "reproduced" means that its rows must keep agreeing (the
+regression guard), whichever of the three they are.
+
 Only the status line (and the inserted reproduced_keys line) changes; the rest of each file is
 kept byte for byte. Statuses are only promoted, never demoted: a regression must be looked at.
 Usage: python3 xtask/scripts/promote_fixtures.py [ROOT]
@@ -18,6 +22,8 @@ import glob
 import json
 import os
 import re
+
+AGREES = ("reproduced", "input", "by-construction")
 import sys
 
 root = sys.argv[1] if len(sys.argv) > 1 else os.path.join(os.path.dirname(__file__), "..", "..")
@@ -45,12 +51,12 @@ def decide(rs, q):
     value = q.get("values", q.get("value"))
     covered = {r["key"] for r in rs}
     complete = None in covered or not isinstance(value, (dict, list)) or set(leaves(value)) <= covered
-    if complete and all(r["status"] == "reproduced" for r in rs):
+    if complete and all(r["status"] in AGREES for r in rs):
         return "reproduced", []
     keys = {}
     for r in rs:
         if r["key"] is not None:
-            keys.setdefault(r["key"], []).append(r["status"] == "reproduced")
+            keys.setdefault(r["key"], []).append(r["status"] in AGREES)
     good = sorted(k for k, v in keys.items() if all(v))
     if good:
         return "partially reproduced", good

@@ -115,6 +115,10 @@ pub struct LabIdentification {
     pub gas_length: f64,
     /// Gas-column length and exponent of the free two-parameter fit (m, -).
     pub free_fit: (f64, f64),
+    /// The identified strut when fresh: no emulsion yet (gamma_0 = 0, the oil volumes
+    /// without gas), charged at the bottom, so P_h0 is the charge pressure compressed to
+    /// mid-stroke along the fitted gas column (section 5.4.1).
+    pub fresh: StrutParams,
     /// Static pressures of the identified fresh strut (no emulsion) at the reported
     /// displacements (Pa).
     pub static_pressures: [f64; 3],
@@ -209,6 +213,7 @@ pub fn identify_lab(rep: &LabReported, config: LabConfig) -> LabIdentification {
         params,
         gas_length,
         free_fit: free,
+        fresh,
         static_pressures,
         mid_stroke: mid,
     }

@@ -13,7 +13,8 @@
 //!   [`StrutParams::lab`], the chapter 5 strut identified in [`lab`]).
 //! - [`HpsStrut`]: the strut as a force element with its own states (for a vehicle model).
 //! - [`simulate_displacement`]: prescribed-displacement runs (harmonic or sampled).
-//! - [`characterize`], [`lab_programme`], [`loop_metrics`]: the harmonic characterisation.
+//! - [`characterize`], [`lab_programme`], [`loop_metrics`]: the harmonic characterisation;
+//!   [`HysteresisLoop`]: the samples of one period for the loop plots.
 //! - [`identify`]: least-squares identification from a record.
 //! - [`HpsExtensions`]: switchable physical extensions for the model-discrepancy workflow.
 //!
@@ -30,6 +31,7 @@ pub mod flow;
 pub mod friction;
 pub mod identify;
 pub mod lab;
+pub mod loops;
 pub mod params;
 pub mod registry;
 pub mod simulate;
@@ -47,6 +49,7 @@ pub use identify::{
     identify, ChannelNrmse, FitParam, FittedValue, IdentifyOptions, IdentifyResult, Measured,
 };
 pub use lab::{identify_lab, LabConfig, LabIdentification, LabReported};
+pub use loops::HysteresisLoop;
 pub use params::{FrictionParams, StrutParams};
 pub use registry::STRUT_PARAMS;
 pub use simulate::{

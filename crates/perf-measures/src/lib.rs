@@ -8,7 +8,8 @@
 //!   SSF.
 //! * [`decay`]: free-decay single-DOF fit (yaw-mode frequency and damping, sections 3.3,
 //!   4.3.1, 6.4).
-//! * [`step`]: step-steer gain, 0-100 % rise time, overshoot (section 3.3).
+//! * [`step`]: step detection in an input record, step-steer gain, 0-100 % rise time,
+//!   overshoot (section 3.3).
 //! * [`steering`]: steering power efficiency (Eq 4.7).
 //!
 //! Units are SI throughout; `docs/perf-measures.md` maps every equation to its code.
@@ -31,4 +32,6 @@ pub use roll::{
     SustainedPeriod, SustainedPeriodParams,
 };
 pub use steering::steering_power_efficiency;
-pub use step::{step_metrics, step_metrics_with, StepMetrics, StepOptions};
+pub use step::{
+    step_amplitude, step_metrics, step_metrics_with, step_time, StepMetrics, StepOptions,
+};

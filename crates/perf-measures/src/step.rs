@@ -47,6 +47,51 @@ pub struct StepMetrics {
     pub rise_rate_per_s: f64,
 }
 
+/// Share of the step amplitude by which the input must depart from its initial value for
+/// [`step_time`] to see the step (2 %).
+pub const STEP_DETECTION_FRACTION: f64 = 0.02;
+
+/// Amplitude of the step in an input record `u` (e.g. the steering-wheel angle of a step-steer
+/// test, section 3.3): the mean of its final `settle_fraction` of samples (at least one) minus
+/// its initial value.
+pub fn step_amplitude(u: &[f64], settle_fraction: f64) -> Result<f64, MeasureError> {
+    finite_series("u", u, 2)?;
+    if !(settle_fraction > 0.0 && settle_fraction < 1.0) {
+        return Err(invalid(
+            "settle_fraction",
+            format!("{settle_fraction} must lie in (0, 1)"),
+        ));
+    }
+    let n = u.len();
+    let k = ((settle_fraction * n as f64) as usize).max(1);
+    let amplitude = u[n - k..].iter().sum::<f64>() / k as f64 - u[0];
+    if amplitude == 0.0 {
+        return Err(MeasureError::NotFound(format!(
+            "has no step (amplitude {amplitude})"
+        )));
+    }
+    Ok(amplitude)
+}
+
+/// Time of the step of `amplitude` in the input `u(t)`: the sample before the first one that
+/// departs from the initial value by [`STEP_DETECTION_FRACTION`] of the amplitude (the last
+/// sample still at the initial level).
+pub fn step_time(t: &[f64], u: &[f64], amplitude: f64) -> Result<f64, MeasureError> {
+    time_series(t, 2)?;
+    same_len("t", t, "u", u)?;
+    finite_series("u", u, 2)?;
+    finite_scalar("amplitude", amplitude)?;
+    if amplitude == 0.0 {
+        return Err(invalid("amplitude", "must be non-zero"));
+    }
+    let u0 = u[0];
+    let i = u
+        .iter()
+        .position(|v| (v - u0).abs() >= STEP_DETECTION_FRACTION * amplitude.abs())
+        .ok_or_else(|| MeasureError::NotFound("the input never steps".into()))?;
+    Ok(t[i.saturating_sub(1)])
+}
+
 /// [`step_metrics_with`] with default options.
 pub fn step_metrics(
     t: &[f64],
@@ -159,4 +204,43 @@ pub fn step_metrics_with(
             f64::INFINITY
         },
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn step_of_a_sampled_input_is_found() {
+        // 0 until 1.0 s, 30 from 1.01 s on, 10 ms samples.
+        let t: Vec<f64> = (0..401).map(|i| i as f64 * 0.01).collect();
+        let u: Vec<f64> = t
+            .iter()
+            .map(|&x| if x < 1.005 { 0.0 } else { 30.0 })
+            .collect();
+        let a = step_amplitude(&u, 0.1).unwrap();
+        assert_eq!(a, 30.0);
+        assert!((step_time(&t, &u, a).unwrap() - 1.0).abs() < 1e-12);
+        // A negative step is found the same way.
+        let neg: Vec<f64> = u.iter().map(|v| 5.0 - v).collect();
+        let a = step_amplitude(&neg, 0.1).unwrap();
+        assert_eq!(a, -30.0);
+        assert!((step_time(&t, &neg, a).unwrap() - 1.0).abs() < 1e-12);
+    }
+
+    #[test]
+    fn inputs_without_a_step_are_errors() {
+        let t = [0.0, 1.0, 2.0, 3.0];
+        let flat = [2.0; 4];
+        let e = step_amplitude(&flat, 0.1).unwrap_err();
+        assert!(e.to_string().contains("no step"), "{e}");
+        assert!(matches!(
+            step_time(&t, &flat, 1.0),
+            Err(MeasureError::NotFound(_))
+        ));
+        assert!(step_time(&t, &flat, 0.0).is_err());
+        assert!(step_amplitude(&[0.0, f64::NAN], 0.1).is_err());
+        assert!(step_amplitude(&flat, 1.0).is_err());
+        assert!(step_time(&t, &flat[..3], 1.0).is_err());
+    }
 }

@@ -389,19 +389,16 @@ fn identify_strut(
 
 fn plot_loops(path: &Path, rec: &StrutRecord, test: &HarmonicTest) -> Result<(), String> {
     use plotters::prelude::*;
-    let period = 1.0 / test.frequency_hz;
-    let t_end = rec.time.last().copied().unwrap_or(0.0);
-    let idx: Vec<usize> = (0..rec.time.len())
-        .filter(|&i| rec.time[i] >= t_end - period - 1e-9)
-        .collect();
-    let pick = |v: &[f64], s: f64| idx.iter().map(|&i| v[i] * s).collect::<Vec<f64>>();
-    let z = pick(&rec.displacement, 1e3);
-    let v = pick(&rec.velocity, 1.0);
-    let f = pick(&rec.force, 1e-3);
-    let pc = pick(&rec.p_piston, 1e-6);
-    let pr = pick(&rec.p_rod, 1e-6);
-    let fd = pick(&rec.damping_force(), 1e-3);
     let err = |e: &dyn std::fmt::Display| format!("{}: {e}", path.display());
+    let lp =
+        hps_emulsion::HysteresisLoop::last_period(rec, test.frequency_hz).map_err(|e| err(&e))?;
+    let scaled = |v: &[f64], s: f64| v.iter().map(|x| x * s).collect::<Vec<f64>>();
+    let z = scaled(&lp.displacement, 1e3);
+    let v = scaled(&lp.velocity, 1.0);
+    let f = scaled(&lp.force, 1e-3);
+    let pc = scaled(&lp.p_piston, 1e-6);
+    let pr = scaled(&lp.p_rod, 1e-6);
+    let fd = scaled(&lp.damping_force, 1e-3);
     let root = SVGBackend::new(path, (1200, 900)).into_drawing_area();
     root.fill(&WHITE).map_err(|e| err(&e))?;
     let panels = root.split_evenly((2, 2));

@@ -8,7 +8,9 @@ use perf_measures::iso2631::{
     assess_whole_body, Axis, AxisInput, FilterMethod, IirWeighting, KFactors, Weighting,
 };
 use perf_measures::signal::sample_rate;
-use perf_measures::{fit_free_decay, step_metrics_with, StepOptions};
+use perf_measures::{
+    fit_free_decay, step_amplitude, step_metrics_with, step_time, MeasureError, StepOptions,
+};
 use serde_json::json;
 use std::path::PathBuf;
 
@@ -299,40 +301,21 @@ fn step(a: StepArgs) -> CmdResult {
     let t = rec.require("time_s", path)?;
     let u = rec.require(&a.input, path)?;
     let y = rec.require(&a.output, path)?;
-    if t.len() < 4 {
-        return Err(format!("{}: needs at least 4 samples", path.display()).into());
-    }
-    if !(a.settle_fraction > 0.0 && a.settle_fraction < 1.0) {
-        return Err(format!("--settle-fraction {} must lie in (0, 1)", a.settle_fraction).into());
-    }
-    let n = t.len();
-    let u0 = u[0];
     let amplitude = match a.amplitude {
         Some(v) => v,
-        None => {
-            let k = ((a.settle_fraction * n as f64) as usize).max(1);
-            u[n - k..].iter().sum::<f64>() / k as f64 - u0
-        }
+        None => step_amplitude(u, a.settle_fraction).map_err(|e| match e {
+            MeasureError::NotFound(why) => format!(
+                "{}: the input `{}` {why}; give --amplitude",
+                path.display(),
+                a.input
+            ),
+            other => format!("{}: `{}`: {other}", path.display(), a.input),
+        })?,
     };
-    if !(amplitude.is_finite() && amplitude != 0.0) {
-        return Err(format!(
-            "{}: the input `{}` has no step (amplitude {amplitude}); give --amplitude",
-            path.display(),
-            a.input
-        )
-        .into());
-    }
     let t_step = match a.t_step {
         Some(v) => v,
-        None => {
-            let i = u
-                .iter()
-                .position(|v| (v - u0).abs() >= 0.02 * amplitude.abs())
-                .ok_or_else(|| {
-                    format!("{}: the input never steps; give --t-step", path.display())
-                })?;
-            t[i.saturating_sub(1)]
-        }
+        None => step_time(t, u, amplitude)
+            .map_err(|e| format!("{}: {e}; give --t-step", path.display()))?,
     };
     let opts = StepOptions {
         settle_fraction: a.settle_fraction,

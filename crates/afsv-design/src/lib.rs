@@ -1,0 +1,32 @@
+//! The design layer shared by the design optimisers and by validation:
+//!
+//! - [`measures`]: the six measures of the chapter-4 objective and their ratios to the
+//!   current design (Tables 4.3/4.4), the objective vector V of Eq 4.8;
+//! - [`objective`]: F(chi) = V . W (Eq 4.8);
+//! - [`ahp`]: the AHP weights W (Eqs 4.11-4.17) from the pairwise-comparison matrices;
+//! - [`afs_design`]: the chapter-4 design vector [A_0, l_1, l_2, a_v, B_eff] (Table 4.2)
+//!   applied to the AFS parameters, its bounds, and the A_0 of the longest steering arm;
+//! - [`hps_design`]: the chapter-6 design vector [A_hc, A_v, A_b] (Table 6.5) applied to
+//!   a strut parameter set;
+//! - [`sweep`]: the optimum of a one-variable design sweep (parabolic peak).
+//!
+//! Every constructor validates its input and returns a [`DesignError`] naming the field.
+//! `docs/design.md` maps each equation to its code.
+
+#![warn(missing_docs)]
+
+pub mod afs_design;
+pub mod ahp;
+pub mod error;
+pub mod hps_design;
+pub mod measures;
+pub mod objective;
+pub mod sweep;
+
+pub use afs_design::{a0_of_longest_initial_arm, AfsDesign, AfsDesignBounds};
+pub use ahp::{AhpHierarchy, AhpLevels, GoalComparison};
+pub use error::DesignError;
+pub use hps_design::HpsDesign;
+pub use measures::{DesignMeasures, Measure, MeasureRatios};
+pub use objective::Objective;
+pub use sweep::{parabolic_peak, SweepPeak};

@@ -1,0 +1,97 @@
+//! The registry of checks, one module per chapter's quantities. A check calls the models and
+//! the design layer (`afsv_design`) and compares their numbers with the fixtures; it
+//! computes no physics itself.
+
+mod ahp;
+mod chapter4;
+mod hps;
+mod sensitivity;
+mod terrain;
+mod tire;
+mod unmodelled;
+mod yaw_parameters;
+mod yaw_plane;
+
+use super::Ctx;
+
+/// One check: computes rows into the context.
+type CheckFn = fn(&mut Ctx) -> Result<(), String>;
+
+/// The registry: (name, fixture ids it covers, computation). The ids let [`super::run`] list the
+/// fixtures of a failed check as not reproduced with the error as reason.
+pub const CHECKS: &[(&str, &[&str], CheckFn)] = &[
+    (
+        "ahp_weights",
+        &["s4_ahp_w_ii_i", "s4_ahp_w_iii_ii", "s4_ahp_w"],
+        ahp::check_ahp,
+    ),
+    (
+        "table_3_1_4_1_parameters",
+        &[],
+        yaw_parameters::check_yaw_parameters,
+    ),
+    ("table_6_2_tire", &[], tire::check_tire),
+    ("table_2_4_terrain", &[], terrain::check_terrain),
+    ("table_6_3_hps_front_axle", &[], hps::check_hps_front),
+    (
+        "hps_lab",
+        &[
+            "static_pressure_75mm",
+            "static_pressure_100mm",
+            "static_pressure_115mm",
+            "mid_position_pressure",
+            "p_rod_min_compression",
+            "s5_min_rod_side_pressure",
+            "s5_saturation_pressures",
+            "s5_dynamic_qualitative",
+        ],
+        hps::check_hps_lab,
+    ),
+    (
+        "sensitivity_3_4_3",
+        &[
+            "s3_sens_a0_arm_length_peak",
+            "s3_sens_kl_damping_loaded",
+            "s3_sens_muv_damping_loaded",
+            "s3_sens_muv_damping_unloaded",
+            "s3_sens_kl_minus30_damping",
+            "s3_sens_beff_damping",
+            "s3_sens_a0_gain",
+            "s3_sens_beff_overshoot",
+            "s3_sens_beff_minus30_overshoot",
+            "s3_sens_kl_muv_overshoot",
+            "s3_sens_qualitative_trends",
+        ],
+        sensitivity::check_sensitivity,
+    ),
+    (
+        "a0_frequency_peak",
+        &["s3_sens_a0_frequency_peak"],
+        sensitivity::check_a0_peak,
+    ),
+    (
+        "yaw_frequency",
+        &["s6_omega_z_unsuspended"],
+        yaw_plane::check_yaw_frequency,
+    ),
+    (
+        "yaw_plane_qualitative",
+        &[
+            "s3_leakage_decay_steady_turn",
+            "s3_nonzero_final_articulation_after_pulse",
+        ],
+        yaw_plane::check_yaw_qualitative,
+    ),
+    (
+        "gain_efficiency",
+        &["s4_gain_efficiency_r2"],
+        yaw_plane::check_gain_efficiency,
+    ),
+    ("chapter_4_designs", &[], chapter4::check_chapter4),
+    ("not_reproducible", &[], unmodelled::list_not_reproducible),
+];
+
+/// One degree in radians.
+pub(super) const DEG: f64 = std::f64::consts::PI / 180.0;
+/// Speed of the section 3.3/3.4 and chapter 4 tests (50 km/h) in m/s.
+pub(super) const TEST_SPEED_M_S: f64 = 50.0 / 3.6;
