@@ -4,33 +4,28 @@
 //! sections 3.3-3.4 and 4.3.1 (yaw-mode frequency/damping, step metrics, power
 //! efficiency, sensitivity).
 //!
+//! The yaw-plane model lives in [`yaw_plane`]; its main types are re-exported here.
+//! [`inputs`] (steering-wheel signals) and [`error`] are shared with the vehicles to come.
+//!
 //! Entry points: [`simulate`] (one manoeuvre -> [`YawRecord`]), [`yaw_measures`]
 //! (the five measures at a speed for a load condition), [`sensitivity`].
 //! Equation-to-code map and modelling choices: `docs/afs-yaw-plane.md`.
 
-pub mod actuator;
-mod afs_coupling;
-pub mod analysis;
-pub mod driver;
 pub mod error;
 pub mod inputs;
-pub mod mechanics;
-pub mod model;
-pub mod params;
-pub mod registry;
-pub mod simulate;
+pub mod yaw_plane;
 
-pub use actuator::{ActuatorOutput, EquivalentTorsion, SteeringActuator};
-pub use analysis::{
+pub use error::DynError;
+pub use inputs::SteerInput;
+pub use odeint::Solver;
+pub use yaw_plane::actuator::{ActuatorOutput, EquivalentTorsion, SteeringActuator};
+pub use yaw_plane::analysis::{
     measures_for, sensitivity, yaw_measures, MeasureSpec, SensitivityParam, SensitivityTable,
     YawMeasures,
 };
-pub use driver::{table_3_2_speeds_kmh, Course, FieldCourse, PathDriver};
-pub use error::DynError;
-pub use inputs::SteerInput;
-pub use mechanics::EquationForm;
-pub use model::{SteerSource, YawPlaneModel};
-pub use odeint::Solver;
-pub use params::{Load, VehicleParams, YawPlaneParams};
-pub use registry::{VEHICLE_PARAMS, YAW_PLANE_PARAMS};
-pub use simulate::{simulate, Manoeuvre, SimOptions, SolverStats, YawRecord};
+pub use yaw_plane::driver::{table_3_2_speeds_kmh, Course, FieldCourse, PathDriver};
+pub use yaw_plane::mechanics::EquationForm;
+pub use yaw_plane::model::{SteerSource, YawPlaneModel};
+pub use yaw_plane::params::{Load, VehicleParams, YawPlaneParams};
+pub use yaw_plane::registry::{VEHICLE_PARAMS, YAW_PLANE_PARAMS};
+pub use yaw_plane::simulate::{simulate, Manoeuvre, SimOptions, SolverStats, YawRecord};

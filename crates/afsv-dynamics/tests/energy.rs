@@ -2,7 +2,7 @@
 //! off, total kinetic energy plus hydraulic energy must be conserved").
 
 use afs_hydraulics::{AfsParams, AfsSystem};
-use afsv_dynamics::mechanics::{kinetic_energy, Motion};
+use afsv_dynamics::yaw_plane::mechanics::{kinetic_energy, Motion};
 use afsv_dynamics::{
     EquationForm, SteerInput, SteerSource, SteeringActuator, VehicleParams, YawPlaneModel,
 };

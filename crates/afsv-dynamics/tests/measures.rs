@@ -1,7 +1,9 @@
 //! Measures of section 3.3 / 4.3.1, tolerance convergence, cavitation floor, divergence.
 
 use afs_hydraulics::{AfsParams, AfsSystem};
-use afsv_dynamics::analysis::{gain_efficiency_correlation, measures_for, steady_turn_decay};
+use afsv_dynamics::yaw_plane::analysis::{
+    gain_efficiency_correlation, measures_for, steady_turn_decay,
+};
 use afsv_dynamics::{
     simulate, yaw_measures, DynError, EquationForm, EquivalentTorsion, Load, Manoeuvre,
     MeasureSpec, SimOptions, Solver, VehicleParams,

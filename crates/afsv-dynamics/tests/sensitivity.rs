@@ -1,7 +1,7 @@
 //! Section 3.4.3: directions of the one-at-a-time design sensitivities.
 
 use afs_hydraulics::AfsParams;
-use afsv_dynamics::analysis::{measures_for, SensitivityParam, SensitivityTable};
+use afsv_dynamics::yaw_plane::analysis::{measures_for, SensitivityParam, SensitivityTable};
 use afsv_dynamics::{sensitivity, Load, MeasureSpec, VehicleParams};
 
 const U50: f64 = 50.0 / 3.6;
@@ -11,7 +11,7 @@ fn change(
     load: Load,
     p: SensitivityParam,
     v: f64,
-) -> afsv_dynamics::analysis::MeasureChanges {
+) -> afsv_dynamics::yaw_plane::analysis::MeasureChanges {
     t.rows
         .iter()
         .find(|r| r.load == load && r.parameter == p && r.variation_percent == v)

@@ -1,7 +1,9 @@
 //! Mirror symmetry, switchable tire lag, and the power balance as a property.
 
 use afs_hydraulics::{AfsParams, AfsSystem};
-use afsv_dynamics::mechanics::{accelerations, kinetic_energy, Loads, Motion, UnitGeometry};
+use afsv_dynamics::yaw_plane::mechanics::{
+    accelerations, kinetic_energy, Loads, Motion, UnitGeometry,
+};
 use afsv_dynamics::{
     simulate, EquationForm, Load, Manoeuvre, SimOptions, SteerInput, VehicleParams,
 };
@@ -70,7 +72,7 @@ proptest! {
         };
         let dke = (kinetic_energy(&p, &step(1.0)) - kinetic_energy(&p, &step(-1.0))) / (2.0 * h);
         // Tire power: lateral force times the axle's lateral velocity in its unit frame.
-        let (_, v_r) = afsv_dynamics::mechanics::rear_velocities(&g, &m);
+        let (_, v_r) = afsv_dynamics::yaw_plane::mechanics::rear_velocities(&g, &m);
         let p_tires = yf * (v + p.l_f1_m * rf) + yr * (v_r - p.l_r1_m * rr);
         let power = ts * (rf - rr) + a.traction_force * u + p_tires;
         prop_assert!((dke - power).abs() < 1e-5 * (power.abs() + 1e3), "{} vs {}", dke, power);

@@ -385,7 +385,8 @@ pub fn yaw_default_size(name: &str) -> Vec<f64> {
 /// training and in the held-out records, as in field data (Table 3.2).
 pub fn yaw_programme() -> Vec<(afsv_dynamics::Manoeuvre, afsv_dynamics::Load, bool)> {
     use afsv_dynamics::{
-        driver::Course, table_3_2_speeds_kmh, FieldCourse, Load, Manoeuvre, PathDriver, SteerInput,
+        table_3_2_speeds_kmh, yaw_plane::driver::Course, FieldCourse, Load, Manoeuvre, PathDriver,
+        SteerInput,
     };
     let kmh = |v: f64| v / 3.6;
     let steady = table_3_2_speeds_kmh(FieldCourse::SteadyTurn, Load::Loaded)[0];

@@ -14,7 +14,7 @@ pub const MAX_HPS_SAMPLES: f64 = 1e6;
 
 /// Largest number of output samples of a yaw-plane run (about 40 columns and the solver's
 /// dense output: 1.3 GB of memory and 0.7 GB of CSV at the limit).
-pub const MAX_YAW_SAMPLES: f64 = afsv_dynamics::simulate::MAX_OUTPUT_SAMPLES;
+pub const MAX_YAW_SAMPLES: f64 = afsv_dynamics::yaw_plane::simulate::MAX_OUTPUT_SAMPLES;
 
 fn number(s: &str) -> Result<f64, String> {
     let t = s.trim();

@@ -5,7 +5,7 @@
 use super::{args, CmdResult};
 use afsv::output::{OutputGuard, OutputKind};
 use afsv::record::Record;
-use afsv_dynamics::analysis::{
+use afsv_dynamics::yaw_plane::analysis::{
     gain_efficiency_correlation, measures_for, steady_turn_decay, MeasureSpec,
 };
 use afsv_dynamics::{

@@ -4,7 +4,7 @@
 use super::{Ctx, DEG, TEST_SPEED_M_S};
 use afs_hydraulics::AfsParams;
 use afsv_design::{a0_of_longest_initial_arm, parabolic_peak};
-use afsv_dynamics::analysis::MeasureChanges;
+use afsv_dynamics::yaw_plane::analysis::MeasureChanges;
 use afsv_dynamics::{
     measures_for, sensitivity, EquationForm, Load, MeasureSpec, SensitivityParam, SensitivityTable,
     VehicleParams,

@@ -4,7 +4,7 @@
 use super::sensitivity::sens_tables;
 use super::{Ctx, TEST_SPEED_M_S};
 use afs_hydraulics::{AfsParams, AfsSystem};
-use afsv_dynamics::analysis::{gain_efficiency_correlation, steady_turn_decay};
+use afsv_dynamics::yaw_plane::analysis::{gain_efficiency_correlation, steady_turn_decay};
 use afsv_dynamics::{
     simulate, table_3_2_speeds_kmh, EquationForm, FieldCourse, Load, Manoeuvre, MeasureSpec,
     VehicleParams,

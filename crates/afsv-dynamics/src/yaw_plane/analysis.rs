@@ -4,8 +4,8 @@
 //! leakage, and the gain-efficiency correlation over a leakage sweep (Fig 4.7).
 
 use crate::error::DynError;
-use crate::params::{Load, VehicleParams};
-use crate::simulate::{simulate, Manoeuvre, SimOptions, YawRecord};
+use crate::yaw_plane::params::{Load, VehicleParams};
+use crate::yaw_plane::simulate::{simulate, Manoeuvre, SimOptions, YawRecord};
 use crate::{EquationForm, SteerInput};
 use afs_hydraulics::{AfsParams, AfsSystem};
 use serde::{Deserialize, Serialize};

@@ -1,13 +1,13 @@
 //! Simulation entry point: [`simulate`] runs one [`Manoeuvre`] and returns a [`YawRecord`]
 //! with the record channels of docs/records.md plus internal states.
 
-use crate::actuator::{SteeringActuator, MAX_ACTUATOR_STATES};
-use crate::driver::PathDriver;
 use crate::error::DynError;
 use crate::inputs::SteerInput;
-use crate::mechanics::{kinetic_energy, Motion};
-use crate::model::{SteerSource, YawPlaneModel};
-use crate::params::VehicleParams;
+use crate::yaw_plane::actuator::{SteeringActuator, MAX_ACTUATOR_STATES};
+use crate::yaw_plane::driver::PathDriver;
+use crate::yaw_plane::mechanics::{kinetic_energy, Motion};
+use crate::yaw_plane::model::{SteerSource, YawPlaneModel};
+use crate::yaw_plane::params::VehicleParams;
 use crate::EquationForm;
 use odeint::{Atol, Control, Integrator, OdeError, Problem, Solver, Workspace};
 use serde::{Deserialize, Serialize};
@@ -240,7 +240,7 @@ pub struct YawRecord {
     pub kinetic_energy_j: Vec<f64>,
     /// Energy stored in the actuator (J); empty unless [`SimOptions::record_energy`].
     pub actuator_energy_j: Vec<f64>,
-    /// Every integrated state in SI units, `(name, values)`; see [`crate::model`] for
+    /// Every integrated state in SI units, `(name, values)`; see [`crate::yaw_plane::model`] for
     /// the layout.
     pub states: Vec<(String, Vec<f64>)>,
     /// Solver counters.

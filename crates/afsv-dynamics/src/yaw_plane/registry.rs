@@ -4,7 +4,7 @@
 //! ([`afs_hydraulics::AFS_PARAMS`]), each by its field name inside `vehicle` or `afs`: the
 //! two name lists are disjoint, so one name addresses one parameter.
 
-use crate::params::{VehicleParams, YawPlaneParams};
+use crate::yaw_plane::params::{VehicleParams, YawPlaneParams};
 use afs_hydraulics::AFS_PARAMS;
 use vehicle_components::{ParamSet, ParamSpec};
 
@@ -150,7 +150,7 @@ impl ParamSet for YawPlaneParams {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::params::Load;
+    use crate::yaw_plane::params::Load;
     use vehicle_components::{check_specs, ParamError};
 
     #[test]

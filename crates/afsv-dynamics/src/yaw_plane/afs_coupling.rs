@@ -5,7 +5,7 @@
 //! `atol` suits every state of the coupled model. With the valve-lag extension a fourth
 //! state, the lagged spool displacement x_v (rad, typical 1, starts centred), follows.
 
-use crate::actuator::{ActuatorOutput, SteeringActuator};
+use crate::yaw_plane::actuator::{ActuatorOutput, SteeringActuator};
 use afs_hydraulics::{AfsInput, AfsSystem};
 
 const NAMES: [&str; 4] = ["p_c_pa", "p_r_pa", "theta_h_rad", "valve_spool_rad"];
