@@ -32,7 +32,6 @@
 //! model.velocity_to_qdot(q.as_slice(), &v, &mut qdot);
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
-#![warn(missing_docs)]
 
 mod dynamics;
 mod energy;
