@@ -9,7 +9,7 @@
 use crate::discover::hps::HpsStrutModel;
 use crate::discover::yaw::{apply_play, YawPlaneModel};
 use crate::discover::{ActiveEffect, DiscoveryModel, EffectSpec};
-use crate::record::Record;
+use afsv_records::Record;
 use hps_emulsion::{simulate_displacement, Excitation, HarmonicTest};
 use rand_chacha::rand_core::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;

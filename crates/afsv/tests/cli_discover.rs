@@ -207,7 +207,7 @@ fn records_written_elsewhere_are_read_and_the_effect_is_named() {
             if path.extension().is_none_or(|e| e != "csv") {
                 continue;
             }
-            let rec = afsv::record::Record::read(&path).unwrap();
+            let rec = afsv_records::Record::read(&path).unwrap();
             let mut names: Vec<String> = rec.names().to_vec();
             names.reverse();
             let mut text = String::from("\u{feff}");
@@ -337,7 +337,7 @@ fn sign_conventions_in_words_are_refused_and_both_ways_forward_work() {
                 continue;
             }
             let name = path.file_name().unwrap();
-            let rec = afsv::record::Record::read(&path).unwrap();
+            let rec = afsv_records::Record::read(&path).unwrap();
             std::fs::copy(&path, words.join(set).join(name)).unwrap();
             let mut meta = rec.meta.clone();
             meta["sign_convention"] =

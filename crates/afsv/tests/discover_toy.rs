@@ -4,7 +4,7 @@
 use afsv::discover::{
     discover, ActiveEffect, DiscoveryModel, DiscoveryOptions, EffectSpec, ParamSpec, Phase,
 };
-use afsv::record::Record;
+use afsv_records::Record;
 
 /// tau y' + y = K * g(u), with optional dead zone in g, output saturation, and Coulomb-like
 /// offset (sign(u) * c added to the output).

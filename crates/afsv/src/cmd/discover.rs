@@ -5,8 +5,8 @@ use afsv::discover::hps::HpsStrutModel;
 use afsv::discover::report::write_report;
 use afsv::discover::yaw::YawPlaneModel;
 use afsv::discover::{discover, DiscoveryModel, DiscoveryOptions, Progress};
-use afsv::record::{ReadOptions, Record};
 use afsv::synth;
+use afsv_records::{ReadOptions, Record};
 use std::path::{Path, PathBuf};
 
 /// Which model the workflow works on.

@@ -329,7 +329,7 @@ struct EnvelopeRow {
 }
 
 fn envelope(args: EnvelopeArgs) -> CmdResult {
-    let rec = afsv::record::Record::read(&args.profile)?;
+    let rec = afsv_records::Record::read(&args.profile)?;
     let xs = rec.require("x_m", &args.profile)?.to_vec();
     let col = match args.track {
         TrackSide::Left => "left_m",

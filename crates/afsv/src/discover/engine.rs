@@ -6,7 +6,7 @@ use super::layout::{channel_scales, RecordSet};
 use super::signature::{channel_signature, ChannelSignature};
 use super::stats::{self, SignificanceRule};
 use super::{ActiveEffect, DiscoveryModel};
-use crate::record::Record;
+use afsv_records::Record;
 use rayon::prelude::*;
 
 /// Settings of [`discover`].

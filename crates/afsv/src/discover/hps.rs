@@ -10,7 +10,7 @@
 //! fraction with strut velocity, asymmetric seal friction, check-valve opening lag.
 
 use super::{ActiveEffect, DiscoveryModel, EffectSpec, ParamSpec, Phase};
-use crate::record::Record;
+use afsv_records::Record;
 use hps_emulsion::{
     simulate_displacement, AsymmetricFriction, Excitation, GasFractionGrowth, HeatTransfer,
     HpsExtensions, SimOptions, StrutParams, ValveLag,

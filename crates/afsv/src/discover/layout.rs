@@ -2,7 +2,7 @@
 //! vector of a configuration over a set of prepared records.
 
 use super::{ActiveEffect, DiscoveryModel};
-use crate::record::Record;
+use afsv_records::Record;
 use rayon::prelude::*;
 
 /// One compared channel of one record: where it sits in the residual vector.

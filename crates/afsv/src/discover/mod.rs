@@ -29,7 +29,7 @@ pub use engine::{
 };
 pub use evidence::{Evidence, RecordEvidence};
 
-use crate::record::Record;
+use afsv_records::Record;
 
 /// A parameter the workflow may fit, with its physical range.
 #[derive(Debug, Clone, PartialEq, serde::Serialize)]

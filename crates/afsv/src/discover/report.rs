@@ -3,7 +3,7 @@
 
 use super::{ActiveEffect, Discovery, DiscoveryModel};
 use crate::plot::{line_plot, Series};
-use crate::record::Record;
+use afsv_records::Record;
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 

@@ -12,11 +12,11 @@
 //! mechanisms the paper's model lacks.
 
 use super::{ActiveEffect, DiscoveryModel, EffectSpec, ParamSpec, Phase};
-use crate::record::Record;
 use afs_hydraulics::{
     backlash, AfsExtensions, AfsSystem, CoulombFriction, EntrainedAir, SupplyDroop, ValveLag,
 };
 use afsv_dynamics::{simulate, Load, Manoeuvre, SimOptions, SteerInput, YawPlaneParams, YawRecord};
+use afsv_records::Record;
 use std::path::{Path, PathBuf};
 
 /// Channels the vehicle model predicts (steering-record names of docs/records.md).

@@ -6,8 +6,8 @@
 use afsv::discover::hps::HpsStrutModel;
 use afsv::discover::yaw::YawPlaneModel;
 use afsv::discover::{discover, Discovery, DiscoveryModel, DiscoveryOptions};
-use afsv::record::Record;
 use afsv::synth::{hps_records, yaw_records, HpsNoise, SynthRecord, YawNoise};
+use afsv_records::Record;
 
 /// Assert that exactly `effects` were named (in any order) and the held-out gap shrank by
 /// at least `min_shrink`; on failure, show every candidate's score.
