@@ -2,7 +2,7 @@
 //! held-out records before (calibrated baseline) and after (named effects).
 
 use super::{ActiveEffect, Discovery, DiscoveryModel};
-use crate::plot::{line_plot, Series};
+use afsv_plot::{line_plot, Series};
 use afsv_records::Record;
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
