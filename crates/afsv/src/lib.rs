@@ -3,7 +3,5 @@
 //! (`terrain-psd`, `tire-fiala`, `afs-hydraulics`, `hps-emulsion`, `perf-measures`,
 //! `afsv-dynamics`); this crate composes them for users.
 
-pub mod discover;
 pub mod output;
-pub mod synth;
 pub mod validate;

@@ -262,7 +262,7 @@ fn records_written_elsewhere_are_read_and_the_effect_is_named() {
         "{}",
         String::from_utf8_lossy(&out.stderr)
     );
-    // The programme's unloaded records (see `afsv::synth::yaw_programme`).
+    // The programme's unloaded records (see `afsv_discovery::synth::yaw_programme`).
     let own = |set: &std::path::Path, stem: &str| {
         format!("{}={}", set.join(stem).display(), unloaded.display())
     };

@@ -1,145 +1,49 @@
 //! Discovery reports: Markdown summary, full JSON, and SVG overlays/residuals of the
 //! held-out records before (calibrated baseline) and after (named effects).
 
-use super::{ActiveEffect, Discovery, DiscoveryModel};
-use afsv_plot::{line_plot, Series};
+use super::{Discovery, DiscoveryError, DiscoveryModel};
 use afsv_records::Record;
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 
-/// Files a report writes into its folder (besides the SVG plots).
+/// Files a report writes into its folder (besides the SVG plots of the `plots` feature).
 pub const REPORT_FILES: [&str; 2] = ["report.md", "report.json"];
 
-/// Write `report.md`, `report.json` and SVG plots for `d` into `dir` (created if needed).
-/// Returns the paths written.
+/// Write `report.md`, `report.json` and (with the `plots` feature) SVG overlays and
+/// residuals of the held-out records for `d` into `dir` (created if needed). Returns the
+/// paths written.
 pub fn write_report<M: DiscoveryModel + ?Sized>(
     model: &M,
     d: &Discovery,
     holdout: &[Record],
     holdout_names: &[String],
     dir: &Path,
-) -> Result<Vec<PathBuf>, String> {
-    std::fs::create_dir_all(dir).map_err(|e| format!("{}: {e}", dir.display()))?;
+) -> Result<Vec<PathBuf>, DiscoveryError> {
+    std::fs::create_dir_all(dir).map_err(|e| DiscoveryError::io(dir, e))?;
     let mut written = Vec::new();
-    let json = serde_json::to_string_pretty(d).map_err(|e| e.to_string())?;
+    let json = serde_json::to_string_pretty(d)?;
     let p = dir.join("report.json");
-    std::fs::write(&p, json + "\n").map_err(|e| format!("{}: {e}", p.display()))?;
+    std::fs::write(&p, json + "\n").map_err(|e| DiscoveryError::io(&p, e))?;
     written.push(p);
 
-    let catalogue = model.catalogue();
-    let final_effects: Vec<(usize, Vec<f64>)> = d
-        .final_model
-        .effects
-        .iter()
-        .zip(&d.final_model.effect_params)
-        .filter_map(|(name, params)| {
-            let i = catalogue.iter().position(|e| &e.name == name)?;
-            Some((i, params.iter().map(|p| p.value).collect()))
-        })
-        .collect();
-    let active: Vec<ActiveEffect<'_>> = final_effects
-        .iter()
-        .map(|(index, values)| ActiveEffect {
-            index: *index,
-            values,
-        })
-        .collect();
-    let mut plots = Vec::new();
-    for i in plotted_records(d, holdout_names, holdout.len()) {
-        let rec = &holdout[i];
-        let label = holdout_names
-            .get(i)
-            .cloned()
-            .unwrap_or_else(|| format!("holdout_{i}"));
-        let prepared = model.prepare(rec)?;
-        let before = model.simulate(&prepared, &d.calibrated.baseline, &[])?;
-        let after = model.simulate(&prepared, &d.final_model.baseline, &active)?;
-        let t: Vec<f64> = rec
-            .column("time_s")
-            .map(<[f64]>::to_vec)
-            .unwrap_or_else(|| (0..rec.len()).map(|k| k as f64).collect());
-        for (c, ch) in d.channels.iter().enumerate() {
-            let (Some(meas), Some(Some(b)), Some(Some(a))) =
-                (rec.column(ch), before.get(c), after.get(c))
-            else {
-                continue;
-            };
-            let stem = sanitize(&format!("{label}_{ch}"));
-            let p = dir.join(format!("overlay_{stem}.svg"));
-            line_plot(
-                &p,
-                &format!("{label}: {ch}"),
-                "time (s)",
-                ch,
-                &[
-                    Series {
-                        label: "measured",
-                        x: &t,
-                        y: meas,
-                    },
-                    Series {
-                        label: "calibrated baseline",
-                        x: &t,
-                        y: b,
-                    },
-                    Series {
-                        label: "with named effects",
-                        x: &t,
-                        y: a,
-                    },
-                ],
-            )?;
-            plots.push(p.clone());
-            written.push(p);
-            let rb: Vec<f64> = b.iter().zip(meas).map(|(x, y)| x - y).collect();
-            let ra: Vec<f64> = a.iter().zip(meas).map(|(x, y)| x - y).collect();
-            let p = dir.join(format!("residual_{stem}.svg"));
-            line_plot(
-                &p,
-                &format!("{label}: {ch} residual (model - measured)"),
-                "time (s)",
-                ch,
-                &[
-                    Series {
-                        label: "calibrated baseline",
-                        x: &t,
-                        y: &rb,
-                    },
-                    Series {
-                        label: "with named effects",
-                        x: &t,
-                        y: &ra,
-                    },
-                ],
-            )?;
-            written.push(p);
-        }
-    }
+    #[cfg(feature = "plots")]
+    let plots = {
+        let (overlays, svgs) =
+            crate::overlay::write_overlays(model, d, holdout, holdout_names, dir)?;
+        written.extend(svgs);
+        overlays
+    };
+    #[cfg(not(feature = "plots"))]
+    let plots: Vec<PathBuf> = {
+        // Without the `plots` feature the report is report.md and report.json only.
+        let _ = (model, holdout, holdout_names);
+        Vec::new()
+    };
     let md = markdown(d, &plots, dir);
     let p = dir.join("report.md");
-    std::fs::write(&p, md).map_err(|e| format!("{}: {e}", p.display()))?;
+    std::fs::write(&p, md).map_err(|e| DiscoveryError::io(&p, e))?;
     written.push(p);
     Ok(written)
-}
-
-/// Held-out records that get overlay plots: at most [`MAX_PLOTTED_RECORDS`], those carrying
-/// the largest share of the first named effect's gain (or, when nothing was named, the
-/// first ones), in record order. Every record stays in report.json.
-fn plotted_records(d: &Discovery, names: &[String], n: usize) -> Vec<usize> {
-    let mut picked: Vec<usize> = match d.evidence.first() {
-        Some(ev) => ev
-            .records
-            .iter()
-            .filter_map(|r| names.iter().position(|n| *n == r.record))
-            .take(MAX_PLOTTED_RECORDS)
-            .collect(),
-        None => (0..n.min(MAX_PLOTTED_RECORDS)).collect(),
-    };
-    if picked.is_empty() {
-        picked = (0..n.min(MAX_PLOTTED_RECORDS)).collect();
-    }
-    picked.sort_unstable();
-    picked
 }
 
 /// Most held-out records plotted (two SVGs per record and channel).
@@ -156,18 +60,6 @@ fn sig3(v: f64) -> String {
     } else {
         format!("{v:.2e}")
     }
-}
-
-fn sanitize(s: &str) -> String {
-    s.chars()
-        .map(|c| {
-            if c.is_ascii_alphanumeric() || c == '-' || c == '_' {
-                c
-            } else {
-                '_'
-            }
-        })
-        .collect()
 }
 
 /// The Markdown summary of a discovery run.
