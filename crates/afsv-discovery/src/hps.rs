@@ -12,8 +12,8 @@
 use super::{ActiveEffect, DiscoveryError, DiscoveryModel, EffectSpec, ParamSpec, Phase};
 use afsv_records::Record;
 use hps_emulsion::{
-    simulate_displacement, AsymmetricFriction, Excitation, GasFractionGrowth, HeatTransfer,
-    HpsExtensions, SimOptions, StrutParams, ValveLag,
+    simulate_strut, AsymmetricFriction, Excitation, GasFractionGrowth, HeatTransfer, HpsExtensions,
+    HpsStrut, SimOptions, StrutParams, ValveLag,
 };
 
 /// Channels the strut model predicts (bench-record names of docs/records.md).
@@ -44,6 +44,9 @@ pub struct HpsStrutModel {
 pub struct StrutReplay {
     /// The recorded displacement with a velocity consistent with it ([`velocity_of`]).
     pub excitation: Excitation,
+    /// Peak strut velocity of the motion (m/s): sets the friction band and the
+    /// velocity-dependent gas fraction (section 5.3.1), worked out once per record.
+    pub peak_velocity_m_s: f64,
     /// Conditions in words.
     pub condition: String,
 }
@@ -321,12 +324,14 @@ impl DiscoveryModel for HpsStrutModel {
         let meta = |k: &str| record.meta.get(k).and_then(serde_json::Value::as_f64);
         let f = meta("frequency_hz").map_or(String::new(), |f| format!(", {f} Hz"));
         let amp = meta("amplitude_m").map_or(String::new(), |a| format!(", {:.0} mm", 1000.0 * a));
+        let excitation = Excitation::Samples {
+            time_s: t.to_vec(),
+            displacement_m: z.to_vec(),
+            velocity_m_s: Some(v),
+        };
         Ok(StrutReplay {
-            excitation: Excitation::Samples {
-                time_s: t.to_vec(),
-                displacement_m: z.to_vec(),
-                velocity_m_s: Some(v),
-            },
+            peak_velocity_m_s: excitation.peak_velocity(),
+            excitation,
             condition: format!("{} strut{f}{amp}", self.strut.as_deref().unwrap_or("user")),
         })
     }
@@ -343,7 +348,8 @@ impl DiscoveryModel for HpsStrutModel {
     ) -> Result<Vec<Option<Vec<f64>>>, DiscoveryError> {
         let p = self.apply_baseline(baseline)?;
         let ext = self.apply_effects(effects)?;
-        let out = simulate_displacement(&p, &ext, &prepared.excitation, &self.sim)?;
+        let strut = HpsStrut::new(&p, &ext, prepared.peak_velocity_m_s)?;
+        let out = simulate_strut(&strut, &prepared.excitation, &self.sim)?;
         Ok(vec![Some(out.force), Some(out.p_piston), Some(out.p_rod)])
     }
 

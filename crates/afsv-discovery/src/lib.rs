@@ -128,8 +128,8 @@ pub struct Phase {
 /// Implementations live next to the models (strut, yaw-plane vehicle); the workflow only
 /// sees records, parameter vectors and predicted channels. Each record is first
 /// [prepared](Self::prepare) once: its conditions (load, speed, strut) and invariant inputs
-/// (smoothed steering angle, strut velocity) are worked out there, never at every fit
-/// evaluation.
+/// (mean speed, smoothed steering angle, strut velocity and its peak) are worked out
+/// there, never at every fit evaluation.
 pub trait DiscoveryModel: Sync {
     /// A record's conditions and invariant inputs.
     type Prepared: Send + Sync;

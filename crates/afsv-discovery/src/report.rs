@@ -65,6 +65,22 @@ fn sig3(v: f64) -> String {
 /// The Markdown summary of a discovery run.
 pub fn markdown(d: &Discovery, plots: &[PathBuf], dir: &Path) -> String {
     let mut s = String::new();
+    summary(&mut s, d);
+    if !d.named.is_empty() {
+        fitted_effects(&mut s, d);
+        evidence(&mut s, d);
+    }
+    conditions(&mut s, d);
+    baseline_table(&mut s, d);
+    channel_table(&mut s, d);
+    disagreement(&mut s, d);
+    candidates(&mut s, d);
+    overlays(&mut s, plots, dir);
+    s
+}
+
+/// Title, headline and what was named (or why nothing was).
+fn summary(s: &mut String, d: &Discovery) {
     let _ = writeln!(s, "# Model-discrepancy report: {}\n", d.model);
     let _ = writeln!(s, "{}\n", headline(d));
     if d.named.is_empty() {
@@ -89,65 +105,81 @@ pub fn markdown(d: &Discovery, plots: &[PathBuf], dir: &Path) -> String {
         if d.gap_shrink < 0.7 {
             let _ = writeln!(s, "\nThe named effects explain only part of the gap: something outside the catalogue (or a different form of a named effect) remains.");
         }
-        let _ = writeln!(s, "\n## Fitted effect parameters\n\n| effect | parameter | value | standard error | note |\n|---|---|---|---|---|");
-        for (name, params) in d
-            .final_model
-            .effects
-            .iter()
-            .zip(&d.final_model.effect_params)
-        {
-            for p in params {
-                let note = if p.at_bound {
-                    "at a bound of its range"
-                } else {
-                    ""
-                };
-                let _ = writeln!(
-                    s,
-                    "| {name} | {} | {:.6e} | {} | {note} |",
-                    p.name,
-                    p.value,
-                    opt(p.std_error, |v| format!("{v:.2e}"))
-                );
-            }
-        }
-        let _ = writeln!(
-            s,
-            "\n## Evidence: where each effect's held-out gain comes from\n"
-        );
-        for ev in &d.evidence {
-            let phases = ev
-                .phases
-                .iter()
-                .map(|(p, share)| format!("{p} {:.0} %", 100.0 * share))
-                .collect::<Vec<_>>()
-                .join(", ");
-            let _ = writeln!(s, "`{}` (by phase: {phases}):\n\n| held-out record | condition | MSE before | MSE after | share of gain |\n|---|---|---|---|---|", ev.effect);
-            for r in ev.records.iter().take(10) {
-                let _ = writeln!(
-                    s,
-                    "| {} | {} | {:.3e} | {:.3e} | {:+.1} % |",
-                    r.record,
-                    r.condition,
-                    r.mse_before,
-                    r.mse_after,
-                    100.0 * r.share
-                );
-            }
-            if ev.records.len() > 10 {
-                let _ = writeln!(
-                    s,
-                    "\n({} more records in report.json)",
-                    ev.records.len() - 10
-                );
-            }
-            let _ = writeln!(s);
+    }
+}
+
+/// The fitted parameters of the named effects.
+fn fitted_effects(s: &mut String, d: &Discovery) {
+    let _ = writeln!(s, "\n## Fitted effect parameters\n\n| effect | parameter | value | standard error | note |\n|---|---|---|---|---|");
+    for (name, params) in d
+        .final_model
+        .effects
+        .iter()
+        .zip(&d.final_model.effect_params)
+    {
+        for p in params {
+            let note = if p.at_bound {
+                "at a bound of its range"
+            } else {
+                ""
+            };
+            let _ = writeln!(
+                s,
+                "| {name} | {} | {:.6e} | {} | {note} |",
+                p.name,
+                p.value,
+                opt(p.std_error, |v| format!("{v:.2e}"))
+            );
         }
     }
+}
+
+/// Per named effect: the held-out records and phases that carried its gain.
+fn evidence(s: &mut String, d: &Discovery) {
+    let _ = writeln!(
+        s,
+        "\n## Evidence: where each effect's held-out gain comes from\n"
+    );
+    for ev in &d.evidence {
+        let phases = ev
+            .phases
+            .iter()
+            .map(|(p, share)| format!("{p} {:.0} %", 100.0 * share))
+            .collect::<Vec<_>>()
+            .join(", ");
+        let _ = writeln!(s, "`{}` (by phase: {phases}):\n\n| held-out record | condition | MSE before | MSE after | share of gain |\n|---|---|---|---|---|", ev.effect);
+        for r in ev.records.iter().take(10) {
+            let _ = writeln!(
+                s,
+                "| {} | {} | {:.3e} | {:.3e} | {:+.1} % |",
+                r.record,
+                r.condition,
+                r.mse_before,
+                r.mse_after,
+                100.0 * r.share
+            );
+        }
+        if ev.records.len() > 10 {
+            let _ = writeln!(
+                s,
+                "\n({} more records in report.json)",
+                ev.records.len() - 10
+            );
+        }
+        let _ = writeln!(s);
+    }
+}
+
+/// The conditions each record was replayed under.
+fn conditions(s: &mut String, d: &Discovery) {
     let _ = writeln!(s, "\n## Conditions each record was replayed under\n\n| record | set | condition |\n|---|---|---|");
     for c in &d.conditions {
         let _ = writeln!(s, "| {} | {} | {} |", c.record, c.set, c.condition);
     }
+}
+
+/// Nominal, calibrated and final baseline parameters.
+fn baseline_table(s: &mut String, d: &Discovery) {
     let _ = writeln!(s, "\n## Calibrated baseline parameters\n\n| parameter | nominal | calibrated | final | standard error (calibration) |\n|---|---|---|---|---|");
     for (i, n) in d.calibrated.baseline_names.iter().enumerate() {
         let _ = writeln!(
@@ -159,6 +191,10 @@ pub fn markdown(d: &Discovery, plots: &[PathBuf], dir: &Path) -> String {
             opt(d.calibrated.baseline_se[i], |v| format!("{v:.2e}"))
         );
     }
+}
+
+/// Per-channel NRMSE before and after, training and held-out.
+fn channel_table(s: &mut String, d: &Discovery) {
     let _ = writeln!(s, "\n## Error per channel (NRMSE = RMS error / channel standard deviation)\n\n| channel | train before | train after | held-out before | held-out after |\n|---|---|---|---|---|");
     // A channel no record has is not compared: shown as "not recorded", not as NaN.
     let cell = |e: &super::ChannelError| {
@@ -179,6 +215,10 @@ pub fn markdown(d: &Discovery, plots: &[PathBuf], dir: &Path) -> String {
             cell(ha)
         );
     }
+}
+
+/// The worst channel signatures of the calibrated baseline.
+fn disagreement(s: &mut String, d: &Discovery) {
     let _ = writeln!(s, "\n## Where the calibrated baseline disagrees most\n\n| record | channel | NRMSE | bias | lag (s) | amplitude ratio | freq. shift (%) | low-band share | zero-crossing ratio | worst phase |\n|---|---|---|---|---|---|---|---|---|---|");
     let mut sig: Vec<_> = d.signatures.iter().collect();
     sig.sort_by(|a, b| b.1.nrmse.total_cmp(&a.1.nrmse));
@@ -203,6 +243,10 @@ pub fn markdown(d: &Discovery, plots: &[PathBuf], dir: &Path) -> String {
             g.zero_crossing_ratio
         );
     }
+}
+
+/// Every round's candidates with their scores or failures.
+fn candidates(s: &mut String, d: &Discovery) {
     let _ = writeln!(s, "\n## Candidates tried\n");
     for (k, st) in d.steps.iter().enumerate() {
         let _ = writeln!(
@@ -238,6 +282,10 @@ pub fn markdown(d: &Discovery, plots: &[PathBuf], dir: &Path) -> String {
         }
         let _ = writeln!(s);
     }
+}
+
+/// Links to the overlay plots (feature `plots`).
+fn overlays(s: &mut String, plots: &[PathBuf], dir: &Path) {
     if !plots.is_empty() {
         let _ = writeln!(s, "## Held-out overlays\n");
         for p in plots {
@@ -245,7 +293,6 @@ pub fn markdown(d: &Discovery, plots: &[PathBuf], dir: &Path) -> String {
             let _ = writeln!(s, "![{0}]({0})", rel.display());
         }
     }
-    s
 }
 
 /// `n/a` for a quantity that could not be computed.
