@@ -44,7 +44,7 @@ fn main() -> ExitCode {
 const HELP: &str = "usage: cargo xtask <task>\n\ntasks:\n  bench [--summary] [ARGS...]  run the criterion benches (ARGS go to the bench harness) and print mean times and real-time factors\n  validate [--fixtures DIR] [--out DIR]  compare the models with fixtures/reported/ and write target/validation/report.md\n  fuzz [--cases N] [--seed S] [--jobs J] [--timeout SECS] [--mem-mib MIB] [--bin PATH] [--only GROUPS] [--skip GROUPS] [--keep]  run afsv on N generated bad inputs (default 10000); fail on panics, hangs, aborts, non-finite output or modified inputs\n  discover-matrix  run the discovery workflow on every catalogue effect of both models and print the detection table (minutes)";
 
 /// The full detection matrix of the discovery workflow (the slow tests of
-/// `crates/afsv/tests/discover_matrix.rs`).
+/// `crates/afsv-discovery/tests/discover_matrix.rs`).
 fn discover_matrix() -> Result<(), String> {
     let status = Command::new(std::env::var("CARGO").unwrap_or_else(|_| "cargo".into()))
         .current_dir(workspace_root())
@@ -52,7 +52,7 @@ fn discover_matrix() -> Result<(), String> {
             "test",
             "--release",
             "-p",
-            "afsv",
+            "afsv-discovery",
             "--test",
             "discover_matrix",
             "--",
@@ -162,7 +162,7 @@ fn bench(args: &[String]) -> Result<(), String> {
 }
 
 /// Whole discovery runs on independently generated records (64 vehicle records, the
-/// 7-record strut programme), timed by an ignored test of the afsv crate.
+/// 7-record strut programme), timed by an ignored test of the afsv-discovery crate.
 fn discovery_rows(root: &std::path::Path) -> Result<(), String> {
     let out = Command::new(std::env::var("CARGO").unwrap_or_else(|_| "cargo".into()))
         .current_dir(root)
@@ -171,7 +171,7 @@ fn discovery_rows(root: &std::path::Path) -> Result<(), String> {
             "--release",
             "-q",
             "-p",
-            "afsv",
+            "afsv-discovery",
             "--test",
             "discover_independent",
             "--",

@@ -185,7 +185,7 @@ pub fn is_afsv_json(text: &str) -> bool {
             .and_then(Value::as_str)
             .is_some_and(|s| s.starts_with(WRITTEN_BY))
     };
-    map.get("sign_convention").and_then(Value::as_str) == Some(crate::record::SIGN_CONVENTION)
+    map.get("sign_convention").and_then(Value::as_str) == Some(afsv_records::SIGN_CONVENTION)
         && (by("written_by") || by("generator"))
 }
 

@@ -207,7 +207,7 @@ fn records_written_elsewhere_are_read_and_the_effect_is_named() {
             if path.extension().is_none_or(|e| e != "csv") {
                 continue;
             }
-            let rec = afsv::record::Record::read(&path).unwrap();
+            let rec = afsv_records::Record::read(&path).unwrap();
             let mut names: Vec<String> = rec.names().to_vec();
             names.reverse();
             let mut text = String::from("\u{feff}");
@@ -262,7 +262,7 @@ fn records_written_elsewhere_are_read_and_the_effect_is_named() {
         "{}",
         String::from_utf8_lossy(&out.stderr)
     );
-    // The programme's unloaded records (see `afsv::synth::yaw_programme`).
+    // The programme's unloaded records (see `afsv_discovery::synth::yaw_programme`).
     let own = |set: &std::path::Path, stem: &str| {
         format!("{}={}", set.join(stem).display(), unloaded.display())
     };
@@ -337,7 +337,7 @@ fn sign_conventions_in_words_are_refused_and_both_ways_forward_work() {
                 continue;
             }
             let name = path.file_name().unwrap();
-            let rec = afsv::record::Record::read(&path).unwrap();
+            let rec = afsv_records::Record::read(&path).unwrap();
             std::fs::copy(&path, words.join(set).join(name)).unwrap();
             let mut meta = rec.meta.clone();
             meta["sign_convention"] =

@@ -31,7 +31,7 @@ fn simulate_writes_record_with_design_columns_and_sidecar() {
     assert!(ok, "{err}");
     let v: serde_json::Value = serde_json::from_str(&stdout).unwrap();
     assert_eq!(v["samples"], 2001);
-    let rec = afsv::record::Record::read(&out).unwrap();
+    let rec = afsv_records::Record::read(&out).unwrap();
     for c in [
         "time_s",
         "steer_wheel_deg",
@@ -67,7 +67,7 @@ fn simulate_writes_record_with_design_columns_and_sidecar() {
         out2.to_str().unwrap(),
     ]);
     assert!(ok, "{err}");
-    let b = afsv::record::Record::read(&out2).unwrap();
+    let b = afsv_records::Record::read(&out2).unwrap();
     let pa = a.iter().fold(0.0f64, |m, v| m.max(v.abs()));
     let pb = b
         .column("articulation_deg")

@@ -1,12 +1,12 @@
 //! `afsv discover` and `afsv synth`: the model-discrepancy workflow (docs/discovery.md).
 
 use super::CmdResult;
-use afsv::discover::hps::HpsStrutModel;
-use afsv::discover::report::write_report;
-use afsv::discover::yaw::YawPlaneModel;
-use afsv::discover::{discover, DiscoveryModel, DiscoveryOptions, Progress};
-use afsv::record::{ReadOptions, Record};
-use afsv::synth;
+use afsv_discovery::hps::HpsStrutModel;
+use afsv_discovery::report::write_report;
+use afsv_discovery::synth;
+use afsv_discovery::yaw::YawPlaneModel;
+use afsv_discovery::{discover, DiscoveryModel, DiscoveryOptions, Progress};
+use afsv_records::{ReadOptions, Record};
 use std::path::{Path, PathBuf};
 
 /// Which model the workflow works on.
@@ -317,7 +317,7 @@ fn run_discover<M: DiscoveryModel>(model: &M, args: &DiscoverArgs) -> CmdResult 
     let written = write_report(model, &d, &hold, &hold_names, output)?;
     afsv::output::print_json(&serde_json::json!({
         "model": d.model,
-        "summary": afsv::discover::report::headline(&d),
+        "summary": afsv_discovery::report::headline(&d),
         "named": d.named,
         "effect_params": d.final_model.effect_params,
         "gap_shrink": d.gap_shrink,

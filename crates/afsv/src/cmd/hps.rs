@@ -4,7 +4,7 @@
 
 use super::{args, CmdResult};
 use afsv::output::{OutputGuard, OutputKind};
-use afsv::record::Record;
+use afsv_records::Record;
 use hps_emulsion::{
     characterize, identify, lab_programme, loop_metrics, simulate_displacement, Excitation,
     FitParam, HarmonicTest, HpsExtensions, IdentifyOptions, LabConfig, Measured, SimOptions,

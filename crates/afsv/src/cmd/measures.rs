@@ -2,7 +2,7 @@
 //! (yaw-mode) fit, step-response metrics and the weighting check (crate `perf-measures`).
 
 use super::{args, CmdResult};
-use afsv::record::Record;
+use afsv_records::Record;
 use perf_measures::decay::decay_window;
 use perf_measures::iso2631::{
     assess_whole_body, Axis, AxisInput, FilterMethod, IirWeighting, KFactors, Weighting,

@@ -2,7 +2,7 @@
 
 use super::{args, CmdResult};
 use afsv::output::{OutputGuard, OutputKind};
-use afsv::record::Record;
+use afsv_records::Record;
 use serde_json::{json, Value};
 use std::path::{Path, PathBuf};
 use terrain_psd::{

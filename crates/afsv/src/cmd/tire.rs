@@ -310,12 +310,12 @@ fn plot_sweep(
         .iter()
         .map(|(_, pts)| pts.iter().copied().unzip())
         .collect();
-    let series: Vec<afsv::plot::Series<'_>> = curves
+    let series: Vec<afsv_plot::Series<'_>> = curves
         .iter()
         .zip(&xy)
-        .map(|((label, _), (x, y))| afsv::plot::Series { label, x, y })
+        .map(|((label, _), (x, y))| afsv_plot::Series { label, x, y })
         .collect();
-    afsv::plot::line_plot(path, title, xd, yd, &series)
+    afsv_plot::line_plot(path, title, xd, yd, &series)
 }
 
 #[derive(serde::Serialize)]
@@ -329,7 +329,7 @@ struct EnvelopeRow {
 }
 
 fn envelope(args: EnvelopeArgs) -> CmdResult {
-    let rec = afsv::record::Record::read(&args.profile)?;
+    let rec = afsv_records::Record::read(&args.profile)?;
     let xs = rec.require("x_m", &args.profile)?.to_vec();
     let col = match args.track {
         TrackSide::Left => "left_m",

@@ -4,7 +4,6 @@
 
 use super::{args, CmdResult};
 use afsv::output::{OutputGuard, OutputKind};
-use afsv::record::Record;
 use afsv_dynamics::yaw_plane::analysis::{
     gain_efficiency_correlation, measures_for, steady_turn_decay, MeasureSpec,
 };
@@ -12,6 +11,7 @@ use afsv_dynamics::{
     sensitivity, simulate, Course, EquationForm, Load, Manoeuvre, PathDriver, SimOptions, Solver,
     SteerInput, YawPlaneParams,
 };
+use afsv_records::Record;
 use std::path::{Path, PathBuf};
 
 /// Load condition (Table 3.1 column).

@@ -246,12 +246,12 @@ pub fn write_outputs(report: &Report, out_dir: &Path) -> Result<(), ValidateErro
     let err = |e: String| ValidateError::Output(e);
     std::fs::create_dir_all(out_dir).map_err(|e| err(format!("{}: {e}", out_dir.display())))?;
     for p in &report.plots {
-        let series: Vec<crate::plot::Series<'_>> = p
+        let series: Vec<afsv_plot::Series<'_>> = p
             .series
             .iter()
-            .map(|(label, x, y)| crate::plot::Series { label, x, y })
+            .map(|(label, x, y)| afsv_plot::Series { label, x, y })
             .collect();
-        crate::plot::line_plot(
+        afsv_plot::line_plot(
             &out_dir.join(&p.file),
             &p.title,
             &p.x_label,

@@ -6,6 +6,22 @@
 //! `"sign_convention"` is honoured when it is [`SIGN_CONVENTION`] or a per-channel statement
 //! in the vocabulary of [`convention`]; a convention in words is refused rather than
 //! guessed at, unless the user assumes it ([`ReadOptions`]).
+//!
+//! ```
+//! use afsv_records::Record;
+//! use std::path::Path;
+//!
+//! let mut rec = Record::new();
+//! rec.push_column("time_s", vec![0.0, 0.01, 0.02]).unwrap();
+//! rec.push_column("force_n", vec![10.0, 12.5, 11.0]).unwrap();
+//! let text = rec.to_csv_string();
+//! let back = Record::parse_csv(&text, Path::new("bench.csv")).unwrap();
+//! assert_eq!(back.column("force_n"), Some(&[10.0, 12.5, 11.0][..]));
+//!
+//! // A malformed cell is reported with its line and column.
+//! let err = Record::parse_csv("time_s,force_n\n0.0,abc\n", Path::new("bad.csv")).unwrap_err();
+//! assert!(err.to_string().starts_with("bad.csv:2:2:"), "{err}");
+//! ```
 
 pub mod convention;
 

@@ -1,8 +1,8 @@
 //! Which channels of which record are compared, their normalisation, and the residual
 //! vector of a configuration over a set of prepared records.
 
-use super::{ActiveEffect, DiscoveryModel};
-use crate::record::Record;
+use super::{ActiveEffect, DiscoveryError, DiscoveryModel};
+use afsv_records::Record;
 use rayon::prelude::*;
 
 /// One compared channel of one record: where it sits in the residual vector.
@@ -43,7 +43,7 @@ impl<'a, P: Send + Sync> RecordSet<'a, P> {
         channels: &[String],
         scales: &[f64],
         baseline: &[f64],
-    ) -> Result<Self, String> {
+    ) -> Result<Self, DiscoveryError> {
         let preds: Vec<_> = prepared
             .par_iter()
             .map(|p| model.simulate(p, baseline, &[]))
@@ -69,10 +69,9 @@ impl<'a, P: Send + Sync> RecordSet<'a, P> {
             segments.push(segs);
         }
         if n == 0 {
-            return Err(format!(
-                "no record has any of the channels the model predicts ({})",
-                channels.join(", ")
-            ));
+            return Err(DiscoveryError::NoChannels {
+                channels: channels.join(", "),
+            });
         }
         Ok(Self {
             records,
@@ -92,7 +91,7 @@ impl<'a, P: Send + Sync> RecordSet<'a, P> {
         baseline: &[f64],
         effects: &[ActiveEffect<'_>],
         out: &mut [f64],
-    ) -> Result<(), String> {
+    ) -> Result<(), DiscoveryError> {
         let preds: Vec<_> = self
             .prepared
             .par_iter()
@@ -102,13 +101,21 @@ impl<'a, P: Send + Sync> RecordSet<'a, P> {
             let pred = pred?;
             for s in segs {
                 let name = &self.channels[s.channel];
-                let meas = rec.column(name).ok_or("record lost a channel")?;
+                let meas = rec
+                    .column(name)
+                    .ok_or_else(|| DiscoveryError::ChannelLost {
+                        channel: name.clone(),
+                    })?;
                 let p = pred
                     .get(s.channel)
                     .and_then(|p| p.as_ref())
-                    .ok_or_else(|| format!("model stopped predicting `{name}`"))?;
+                    .ok_or_else(|| DiscoveryError::PredictionMissing {
+                        channel: name.clone(),
+                    })?;
                 if p.len() < s.skip + s.len || meas.len() < s.skip + s.len {
-                    return Err(format!("prediction of `{name}` is too short"));
+                    return Err(DiscoveryError::PredictionTooShort {
+                        channel: name.clone(),
+                    });
                 }
                 let scale = self.scales[s.channel];
                 let dst = &mut out[s.offset..s.offset + s.len];
@@ -126,7 +133,7 @@ impl<'a, P: Send + Sync> RecordSet<'a, P> {
         model: &M,
         baseline: &[f64],
         effects: &[ActiveEffect<'_>],
-    ) -> Result<Vec<f64>, String> {
+    ) -> Result<Vec<f64>, DiscoveryError> {
         let mut r = vec![0.0; self.n];
         self.residuals(model, baseline, effects, &mut r)?;
         Ok(r)

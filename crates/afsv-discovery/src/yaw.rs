@@ -11,12 +11,12 @@
 //! common scales of the cornering stiffnesses and yaw inertias. The catalogue holds only
 //! mechanisms the paper's model lacks.
 
-use super::{ActiveEffect, DiscoveryModel, EffectSpec, ParamSpec, Phase};
-use crate::record::Record;
+use super::{ActiveEffect, DiscoveryError, DiscoveryModel, EffectSpec, ParamSpec, Phase};
 use afs_hydraulics::{
     backlash, AfsExtensions, AfsSystem, CoulombFriction, EntrainedAir, SupplyDroop, ValveLag,
 };
 use afsv_dynamics::{simulate, Load, Manoeuvre, SimOptions, SteerInput, YawPlaneParams, YawRecord};
+use afsv_records::Record;
 use std::path::{Path, PathBuf};
 
 /// Channels the vehicle model predicts (steering-record names of docs/records.md).
@@ -139,7 +139,7 @@ impl YawPlaneModel {
     pub fn apply_effects(
         &self,
         effects: &[ActiveEffect<'_>],
-    ) -> Result<(AfsExtensions, f64), String> {
+    ) -> Result<(AfsExtensions, f64), DiscoveryError> {
         let mut ext = AfsExtensions::default();
         let mut play = 0.0;
         for e in effects {
@@ -165,14 +165,19 @@ impl YawPlaneModel {
                     })
                 }
                 4 => ext.valve_lag = Some(ValveLag { tau_s: v[0] }),
-                i => return Err(format!("no effect {i} in the yaw-plane catalogue")),
+                index => {
+                    return Err(DiscoveryError::NoSuchEffect {
+                        index,
+                        model: "yaw-plane",
+                    })
+                }
             }
         }
         Ok((ext, play))
     }
 
     /// The vehicle a record is replayed with, and the condition in words.
-    fn vehicle_of(&self, record: &Record) -> Result<(YawPlaneParams, String), String> {
+    fn vehicle_of(&self, record: &Record) -> Result<(YawPlaneParams, String), DiscoveryError> {
         if let Some(src) = &record.source {
             if let Some((file, p)) = self
                 .conditions
@@ -188,18 +193,14 @@ impl YawPlaneModel {
         }
         let load = match record.meta.get("load") {
             Some(v) => {
-                let s = v.as_str().ok_or_else(|| {
-                    format!("sidecar field `load` must be \"loaded\" or \"unloaded\", got {v}")
+                let s = v.as_str().ok_or_else(|| DiscoveryError::LoadNotText {
+                    value: v.to_string(),
                 })?;
-                s.parse::<Load>().map_err(|_| {
-                    format!("sidecar field `load` = \"{s}\": expected \"loaded\" or \"unloaded\"")
+                s.parse::<Load>().map_err(|_| DiscoveryError::UnknownLoad {
+                    load: s.to_string(),
                 })?
             }
-            None => self.conditions.default_load.ok_or(
-                "its load is unknown: the sidecar has no `load` field. State it there \
-                 (\"load\": \"loaded\" or \"unloaded\"), or pass --load loaded|unloaded for \
-                 all such records, or --params-for FILE.csv=params.json for this one",
-            )?,
+            None => self.conditions.default_load.ok_or(DiscoveryError::NoLoad)?,
         };
         let p = match load {
             Load::Loaded => &self.loaded,
@@ -216,7 +217,7 @@ impl YawPlaneModel {
         params: &YawPlaneParams,
         ext: AfsExtensions,
         play_deg: f64,
-    ) -> Result<Vec<Vec<f64>>, String> {
+    ) -> Result<Vec<Vec<f64>>, DiscoveryError> {
         let t = &rec.time_s;
         let n = t.len();
         let duration = t[n - 1];
@@ -224,10 +225,8 @@ impl YawPlaneModel {
         let mut opts = self.sim;
         opts.output_dt_s = duration / (n - 1) as f64;
         opts.initial_articulation_rad = rec.initial_articulation_rad;
-        let sys = AfsSystem::new(params.afs.clone())
-            .and_then(|s| s.with_extensions(ext))
-            .map_err(|e| e.to_string())?;
-        let out = simulate(&params.vehicle, &sys, &man, &opts).map_err(|e| e.to_string())?;
+        let sys = AfsSystem::new(params.afs.clone()).and_then(|s| s.with_extensions(ext))?;
+        let out = simulate(&params.vehicle, &sys, &man, &opts)?;
         let mut channels = resample(&out, t);
         apply_play(&mut channels[0], play_deg);
         Ok(channels)
@@ -284,17 +283,14 @@ fn resample(out: &YawRecord, t: &[f64]) -> Vec<Vec<f64>> {
 
 /// Mean forward speed of a record (m/s): its speed channel, else the sidecar's
 /// `speed_m_s` or `speed_kmh`.
-fn speed_of(record: &Record) -> Result<f64, String> {
+fn speed_of(record: &Record) -> Result<f64, DiscoveryError> {
     if let Some(s) = record.column("speed_m_s") {
         return Ok(s.iter().sum::<f64>() / s.len() as f64);
     }
     let meta = |k: &str| record.meta.get(k).and_then(serde_json::Value::as_f64);
     meta("speed_m_s")
         .or_else(|| meta("speed_kmh").map(|v| v / 3.6))
-        .ok_or_else(|| {
-            "its speed is unknown: no speed_m_s column and no speed_m_s or speed_kmh in the sidecar"
-                .to_string()
-        })
+        .ok_or(DiscoveryError::NoSpeed)
 }
 
 impl DiscoveryModel for YawPlaneModel {
@@ -415,16 +411,18 @@ impl DiscoveryModel for YawPlaneModel {
         ]
     }
 
-    fn prepare(&self, record: &Record) -> Result<YawReplay, String> {
+    fn prepare(&self, record: &Record) -> Result<YawReplay, DiscoveryError> {
         let t = record
             .column("time_s")
-            .ok_or("record has no time_s column")?;
+            .ok_or(DiscoveryError::MissingColumn { column: "time_s" })?;
         let sw = record
             .column("steer_wheel_deg")
-            .ok_or("record has no steer_wheel_deg column")?;
+            .ok_or(DiscoveryError::MissingColumn {
+                column: "steer_wheel_deg",
+            })?;
         let n = t.len();
         if n < 2 {
-            return Err("record has fewer than two samples".into());
+            return Err(DiscoveryError::TooFewSamples);
         }
         let (params, load) = self.vehicle_of(record)?;
         let speed_m_s = speed_of(record)?;
@@ -477,7 +475,7 @@ impl DiscoveryModel for YawPlaneModel {
         prepared: &YawReplay,
         baseline: &[f64],
         effects: &[ActiveEffect<'_>],
-    ) -> Result<Vec<Option<Vec<f64>>>, String> {
+    ) -> Result<Vec<Option<Vec<f64>>>, DiscoveryError> {
         let p = self.apply_baseline(&prepared.params, baseline);
         let (ext, play) = self.apply_effects(effects)?;
         Ok(self

@@ -9,11 +9,11 @@
 //! `hps-emulsion`, none of them in the paper's model): gas heat transfer, growth of the gas
 //! fraction with strut velocity, asymmetric seal friction, check-valve opening lag.
 
-use super::{ActiveEffect, DiscoveryModel, EffectSpec, ParamSpec, Phase};
-use crate::record::Record;
+use super::{ActiveEffect, DiscoveryError, DiscoveryModel, EffectSpec, ParamSpec, Phase};
+use afsv_records::Record;
 use hps_emulsion::{
-    simulate_displacement, AsymmetricFriction, Excitation, GasFractionGrowth, HeatTransfer,
-    HpsExtensions, SimOptions, StrutParams, ValveLag,
+    simulate_strut, AsymmetricFriction, Excitation, GasFractionGrowth, HeatTransfer, HpsExtensions,
+    HpsStrut, SimOptions, StrutParams, ValveLag,
 };
 
 /// Channels the strut model predicts (bench-record names of docs/records.md).
@@ -44,6 +44,9 @@ pub struct HpsStrutModel {
 pub struct StrutReplay {
     /// The recorded displacement with a velocity consistent with it ([`velocity_of`]).
     pub excitation: Excitation,
+    /// Peak strut velocity of the motion (m/s): sets the friction band and the
+    /// velocity-dependent gas fraction (section 5.3.1), worked out once per record.
+    pub peak_velocity_m_s: f64,
     /// Conditions in words.
     pub condition: String,
 }
@@ -65,7 +68,7 @@ impl HpsStrutModel {
     }
 
     /// Parameters with the baseline vector applied (order of [`Self::baseline_params`]).
-    pub fn apply_baseline(&self, v: &[f64]) -> Result<StrutParams, String> {
+    pub fn apply_baseline(&self, v: &[f64]) -> Result<StrutParams, DiscoveryError> {
         let mut p = self.params;
         p.n = v[0];
         p.p_h0 = v[1];
@@ -73,12 +76,15 @@ impl HpsStrutModel {
         p.friction.f_c = v[3];
         p.friction.mu_v = v[4];
         p.c_b = v[5];
-        p.validate().map_err(|e| e.to_string())?;
-        p.with_gamma0(v[6]).map_err(|e| e.to_string())
+        p.validate()?;
+        Ok(p.with_gamma0(v[6])?)
     }
 
     /// Extensions for the active effects.
-    pub fn apply_effects(&self, effects: &[ActiveEffect<'_>]) -> Result<HpsExtensions, String> {
+    pub fn apply_effects(
+        &self,
+        effects: &[ActiveEffect<'_>],
+    ) -> Result<HpsExtensions, DiscoveryError> {
         let mut ext = HpsExtensions::none();
         for e in effects {
             let v = e.values;
@@ -97,7 +103,12 @@ impl HpsStrutModel {
                     })
                 }
                 3 => ext.valve_lag = Some(ValveLag { tau: v[0] }),
-                i => return Err(format!("no effect {i} in the strut catalogue")),
+                index => {
+                    return Err(DiscoveryError::NoSuchEffect {
+                        index,
+                        model: "strut",
+                    })
+                }
             }
         }
         Ok(ext)
@@ -289,35 +300,38 @@ impl DiscoveryModel for HpsStrutModel {
         ]
     }
 
-    fn prepare(&self, record: &Record) -> Result<StrutReplay, String> {
+    fn prepare(&self, record: &Record) -> Result<StrutReplay, DiscoveryError> {
         let t = record
             .column("time_s")
-            .ok_or("record has no time_s column")?;
+            .ok_or(DiscoveryError::MissingColumn { column: "time_s" })?;
         let z = record
             .column("displacement_m")
-            .ok_or("record has no displacement_m column")?;
+            .ok_or(DiscoveryError::MissingColumn {
+                column: "displacement_m",
+            })?;
         if let (Some(mine), Some(theirs)) = (
             &self.strut,
             record.meta.get("strut").and_then(serde_json::Value::as_str),
         ) {
             if mine != theirs {
-                return Err(format!(
-                    "its sidecar names the strut `{theirs}`, the model is the `{mine}` strut;                      give that strut's parameters with --params"
-                ));
+                return Err(DiscoveryError::OtherStrut {
+                    record: theirs.to_string(),
+                    model: mine.clone(),
+                });
             }
         }
-        let v = velocity_of(record).ok_or(
-            "cannot derive the strut velocity (need at least 9 samples with increasing time_s)",
-        )?;
+        let v = velocity_of(record).ok_or(DiscoveryError::NoStrutVelocity)?;
         let meta = |k: &str| record.meta.get(k).and_then(serde_json::Value::as_f64);
         let f = meta("frequency_hz").map_or(String::new(), |f| format!(", {f} Hz"));
         let amp = meta("amplitude_m").map_or(String::new(), |a| format!(", {:.0} mm", 1000.0 * a));
+        let excitation = Excitation::Samples {
+            time_s: t.to_vec(),
+            displacement_m: z.to_vec(),
+            velocity_m_s: Some(v),
+        };
         Ok(StrutReplay {
-            excitation: Excitation::Samples {
-                time_s: t.to_vec(),
-                displacement_m: z.to_vec(),
-                velocity_m_s: Some(v),
-            },
+            peak_velocity_m_s: excitation.peak_velocity(),
+            excitation,
             condition: format!("{} strut{f}{amp}", self.strut.as_deref().unwrap_or("user")),
         })
     }
@@ -331,11 +345,11 @@ impl DiscoveryModel for HpsStrutModel {
         prepared: &StrutReplay,
         baseline: &[f64],
         effects: &[ActiveEffect<'_>],
-    ) -> Result<Vec<Option<Vec<f64>>>, String> {
+    ) -> Result<Vec<Option<Vec<f64>>>, DiscoveryError> {
         let p = self.apply_baseline(baseline)?;
         let ext = self.apply_effects(effects)?;
-        let out = simulate_displacement(&p, &ext, &prepared.excitation, &self.sim)
-            .map_err(|e| e.to_string())?;
+        let strut = HpsStrut::new(&p, &ext, prepared.peak_velocity_m_s)?;
+        let out = simulate_strut(&strut, &prepared.excitation, &self.sim)?;
         Ok(vec![Some(out.force), Some(out.p_piston), Some(out.p_rod)])
     }
 

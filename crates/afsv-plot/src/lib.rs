@@ -1,4 +1,27 @@
-//! SVG line plots (plotters) for reports and `--plot` options.
+//! SVG line plots (plotters) for reports and `--plot` options of the afsv toolkit: the
+//! discovery report's overlays and residuals, validation figures and CLI plots.
+//!
+//! Non-finite points are left out of a curve; a plot with no finite point is an error.
+//!
+//! ```no_run
+//! use afsv_plot::{line_plot, Series};
+//! use std::path::Path;
+//!
+//! let t = [0.0, 0.5, 1.0];
+//! let measured = [0.0, 1.2, 0.9];
+//! let model = [0.0, 1.0, 1.0];
+//! line_plot(
+//!     Path::new("force.svg"),
+//!     "strut force",
+//!     "time (s)",
+//!     "force (N)",
+//!     &[
+//!         Series { label: "measured", x: &t, y: &measured },
+//!         Series { label: "model", x: &t, y: &model },
+//!     ],
+//! )
+//! .unwrap();
+//! ```
 
 use plotters::prelude::*;
 use std::path::Path;

@@ -5,13 +5,13 @@
 mod common;
 mod independent;
 
-use afsv::discover::hps::HpsStrutModel;
-use afsv::discover::yaw::YawPlaneModel;
+use afsv_discovery::hps::HpsStrutModel;
+use afsv_discovery::yaw::YawPlaneModel;
 use std::path::PathBuf;
 
 /// Write every record set (vehicle 32 + 32 records of 20 s, strut bench programme), each
 /// with one hidden effect or none: `AFSV_INDEPENDENT_DIR=/tmp/ind cargo test --release
-/// -p afsv --test discover_independent -- --ignored write_sets`.
+/// -p afsv-discovery --test discover_independent -- --ignored write_sets`.
 #[test]
 #[ignore = "writes record folders for manual runs"]
 fn write_sets() {

@@ -1,10 +1,11 @@
 //! The discovery engine on a toy first-order system with a catalogue of three effects:
 //! it must name a hidden effect, name nothing when none is hidden, and find two at once.
 
-use afsv::discover::{
-    discover, ActiveEffect, DiscoveryModel, DiscoveryOptions, EffectSpec, ParamSpec, Phase,
+use afsv_discovery::{
+    discover, ActiveEffect, DiscoveryError, DiscoveryModel, DiscoveryOptions, EffectSpec,
+    ParamSpec, Phase,
 };
-use afsv::record::Record;
+use afsv_records::Record;
 
 /// tau y' + y = K * g(u), with optional dead zone in g, output saturation, and Coulomb-like
 /// offset (sign(u) * c added to the output).
@@ -56,7 +57,7 @@ fn simulate(t: &[f64], u: &[f64], p: Truth) -> Vec<f64> {
 
 impl DiscoveryModel for Toy {
     type Prepared = Record;
-    fn prepare(&self, rec: &Record) -> Result<Record, String> {
+    fn prepare(&self, rec: &Record) -> Result<Record, DiscoveryError> {
         Ok(rec.clone())
     }
     fn condition(&self, _: &Record) -> String {
@@ -92,9 +93,10 @@ impl DiscoveryModel for Toy {
         rec: &Record,
         baseline: &[f64],
         effects: &[ActiveEffect<'_>],
-    ) -> Result<Vec<Option<Vec<f64>>>, String> {
-        let t = rec.column("time_s").ok_or("no time")?;
-        let u = rec.column("u_x").ok_or("no input")?;
+    ) -> Result<Vec<Option<Vec<f64>>>, DiscoveryError> {
+        let missing = |column| DiscoveryError::MissingColumn { column };
+        let t = rec.column("time_s").ok_or(missing("time_s"))?;
+        let u = rec.column("u_x").ok_or(missing("u_x"))?;
         let mut p = Truth {
             k: baseline[0],
             tau: baseline[1],
@@ -152,7 +154,7 @@ fn records(truth: Truth, seeds: &[u64]) -> Vec<Record> {
         .collect()
 }
 
-fn run(truth: Truth) -> afsv::discover::Discovery {
+fn run(truth: Truth) -> afsv_discovery::Discovery {
     let train = records(truth, &[1, 3, 5]);
     let hold = records(truth, &[2, 4]);
     discover(

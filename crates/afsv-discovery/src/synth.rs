@@ -6,10 +6,10 @@
 //! `DIR/train/` and `DIR/holdout/`; the truth (effects and values) goes to `DIR/truth.json`,
 //! never into the records' sidecars.
 
-use crate::discover::hps::HpsStrutModel;
-use crate::discover::yaw::{apply_play, YawPlaneModel};
-use crate::discover::{ActiveEffect, DiscoveryModel, EffectSpec};
-use crate::record::Record;
+use crate::hps::HpsStrutModel;
+use crate::yaw::{apply_play, YawPlaneModel};
+use crate::{ActiveEffect, DiscoveryError, DiscoveryModel, EffectSpec};
+use afsv_records::Record;
 use hps_emulsion::{simulate_displacement, Excitation, HarmonicTest};
 use rand_chacha::rand_core::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
@@ -42,7 +42,7 @@ pub fn parse_effects(
     spec: &str,
     catalogue: &[EffectSpec],
     default_size: impl Fn(&str) -> Vec<f64>,
-) -> Result<Vec<HiddenEffect>, String> {
+) -> Result<Vec<HiddenEffect>, DiscoveryError> {
     let mut out: Vec<HiddenEffect> = Vec::new();
     for item in spec.split(',').map(str::trim).filter(|s| !s.is_empty()) {
         if item == "none" {
@@ -55,18 +55,18 @@ pub fn parse_effects(
         let index = catalogue
             .iter()
             .position(|e| e.name == name)
-            .ok_or_else(|| {
-                format!(
-                    "unknown effect `{name}` (known: {})",
-                    catalogue
-                        .iter()
-                        .map(|e| e.name.as_str())
-                        .collect::<Vec<_>>()
-                        .join(", ")
-                )
+            .ok_or_else(|| DiscoveryError::UnknownHiddenEffect {
+                effect: name.to_string(),
+                known: catalogue
+                    .iter()
+                    .map(|e| e.name.as_str())
+                    .collect::<Vec<_>>()
+                    .join(", "),
             })?;
         if out.iter().any(|e| e.index == index) {
-            return Err(format!("effect `{name}` given twice"));
+            return Err(DiscoveryError::EffectTwice {
+                effect: name.to_string(),
+            });
         }
         let spec = &catalogue[index];
         let values = match vals {
@@ -76,28 +76,35 @@ pub fn parse_effects(
                 .map(|x| {
                     x.trim()
                         .parse::<f64>()
-                        .map_err(|_| format!("effect `{name}`: `{x}` is not a number"))
+                        .map_err(|_| DiscoveryError::NotANumber {
+                            effect: name.to_string(),
+                            text: x.to_string(),
+                        })
                 })
-                .collect::<Result<Vec<f64>, String>>()?,
+                .collect::<Result<Vec<f64>, DiscoveryError>>()?,
         };
         if values.len() != spec.params.len() {
-            return Err(format!(
-                "effect `{name}` takes {} value(s) ({}), got {}",
-                spec.params.len(),
-                spec.params
+            return Err(DiscoveryError::WrongValueCount {
+                effect: name.to_string(),
+                expected: spec.params.len(),
+                names: spec
+                    .params
                     .iter()
                     .map(|p| p.name.as_str())
                     .collect::<Vec<_>>()
                     .join(":"),
-                values.len()
-            ));
+                got: values.len(),
+            });
         }
         for (p, v) in spec.params.iter().zip(&values) {
             if !(v.is_finite() && *v >= p.lower && *v <= p.upper) {
-                return Err(format!(
-                    "effect `{name}`: {} = {v} is outside [{}, {}]",
-                    p.name, p.lower, p.upper
-                ));
+                return Err(DiscoveryError::OutOfRange {
+                    effect: name.to_string(),
+                    param: p.name.clone(),
+                    value: *v,
+                    lower: p.lower,
+                    upper: p.upper,
+                });
             }
         }
         out.push(HiddenEffect {
@@ -264,7 +271,7 @@ pub fn hps_records(
     noise: HpsNoise,
     seed: u64,
     rate_hz: f64,
-) -> Result<Vec<SynthRecord>, String> {
+) -> Result<Vec<SynthRecord>, DiscoveryError> {
     let (base, active) = truth_of(model, hidden);
     let params = model.apply_baseline(&base)?;
     let ext = model.apply_effects(&active)?;
@@ -278,8 +285,7 @@ pub fn hps_records(
             &ext,
             &Excitation::harmonic(test.frequency_hz, test.amplitude_m, cycles),
             &opts,
-        )
-        .map_err(|e| e.to_string())?;
+        )?;
         let mut z = rec.displacement.clone();
         let mut v = rec.velocity.clone();
         let mut f = rec.force.clone();
@@ -291,8 +297,7 @@ pub fn hps_records(
         gauss.add(&mut pc, noise.pressure_pa);
         gauss.add(&mut pr, noise.pressure_pa);
         let mut r = Record::new();
-        let push =
-            |r: &mut Record, n: &str, v: Vec<f64>| r.push_column(n, v).map_err(|e| e.to_string());
+        let push = |r: &mut Record, n: &str, v: Vec<f64>| r.push_column(n, v);
         push(&mut r, "time_s", rec.time.clone())?;
         push(&mut r, "displacement_m", z)?;
         push(&mut r, "velocity_m_s", v)?;
@@ -485,7 +490,7 @@ pub fn yaw_records(
     hidden: &[HiddenEffect],
     noise: YawNoise,
     seed: u64,
-) -> Result<Vec<SynthRecord>, String> {
+) -> Result<Vec<SynthRecord>, DiscoveryError> {
     let (base, active) = truth_of(model, hidden);
     let (ext, play) = model.apply_effects(&active)?;
     let mut gauss = Gaussian::new(seed);
@@ -497,10 +502,8 @@ pub fn yaw_records(
         };
         let params = model.apply_baseline(vehicle, &base);
         let sys = afs_hydraulics::AfsSystem::new(params.afs.clone())
-            .and_then(|s| s.with_extensions(ext))
-            .map_err(|e| e.to_string())?;
-        let rec = afsv_dynamics::simulate(&params.vehicle, &sys, &man, &model.sim)
-            .map_err(|e| e.to_string())?;
+            .and_then(|s| s.with_extensions(ext))?;
+        let rec = afsv_dynamics::simulate(&params.vehicle, &sys, &man, &model.sim)?;
         let mut art = rec.articulation_deg.clone();
         apply_play(&mut art, play);
         let mut cols = [
@@ -525,12 +528,10 @@ pub fn yaw_records(
             ),
         ];
         let mut r = Record::new();
-        r.push_column("time_s", rec.time_s.clone())
-            .map_err(|e| e.to_string())?;
+        r.push_column("time_s", rec.time_s.clone())?;
         for (name, values, sigma) in cols.iter_mut() {
             gauss.add(values, *sigma);
-            r.push_column(name, std::mem::take(values))
-                .map_err(|e| e.to_string())?;
+            r.push_column(name, std::mem::take(values))?;
         }
         r.meta = serde_json::json!({
             "model": "yaw-plane",
@@ -553,19 +554,19 @@ pub fn write_records(
     dir: &Path,
     records: &[SynthRecord],
     truth: &serde_json::Value,
-) -> Result<(), String> {
+) -> Result<(), DiscoveryError> {
     for sub in ["train", "holdout"] {
-        std::fs::create_dir_all(dir.join(sub))
-            .map_err(|e| format!("{}: {e}", dir.join(sub).display()))?;
+        let folder = dir.join(sub);
+        std::fs::create_dir_all(&folder).map_err(|e| DiscoveryError::io(folder, e))?;
     }
     for r in records {
         let sub = if r.holdout { "holdout" } else { "train" };
         let path = dir.join(sub).join(format!("{}.csv", r.name));
-        r.record.write(&path).map_err(|e| e.to_string())?;
+        r.record.write(&path)?;
     }
-    let text = serde_json::to_string_pretty(truth).map_err(|e| e.to_string())?;
-    std::fs::write(dir.join("truth.json"), text + "\n")
-        .map_err(|e| format!("{}: {e}", dir.join("truth.json").display()))
+    let text = serde_json::to_string_pretty(truth)?;
+    let path = dir.join("truth.json");
+    std::fs::write(&path, text + "\n").map_err(|e| DiscoveryError::io(path, e))
 }
 
 #[cfg(test)]

@@ -5,9 +5,9 @@
 mod common;
 mod independent;
 
-use afsv::discover::yaw::YawPlaneModel;
-use afsv::discover::{Discovery, DiscoveryModel};
-use afsv::synth::{parse_effects, yaw_default_size, yaw_records, YawNoise};
+use afsv_discovery::synth::{parse_effects, yaw_default_size, yaw_records, YawNoise};
+use afsv_discovery::yaw::YawPlaneModel;
+use afsv_discovery::{Discovery, DiscoveryModel};
 use common::{
     assert_named, assert_not_claimed, run_dir, run_on, scratch, summary, yaw_outside_catalogue,
 };

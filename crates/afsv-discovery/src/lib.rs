@@ -12,24 +12,52 @@
 //! 4. **Name** an effect only when the improvement is significant ([`stats`]), add it, repeat.
 //! 5. **Report** the effects named, fitted parameters with standard errors, before/after errors
 //!    and the gap shrink ([`report`]).
+//!
+//! Two models come with the crate: the hydro-pneumatic strut on a bench ([`hps`]) and the
+//! yaw-plane vehicle with hydraulic frame steering ([`yaw`]); [`synth`] writes
+//! measurement-like records from them with hidden effects and sensor noise. Progress goes
+//! through the [`Progress`] trait (`&()` reports nothing). The crate needs no command-line,
+//! plotting or terminal libraries; the cargo feature `plots` (off by default) adds SVG
+//! overlays of the held-out records to the report.
+//!
+//! ```
+//! use afsv_discovery::hps::HpsStrutModel;
+//! use afsv_discovery::synth::{hps_records, HpsNoise};
+//! use afsv_discovery::DiscoveryModel;
+//!
+//! // Noise-free bench records of the paper's strut, no hidden effect.
+//! let model = HpsStrutModel::nominal();
+//! let recs = hps_records(&model, &[], HpsNoise::none(), 7, 360.0).unwrap();
+//! let first = &recs[0].record;
+//! let prepared = model.prepare(first).unwrap();
+//! let nominal: Vec<f64> = model.baseline_params().iter().map(|p| p.initial).collect();
+//! let predicted = model.simulate(&prepared, &nominal, &[]).unwrap();
+//! assert_eq!(predicted.len(), model.channels().len());
+//! // The whole workflow: afsv_discovery::discover(&model, &train, &holdout, ..., &()).
+//! ```
 
 mod engine;
+mod error;
 pub mod evidence;
 mod fitting;
 pub mod hps;
 mod layout;
+#[cfg(feature = "plots")]
+mod overlay;
 pub mod report;
 pub mod signature;
 pub mod stats;
+pub mod synth;
 pub mod yaw;
 
 pub use engine::{
     calibrate, discover, evaluate_errors, ChannelError, Discovery, DiscoveryOptions, EffectChoice,
     EffectParam, FitOutcome, Progress, RecordCondition, Step, SCOUT_ITERATIONS,
 };
+pub use error::DiscoveryError;
 pub use evidence::{Evidence, RecordEvidence};
 
-use crate::record::Record;
+use afsv_records::Record;
 
 /// A parameter the workflow may fit, with its physical range.
 #[derive(Debug, Clone, PartialEq, serde::Serialize)]
@@ -100,8 +128,8 @@ pub struct Phase {
 /// Implementations live next to the models (strut, yaw-plane vehicle); the workflow only
 /// sees records, parameter vectors and predicted channels. Each record is first
 /// [prepared](Self::prepare) once: its conditions (load, speed, strut) and invariant inputs
-/// (smoothed steering angle, strut velocity) are worked out there, never at every fit
-/// evaluation.
+/// (mean speed, smoothed steering angle, strut velocity and its peak) are worked out
+/// there, never at every fit evaluation.
 pub trait DiscoveryModel: Sync {
     /// A record's conditions and invariant inputs.
     type Prepared: Send + Sync;
@@ -115,7 +143,7 @@ pub trait DiscoveryModel: Sync {
     fn catalogue(&self) -> Vec<EffectSpec>;
     /// Work out `record`'s conditions and invariant inputs. A condition that cannot be
     /// determined is an error naming the missing field and how to give it.
-    fn prepare(&self, record: &Record) -> Result<Self::Prepared, String>;
+    fn prepare(&self, record: &Record) -> Result<Self::Prepared, DiscoveryError>;
     /// The conditions a prepared record is replayed under, in words (for the report).
     fn condition(&self, prepared: &Self::Prepared) -> String;
     /// Simulate a prepared record with the given baseline parameter values and effects;
@@ -126,7 +154,7 @@ pub trait DiscoveryModel: Sync {
         prepared: &Self::Prepared,
         baseline: &[f64],
         effects: &[ActiveEffect<'_>],
-    ) -> Result<Vec<Option<Vec<f64>>>, String>;
+    ) -> Result<Vec<Option<Vec<f64>>>, DiscoveryError>;
     /// Phases of a record used to locate the disagreement (may be empty).
     fn phases(&self, record: &Record) -> Vec<Phase>;
     /// Leading samples of a record left out of every comparison (start-up transient of a

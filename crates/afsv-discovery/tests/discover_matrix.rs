@@ -4,15 +4,15 @@
 //! 100 Hz, mixed loads and speeds; the 7-record strut bench programme); pairs of hidden
 //! effects; no effect; and effects outside the catalogue. Slow (minutes): run by
 //! `cargo xtask discover-matrix`
-//! (`cargo test --release -p afsv --test discover_matrix -- --ignored --nocapture`).
+//! (`cargo test --release -p afsv-discovery --test discover_matrix -- --ignored --nocapture`).
 
 mod common;
 mod independent;
 
-use afsv::discover::hps::HpsStrutModel;
-use afsv::discover::yaw::YawPlaneModel;
-use afsv::discover::{Discovery, DiscoveryModel};
-use afsv::synth::{self, hps_default_size, yaw_default_size, HpsNoise, YawNoise};
+use afsv_discovery::hps::HpsStrutModel;
+use afsv_discovery::synth::{self, hps_default_size, yaw_default_size, HpsNoise, YawNoise};
+use afsv_discovery::yaw::YawPlaneModel;
+use afsv_discovery::{Discovery, DiscoveryModel};
 use common::{hps_outside_catalogue, run_dir, run_on, scratch, yaw_outside_catalogue};
 
 /// What a row expects.

@@ -1,7 +1,7 @@
 //! Which held-out records and phases carried the gain of each named effect.
 
 use super::fitting::{Config, Context};
-use super::DiscoveryModel;
+use super::{DiscoveryError, DiscoveryModel};
 
 /// One held-out record's part in an effect's gain.
 #[derive(Debug, Clone, PartialEq, serde::Serialize)]
@@ -38,7 +38,7 @@ pub(crate) fn of_named<M: DiscoveryModel + ?Sized>(
     named: &[String],
     chain: &[(Config, Config)],
     holdout_names: &[String],
-) -> Result<Vec<Evidence>, String> {
+) -> Result<Vec<Evidence>, DiscoveryError> {
     let set = &ctx.holdout;
     let phases: Vec<_> = set.records.iter().map(|r| ctx.model.phases(r)).collect();
     let mut out = Vec::new();

@@ -5,9 +5,9 @@
 mod common;
 mod independent;
 
-use afsv::discover::hps::HpsStrutModel;
-use afsv::discover::{Discovery, DiscoveryModel};
-use afsv::synth::{hps_default_size, hps_records, parse_effects, HpsNoise};
+use afsv_discovery::hps::HpsStrutModel;
+use afsv_discovery::synth::{hps_default_size, hps_records, parse_effects, HpsNoise};
+use afsv_discovery::{Discovery, DiscoveryModel};
 use common::{
     assert_named, assert_not_claimed, hps_outside_catalogue, run_dir, run_on, scratch, summary,
 };

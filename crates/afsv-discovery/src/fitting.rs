@@ -4,7 +4,7 @@
 use super::engine::{DiscoveryOptions, FitOutcome, SCOUT_ITERATIONS};
 use super::layout::RecordSet;
 use super::stats;
-use super::{ActiveEffect, DiscoveryModel, EffectSpec, ParamSpec};
+use super::{ActiveEffect, DiscoveryError, DiscoveryModel, EffectSpec, ParamSpec};
 use optimize::least_squares::{fit, FitOptions, Problem};
 
 /// A configuration to fit: which baseline parameters are free and which effects are on.
@@ -71,8 +71,11 @@ impl<M: DiscoveryModel + ?Sized> Problem for Objective<'_, M> {
         self.set.n
     }
     fn residuals(&self, p: &[f64], r: &mut [f64]) -> Result<(), String> {
+        // The least-squares solver takes the failure as text (it reports the start point's).
         let c = self.config.unpack(p);
-        self.set.residuals(self.model, &c.baseline, &c.active(), r)
+        self.set
+            .residuals(self.model, &c.baseline, &c.active(), r)
+            .map_err(|e| e.to_string())
     }
 }
 
@@ -119,7 +122,7 @@ impl<M: DiscoveryModel + ?Sized> Context<'_, M> {
         config: &Config,
         set: &RecordSet<'_, M::Prepared>,
         max_iter: usize,
-    ) -> Result<(Config, Vec<f64>, bool, f64), String> {
+    ) -> Result<(Config, Vec<f64>, bool, f64), DiscoveryError> {
         let p0 = config.pack();
         if p0.is_empty() {
             let r = set.residual_vec(self.model, &config.baseline, &config.active())?;
@@ -143,8 +146,7 @@ impl<M: DiscoveryModel + ?Sized> Context<'_, M> {
                 diff_step: 1e-3,
                 typical: Some(typical),
             },
-        )
-        .map_err(|e| e.to_string())?;
+        )?;
         Ok((
             config.unpack(&res.params),
             res.std_errors,
@@ -161,7 +163,7 @@ impl<M: DiscoveryModel + ?Sized> Context<'_, M> {
     /// polished on all training records ([`DiscoveryOptions::polish_iterations`]): the
     /// subset spans the records' conditions, so its optimum is close, and most iterations
     /// then cost a fraction of a full replay.
-    pub fn fit(&self, config: Config, n_eff: Option<f64>) -> Result<Fitted, String> {
+    pub fn fit(&self, config: Config, n_eff: Option<f64>) -> Result<Fitted, DiscoveryError> {
         let (start, max_iter) = match &self.scout {
             Some(scout) => (
                 self.fit_on(&config, scout, self.opts.max_iter)?.0,
@@ -174,7 +176,7 @@ impl<M: DiscoveryModel + ?Sized> Context<'_, M> {
 
     /// More iterations on all training records for a configuration already fitted by
     /// [`Self::fit`], and score.
-    pub fn refit(&self, config: Config, n_eff: Option<f64>) -> Result<Fitted, String> {
+    pub fn refit(&self, config: Config, n_eff: Option<f64>) -> Result<Fitted, DiscoveryError> {
         let max_iter = if self.scout.is_some() {
             self.opts.polish_iterations
         } else {
@@ -184,13 +186,18 @@ impl<M: DiscoveryModel + ?Sized> Context<'_, M> {
     }
 
     /// Fit on all training records from `start` and score.
-    fn polish(&self, start: Config, max_iter: usize, n_eff: Option<f64>) -> Result<Fitted, String> {
+    fn polish(
+        &self,
+        start: Config,
+        max_iter: usize,
+        n_eff: Option<f64>,
+    ) -> Result<Fitted, DiscoveryError> {
         let (fitted, se, converged, _) = self.fit_on(&start, &self.train, max_iter)?;
         self.score(fitted, &se, converged, n_eff)
     }
 
     /// Residual sum of squares of a configuration on the scouting records.
-    pub fn scout_rss(&self, config: &Config) -> Result<f64, String> {
+    pub fn scout_rss(&self, config: &Config) -> Result<f64, DiscoveryError> {
         let r = self
             .scout_set()
             .residual_vec(self.model, &config.baseline, &config.active())?;
@@ -204,7 +211,7 @@ impl<M: DiscoveryModel + ?Sized> Context<'_, M> {
         se: &[f64],
         converged: bool,
         n_eff: Option<f64>,
-    ) -> Result<Fitted, String> {
+    ) -> Result<Fitted, DiscoveryError> {
         let rt = self
             .train
             .residual_vec(self.model, &fitted.baseline, &fitted.active())?;
@@ -358,7 +365,7 @@ impl<M: DiscoveryModel + ?Sized> Context<'_, M> {
         current: &Config,
         nominal_baseline: &[f64],
         e: usize,
-    ) -> Result<(Config, f64), String> {
+    ) -> Result<(Config, f64), DiscoveryError> {
         let all_base: Vec<usize> = (0..current.baseline.len()).collect();
         let starts = if self.opts.refit_baseline {
             self.ranked_starts(current, nominal_baseline, e)
@@ -379,7 +386,7 @@ impl<M: DiscoveryModel + ?Sized> Context<'_, M> {
         let set = self.scout_set();
         let k = self.opts.starts.max(1).min(starts.len());
         let mut best: Option<(f64, Config)> = None;
-        let mut last_err = String::new();
+        let mut last_err = None;
         for start in &starts[..k] {
             match self.fit_on(&config_at(start), set, SCOUT_ITERATIONS) {
                 Ok((cfg, _, _, rss)) => {
@@ -387,16 +394,21 @@ impl<M: DiscoveryModel + ?Sized> Context<'_, M> {
                         best = Some((rss, cfg));
                     }
                 }
-                Err(msg) => last_err = msg,
+                Err(e) => last_err = Some(e),
             }
         }
-        let (rss, cfg) = best.ok_or(last_err)?;
-        Ok((cfg, rss))
+        match (best, last_err) {
+            (Some((rss, cfg)), _) => Ok((cfg, rss)),
+            (None, Some(e)) => Err(e),
+            (None, None) => Err(DiscoveryError::NoStartPoint {
+                effect: self.catalogue[e].name.clone(),
+            }),
+        }
     }
 
     /// Fit a scouted candidate to convergence (on the scouting records first, then polished
     /// on all training records, as [`Self::fit`]) and score it.
-    pub fn finish_candidate(&self, scouted: Config, n_eff: f64) -> Result<Fitted, String> {
+    pub fn finish_candidate(&self, scouted: Config, n_eff: f64) -> Result<Fitted, DiscoveryError> {
         self.fit(scouted, Some(n_eff))
     }
 

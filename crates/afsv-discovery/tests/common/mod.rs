@@ -3,11 +3,11 @@
 //! catalogue). Each test crate uses a subset.
 #![allow(dead_code)]
 
-use afsv::discover::hps::HpsStrutModel;
-use afsv::discover::yaw::YawPlaneModel;
-use afsv::discover::{discover, Discovery, DiscoveryModel, DiscoveryOptions};
-use afsv::record::Record;
-use afsv::synth::{hps_records, yaw_records, HpsNoise, SynthRecord, YawNoise};
+use afsv_discovery::hps::HpsStrutModel;
+use afsv_discovery::synth::{hps_records, yaw_records, HpsNoise, SynthRecord, YawNoise};
+use afsv_discovery::yaw::YawPlaneModel;
+use afsv_discovery::{discover, Discovery, DiscoveryModel, DiscoveryOptions};
+use afsv_records::Record;
 
 /// Assert that exactly `effects` were named (in any order) and the held-out gap shrank by
 /// at least `min_shrink`; on failure, show every candidate's score.

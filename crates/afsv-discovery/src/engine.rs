@@ -5,8 +5,8 @@ use super::fitting::{Config, Context, Fitted};
 use super::layout::{channel_scales, RecordSet};
 use super::signature::{channel_signature, ChannelSignature};
 use super::stats::{self, SignificanceRule};
-use super::{ActiveEffect, DiscoveryModel};
-use crate::record::Record;
+use super::{ActiveEffect, DiscoveryError, DiscoveryModel};
+use afsv_records::Record;
 use rayon::prelude::*;
 
 /// Settings of [`discover`].
@@ -205,7 +205,7 @@ pub fn evaluate_errors<M: DiscoveryModel + ?Sized>(
     records: &[Record],
     baseline: &[f64],
     effects: &[ActiveEffect<'_>],
-) -> Result<Vec<ChannelError>, String> {
+) -> Result<Vec<ChannelError>, DiscoveryError> {
     let channels = model.channels();
     let scales = channel_scales(records, &channels);
     let prepared = prepare_all(model, records, &[])?;
@@ -226,14 +226,14 @@ fn prepare_all<M: DiscoveryModel + ?Sized>(
     model: &M,
     records: &[Record],
     names: &[String],
-) -> Result<Vec<M::Prepared>, String> {
+) -> Result<Vec<M::Prepared>, DiscoveryError> {
     records
         .par_iter()
         .enumerate()
         .map(|(i, r)| {
             model.prepare(r).map_err(|e| match names.get(i) {
-                Some(n) => format!("record {n}: {e}"),
-                None => format!("record {}: {e}", i + 1),
+                Some(n) => e.in_record(n.as_str()),
+                None => e.in_record((i + 1).to_string()),
             })
         })
         .collect()
@@ -244,8 +244,8 @@ pub fn calibrate<M: DiscoveryModel + ?Sized>(
     model: &M,
     train: &[Record],
     opts: &DiscoveryOptions,
-) -> Result<FitOutcome, String> {
-    let names: Vec<String> = (1..=train.len()).map(|i| format!("record {i}")).collect();
+) -> Result<FitOutcome, DiscoveryError> {
+    let names: Vec<String> = (1..=train.len()).map(|i| i.to_string()).collect();
     let prep = prepare_all(model, train, &names)?;
     let ctx = context(model, train, &prep, train, &prep, opts)?;
     let nominal = nominal_config(&ctx);
@@ -270,9 +270,9 @@ pub fn discover<M: DiscoveryModel + ?Sized>(
     holdout_names: &[String],
     opts: &DiscoveryOptions,
     progress: &dyn Progress,
-) -> Result<Discovery, String> {
+) -> Result<Discovery, DiscoveryError> {
     if train.is_empty() || holdout.is_empty() {
-        return Err("need at least one training and one held-out record".into());
+        return Err(DiscoveryError::NoRecords);
     }
     check_candidates(model, opts)?;
     let train_names = labels(train_names, train.len(), "train");
@@ -375,19 +375,19 @@ fn labels(names: &[String], n: usize, set: &str) -> Vec<String> {
 fn check_candidates<M: DiscoveryModel + ?Sized>(
     model: &M,
     opts: &DiscoveryOptions,
-) -> Result<(), String> {
+) -> Result<(), DiscoveryError> {
     let catalogue = model.catalogue();
     for n in opts.candidates.iter().flatten() {
         if !catalogue.iter().any(|e| &e.name == n) {
-            return Err(format!(
-                "unknown effect `{n}` for model {} (catalogue: {})",
-                model.name(),
-                catalogue
+            return Err(DiscoveryError::UnknownEffect {
+                effect: n.clone(),
+                model: model.name().to_string(),
+                catalogue: catalogue
                     .iter()
                     .map(|e| e.name.as_str())
                     .collect::<Vec<_>>()
-                    .join(", ")
-            ));
+                    .join(", "),
+            });
         }
     }
     Ok(())
@@ -402,7 +402,7 @@ fn context<'a, M: DiscoveryModel + ?Sized>(
     holdout: &'a [Record],
     hp: &'a [M::Prepared],
     opts: &'a DiscoveryOptions,
-) -> Result<Context<'a, M>, String> {
+) -> Result<Context<'a, M>, DiscoveryError> {
     let channels = model.channels();
     let base_specs = model.baseline_params();
     let nominal: Vec<f64> = base_specs.iter().map(|s| s.initial).collect();
@@ -463,7 +463,7 @@ fn locate<M: DiscoveryModel + ?Sized>(
     set: &RecordSet<'_, M::Prepared>,
     names: &[String],
     config: &Config,
-) -> Result<Vec<(String, ChannelSignature)>, String> {
+) -> Result<Vec<(String, ChannelSignature)>, DiscoveryError> {
     let mut out = Vec::new();
     for ((rec, prep), label) in set.records.iter().zip(&set.prepared).zip(names) {
         let pred = ctx.model.simulate(prep, &config.baseline, &[])?;
@@ -507,7 +507,7 @@ fn search<M: DiscoveryModel + ?Sized>(
     calibrated: Fitted,
     holdout_noise_mse: f64,
     progress: &dyn Progress,
-) -> Result<Search, String> {
+) -> Result<Search, DiscoveryError> {
     let opts = ctx.opts;
     let baseline_gap = (calibrated.0.holdout_mse - holdout_noise_mse).max(0.0);
     let mut s = Search {
@@ -592,7 +592,7 @@ fn search<M: DiscoveryModel + ?Sized>(
 
 /// A scouted candidate: its catalogue index and its configuration with the scouting-set
 /// residual sum of squares, or why scouting failed.
-type Scouted = (usize, Result<(Config, f64), String>);
+type Scouted = (usize, Result<(Config, f64), DiscoveryError>);
 
 /// The candidates of one round, scored against the current model.
 struct Round {
@@ -610,7 +610,7 @@ fn round<M: DiscoveryModel + ?Sized>(
     current: &Fitted,
     nominal_base: &[f64],
     progress: &dyn Progress,
-) -> Result<Option<Round>, String> {
+) -> Result<Option<Round>, DiscoveryError> {
     let opts = ctx.opts;
     let (cur, cfg, n_eff) = current;
     let tried: Vec<usize> = (0..ctx.catalogue.len())
@@ -640,17 +640,18 @@ fn round<M: DiscoveryModel + ?Sized>(
     let results: Vec<(usize, Result<Fitted, String>)> = scouted
         .into_par_iter()
         .map(|(e, r)| {
-            let r = r.and_then(|(c, rss)| {
-                if finalists.contains(&e) {
-                    ctx.finish_candidate(c, *n_eff)
-                } else {
-                    Err(format!(
+            // A candidate's failure is kept as text: the report and report.json show it.
+            let r = match r {
+                Err(err) => Err(err.to_string()),
+                Ok((c, _)) if finalists.contains(&e) => {
+                    ctx.finish_candidate(c, *n_eff).map_err(|err| err.to_string())
+                }
+                Ok((_, rss)) => Err(format!(
                         "pruned after scouting: it changed the training error on the scouting records by {:+.1} % (not among the {} best, or less than half the held-out gain the rule requires)",
                         100.0 * (rss - ref_rss) / ref_rss.max(f64::MIN_POSITIVE),
                         opts.finalists
-                    ))
-                }
-            });
+                    )),
+            };
             progress.fit_done(&ctx.catalogue[e].name);
             (e, r)
         })
@@ -721,7 +722,7 @@ fn attribution_check<M: DiscoveryModel + ?Sized>(
     k_ref: usize,
     baseline_gap: f64,
     progress: &dyn Progress,
-) -> Result<Option<(String, Fitted)>, String> {
+) -> Result<Option<(String, Fitted)>, DiscoveryError> {
     let mut probe = candidate.1.clone();
     probe.effects.pop();
     let refit = ctx.fit(probe, Some(current.2))?;

@@ -1,145 +1,49 @@
 //! Discovery reports: Markdown summary, full JSON, and SVG overlays/residuals of the
 //! held-out records before (calibrated baseline) and after (named effects).
 
-use super::{ActiveEffect, Discovery, DiscoveryModel};
-use crate::plot::{line_plot, Series};
-use crate::record::Record;
+use super::{Discovery, DiscoveryError, DiscoveryModel};
+use afsv_records::Record;
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 
-/// Files a report writes into its folder (besides the SVG plots).
+/// Files a report writes into its folder (besides the SVG plots of the `plots` feature).
 pub const REPORT_FILES: [&str; 2] = ["report.md", "report.json"];
 
-/// Write `report.md`, `report.json` and SVG plots for `d` into `dir` (created if needed).
-/// Returns the paths written.
+/// Write `report.md`, `report.json` and (with the `plots` feature) SVG overlays and
+/// residuals of the held-out records for `d` into `dir` (created if needed). Returns the
+/// paths written.
 pub fn write_report<M: DiscoveryModel + ?Sized>(
     model: &M,
     d: &Discovery,
     holdout: &[Record],
     holdout_names: &[String],
     dir: &Path,
-) -> Result<Vec<PathBuf>, String> {
-    std::fs::create_dir_all(dir).map_err(|e| format!("{}: {e}", dir.display()))?;
+) -> Result<Vec<PathBuf>, DiscoveryError> {
+    std::fs::create_dir_all(dir).map_err(|e| DiscoveryError::io(dir, e))?;
     let mut written = Vec::new();
-    let json = serde_json::to_string_pretty(d).map_err(|e| e.to_string())?;
+    let json = serde_json::to_string_pretty(d)?;
     let p = dir.join("report.json");
-    std::fs::write(&p, json + "\n").map_err(|e| format!("{}: {e}", p.display()))?;
+    std::fs::write(&p, json + "\n").map_err(|e| DiscoveryError::io(&p, e))?;
     written.push(p);
 
-    let catalogue = model.catalogue();
-    let final_effects: Vec<(usize, Vec<f64>)> = d
-        .final_model
-        .effects
-        .iter()
-        .zip(&d.final_model.effect_params)
-        .filter_map(|(name, params)| {
-            let i = catalogue.iter().position(|e| &e.name == name)?;
-            Some((i, params.iter().map(|p| p.value).collect()))
-        })
-        .collect();
-    let active: Vec<ActiveEffect<'_>> = final_effects
-        .iter()
-        .map(|(index, values)| ActiveEffect {
-            index: *index,
-            values,
-        })
-        .collect();
-    let mut plots = Vec::new();
-    for i in plotted_records(d, holdout_names, holdout.len()) {
-        let rec = &holdout[i];
-        let label = holdout_names
-            .get(i)
-            .cloned()
-            .unwrap_or_else(|| format!("holdout_{i}"));
-        let prepared = model.prepare(rec)?;
-        let before = model.simulate(&prepared, &d.calibrated.baseline, &[])?;
-        let after = model.simulate(&prepared, &d.final_model.baseline, &active)?;
-        let t: Vec<f64> = rec
-            .column("time_s")
-            .map(<[f64]>::to_vec)
-            .unwrap_or_else(|| (0..rec.len()).map(|k| k as f64).collect());
-        for (c, ch) in d.channels.iter().enumerate() {
-            let (Some(meas), Some(Some(b)), Some(Some(a))) =
-                (rec.column(ch), before.get(c), after.get(c))
-            else {
-                continue;
-            };
-            let stem = sanitize(&format!("{label}_{ch}"));
-            let p = dir.join(format!("overlay_{stem}.svg"));
-            line_plot(
-                &p,
-                &format!("{label}: {ch}"),
-                "time (s)",
-                ch,
-                &[
-                    Series {
-                        label: "measured",
-                        x: &t,
-                        y: meas,
-                    },
-                    Series {
-                        label: "calibrated baseline",
-                        x: &t,
-                        y: b,
-                    },
-                    Series {
-                        label: "with named effects",
-                        x: &t,
-                        y: a,
-                    },
-                ],
-            )?;
-            plots.push(p.clone());
-            written.push(p);
-            let rb: Vec<f64> = b.iter().zip(meas).map(|(x, y)| x - y).collect();
-            let ra: Vec<f64> = a.iter().zip(meas).map(|(x, y)| x - y).collect();
-            let p = dir.join(format!("residual_{stem}.svg"));
-            line_plot(
-                &p,
-                &format!("{label}: {ch} residual (model - measured)"),
-                "time (s)",
-                ch,
-                &[
-                    Series {
-                        label: "calibrated baseline",
-                        x: &t,
-                        y: &rb,
-                    },
-                    Series {
-                        label: "with named effects",
-                        x: &t,
-                        y: &ra,
-                    },
-                ],
-            )?;
-            written.push(p);
-        }
-    }
+    #[cfg(feature = "plots")]
+    let plots = {
+        let (overlays, svgs) =
+            crate::overlay::write_overlays(model, d, holdout, holdout_names, dir)?;
+        written.extend(svgs);
+        overlays
+    };
+    #[cfg(not(feature = "plots"))]
+    let plots: Vec<PathBuf> = {
+        // Without the `plots` feature the report is report.md and report.json only.
+        let _ = (model, holdout, holdout_names);
+        Vec::new()
+    };
     let md = markdown(d, &plots, dir);
     let p = dir.join("report.md");
-    std::fs::write(&p, md).map_err(|e| format!("{}: {e}", p.display()))?;
+    std::fs::write(&p, md).map_err(|e| DiscoveryError::io(&p, e))?;
     written.push(p);
     Ok(written)
-}
-
-/// Held-out records that get overlay plots: at most [`MAX_PLOTTED_RECORDS`], those carrying
-/// the largest share of the first named effect's gain (or, when nothing was named, the
-/// first ones), in record order. Every record stays in report.json.
-fn plotted_records(d: &Discovery, names: &[String], n: usize) -> Vec<usize> {
-    let mut picked: Vec<usize> = match d.evidence.first() {
-        Some(ev) => ev
-            .records
-            .iter()
-            .filter_map(|r| names.iter().position(|n| *n == r.record))
-            .take(MAX_PLOTTED_RECORDS)
-            .collect(),
-        None => (0..n.min(MAX_PLOTTED_RECORDS)).collect(),
-    };
-    if picked.is_empty() {
-        picked = (0..n.min(MAX_PLOTTED_RECORDS)).collect();
-    }
-    picked.sort_unstable();
-    picked
 }
 
 /// Most held-out records plotted (two SVGs per record and channel).
@@ -158,21 +62,25 @@ fn sig3(v: f64) -> String {
     }
 }
 
-fn sanitize(s: &str) -> String {
-    s.chars()
-        .map(|c| {
-            if c.is_ascii_alphanumeric() || c == '-' || c == '_' {
-                c
-            } else {
-                '_'
-            }
-        })
-        .collect()
-}
-
 /// The Markdown summary of a discovery run.
 pub fn markdown(d: &Discovery, plots: &[PathBuf], dir: &Path) -> String {
     let mut s = String::new();
+    summary(&mut s, d);
+    if !d.named.is_empty() {
+        fitted_effects(&mut s, d);
+        evidence(&mut s, d);
+    }
+    conditions(&mut s, d);
+    baseline_table(&mut s, d);
+    channel_table(&mut s, d);
+    disagreement(&mut s, d);
+    candidates(&mut s, d);
+    overlays(&mut s, plots, dir);
+    s
+}
+
+/// Title, headline and what was named (or why nothing was).
+fn summary(s: &mut String, d: &Discovery) {
     let _ = writeln!(s, "# Model-discrepancy report: {}\n", d.model);
     let _ = writeln!(s, "{}\n", headline(d));
     if d.named.is_empty() {
@@ -197,65 +105,81 @@ pub fn markdown(d: &Discovery, plots: &[PathBuf], dir: &Path) -> String {
         if d.gap_shrink < 0.7 {
             let _ = writeln!(s, "\nThe named effects explain only part of the gap: something outside the catalogue (or a different form of a named effect) remains.");
         }
-        let _ = writeln!(s, "\n## Fitted effect parameters\n\n| effect | parameter | value | standard error | note |\n|---|---|---|---|---|");
-        for (name, params) in d
-            .final_model
-            .effects
-            .iter()
-            .zip(&d.final_model.effect_params)
-        {
-            for p in params {
-                let note = if p.at_bound {
-                    "at a bound of its range"
-                } else {
-                    ""
-                };
-                let _ = writeln!(
-                    s,
-                    "| {name} | {} | {:.6e} | {} | {note} |",
-                    p.name,
-                    p.value,
-                    opt(p.std_error, |v| format!("{v:.2e}"))
-                );
-            }
-        }
-        let _ = writeln!(
-            s,
-            "\n## Evidence: where each effect's held-out gain comes from\n"
-        );
-        for ev in &d.evidence {
-            let phases = ev
-                .phases
-                .iter()
-                .map(|(p, share)| format!("{p} {:.0} %", 100.0 * share))
-                .collect::<Vec<_>>()
-                .join(", ");
-            let _ = writeln!(s, "`{}` (by phase: {phases}):\n\n| held-out record | condition | MSE before | MSE after | share of gain |\n|---|---|---|---|---|", ev.effect);
-            for r in ev.records.iter().take(10) {
-                let _ = writeln!(
-                    s,
-                    "| {} | {} | {:.3e} | {:.3e} | {:+.1} % |",
-                    r.record,
-                    r.condition,
-                    r.mse_before,
-                    r.mse_after,
-                    100.0 * r.share
-                );
-            }
-            if ev.records.len() > 10 {
-                let _ = writeln!(
-                    s,
-                    "\n({} more records in report.json)",
-                    ev.records.len() - 10
-                );
-            }
-            let _ = writeln!(s);
+    }
+}
+
+/// The fitted parameters of the named effects.
+fn fitted_effects(s: &mut String, d: &Discovery) {
+    let _ = writeln!(s, "\n## Fitted effect parameters\n\n| effect | parameter | value | standard error | note |\n|---|---|---|---|---|");
+    for (name, params) in d
+        .final_model
+        .effects
+        .iter()
+        .zip(&d.final_model.effect_params)
+    {
+        for p in params {
+            let note = if p.at_bound {
+                "at a bound of its range"
+            } else {
+                ""
+            };
+            let _ = writeln!(
+                s,
+                "| {name} | {} | {:.6e} | {} | {note} |",
+                p.name,
+                p.value,
+                opt(p.std_error, |v| format!("{v:.2e}"))
+            );
         }
     }
+}
+
+/// Per named effect: the held-out records and phases that carried its gain.
+fn evidence(s: &mut String, d: &Discovery) {
+    let _ = writeln!(
+        s,
+        "\n## Evidence: where each effect's held-out gain comes from\n"
+    );
+    for ev in &d.evidence {
+        let phases = ev
+            .phases
+            .iter()
+            .map(|(p, share)| format!("{p} {:.0} %", 100.0 * share))
+            .collect::<Vec<_>>()
+            .join(", ");
+        let _ = writeln!(s, "`{}` (by phase: {phases}):\n\n| held-out record | condition | MSE before | MSE after | share of gain |\n|---|---|---|---|---|", ev.effect);
+        for r in ev.records.iter().take(10) {
+            let _ = writeln!(
+                s,
+                "| {} | {} | {:.3e} | {:.3e} | {:+.1} % |",
+                r.record,
+                r.condition,
+                r.mse_before,
+                r.mse_after,
+                100.0 * r.share
+            );
+        }
+        if ev.records.len() > 10 {
+            let _ = writeln!(
+                s,
+                "\n({} more records in report.json)",
+                ev.records.len() - 10
+            );
+        }
+        let _ = writeln!(s);
+    }
+}
+
+/// The conditions each record was replayed under.
+fn conditions(s: &mut String, d: &Discovery) {
     let _ = writeln!(s, "\n## Conditions each record was replayed under\n\n| record | set | condition |\n|---|---|---|");
     for c in &d.conditions {
         let _ = writeln!(s, "| {} | {} | {} |", c.record, c.set, c.condition);
     }
+}
+
+/// Nominal, calibrated and final baseline parameters.
+fn baseline_table(s: &mut String, d: &Discovery) {
     let _ = writeln!(s, "\n## Calibrated baseline parameters\n\n| parameter | nominal | calibrated | final | standard error (calibration) |\n|---|---|---|---|---|");
     for (i, n) in d.calibrated.baseline_names.iter().enumerate() {
         let _ = writeln!(
@@ -267,6 +191,10 @@ pub fn markdown(d: &Discovery, plots: &[PathBuf], dir: &Path) -> String {
             opt(d.calibrated.baseline_se[i], |v| format!("{v:.2e}"))
         );
     }
+}
+
+/// Per-channel NRMSE before and after, training and held-out.
+fn channel_table(s: &mut String, d: &Discovery) {
     let _ = writeln!(s, "\n## Error per channel (NRMSE = RMS error / channel standard deviation)\n\n| channel | train before | train after | held-out before | held-out after |\n|---|---|---|---|---|");
     // A channel no record has is not compared: shown as "not recorded", not as NaN.
     let cell = |e: &super::ChannelError| {
@@ -287,6 +215,10 @@ pub fn markdown(d: &Discovery, plots: &[PathBuf], dir: &Path) -> String {
             cell(ha)
         );
     }
+}
+
+/// The worst channel signatures of the calibrated baseline.
+fn disagreement(s: &mut String, d: &Discovery) {
     let _ = writeln!(s, "\n## Where the calibrated baseline disagrees most\n\n| record | channel | NRMSE | bias | lag (s) | amplitude ratio | freq. shift (%) | low-band share | zero-crossing ratio | worst phase |\n|---|---|---|---|---|---|---|---|---|---|");
     let mut sig: Vec<_> = d.signatures.iter().collect();
     sig.sort_by(|a, b| b.1.nrmse.total_cmp(&a.1.nrmse));
@@ -311,6 +243,10 @@ pub fn markdown(d: &Discovery, plots: &[PathBuf], dir: &Path) -> String {
             g.zero_crossing_ratio
         );
     }
+}
+
+/// Every round's candidates with their scores or failures.
+fn candidates(s: &mut String, d: &Discovery) {
     let _ = writeln!(s, "\n## Candidates tried\n");
     for (k, st) in d.steps.iter().enumerate() {
         let _ = writeln!(
@@ -346,6 +282,10 @@ pub fn markdown(d: &Discovery, plots: &[PathBuf], dir: &Path) -> String {
         }
         let _ = writeln!(s);
     }
+}
+
+/// Links to the overlay plots (feature `plots`).
+fn overlays(s: &mut String, plots: &[PathBuf], dir: &Path) {
     if !plots.is_empty() {
         let _ = writeln!(s, "## Held-out overlays\n");
         for p in plots {
@@ -353,7 +293,6 @@ pub fn markdown(d: &Discovery, plots: &[PathBuf], dir: &Path) -> String {
             let _ = writeln!(s, "![{0}]({0})", rel.display());
         }
     }
-    s
 }
 
 /// `n/a` for a quantity that could not be computed.
