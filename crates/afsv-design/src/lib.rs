@@ -13,7 +13,6 @@
 //! Every constructor validates its input and returns a [`DesignError`] naming the field.
 //! `docs/design.md` maps each equation to its code.
 
-
 pub mod afs_design;
 pub mod ahp;
 pub mod error;

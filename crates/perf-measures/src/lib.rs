@@ -14,7 +14,6 @@
 //!
 //! Units are SI throughout; `docs/perf-measures.md` maps every equation to its code.
 
-
 pub mod decay;
 pub mod error;
 pub mod iso2631;
