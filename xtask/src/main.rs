@@ -94,9 +94,9 @@ fn validate(args: &[String]) -> Result<(), String> {
             other => return Err(format!("validate: unknown argument `{other}`")),
         }
     }
-    let report = afsv::validate::run(&fixtures).map_err(|e| e.to_string())?;
+    let report = afsv_validation::run(&fixtures).map_err(|e| e.to_string())?;
     print!("{}", report.table_text());
-    afsv::validate::write_outputs(&report, &out).map_err(|e| e.to_string())?;
+    afsv_validation::write_outputs(&report, &out).map_err(|e| e.to_string())?;
     println!("report: {}", out.join("report.md").display());
     for (name, e) in &report.failed_checks {
         eprintln!("xtask: check `{name}` failed: {e}");

@@ -3,7 +3,7 @@
 
 use super::ahp::ahp_levels;
 use super::{Ctx, TEST_SPEED_M_S};
-use crate::validate::fixtures::Fixtures;
+use crate::fixtures::Fixtures;
 use afs_hydraulics::AfsParams;
 use afsv_design::{AfsDesign, DesignMeasures, Measure, MeasureRatios, Objective};
 use afsv_dynamics::{measures_for, EquationForm, Load, MeasureSpec, VehicleParams, YawMeasures};

@@ -4,7 +4,7 @@
 //! what the parameter sets carry, not model results.
 
 use super::{Ctx, DEG};
-use crate::validate::Echo;
+use crate::Echo;
 use afs_hydraulics::params::{
     MU_V_TABLE_UNIT, VALVE_A0_TABLE_UNIT, VALVE_AM_TABLE_UNIT, VALVE_AV_TABLE_UNIT,
 };

@@ -185,7 +185,7 @@ impl<'a> Ctx<'a> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::validate::fixtures::tests::fixture;
+    use crate::fixtures::tests::fixture;
     use serde_json::json;
 
     #[test]

@@ -1,8 +1,8 @@
 //! Chapter 5 and Tables 6.3 / 6.5: the front-axle strut and the laboratory strut.
 
 use super::Ctx;
-use crate::validate::fixtures::Fixtures;
-use crate::validate::Echo;
+use crate::fixtures::Fixtures;
+use crate::Echo;
 use afsv_design::HpsDesign;
 use hps_emulsion::{
     identify_lab, run_harmonic, HarmonicTest, HpsExtensions, HpsStrut, LabConfig,

@@ -2,8 +2,8 @@
 //! pairwise-comparison matrices (`afsv_design::AhpHierarchy`).
 
 use super::Ctx;
-use crate::validate::fixtures::{matrix, Fixtures};
-use crate::validate::Echo;
+use crate::fixtures::{matrix, Fixtures};
+use crate::Echo;
 use afsv_design::{AhpHierarchy, AhpLevels, GoalComparison, Measure};
 use serde_json::Value;
 

@@ -2,7 +2,7 @@
 //! reproduced may regress, every result/qualitative fixture is listed, and the tolerance /
 //! regression logic works (`docs/validation.md`).
 
-use afsv::validate::{load_fixtures, run, write_outputs, Report, Status, Tolerance};
+use afsv_validation::{load_fixtures, run, write_outputs, Report, Status, Tolerance};
 use serde_json::{json, Value};
 use std::path::{Path, PathBuf};
 use std::sync::OnceLock;

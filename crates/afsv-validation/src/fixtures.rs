@@ -221,7 +221,7 @@ pub(super) fn matrix(v: &Value) -> Result<Vec<Vec<f64>>, String> {
 #[cfg(test)]
 pub(crate) mod tests {
     use super::*;
-    use crate::validate::Tolerance;
+    use crate::Tolerance;
     use serde_json::json;
 
     /// A test fixture with the given status and guarded keys.

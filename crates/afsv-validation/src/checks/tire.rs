@@ -1,7 +1,7 @@
 //! Table 6.2: the 29.5R29 tire.
 
 use super::{Ctx, DEG};
-use crate::validate::Echo;
+use crate::Echo;
 use tire_fiala::cornering::TABLE_6_2_STATIC_LOADS_N;
 
 /// Table 6.2 against `TireParams::nominal`, and its cornering-stiffness table evaluated at

@@ -3,7 +3,7 @@
 //! measured off-road terrains are inputs the crate carries.
 
 use super::Ctx;
-use crate::validate::Echo;
+use crate::Echo;
 
 /// Table 2.4 roughness parameters against `terrain_psd`.
 pub(super) fn check_terrain(ctx: &mut Ctx) -> Result<(), String> {
