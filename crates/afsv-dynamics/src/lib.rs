@@ -29,5 +29,6 @@ pub use error::DynError;
 pub use inputs::SteerInput;
 pub use mechanics::EquationForm;
 pub use model::{SteerSource, YawPlaneModel};
+pub use odeint::Solver;
 pub use params::{Load, VehicleParams, YawPlaneParams};
-pub use simulate::{simulate, Manoeuvre, SimOptions, SolverKind, SolverStats, YawRecord};
+pub use simulate::{simulate, Manoeuvre, SimOptions, SolverStats, YawRecord};

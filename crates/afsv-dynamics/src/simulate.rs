@@ -9,7 +9,7 @@ use crate::mechanics::{kinetic_energy, Motion};
 use crate::model::{SteerSource, YawPlaneModel};
 use crate::params::VehicleParams;
 use crate::EquationForm;
-use odeint::{Control, Dopri5, Integrator, OdeError, Rk4, Rosenbrock23};
+use odeint::{Control, Integrator, OdeError, Problem, Solver, Workspace};
 use serde::{Deserialize, Serialize};
 
 /// A constant-speed manoeuvre: forward speed, duration and steering.
@@ -94,32 +94,18 @@ impl Manoeuvre {
     }
 }
 
-/// Integration method.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
-#[serde(rename_all = "snake_case")]
-pub enum SolverKind {
-    /// Adaptive Dormand-Prince 5(4) (default; chosen by measurement, docs/afs-yaw-plane.md).
-    #[default]
-    Dopri5,
-    /// Adaptive linearly implicit Rosenbrock 2(3) with FD Jacobian.
-    Rosenbrock23,
-    /// Fixed-step classical RK4 with step `rk4_step_s`.
-    Rk4,
-}
-
 /// Numerical and modelling options of a run.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 pub struct SimOptions {
-    /// Integration method.
-    pub solver: SolverKind,
+    /// Integration method: [`Solver::Dopri5`] by default (chosen by measurement,
+    /// docs/afs-yaw-plane.md); [`Solver::Auto`] also picks Dopri5 (the model is not stiff).
+    pub solver: Solver,
     /// Relative tolerance (adaptive methods).
     pub rtol: f64,
     /// Absolute tolerance (states in rad, m/s, m, MPa).
     pub atol: f64,
     /// Largest step (s) of the adaptive methods.
     pub max_step_s: f64,
-    /// Step of the fixed-step RK4 (s).
-    pub rk4_step_s: f64,
     /// Output sample interval (s).
     pub output_dt_s: f64,
     /// Equation form of Eq 3.13.
@@ -144,11 +130,10 @@ fn record_energy_default() -> bool {
 impl Default for SimOptions {
     fn default() -> Self {
         Self {
-            solver: SolverKind::Dopri5,
+            solver: Solver::Dopri5,
             rtol: 1e-5,
             atol: 1e-6,
             max_step_s: 0.05,
-            rk4_step_s: 2e-4,
             output_dt_s: 0.005,
             form: EquationForm::EnergyConsistent,
             max_articulation_deg: 60.0,
@@ -165,13 +150,19 @@ impl SimOptions {
             ("rtol", self.rtol),
             ("atol", self.atol),
             ("max_step_s", self.max_step_s),
-            ("rk4_step_s", self.rk4_step_s),
             ("output_dt_s", self.output_dt_s),
             ("max_articulation_deg", self.max_articulation_deg),
         ] {
             if !(v.is_finite() && v > 0.0) {
                 return Err(DynError::InvalidInput(format!(
                     "option `{name}` must be positive and finite, got {v}"
+                )));
+            }
+        }
+        if let Solver::Rk4 { step } = self.solver {
+            if !(step.is_finite() && step > 0.0) {
+                return Err(DynError::InvalidInput(format!(
+                    "option `solver.rk4.step` must be positive and finite, got {step}"
                 )));
             }
         }
@@ -382,7 +373,6 @@ pub fn simulate<A: SteeringActuator>(
         .collect();
     cuts.sort_by(f64::total_cmp);
     cuts.dedup();
-    cuts.push(t_end);
 
     let mut rec = YawRecord::default();
     let n_out = grid.len();
@@ -402,114 +392,85 @@ pub fn simulate<A: SteeringActuator>(
     let mut scratch = vec![0.0; layout.dim];
     let max_theta = options.max_articulation_deg.to_radians();
 
-    let mut y0 = model.initial_state(options.initial_articulation_rad);
-    let mut t0 = 0.0;
-    let mut gi = 0; // next grid index to record
+    let y0 = model.initial_state(options.initial_articulation_rad);
     let mut failure: Option<DynError> = None;
-    let mut stats = SolverStats::default();
-    for &cut in &cuts {
-        let mut t_out: Vec<f64> = grid[gi..]
-            .iter()
-            .copied()
-            .take_while(|&t| t <= cut)
-            .collect();
-        if t_out.last() != Some(&cut) {
-            t_out.push(cut);
+    let observe = |s: odeint::Sample<'_>| -> Control {
+        let (t, y) = (s.t, s.y);
+        if y[0].abs() > max_theta || !y.iter().all(|v| v.is_finite()) {
+            failure = Some(DynError::Diverged {
+                t,
+                reason: format!(
+                    "articulation {:.2} deg beyond the {:.0} deg bound (jackknife/snaking) or non-finite state",
+                    y[0].to_degrees(),
+                    options.max_articulation_deg
+                ),
+                state: describe_state(&names, y),
+            });
+            return Control::Stop;
         }
-        let mut y_end = y0.clone();
-        let mut observe = |t: f64, y: &[f64]| -> Control {
-            if y[0].abs() > max_theta || !y.iter().all(|v| v.is_finite()) {
-                failure = Some(DynError::Diverged {
-                    t,
-                    reason: format!(
-                        "articulation {:.2} deg beyond the {:.0} deg bound (jackknife/snaking) or non-finite state",
-                        y[0].to_degrees(),
-                        options.max_articulation_deg
-                    ),
-                    state: describe_state(&names, y),
-                });
-                return Control::Stop;
-            }
-            if gi < n_out && (t - grid[gi]).abs() <= 1e-12 * t_end.max(1.0) {
-                gi += 1;
-                let e = model.evaluate(t, y, &mut scratch);
-                let m = Motion {
-                    theta: y[0],
-                    u_f: manoeuvre.speed_m_s,
-                    v_f: y[1],
-                    r_f: y[2],
-                    r_r: y[3],
-                };
-                let mut xs = [0.0; MAX_ACTUATOR_STATES];
-                model.actuator_state(y, &mut xs);
-                rec.time_s.push(t);
-                rec.steer_wheel_deg.push(e.steer_wheel.to_degrees());
-                rec.speed_m_s.push(manoeuvre.speed_m_s);
-                rec.articulation_deg.push(y[0].to_degrees());
-                rec.strut_left_disp_m.push(e.actuator.strut_left_disp);
-                rec.p_c_pa.push(e.actuator.p_c);
-                rec.p_r_pa.push(e.actuator.p_r);
-                rec.yaw_rate_front_deg_s.push(y[2].to_degrees());
-                rec.yaw_rate_rear_deg_s.push(y[3].to_degrees());
-                rec.articulation_rate_deg_s.push(e.theta_dot.to_degrees());
-                rec.lateral_velocity_front_m_s.push(y[1]);
-                rec.lateral_accel_front_m_s2.push(e.acc.a_y_front);
-                rec.lateral_accel_rear_m_s2.push(e.acc.a_y_rear);
-                rec.x_m.push(y[4]);
-                rec.y_m.push(y[5]);
-                rec.heading_front_deg.push(y[6].to_degrees());
-                rec.slip_front_deg
-                    .push((0.5 * (e.alpha[0] + e.alpha[1])).to_degrees());
-                rec.slip_rear_deg
-                    .push((0.5 * (e.alpha[2] + e.alpha[3])).to_degrees());
-                rec.steering_torque_nm.push(e.actuator.torque);
-                rec.q_supply_m3_s.push(e.actuator.q_supply);
-                rec.supply_power_w.push(e.actuator.supply_power);
-                rec.supply_pressure_pa.push(e.actuator.supply_pressure);
-                rec.traction_force_n.push(e.acc.traction_force);
-                if options.record_energy {
-                    rec.kinetic_energy_j.push(kinetic_energy(vehicle, &m));
-                    rec.actuator_energy_j.push(model.actuator.energy(
-                        y[0],
-                        e.steer_wheel,
-                        &xs[..layout.n_act],
-                    ));
-                }
-                for (i, s) in states.iter_mut().enumerate() {
-                    s.push(model.state_si(i, y));
-                }
-            }
-            if t == cut {
-                y_end.copy_from_slice(y);
-            }
-            Control::Continue
+        let e = model.evaluate(t, y, &mut scratch);
+        let m = Motion {
+            theta: y[0],
+            u_f: manoeuvre.speed_m_s,
+            v_f: y[1],
+            r_f: y[2],
+            r_r: y[3],
         };
-        let res = match options.solver {
-            SolverKind::Dopri5 => Dopri5::new(options.rtol, options.atol)
-                .with_max_step(options.max_step_s)
-                .integrate(&model, t0, &y0, &t_out, &mut observe),
-            SolverKind::Rosenbrock23 => Rosenbrock23::new(options.rtol, options.atol)
-                .with_max_step(options.max_step_s)
-                .integrate(&model, t0, &y0, &t_out, &mut observe),
-            SolverKind::Rk4 => Rk4 {
-                step: options.rk4_step_s,
-            }
-            .integrate(&model, t0, &y0, &t_out, &mut observe),
-        };
-        if let Some(f) = failure.take() {
-            return Err(f);
+        rec.time_s.push(t);
+        rec.steer_wheel_deg.push(e.steer_wheel.to_degrees());
+        rec.speed_m_s.push(manoeuvre.speed_m_s);
+        rec.articulation_deg.push(y[0].to_degrees());
+        rec.strut_left_disp_m.push(e.actuator.strut_left_disp);
+        rec.p_c_pa.push(e.actuator.p_c);
+        rec.p_r_pa.push(e.actuator.p_r);
+        rec.yaw_rate_front_deg_s.push(y[2].to_degrees());
+        rec.yaw_rate_rear_deg_s.push(y[3].to_degrees());
+        rec.articulation_rate_deg_s.push(e.theta_dot.to_degrees());
+        rec.lateral_velocity_front_m_s.push(y[1]);
+        rec.lateral_accel_front_m_s2.push(e.acc.a_y_front);
+        rec.lateral_accel_rear_m_s2.push(e.acc.a_y_rear);
+        rec.x_m.push(y[4]);
+        rec.y_m.push(y[5]);
+        rec.heading_front_deg.push(y[6].to_degrees());
+        rec.slip_front_deg
+            .push((0.5 * (e.alpha[0] + e.alpha[1])).to_degrees());
+        rec.slip_rear_deg
+            .push((0.5 * (e.alpha[2] + e.alpha[3])).to_degrees());
+        rec.steering_torque_nm.push(e.actuator.torque);
+        rec.q_supply_m3_s.push(e.actuator.q_supply);
+        rec.supply_power_w.push(e.actuator.supply_power);
+        rec.supply_pressure_pa.push(e.actuator.supply_pressure);
+        rec.traction_force_n.push(e.acc.traction_force);
+        if options.record_energy {
+            rec.kinetic_energy_j.push(kinetic_energy(vehicle, &m));
+            let mut xs = [0.0; MAX_ACTUATOR_STATES];
+            model.actuator_state(y, &mut xs);
+            rec.actuator_energy_j.push(model.actuator.energy(
+                y[0],
+                e.steer_wheel,
+                &xs[..layout.n_act],
+            ));
         }
-        match res {
-            Ok(s) => {
-                stats.rhs_evals += s.rhs_evals;
-                stats.accepted += s.accepted;
-                stats.rejected += s.rejected;
-            }
-            Err(e) => return Err(map_ode_error(e, &names)),
+        for (i, s) in states.iter_mut().enumerate() {
+            s.push(model.state_si(i, y));
         }
-        y0 = y_end;
-        t0 = cut;
+        Control::Continue
+    };
+    let problem = Problem::new(0.0, &y0, &grid).with_breakpoints(&cuts);
+    let res = Integrator::new(options.solver, options.rtol, options.atol)
+        .with_max_step(options.max_step_s)
+        .run(&model, &problem, &mut Workspace::new(layout.dim), observe);
+    if let Some(f) = failure.take() {
+        return Err(f);
     }
+    let stats = match res {
+        Ok(s) => SolverStats {
+            rhs_evals: s.rhs_evals,
+            accepted: s.accepted,
+            rejected: s.rejected,
+        },
+        Err(e) => return Err(map_ode_error(e, &names)),
+    };
     rec.stats = stats;
     rec.states = names.into_iter().zip(states).collect();
     Ok(rec)

@@ -6,7 +6,7 @@ use afsv_dynamics::mechanics::{kinetic_energy, Motion};
 use afsv_dynamics::{
     EquationForm, SteerInput, SteerSource, SteeringActuator, VehicleParams, YawPlaneModel,
 };
-use odeint::{Control, Dopri5, Integrator};
+use odeint::{Control, Integrator, Solver};
 
 fn lossless() -> (VehicleParams, AfsSystem) {
     let mut v = VehicleParams::loaded();
@@ -36,7 +36,7 @@ fn energy_drift(speed: f64, form: EquationForm) -> f64 {
     let mut last: Option<(f64, f64)> = None; // (t, traction power)
     let mut d = vec![0.0; y0.len()];
     let act0 = model.layout().act0;
-    Dopri5::new(1e-11, 1e-12)
+    Integrator::new(Solver::Dopri5, 1e-11, 1e-12)
         .integrate(&model, 0.0, &y0, &t_out, |t, y| {
             let e = model.evaluate(t, y, &mut d);
             let m = Motion {

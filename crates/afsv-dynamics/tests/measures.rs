@@ -4,7 +4,7 @@ use afs_hydraulics::{AfsParams, AfsSystem};
 use afsv_dynamics::analysis::{gain_efficiency_correlation, measures_for, steady_turn_decay};
 use afsv_dynamics::{
     simulate, yaw_measures, DynError, EquationForm, EquivalentTorsion, Load, Manoeuvre,
-    MeasureSpec, SimOptions, SolverKind, VehicleParams,
+    MeasureSpec, SimOptions, Solver, VehicleParams,
 };
 
 const U50: f64 = 50.0 / 3.6;
@@ -62,7 +62,7 @@ fn halving_the_tolerance_changes_frequency_and_gain_by_less_than_half_a_percent(
     eprintln!("tolerance halved: frequency {df:.2e}, gain {dg:.2e}, damping {dz:.2e}");
     assert!(df < 5e-3 && dg < 5e-3, "df {df}, dg {dg}");
     // The explicit and the implicit solver agree too.
-    spec.options.solver = SolverKind::Rosenbrock23;
+    spec.options.solver = Solver::Rosenbrock23;
     spec.options.rtol = 1e-5;
     spec.options.atol = 1e-7;
     let m3 = measures_for(&v, &a, None, U50, &spec).unwrap();

@@ -4,7 +4,8 @@ use crate::error::HpsError;
 use crate::extensions::HpsExtensions;
 use crate::params::StrutParams;
 use crate::strut::HpsStrut;
-use odeint::{Control, Dopri5, Integrator, OdeSystem, Rosenbrock23};
+pub use odeint::Solver;
+use odeint::{Atol, Control, Integrator, OdeSystem};
 use serde::{Deserialize, Serialize};
 use std::f64::consts::PI;
 
@@ -228,6 +229,8 @@ impl Input<'_> {
 struct Driven<'a> {
     strut: &'a HpsStrut,
     input: Input<'a>,
+    /// The [`Solver::Auto`] rule for this motion (see [`AUTO_SWITCH_HZ`]).
+    stiff: bool,
 }
 
 impl OdeSystem for Driven<'_> {
@@ -238,22 +241,16 @@ impl OdeSystem for Driven<'_> {
         let (z, zd) = self.input.eval(t);
         self.strut.derivatives(z, zd, y, dydt);
     }
+    /// Slow motion keeps the orifice pressure drops small, where the strut is stiffest.
+    fn is_stiff(&self) -> bool {
+        self.stiff
+    }
 }
 
-/// Integrator used for a run.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
-pub enum Solver {
-    /// Pick by measurement (docs/hps-emulsion.md): Dopri5 when the motion's characteristic
-    /// frequency `v_peak / (2 pi z_amp)` is at least [`AUTO_SWITCH_HZ`], Rosenbrock23 below
-    /// (slow motion keeps the orifice pressure drops small, where the system is stiffest).
-    Auto,
-    /// Linearly implicit Rosenbrock 2(3), L-stable.
-    Rosenbrock23,
-    /// Explicit Dormand-Prince 5(4).
-    Dopri5,
-}
-
-/// Characteristic frequency (Hz) at which [`Solver::Auto`] switches from Rosenbrock23 to Dopri5.
+/// Characteristic frequency (Hz) at which [`Solver::Auto`] switches from Rosenbrock23 to
+/// Dopri5, measured (docs/hps-emulsion.md): a strut run answers [`OdeSystem::is_stiff`]
+/// with `true` when the motion's characteristic frequency `v_peak / (2 pi z_amp)`
+/// ([`Excitation::characteristic_frequency`]) is below it.
 pub const AUTO_SWITCH_HZ: f64 = 0.5;
 
 /// Settings of a displacement-driven run.
@@ -261,11 +258,12 @@ pub const AUTO_SWITCH_HZ: f64 = 0.5;
 pub struct SimOptions {
     /// Output rate for harmonic runs (Hz); sampled excitations output at their own times.
     pub output_rate_hz: f64,
-    /// Integrator.
+    /// Integrator ([`Solver::Auto`]: by the frequency rule of [`AUTO_SWITCH_HZ`]).
     pub solver: Solver,
-    /// Relative tolerance (states are normalised to O(1)).
+    /// Relative tolerance.
     pub rtol: f64,
-    /// Absolute tolerance on the normalised states.
+    /// Absolute tolerance per typical magnitude: state `i` gets
+    /// `atol * HpsStrut::state_typical(i)` (e.g. `atol * P_h0` for the rod-side pressure).
     pub atol: f64,
 }
 
@@ -431,7 +429,11 @@ pub fn simulate_strut(
             )
         }
     };
-    let sys = Driven { strut, input };
+    let sys = Driven {
+        strut,
+        input,
+        stiff: excitation.characteristic_frequency() < AUTO_SWITCH_HZ,
+    };
     let (z0, _) = sys.input.eval(t0);
     let mut y0 = vec![0.0; strut.n_states()];
     strut.initial_state(z0, &mut y0)?;
@@ -450,24 +452,10 @@ pub fn simulate_strut(
         rec.gas_volume.push(o.gas_volume);
         Control::Continue
     };
-    let solver = match opts.solver {
-        Solver::Auto => {
-            if excitation.characteristic_frequency() >= AUTO_SWITCH_HZ {
-                Solver::Dopri5
-            } else {
-                Solver::Rosenbrock23
-            }
-        }
-        s => s,
-    };
-    match solver {
-        Solver::Auto | Solver::Rosenbrock23 => Rosenbrock23::new(opts.rtol, opts.atol)
-            .with_max_step(max_step)
-            .integrate(&sys, t0, &y0, &t_out, &mut observe)?,
-        Solver::Dopri5 => Dopri5::new(opts.rtol, opts.atol)
-            .with_max_step(max_step)
-            .integrate(&sys, t0, &y0, &t_out, &mut observe)?,
-    };
+    let atol = Atol::scaled(opts.atol, (0..y0.len()).map(|i| strut.state_typical(i)));
+    Integrator::new(opts.solver, opts.rtol, atol)
+        .with_max_step(max_step)
+        .integrate(&sys, t0, &y0, &t_out, &mut observe)?;
     if let Some(i) = rec.gas_volume.iter().position(|v| v.is_nan() || *v <= 0.0) {
         return Err(HpsError::OutOfRange {
             t: rec.time[i],

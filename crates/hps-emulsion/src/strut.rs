@@ -2,14 +2,15 @@
 //! velocity it returns the force and the state derivatives, allocation-free, so a vehicle
 //! model can embed it; [`crate::simulate`] drives it by a prescribed displacement.
 //!
-//! State vector (normalised so every state is O(1)):
+//! State vector (SI; [`HpsStrut::state_typical`] gives each state's typical magnitude, from
+//! which a run builds per-state absolute tolerances):
 //!
-//! | index | name | unit | equation |
-//! |---|---|---|---|
-//! | 0 | `v = V_g / V_g0`, free gas volume | - | Eq 5.5 (with Eq 5.4 for P_hc) |
-//! | 1 | `pi_r = P_hr / P_h0`, rod-side pressure | - | Eq 5.6 |
-//! | 2 (heat transfer on) | `theta = T_g / T_0`, gas temperature | - | [`crate::HeatTransfer`] |
-//! | last (valve lag on) | `x_v`, check-valve opening | - | [`crate::ValveLag`] |
+//! | index | name | unit | typical | equation |
+//! |---|---|---|---|---|
+//! | 0 | `V_g`, free gas volume | m^3 | V_g0 | Eq 5.5 (with Eq 5.4 for P_hc) |
+//! | 1 | `P_hr`, rod-side pressure | Pa | P_h0 | Eq 5.6 |
+//! | 2 (heat transfer on) | `theta = T_g / T_0`, gas temperature ratio | - | 1 | [`crate::HeatTransfer`] |
+//! | last (valve lag on) | `x_v`, check-valve opening | - | 1 | [`crate::ValveLag`] |
 
 use crate::emulsion::{emulsion, emulsion_volume, Emulsion};
 use crate::error::HpsError;
@@ -131,7 +132,7 @@ impl HpsStrut {
 
     /// Names and units of the states, in order.
     pub fn state_names(&self) -> Vec<&'static str> {
-        let mut v = vec!["V_g/V_g0 (-)", "P_hr/P_h0 (-)"];
+        let mut v = vec!["V_g free gas volume (m^3)", "P_hr rod-side pressure (Pa)"];
         if self.idx_theta.is_some() {
             v.push("T_g/T_0 (-)");
         }
@@ -139,6 +140,17 @@ impl HpsStrut {
             v.push("x_v valve opening (-)");
         }
         v
+    }
+
+    /// Typical magnitude of state `i` in its SI unit: V_g0 for the gas volume, P_h0 for the
+    /// rod-side pressure, 1 for the temperature ratio and the valve opening. A run's
+    /// absolute tolerance of state `i` is `atol * state_typical(i)`.
+    pub fn state_typical(&self, i: usize) -> f64 {
+        match i {
+            0 => self.params.v_g0,
+            1 => self.params.p_h0,
+            _ => 1.0,
+        }
     }
 
     /// Static equilibrium pressure (Pa) at deflection `z` (m): both chambers at one pressure,
@@ -195,8 +207,8 @@ impl HpsStrut {
         } else {
             p.n
         };
-        state[0] = (p.p_h0 / pe).powf(1.0 / gas_n);
-        state[1] = pe / p.p_h0;
+        state[0] = p.v_g0 * (p.p_h0 / pe).powf(1.0 / gas_n);
+        state[1] = pe;
         if let Some(i) = self.idx_theta {
             state[i] = 1.0;
         }
@@ -217,10 +229,16 @@ impl HpsStrut {
         Ok((self.static_force(z + h)? - self.static_force(z - h)?) / (2.0 * h))
     }
 
+    /// Relative gas volume `V_g / V_g0`, kept above 1e-9.
+    #[inline]
+    fn relative_gas_volume(&self, state: &[f64]) -> f64 {
+        (state[0] / self.params.v_g0).max(1e-9)
+    }
+
     #[inline]
     fn piston_pressure(&self, state: &[f64]) -> f64 {
         let p = &self.params;
-        let v = state[0].max(1e-9);
+        let v = self.relative_gas_volume(state);
         match self.idx_theta {
             Some(i) => p.p_h0 * state[i] / v,
             None => p.p_h0 * v.powf(-p.n),
@@ -252,9 +270,9 @@ impl HpsStrut {
     /// properties of Eqs 5.9-5.11, volumes of Eq 5.7 (`x` of Eq 5.7 is `z_s`). No allocation.
     pub fn derivatives(&self, z: f64, zdot: f64, state: &[f64], dstate: &mut [f64]) {
         let p = &self.params;
-        let v = state[0].max(1e-9);
+        let v = self.relative_gas_volume(state);
         let p_c = self.piston_pressure(state);
-        let p_r_raw = state[1] * p.p_h0;
+        let p_r_raw = state[1];
         let p_r = p_r_raw.max(p.p_vap.max(1.0));
         let vg = p.v_g0 * v;
         // Eq 5.7 (x = z_s); emulsion volumes cannot go below zero.
@@ -271,14 +289,14 @@ impl HpsStrut {
             _ => (p.n, 0.0),
         };
         let vg_dot = (q - p.a_hc * zdot + heat) / (1.0 + n_eff * p_c * vc / (ec.beta * vg));
-        dstate[0] = vg_dot / p.v_g0;
+        dstate[0] = vg_dot;
         // Eq 5.6
         let mut pr_dot = er.beta / vr * (ec.rho / er.rho * q - self.a_ann * zdot);
         if pr_dot < 0.0 {
             let guard = 1.0 - (-(p_r_raw - p.p_vap) / CAVITATION_BAND).exp();
             pr_dot *= guard.clamp(0.0, 1.0);
         }
-        dstate[1] = pr_dot / p.p_h0;
+        dstate[1] = pr_dot;
         if let (Some(i), Some(h)) = (self.idx_theta, self.ext.heat_transfer) {
             let th = state[i];
             dstate[i] = -(h.kappa - 1.0) * th * vg_dot / vg + (1.0 - th) / h.tau;
@@ -300,7 +318,7 @@ impl HpsStrut {
     pub fn outputs(&self, z: f64, zdot: f64, state: &[f64]) -> StrutOutputs {
         let p = &self.params;
         let p_c = self.piston_pressure(state);
-        let p_r = (state[1] * p.p_h0).max(p.p_vap.max(1.0));
+        let p_r = state[1].max(p.p_vap.max(1.0));
         let f_f = friction_force(&p.friction, &self.levels, z, zdot, self.v_h);
         let force = p_c * p.a_hc - p_r * self.a_ann - p.p_amb * p.a_hr + f_f;
         let (flow, _, _) = self.chamber_flow(p_c, p_r, state);
@@ -310,7 +328,7 @@ impl HpsStrut {
             p_rod: p_r,
             friction: f_f,
             spring_force: (p_c - p.p_amb) * p.a_hr,
-            gas_volume: p.v_g0 * state[0],
+            gas_volume: state[0],
             flow,
         }
     }

@@ -1,9 +1,12 @@
-//! Dormand-Prince 5(4) with step-size control and 4th-order dense output
+//! Dormand-Prince 5(4) step with error estimate and 4th-order dense output
 //! (Hairer, Nørsett & Wanner, *Solving ODEs I*, section II.5/II.6, code DOPRI5).
+//!
+//! Workspace use: `k[0..7]` the stages k1..k7 (k7 = f(t+h, y_new) is the next k1, FSAL),
+//! `aux[0]` the error estimate, `aux[1..4]` the dense-output coefficients.
 
-use crate::{
-    check_request, error_norm, Control, Integrator, OdeError, OdeSystem, Stats, Tolerances,
-};
+use crate::kernel::Kernel;
+use crate::tolerance::error_norm;
+use crate::{OdeSystem, Workspace};
 
 const C2: f64 = 1.0 / 5.0;
 const C3: f64 = 3.0 / 10.0;
@@ -42,364 +45,142 @@ const D5: f64 = 701980252875.0 / 199316789632.0;
 const D6: f64 = -1453857185.0 / 822651844.0;
 const D7: f64 = 69997945.0 / 29380423.0;
 
-/// Adaptive explicit Runge-Kutta 5(4) of Dormand and Prince.
-///
-/// The default for non-stiff models (yaw-plane vehicle, tire lag). `max_step` keeps the
-/// method from stepping over short inputs such as a 0.2 s steering pulse.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Dopri5 {
-    /// Relative and absolute tolerances.
-    pub tol: Tolerances,
-    /// Largest step allowed (s).
-    pub max_step: f64,
-    /// First step; `None` picks one from the initial derivatives.
-    pub first_step: Option<f64>,
-    /// Step budget for the whole run.
-    pub max_steps: usize,
-}
+/// The Dormand-Prince 5(4) kernel.
+#[derive(Debug, Clone, Copy, Default)]
+pub(crate) struct Dopri5Kernel;
 
-impl Default for Dopri5 {
-    fn default() -> Self {
-        Self {
-            tol: Tolerances {
-                rtol: 1e-6,
-                atol: 1e-9,
-            },
-            max_step: f64::INFINITY,
-            first_step: None,
-            max_steps: 1_000_000,
-        }
-    }
-}
+impl Kernel for Dopri5Kernel {
+    const ORDER: i32 = 5;
 
-impl Dopri5 {
-    /// Integrator with the given tolerances and the other settings at their defaults.
-    pub fn new(rtol: f64, atol: f64) -> Self {
-        Self {
-            tol: Tolerances { rtol, atol },
-            ..Self::default()
-        }
+    fn start<S: OdeSystem + ?Sized>(&mut self, sys: &S, t: f64, ws: &mut Workspace) -> usize {
+        sys.rhs(t, &ws.y, &mut ws.k[0]);
+        1
     }
 
-    /// Same integrator with a step-size ceiling.
-    pub fn with_max_step(mut self, max_step: f64) -> Self {
-        self.max_step = max_step;
-        self
-    }
-}
-
-/// Hairer's starting-step heuristic (HNW I, II.4); costs one right-hand-side evaluation.
-pub(crate) fn initial_step<S: OdeSystem + ?Sized>(
-    sys: &S,
-    t0: f64,
-    y0: &[f64],
-    f0: &[f64],
-    tol: Tolerances,
-    order: i32,
-    scratch: [&mut [f64]; 2],
-) -> f64 {
-    let [scratch_y, scratch_f] = scratch;
-    let n = y0.len().max(1) as f64;
-    let (mut d0, mut d1) = (0.0, 0.0);
-    for i in 0..y0.len() {
-        let sk = tol.atol + tol.rtol * y0[i].abs();
-        d0 += (y0[i] / sk).powi(2);
-        d1 += (f0[i] / sk).powi(2);
-    }
-    d0 = (d0 / n).sqrt();
-    d1 = (d1 / n).sqrt();
-    let h0 = if d0 < 1e-5 || d1 < 1e-5 {
-        1e-6
-    } else {
-        0.01 * d0 / d1
-    };
-    for i in 0..y0.len() {
-        scratch_y[i] = y0[i] + h0 * f0[i];
-    }
-    sys.rhs(t0 + h0, scratch_y, scratch_f);
-    let mut d2 = 0.0;
-    for i in 0..y0.len() {
-        let sk = tol.atol + tol.rtol * y0[i].abs();
-        d2 += ((scratch_f[i] - f0[i]) / sk).powi(2);
-    }
-    d2 = (d2 / n).sqrt() / h0;
-    let h1 = if d1.max(d2) <= 1e-15 {
-        (h0 * 1e-3).max(1e-6)
-    } else {
-        (0.01 / d1.max(d2)).powf(1.0 / (order as f64 + 1.0))
-    };
-    let h = (100.0 * h0).min(h1);
-    if h.is_finite() && h > 0.0 {
-        h
-    } else {
-        1e-6
-    }
-}
-
-impl Integrator for Dopri5 {
-    fn integrate<S, F>(
-        &self,
+    fn attempt<S: OdeSystem + ?Sized>(
+        &mut self,
         sys: &S,
-        t0: f64,
-        y0: &[f64],
-        t_out: &[f64],
-        mut observe: F,
-    ) -> Result<Stats, OdeError>
-    where
-        S: OdeSystem + ?Sized,
-        F: FnMut(f64, &[f64]) -> Control,
-    {
-        check_request(sys, t0, y0, t_out)?;
-        self.tol.validate()?;
-        if self.max_step.is_nan() || self.max_step <= 0.0 {
-            return Err(OdeError::InvalidInput(format!(
-                "max_step must be positive, got {}",
-                self.max_step
-            )));
+        t: f64,
+        h: f64,
+        rtol: f64,
+        ws: &mut Workspace,
+    ) -> (f64, usize) {
+        let Workspace {
+            y,
+            y_new: y1,
+            y_stage: ys,
+            k,
+            aux,
+            atol,
+            ..
+        } = ws;
+        let [k1, k2, k3, k4, k5, k6, k7] = k;
+        let err = &mut aux[0];
+        let n = y.len();
+        for i in 0..n {
+            ys[i] = y[i] + h * A21 * k1[i];
         }
-        let n = y0.len();
-        let mut stats = Stats::default();
-        let Some(&t_end) = t_out.last() else {
-            return Ok(stats);
-        };
-        // One allocation for all work vectors.
-        let mut buf = vec![0.0; n * 15];
-        let (y, rest) = buf.split_at_mut(n);
-        let (y1, rest) = rest.split_at_mut(n);
-        let (ys, rest) = rest.split_at_mut(n);
-        let (k1, rest) = rest.split_at_mut(n);
-        let (k2, rest) = rest.split_at_mut(n);
-        let (k3, rest) = rest.split_at_mut(n);
-        let (k4, rest) = rest.split_at_mut(n);
-        let (k5, rest) = rest.split_at_mut(n);
-        let (k6, rest) = rest.split_at_mut(n);
-        let (k7, rest) = rest.split_at_mut(n);
-        let (err, rest) = rest.split_at_mut(n);
-        let (r3, rest) = rest.split_at_mut(n);
-        let (r4, rest) = rest.split_at_mut(n);
-        let (r5, yo) = rest.split_at_mut(n);
-
-        y.copy_from_slice(y0);
-        let mut t = t0;
-        let mut next_out = 0;
-        // Outputs at t0.
-        while next_out < t_out.len() && t_out[next_out] <= t0 {
-            if observe(t0, y) == Control::Stop {
-                return Ok(stats);
-            }
-            next_out += 1;
+        sys.rhs(t + C2 * h, ys, k2);
+        for i in 0..n {
+            ys[i] = y[i] + h * (A31 * k1[i] + A32 * k2[i]);
         }
-        if next_out == t_out.len() {
-            return Ok(stats);
+        sys.rhs(t + C3 * h, ys, k3);
+        for i in 0..n {
+            ys[i] = y[i] + h * (A41 * k1[i] + A42 * k2[i] + A43 * k3[i]);
         }
-        sys.rhs(t, y, k1);
-        stats.rhs_evals += 1;
-        let mut h = match self.first_step {
-            Some(h) => h,
-            None => {
-                stats.rhs_evals += 1;
-                initial_step(sys, t, y, k1, self.tol, 5, [ys, k2])
-            }
+        sys.rhs(t + C4 * h, ys, k4);
+        for i in 0..n {
+            ys[i] = y[i] + h * (A51 * k1[i] + A52 * k2[i] + A53 * k3[i] + A54 * k4[i]);
         }
-        .min(self.max_step)
-        .min(t_end - t0);
-        let h_min_rel = 1e-13;
-        let mut last_rejected = false;
-
-        while t < t_end {
-            if stats.accepted + stats.rejected >= self.max_steps {
-                return Err(OdeError::TooManySteps {
-                    max_steps: self.max_steps,
-                    t,
-                    state: y.to_vec(),
-                });
-            }
-            if t + 1.01 * h >= t_end {
-                h = t_end - t;
-            }
-            let hmin = h_min_rel * t.abs().max(1.0);
-            if h < hmin {
-                return Err(OdeError::Diverged {
-                    t,
-                    h,
-                    state: y.to_vec(),
-                });
-            }
-            // Stages.
-            for i in 0..n {
-                ys[i] = y[i] + h * A21 * k1[i];
-            }
-            sys.rhs(t + C2 * h, ys, k2);
-            for i in 0..n {
-                ys[i] = y[i] + h * (A31 * k1[i] + A32 * k2[i]);
-            }
-            sys.rhs(t + C3 * h, ys, k3);
-            for i in 0..n {
-                ys[i] = y[i] + h * (A41 * k1[i] + A42 * k2[i] + A43 * k3[i]);
-            }
-            sys.rhs(t + C4 * h, ys, k4);
-            for i in 0..n {
-                ys[i] = y[i] + h * (A51 * k1[i] + A52 * k2[i] + A53 * k3[i] + A54 * k4[i]);
-            }
-            sys.rhs(t + C5 * h, ys, k5);
-            for i in 0..n {
-                ys[i] = y[i]
-                    + h * (A61 * k1[i] + A62 * k2[i] + A63 * k3[i] + A64 * k4[i] + A65 * k5[i]);
-            }
-            sys.rhs(t + h, ys, k6);
-            for i in 0..n {
-                y1[i] = y[i]
-                    + h * (A71 * k1[i] + A73 * k3[i] + A74 * k4[i] + A75 * k5[i] + A76 * k6[i]);
-            }
-            sys.rhs(t + h, y1, k7);
-            stats.rhs_evals += 6;
-            for i in 0..n {
-                err[i] = h
-                    * (E1 * k1[i] + E3 * k3[i] + E4 * k4[i] + E5 * k5[i] + E6 * k6[i] + E7 * k7[i]);
-            }
-            let e = error_norm(err, y, y1, self.tol.rtol, self.tol.atol);
-            let finite = e.is_finite() && y1.iter().all(|v| v.is_finite());
-            if !finite || e > 1.0 {
-                stats.rejected += 1;
-                let fac = if finite {
-                    (0.9 * e.powf(-0.2)).clamp(0.2, 1.0)
-                } else {
-                    0.1
-                };
-                h *= fac;
-                last_rejected = true;
-                continue;
-            }
-            // Accepted: dense output coefficients, then emit outputs in (t, t+h].
-            let t_new = t + h;
-            while next_out < t_out.len() && t_out[next_out] <= t_new {
-                let theta = (t_out[next_out] - t) / h;
-                let theta1 = 1.0 - theta;
-                for i in 0..n {
-                    let ydiff = y1[i] - y[i];
-                    let bspl = h * k1[i] - ydiff;
-                    r3[i] = bspl;
-                    r4[i] = ydiff - h * k7[i] - bspl;
-                    r5[i] = h
-                        * (D1 * k1[i]
-                            + D3 * k3[i]
-                            + D4 * k4[i]
-                            + D5 * k5[i]
-                            + D6 * k6[i]
-                            + D7 * k7[i]);
-                    yo[i] = y[i]
-                        + theta * (ydiff + theta1 * (r3[i] + theta * (r4[i] + theta1 * r5[i])));
-                }
-                if observe(t_out[next_out], yo) == Control::Stop {
-                    stats.accepted += 1;
-                    return Ok(stats);
-                }
-                next_out += 1;
-            }
-            stats.accepted += 1;
-            t = t_new;
-            y.copy_from_slice(y1);
-            k1.copy_from_slice(k7); // FSAL
-            let mut fac = (0.9 * e.max(1e-10).powf(-0.2)).clamp(0.2, 5.0);
-            if last_rejected {
-                fac = fac.min(1.0);
-            }
-            last_rejected = false;
-            h = (h * fac).min(self.max_step);
+        sys.rhs(t + C5 * h, ys, k5);
+        for i in 0..n {
+            ys[i] =
+                y[i] + h * (A61 * k1[i] + A62 * k2[i] + A63 * k3[i] + A64 * k4[i] + A65 * k5[i]);
         }
-        Ok(stats)
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::output_grid;
-    use crate::test_systems::*;
-
-    #[test]
-    fn oscillator_matches_closed_form() {
-        let sys = Oscillator {
-            w: 2.0 * std::f64::consts::PI,
-        };
-        let ts = output_grid(0.0, 3.0, 0.01);
-        let mut max_err: f64 = 0.0;
-        let stats = Dopri5::new(1e-9, 1e-12)
-            .integrate(&sys, 0.0, &[1.0, 0.0], &ts, |t, y| {
-                max_err = max_err.max((y[0] - (sys.w * t).cos()).abs());
-                Control::Continue
-            })
-            .unwrap();
-        assert!(max_err < 1e-7, "max error {max_err}");
-        assert!(stats.accepted > 10);
+        sys.rhs(t + h, ys, k6);
+        for i in 0..n {
+            y1[i] =
+                y[i] + h * (A71 * k1[i] + A73 * k3[i] + A74 * k4[i] + A75 * k5[i] + A76 * k6[i]);
+        }
+        sys.rhs(t + h, y1, k7);
+        for i in 0..n {
+            err[i] =
+                h * (E1 * k1[i] + E3 * k3[i] + E4 * k4[i] + E5 * k5[i] + E6 * k6[i] + E7 * k7[i]);
+        }
+        let e = error_norm(err, y, y1, rtol, atol);
+        let finite = e.is_finite() && y1.iter().all(|v| v.is_finite());
+        (if finite { e } else { f64::INFINITY }, 6)
     }
 
-    #[test]
-    fn error_shrinks_with_tolerance() {
-        let sys = Oscillator { w: 3.0 };
-        let run = |rtol: f64| {
-            let mut e: f64 = 0.0;
-            Dopri5::new(rtol, rtol * 1e-3)
-                .integrate(&sys, 0.0, &[1.0, 0.0], &[5.0], |t, y| {
-                    e = (y[0] - (3.0 * t).cos()).abs();
-                    Control::Continue
-                })
-                .unwrap();
-            e
-        };
-        assert!(run(1e-8) < run(1e-4) / 100.0);
-    }
-
-    #[test]
-    fn blow_up_is_an_error_with_time_and_state() {
-        let r = Dopri5::default().integrate(&BlowUp, 0.0, &[1.0], &[2.0], |_, _| Control::Continue);
-        match r {
-            Err(OdeError::Diverged { t, state, .. })
-            | Err(OdeError::TooManySteps { t, state, .. }) => {
-                assert!(t > 0.9 && t < 1.01, "t = {t}");
-                assert!(state[0].is_finite());
-            }
-            other => panic!("expected an error, got {other:?}"),
+    fn reject_factor(&self, e: f64) -> f64 {
+        if e.is_finite() {
+            (0.9 * e.powf(-0.2)).clamp(0.2, 1.0)
+        } else {
+            0.1
         }
     }
 
-    #[test]
-    fn stop_ends_run() {
-        let sys = Oscillator { w: 1.0 };
-        let ts = output_grid(0.0, 10.0, 0.1);
-        let mut seen = 0;
-        Dopri5::default()
-            .integrate(&sys, 0.0, &[1.0, 0.0], &ts, |t, _| {
-                seen += 1;
-                if t >= 1.0 {
-                    Control::Stop
-                } else {
-                    Control::Continue
-                }
-            })
-            .unwrap();
-        assert_eq!(seen, 11);
+    fn accept_factor(&self, e: f64, last_rejected: bool) -> f64 {
+        let fac = (0.9 * e.max(1e-10).powf(-0.2)).clamp(0.2, 5.0);
+        if last_rejected {
+            fac.min(1.0)
+        } else {
+            fac
+        }
     }
 
-    #[test]
-    fn rejects_bad_requests() {
-        let sys = Oscillator { w: 1.0 };
-        let d = Dopri5::default();
-        assert!(d
-            .integrate(&sys, 0.0, &[1.0], &[1.0], |_, _| Control::Continue)
-            .is_err());
-        assert!(d
-            .integrate(&sys, 0.0, &[f64::NAN, 0.0], &[1.0], |_, _| {
-                Control::Continue
-            })
-            .is_err());
-        assert!(d
-            .integrate(&sys, 0.0, &[1.0, 0.0], &[1.0, 0.5], |_, _| {
-                Control::Continue
-            })
-            .is_err());
-        assert!(Dopri5::new(-1.0, 1e-9)
-            .integrate(&sys, 0.0, &[1.0, 0.0], &[1.0], |_, _| Control::Continue)
-            .is_err());
+    fn prepare_dense<S: OdeSystem + ?Sized>(
+        &mut self,
+        _sys: &S,
+        _t: f64,
+        h: f64,
+        ws: &mut Workspace,
+    ) -> usize {
+        let Workspace {
+            y,
+            y_new: y1,
+            k,
+            aux,
+            ..
+        } = ws;
+        let [k1, _, k3, k4, k5, k6, k7] = k;
+        let [_, r3, r4, r5] = aux;
+        for i in 0..y.len() {
+            let ydiff = y1[i] - y[i];
+            let bspl = h * k1[i] - ydiff;
+            r3[i] = bspl;
+            r4[i] = ydiff - h * k7[i] - bspl;
+            r5[i] =
+                h * (D1 * k1[i] + D3 * k3[i] + D4 * k4[i] + D5 * k5[i] + D6 * k6[i] + D7 * k7[i]);
+        }
+        0
+    }
+
+    fn dense(&self, theta: f64, _h: f64, ws: &mut Workspace) {
+        let Workspace {
+            y,
+            y_new: y1,
+            y_out,
+            aux,
+            ..
+        } = ws;
+        let [_, r3, r4, r5] = aux;
+        let theta1 = 1.0 - theta;
+        for i in 0..y.len() {
+            let ydiff = y1[i] - y[i];
+            y_out[i] = y[i] + theta * (ydiff + theta1 * (r3[i] + theta * (r4[i] + theta1 * r5[i])));
+        }
+    }
+
+    fn accept<S: OdeSystem + ?Sized>(
+        &mut self,
+        _sys: &S,
+        _t_new: f64,
+        ws: &mut Workspace,
+    ) -> usize {
+        ws.y.copy_from_slice(&ws.y_new);
+        let [k1, .., k7] = &mut ws.k;
+        k1.copy_from_slice(k7);
+        0
     }
 }

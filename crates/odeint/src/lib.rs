@@ -1,21 +1,33 @@
 //! Allocation-free ODE integrators for the toolkit's models.
 //!
-//! A model implements [`OdeSystem`] (a tight right-hand side writing into a caller's buffer);
-//! an integrator ([`Dopri5`], [`Rk4`], [`Rosenbrock23`]) advances it and reports the state at
-//! requested output times through a callback. Work buffers are allocated once per
-//! [`Integrator::integrate`] call, never per step.
+//! A model implements [`OdeSystem`] (a tight right-hand side writing into a caller's buffer).
+//! One [`Integrator`] value (a [`Solver`] plus tolerances and step limits) advances it: a
+//! single driver loop ([`Integrator::run`]) owns the output grid, the observer, breakpoints,
+//! event location, the step limit and the divergence error, and calls one of three
+//! single-step kernels (Dormand-Prince 5(4), Rosenbrock 2(3), fixed-step RK4).
+//!
+//! Work buffers live in a caller-supplied [`Workspace`]: a caller that runs thousands of
+//! short simulations creates one and passes it to every run, and the runs allocate nothing.
 //!
 //! A run that produces a non-finite state, or whose step size collapses, returns
 //! [`OdeError`] carrying the time and the last finite state: never NaN results.
 
 mod dopri5;
+mod driver;
+mod event;
+mod kernel;
 mod linalg;
 mod rk4;
 mod rosenbrock;
+mod solver;
+mod tolerance;
+mod workspace;
 
-pub use dopri5::Dopri5;
-pub use rk4::Rk4;
-pub use rosenbrock::Rosenbrock23;
+pub use driver::{Integrator, Problem, Sample, SampleKind};
+pub use event::{Direction, Event};
+pub use solver::Solver;
+pub use tolerance::Atol;
+pub use workspace::Workspace;
 
 /// A first-order system `dy/dt = f(t, y)`.
 pub trait OdeSystem {
@@ -23,6 +35,12 @@ pub trait OdeSystem {
     fn dim(&self) -> usize;
     /// Evaluate `dydt = f(t, y)`. Must not allocate; `y.len() == dydt.len() == dim()`.
     fn rhs(&self, t: f64, y: &[f64], dydt: &mut [f64]);
+    /// Hint for [`Solver::Auto`]: `true` makes it pick the implicit [`Solver::Rosenbrock23`],
+    /// `false` (the default) the explicit [`Solver::Dopri5`]. A model that knows when it is
+    /// stiff (e.g. the strut under slow motion) overrides it.
+    fn is_stiff(&self) -> bool {
+        false
+    }
 }
 
 impl<S: OdeSystem + ?Sized> OdeSystem for &S {
@@ -31,6 +49,9 @@ impl<S: OdeSystem + ?Sized> OdeSystem for &S {
     }
     fn rhs(&self, t: f64, y: &[f64], dydt: &mut [f64]) {
         (**self).rhs(t, y, dydt)
+    }
+    fn is_stiff(&self) -> bool {
+        (**self).is_stiff()
     }
 }
 
@@ -72,26 +93,8 @@ pub struct Stats {
     pub accepted: usize,
     /// Rejected steps.
     pub rejected: usize,
-}
-
-/// Common interface of the integrators.
-pub trait Integrator {
-    /// Integrate from `(t0, y0)` and call `observe(t, y)` at every time of `t_out`
-    /// (non-decreasing, all `>= t0`; the run ends at the last one).
-    ///
-    /// `observe` returns [`Control::Continue`] or [`Control::Stop`] to end the run early
-    /// (e.g. a rollover event). Outputs are interpolated with the method's dense output.
-    fn integrate<S, F>(
-        &self,
-        sys: &S,
-        t0: f64,
-        y0: &[f64],
-        t_out: &[f64],
-        observe: F,
-    ) -> Result<Stats, OdeError>
-    where
-        S: OdeSystem + ?Sized,
-        F: FnMut(f64, &[f64]) -> Control;
+    /// Event crossings located and reported.
+    pub events: usize,
 }
 
 /// What the observer wants after seeing an output.
@@ -103,53 +106,6 @@ pub enum Control {
     Stop,
 }
 
-/// Check the common preconditions of an integration request.
-pub(crate) fn check_request<S: OdeSystem + ?Sized>(
-    sys: &S,
-    t0: f64,
-    y0: &[f64],
-    t_out: &[f64],
-) -> Result<(), OdeError> {
-    if y0.len() != sys.dim() {
-        return Err(OdeError::InvalidInput(format!(
-            "initial state has {} entries, system has {} states",
-            y0.len(),
-            sys.dim()
-        )));
-    }
-    if !t0.is_finite() {
-        return Err(OdeError::InvalidInput(format!("t0 = {t0} is not finite")));
-    }
-    if let Some(i) = y0.iter().position(|v| !v.is_finite()) {
-        return Err(OdeError::InvalidInput(format!(
-            "initial state entry {i} is not finite ({})",
-            y0[i]
-        )));
-    }
-    let mut prev = t0;
-    for (i, &t) in t_out.iter().enumerate() {
-        if !t.is_finite() || t < prev {
-            return Err(OdeError::InvalidInput(format!(
-                "output time {i} ({t}) is not finite or goes backwards (previous {prev})"
-            )));
-        }
-        prev = t;
-    }
-    Ok(())
-}
-
-/// Weighted RMS norm used by the adaptive methods: `sqrt(mean((e_i / (atol + rtol*max(|a_i|,|b_i|)))^2))`.
-pub(crate) fn error_norm(err: &[f64], a: &[f64], b: &[f64], rtol: f64, atol: f64) -> f64 {
-    let n = err.len().max(1) as f64;
-    let mut s = 0.0;
-    for i in 0..err.len() {
-        let sk = atol + rtol * a[i].abs().max(b[i].abs());
-        let q = err[i] / sk;
-        s += q * q;
-    }
-    (s / n).sqrt()
-}
-
 /// Evenly spaced output times `t0, t0+dt, ..., t0+n*dt` that end at or just before `t_end`.
 pub fn output_grid(t0: f64, t_end: f64, dt: f64) -> Vec<f64> {
     if dt.is_nan() || dt <= 0.0 || t_end.is_nan() || t_end < t0 {
@@ -157,69 +113,4 @@ pub fn output_grid(t0: f64, t_end: f64, dt: f64) -> Vec<f64> {
     }
     let n = ((t_end - t0) / dt + 1e-9).floor() as usize;
     (0..=n).map(|i| t0 + i as f64 * dt).collect()
-}
-
-/// Settings shared by the adaptive integrators.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Tolerances {
-    /// Relative tolerance.
-    pub rtol: f64,
-    /// Absolute tolerance (same units as the states; scale states to O(1) or set per model).
-    pub atol: f64,
-}
-
-impl Tolerances {
-    pub(crate) fn validate(&self) -> Result<(), OdeError> {
-        let positive = |v: f64| v.is_finite() && v > 0.0;
-        if !positive(self.rtol) || !positive(self.atol) {
-            return Err(OdeError::InvalidInput(format!(
-                "tolerances must be positive and finite (rtol = {}, atol = {})",
-                self.rtol, self.atol
-            )));
-        }
-        Ok(())
-    }
-}
-
-#[cfg(test)]
-pub(crate) mod test_systems {
-    use super::OdeSystem;
-
-    /// Harmonic oscillator x'' = -w^2 x as (x, v).
-    pub struct Oscillator {
-        pub w: f64,
-    }
-    impl OdeSystem for Oscillator {
-        fn dim(&self) -> usize {
-            2
-        }
-        fn rhs(&self, _t: f64, y: &[f64], d: &mut [f64]) {
-            d[0] = y[1];
-            d[1] = -self.w * self.w * y[0];
-        }
-    }
-
-    /// Stiff linear test problem y' = -k (y - cos t) - sin t, exact y = cos t for y(0)=1.
-    pub struct StiffCos {
-        pub k: f64,
-    }
-    impl OdeSystem for StiffCos {
-        fn dim(&self) -> usize {
-            1
-        }
-        fn rhs(&self, t: f64, y: &[f64], d: &mut [f64]) {
-            d[0] = -self.k * (y[0] - t.cos()) - t.sin();
-        }
-    }
-
-    /// Blows up in finite time: y' = y^2, y(0)=1 -> y = 1/(1-t).
-    pub struct BlowUp;
-    impl OdeSystem for BlowUp {
-        fn dim(&self) -> usize {
-            1
-        }
-        fn rhs(&self, _t: f64, y: &[f64], d: &mut [f64]) {
-            d[0] = y[0] * y[0];
-        }
-    }
 }

@@ -1,109 +1,124 @@
-//! Classical fixed-step Runge-Kutta 4 (reference integrator for convergence checks).
+//! Classical fixed-step Runge-Kutta 4 step (reference integrator for convergence checks),
+//! with a cubic Hermite interpolant for event location.
+//!
+//! Workspace use: `k[0..4]` the stages k1..k4, `k[4]` f(t+h, y_new) when the interpolant
+//! was needed (then it is the next step's k1).
 
-use crate::{check_request, Control, Integrator, OdeError, OdeSystem, Stats};
+use crate::kernel::Kernel;
+use crate::{OdeSystem, Workspace};
 
-/// Fixed-step RK4. Output times are hit exactly: each interval between outputs is split
-/// into `ceil(dt / step)` equal steps.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Rk4 {
-    /// Largest step (s).
-    pub step: f64,
+/// The RK4 kernel.
+#[derive(Debug, Clone, Copy, Default)]
+pub(crate) struct Rk4Kernel {
+    /// `k[0]` holds f(t, y) of the current step.
+    start_ready: bool,
+    /// `k[4]` holds f(t+h, y_new) of the step just taken.
+    end_ready: bool,
 }
 
-impl Integrator for Rk4 {
-    fn integrate<S, F>(
-        &self,
-        sys: &S,
-        t0: f64,
-        y0: &[f64],
-        t_out: &[f64],
-        mut observe: F,
-    ) -> Result<Stats, OdeError>
-    where
-        S: OdeSystem + ?Sized,
-        F: FnMut(f64, &[f64]) -> Control,
-    {
-        check_request(sys, t0, y0, t_out)?;
-        if !self.step.is_finite() || self.step <= 0.0 {
-            return Err(OdeError::InvalidInput(format!(
-                "RK4 step must be positive, got {}",
-                self.step
-            )));
-        }
-        let n = y0.len();
-        let mut buf = vec![0.0; 6 * n];
-        let (y, rest) = buf.split_at_mut(n);
-        let (ys, rest) = rest.split_at_mut(n);
-        let (k1, rest) = rest.split_at_mut(n);
-        let (k2, rest) = rest.split_at_mut(n);
-        let (k3, k4) = rest.split_at_mut(n);
-        y.copy_from_slice(y0);
-        let mut stats = Stats::default();
-        let mut t = t0;
-        for &to in t_out {
-            let span = to - t;
-            let m = (span / self.step).ceil().max(0.0) as usize;
-            let h = if m > 0 { span / m as f64 } else { 0.0 };
-            for _ in 0..m {
-                sys.rhs(t, y, k1);
-                for i in 0..n {
-                    ys[i] = y[i] + 0.5 * h * k1[i];
-                }
-                sys.rhs(t + 0.5 * h, ys, k2);
-                for i in 0..n {
-                    ys[i] = y[i] + 0.5 * h * k2[i];
-                }
-                sys.rhs(t + 0.5 * h, ys, k3);
-                for i in 0..n {
-                    ys[i] = y[i] + h * k3[i];
-                }
-                sys.rhs(t + h, ys, k4);
-                stats.rhs_evals += 4;
-                let mut finite = true;
-                for i in 0..n {
-                    let v = y[i] + h / 6.0 * (k1[i] + 2.0 * k2[i] + 2.0 * k3[i] + k4[i]);
-                    finite &= v.is_finite();
-                    ys[i] = v;
-                }
-                if !finite {
-                    return Err(OdeError::Diverged {
-                        t,
-                        h,
-                        state: y.to_vec(),
-                    });
-                }
-                y.copy_from_slice(ys);
-                t += h;
-                stats.accepted += 1;
-            }
-            t = to;
-            if observe(t, y) == Control::Stop {
-                break;
-            }
-        }
-        Ok(stats)
+impl Kernel for Rk4Kernel {
+    const ORDER: i32 = 4;
+
+    fn start<S: OdeSystem + ?Sized>(&mut self, sys: &S, t: f64, ws: &mut Workspace) -> usize {
+        sys.rhs(t, &ws.y, &mut ws.k[0]);
+        self.start_ready = true;
+        1
     }
-}
 
-#[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::test_systems::Oscillator;
+    fn attempt<S: OdeSystem + ?Sized>(
+        &mut self,
+        sys: &S,
+        t: f64,
+        h: f64,
+        _rtol: f64,
+        ws: &mut Workspace,
+    ) -> (f64, usize) {
+        let mut evals = 3;
+        if !self.start_ready {
+            evals += self.start(sys, t, ws);
+        }
+        self.end_ready = false;
+        let Workspace {
+            y,
+            y_new,
+            y_stage: ys,
+            k,
+            ..
+        } = ws;
+        let [k1, k2, k3, k4, ..] = k;
+        let n = y.len();
+        for i in 0..n {
+            ys[i] = y[i] + 0.5 * h * k1[i];
+        }
+        sys.rhs(t + 0.5 * h, ys, k2);
+        for i in 0..n {
+            ys[i] = y[i] + 0.5 * h * k2[i];
+        }
+        sys.rhs(t + 0.5 * h, ys, k3);
+        for i in 0..n {
+            ys[i] = y[i] + h * k3[i];
+        }
+        sys.rhs(t + h, ys, k4);
+        let mut finite = true;
+        for i in 0..n {
+            let v = y[i] + h / 6.0 * (k1[i] + 2.0 * k2[i] + 2.0 * k3[i] + k4[i]);
+            finite &= v.is_finite();
+            y_new[i] = v;
+        }
+        (if finite { 0.0 } else { f64::INFINITY }, evals)
+    }
 
-    #[test]
-    fn fourth_order_convergence() {
-        let sys = Oscillator { w: 1.0 };
-        let err = |h: f64| {
-            let mut e = 0.0;
-            Rk4 { step: h }
-                .integrate(&sys, 0.0, &[1.0, 0.0], &[2.0], |t, y| {
-                    e = (y[0] - t.cos()).abs();
-                    Control::Continue
-                })
-                .unwrap();
-            e
-        };
-        let ratio = err(0.1) / err(0.05);
-        assert!((ratio - 16.0).abs() < 2.0, "ratio {ratio}");
+    fn reject_factor(&self, _e: f64) -> f64 {
+        1.0
+    }
+
+    fn accept_factor(&self, _e: f64, _last_rejected: bool) -> f64 {
+        1.0
+    }
+
+    fn prepare_dense<S: OdeSystem + ?Sized>(
+        &mut self,
+        sys: &S,
+        t: f64,
+        h: f64,
+        ws: &mut Workspace,
+    ) -> usize {
+        if self.end_ready {
+            return 0;
+        }
+        sys.rhs(t + h, &ws.y_new, &mut ws.k[4]);
+        self.end_ready = true;
+        1
+    }
+
+    /// Cubic Hermite interpolation between (y, k1) and (y_new, f(t+h, y_new)).
+    fn dense(&self, theta: f64, h: f64, ws: &mut Workspace) {
+        let s = theta;
+        let h00 = (1.0 + 2.0 * s) * (1.0 - s) * (1.0 - s);
+        let h10 = s * (1.0 - s) * (1.0 - s);
+        let h01 = s * s * (3.0 - 2.0 * s);
+        let h11 = s * s * (s - 1.0);
+        let Workspace {
+            y, y_new, y_out, k, ..
+        } = ws;
+        let [f0, .., f1, _, _] = k;
+        for i in 0..y.len() {
+            y_out[i] = h00 * y[i] + h * h10 * f0[i] + h01 * y_new[i] + h * h11 * f1[i];
+        }
+    }
+
+    fn accept<S: OdeSystem + ?Sized>(
+        &mut self,
+        _sys: &S,
+        _t_new: f64,
+        ws: &mut Workspace,
+    ) -> usize {
+        ws.y.copy_from_slice(&ws.y_new);
+        self.start_ready = self.end_ready;
+        if self.end_ready {
+            let [k1, .., f_end, _, _] = &mut ws.k;
+            k1.copy_from_slice(f_end);
+        }
+        0
     }
 }

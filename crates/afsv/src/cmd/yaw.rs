@@ -9,8 +9,8 @@ use afsv_dynamics::analysis::{
     gain_efficiency_correlation, measures_for, steady_turn_decay, MeasureSpec,
 };
 use afsv_dynamics::{
-    sensitivity, simulate, Course, EquationForm, Load, Manoeuvre, PathDriver, SimOptions,
-    SolverKind, SteerInput, YawPlaneParams,
+    sensitivity, simulate, Course, EquationForm, Load, Manoeuvre, PathDriver, SimOptions, Solver,
+    SteerInput, YawPlaneParams,
 };
 use std::path::{Path, PathBuf};
 
@@ -297,9 +297,9 @@ pub fn run(cmd: Command) -> CmdResult {
             let man = parse_input(&input, speed, input_time, duration)?;
             let opts = SimOptions {
                 solver: match solver {
-                    SolverChoice::Dopri => SolverKind::Dopri5,
-                    SolverChoice::Rosenbrock => SolverKind::Rosenbrock23,
-                    SolverChoice::Rk4 => SolverKind::Rk4,
+                    SolverChoice::Dopri => Solver::Dopri5,
+                    SolverChoice::Rosenbrock => Solver::Rosenbrock23,
+                    SolverChoice::Rk4 => Solver::Rk4 { step: 2e-4 },
                 },
                 rtol,
                 atol: rtol * 0.1,

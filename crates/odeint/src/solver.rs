@@ -1,0 +1,50 @@
+//! The one solver value every model and the CLI name.
+
+use crate::OdeSystem;
+use serde::{Deserialize, Serialize};
+
+/// Integration method of a run.
+///
+/// Serialised in snake_case: `"dopri5"`, `"rosenbrock23"`, `"auto"`, `{"rk4": {"step": 2e-4}}`.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Solver {
+    /// Adaptive explicit Dormand-Prince 5(4) with 4th-order dense output (Hairer, Nørsett &
+    /// Wanner, *Solving ODEs I*, II.5, code DOPRI5). For non-stiff models.
+    Dopri5,
+    /// Adaptive linearly implicit Rosenbrock-W 2(3) (Shampine & Reichelt 1997, the MATLAB
+    /// `ode23s` scheme), L-stable, finite-difference Jacobian every step. For stiff models
+    /// with few states.
+    Rosenbrock23,
+    /// Classical fixed-step Runge-Kutta 4: every interval between output times and
+    /// breakpoints is split into `ceil(span / step)` equal steps, so outputs are hit exactly.
+    Rk4 {
+        /// Largest step (s).
+        step: f64,
+    },
+    /// Let the model choose through [`OdeSystem::is_stiff`]: [`Solver::Rosenbrock23`] when
+    /// it answers `true`, [`Solver::Dopri5`] otherwise.
+    Auto,
+}
+
+impl Solver {
+    /// The concrete method for `sys` ([`Solver::Auto`] asks [`OdeSystem::is_stiff`]; the
+    /// others are returned as they are).
+    pub fn resolve<S: OdeSystem + ?Sized>(self, sys: &S) -> Solver {
+        match self {
+            Solver::Auto if sys.is_stiff() => Solver::Rosenbrock23,
+            Solver::Auto => Solver::Dopri5,
+            s => s,
+        }
+    }
+
+    /// Short lower-case name (`dopri5`, `rosenbrock23`, `rk4`, `auto`) for reports.
+    pub fn name(&self) -> &'static str {
+        match self {
+            Solver::Dopri5 => "dopri5",
+            Solver::Rosenbrock23 => "rosenbrock23",
+            Solver::Rk4 { .. } => "rk4",
+            Solver::Auto => "auto",
+        }
+    }
+}

@@ -1,0 +1,42 @@
+//! Test systems with closed-form solutions.
+#![allow(dead_code)]
+
+use odeint::OdeSystem;
+
+/// Harmonic oscillator x'' = -w^2 x as (x, v).
+pub struct Oscillator {
+    pub w: f64,
+}
+impl OdeSystem for Oscillator {
+    fn dim(&self) -> usize {
+        2
+    }
+    fn rhs(&self, _t: f64, y: &[f64], d: &mut [f64]) {
+        d[0] = y[1];
+        d[1] = -self.w * self.w * y[0];
+    }
+}
+
+/// Stiff linear test problem y' = -k (y - cos t) - sin t, exact y = cos t for y(0)=1.
+pub struct StiffCos {
+    pub k: f64,
+}
+impl OdeSystem for StiffCos {
+    fn dim(&self) -> usize {
+        1
+    }
+    fn rhs(&self, t: f64, y: &[f64], d: &mut [f64]) {
+        d[0] = -self.k * (y[0] - t.cos()) - t.sin();
+    }
+}
+
+/// Blows up in finite time: y' = y^2, y(0)=1 -> y = 1/(1-t).
+pub struct BlowUp;
+impl OdeSystem for BlowUp {
+    fn dim(&self) -> usize {
+        1
+    }
+    fn rhs(&self, _t: f64, y: &[f64], d: &mut [f64]) {
+        d[0] = y[0] * y[0];
+    }
+}
