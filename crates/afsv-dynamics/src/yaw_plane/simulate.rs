@@ -1,10 +1,10 @@
 //! Simulation entry point: [`simulate`] runs one [`Manoeuvre`] and returns a [`YawRecord`]
 //! with the record channels of docs/records.md plus internal states.
 
-use crate::yaw_plane::actuator::{SteeringActuator, MAX_ACTUATOR_STATES};
-use crate::yaw_plane::driver::PathDriver;
 use crate::error::DynError;
 use crate::inputs::SteerInput;
+use crate::yaw_plane::actuator::{SteeringActuator, MAX_ACTUATOR_STATES};
+use crate::yaw_plane::driver::PathDriver;
 use crate::yaw_plane::mechanics::{kinetic_energy, Motion};
 use crate::yaw_plane::model::{SteerSource, YawPlaneModel};
 use crate::yaw_plane::params::VehicleParams;
