@@ -1,9 +1,8 @@
 //! [`afs_hydraulics::AfsSystem`] as the articulation actuator of the yaw-plane model.
 //!
-//! States P_c, P_r (Pa, typical magnitude [`AfsSystem::STATE_SCALE`] = 1 MPa) and theta_h
-//! (rad, typical 1): the run's absolute tolerance scales with the typical magnitude, so one
-//! `atol` suits every state of the coupled model. With the valve-lag extension a fourth
-//! state, the lagged spool displacement x_v (rad, typical 1, starts centred), follows.
+//! States P_c, P_r (Pa) are integrated in MPa (scale 1e-6) and theta_h in rad, so a single
+//! absolute tolerance of 1e-8 suits every state of the coupled model. With the valve-lag
+//! extension a fourth state, the lagged spool displacement x_v (rad, starts centred), follows.
 
 use crate::yaw_plane::actuator::{ActuatorOutput, SteeringActuator};
 use afs_hydraulics::{AfsInput, AfsSystem};
@@ -14,8 +13,8 @@ impl SteeringActuator for AfsSystem {
     fn n_states(&self) -> usize {
         AfsSystem::n_states(self)
     }
-    fn state_typical(&self, i: usize) -> f64 {
-        AfsSystem::STATE_SCALE.get(i).copied().unwrap_or(1.0)
+    fn state_scale(&self, i: usize) -> f64 {
+        AfsSystem::STATE_SCALE.get(i).map_or(1.0, |s| 1.0 / s)
     }
     fn state_name(&self, i: usize) -> &'static str {
         NAMES[i]

@@ -1,7 +1,6 @@
 //! The coupled yaw-plane vehicle + steering-actuator system as an [`odeint::OdeSystem`].
 //!
-//! State vector (SI; [`YawPlaneModel::state_typical`] gives the typical magnitudes a run
-//! scales its absolute tolerance by):
+//! State vector (integrated variables; SI unless noted):
 //!
 //! | index | name | unit | equation |
 //! |---|---|---|---|
@@ -13,7 +12,7 @@
 //! | 6 | front-unit heading psi_f | rad | d(psi_f)/dt = phi_f |
 //! | 7..11 | lagged slip angles alpha_1..alpha_4 (only if sigma_y > 0) | rad | Eq 3.16 |
 //! | next | steering-wheel angle (only with a path-following driver) | rad | driver law |
-//! | rest | actuator states, typical magnitudes from [`SteeringActuator::state_typical`] (AFS: p_c, p_r in Pa, typical 1 MPa; theta_h in rad) | | Eqs 3.4-3.12 |
+//! | rest | actuator states, scaled by [`SteeringActuator::state_scale`] (AFS: p_c, p_r in MPa, theta_h in rad) | | Eqs 3.4-3.12 |
 //!
 //! Tire 1/3 are the left tires, 2/4 the right ones; the steady slip angles are Eq 3.17.
 
@@ -146,7 +145,8 @@ impl<'a, A: SteeringActuator> YawPlaneModel<'a, A> {
         self.layout
     }
 
-    /// Name (with SI unit) of every state, in order.
+    /// Name (with SI unit) of every state, in order. Actuator states are named by their SI
+    /// value; the integrated variable is that times [`SteeringActuator::state_scale`].
     pub fn state_names(&self) -> Vec<String> {
         let mut v: Vec<String> = [
             "articulation_rad",
@@ -182,20 +182,13 @@ impl<'a, A: SteeringActuator> YawPlaneModel<'a, A> {
             y[4] = xa - self.vehicle.l_f1_m;
             y[5] = ya;
         }
-        let act = self.layout.act0..self.layout.dim;
-        self.actuator.initial_state(theta0, &mut y[act]);
-        y
-    }
-
-    /// Typical magnitude of state `i` in its SI unit: 1 for the vehicle states (rad, m/s,
-    /// m), [`SteeringActuator::state_typical`] for the actuator states. A run's absolute
-    /// tolerance of state `i` is `atol * state_typical(i)`.
-    pub fn state_typical(&self, i: usize) -> f64 {
-        if i >= self.layout.act0 {
-            self.actuator.state_typical(i - self.layout.act0)
-        } else {
-            1.0
+        let mut a = [0.0; MAX_ACTUATOR_STATES];
+        let n = self.layout.n_act;
+        self.actuator.initial_state(theta0, &mut a[..n]);
+        for i in 0..n {
+            y[self.layout.act0 + i] = a[i] * self.actuator.state_scale(i);
         }
+        y
     }
 
     /// Steering-wheel angle at (t, y).
@@ -208,10 +201,22 @@ impl<'a, A: SteeringActuator> YawPlaneModel<'a, A> {
         }
     }
 
-    /// The actuator's states within the full state `y`.
+    /// State `i` of `y` in SI units (undoes the actuator-state scaling).
     #[inline]
-    pub fn actuator_state<'y>(&self, y: &'y [f64]) -> &'y [f64] {
-        &y[self.layout.act0..self.layout.dim]
+    pub fn state_si(&self, i: usize, y: &[f64]) -> f64 {
+        if i >= self.layout.act0 {
+            y[i] / self.actuator.state_scale(i - self.layout.act0)
+        } else {
+            y[i]
+        }
+    }
+
+    /// Unscaled actuator state (SI) into `out`.
+    #[inline]
+    pub fn actuator_state(&self, y: &[f64], out: &mut [f64; MAX_ACTUATOR_STATES]) {
+        for i in 0..self.layout.n_act {
+            out[i] = y[self.layout.act0 + i] / self.actuator.state_scale(i);
+        }
     }
 
     /// Evaluate the right-hand side and everything derived from it.
@@ -258,14 +263,20 @@ impl<'a, A: SteeringActuator> YawPlaneModel<'a, A> {
         let steer_wheel = self.steer_wheel(t, y);
 
         // Actuator.
-        let act = self.layout.act0..self.layout.dim;
+        let n = self.layout.n_act;
+        let mut xs = [0.0; MAX_ACTUATOR_STATES];
+        let mut dxs = [0.0; MAX_ACTUATOR_STATES];
+        self.actuator_state(y, &mut xs);
         let out = self.actuator.evaluate(
             motion.theta,
             theta_dot,
             steer_wheel,
-            &y[act.clone()],
-            &mut dydt[act],
+            &xs[..n],
+            &mut dxs[..n],
         );
+        for i in 0..n {
+            dydt[self.layout.act0 + i] = dxs[i] * self.actuator.state_scale(i);
+        }
 
         // Eq 3.15 forces and moments, summed per axle.
         let loads = Loads {

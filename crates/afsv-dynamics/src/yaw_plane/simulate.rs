@@ -9,7 +9,7 @@ use crate::yaw_plane::mechanics::{kinetic_energy, Motion};
 use crate::yaw_plane::model::{SteerSource, YawPlaneModel};
 use crate::yaw_plane::params::VehicleParams;
 use crate::EquationForm;
-use odeint::{Atol, Control, Integrator, OdeError, Problem, Solver, Workspace};
+use odeint::{Control, Integrator, OdeError, Problem, Solver, Workspace};
 use serde::{Deserialize, Serialize};
 
 /// A constant-speed manoeuvre: forward speed, duration and steering.
@@ -102,9 +102,7 @@ pub struct SimOptions {
     pub solver: Solver,
     /// Relative tolerance (adaptive methods).
     pub rtol: f64,
-    /// Absolute tolerance per typical magnitude: `atol` for the vehicle states (rad, m/s,
-    /// m), `atol * SteeringActuator::state_typical(i)` for the actuator's (1 MPa for the
-    /// pressures).
+    /// Absolute tolerance (states in rad, m/s, m, MPa).
     pub atol: f64,
     /// Largest step (s) of the adaptive methods.
     pub max_step_s: f64,
@@ -445,23 +443,21 @@ pub fn simulate<A: SteeringActuator>(
         rec.traction_force_n.push(e.acc.traction_force);
         if options.record_energy {
             rec.kinetic_energy_j.push(kinetic_energy(vehicle, &m));
+            let mut xs = [0.0; MAX_ACTUATOR_STATES];
+            model.actuator_state(y, &mut xs);
             rec.actuator_energy_j.push(model.actuator.energy(
                 y[0],
                 e.steer_wheel,
-                model.actuator_state(y),
+                &xs[..layout.n_act],
             ));
         }
-        for (s, v) in states.iter_mut().zip(y) {
-            s.push(*v);
+        for (i, s) in states.iter_mut().enumerate() {
+            s.push(model.state_si(i, y));
         }
         Control::Continue
     };
-    let atol = Atol::scaled(
-        options.atol,
-        (0..layout.dim).map(|i| model.state_typical(i)),
-    );
     let problem = Problem::new(0.0, &y0, &grid).with_breakpoints(&cuts);
-    let res = Integrator::new(options.solver, options.rtol, atol)
+    let res = Integrator::new(options.solver, options.rtol, options.atol)
         .with_max_step(options.max_step_s)
         .run(&model, &problem, &mut Workspace::new(layout.dim), observe);
     if let Some(f) = failure.take() {
