@@ -89,6 +89,9 @@ impl AfsSystem {
     ///   (+ optional Coulomb friction per strut).
     ///
     /// `state.len()` and `dstate.len()` must be at least [`AfsSystem::n_states`].
+    // Inlined into the planar adapter: without it the adapter costs 7 % of the planar
+    // evaluate (49.5 ns instead of 46.5 ns, criterion `afs_derivatives_baseline`).
+    #[inline(always)]
     pub fn strut_derivatives(
         &self,
         input: &StrutInput,
