@@ -24,6 +24,7 @@
 //! ```
 
 pub mod convention;
+pub mod units;
 
 pub use convention::{ReadOptions, SIGN_CONVENTION};
 use std::fmt::Write as _;
@@ -38,6 +39,20 @@ pub struct Record {
     pub meta: serde_json::Value,
     /// The file the record was read from (`None` for records built in code).
     pub source: Option<PathBuf>,
+    /// Channels [`Record::read_with`] converted from another unit to the toolkit's
+    /// ([`units`]), in file order.
+    pub unit_conversions: Vec<UnitConversion>,
+}
+
+/// One channel read in another unit and converted: `to = factor * from`.
+#[derive(Debug, Clone, PartialEq)]
+pub struct UnitConversion {
+    /// Channel name in the file (e.g. `az_g`).
+    pub from: String,
+    /// The toolkit's channel name (e.g. `az_m_s2`).
+    pub to: String,
+    /// Factor from the file's unit to SI.
+    pub factor: f64,
 }
 
 /// What went wrong reading or writing a record.
@@ -94,6 +109,7 @@ impl Record {
             columns: Vec::new(),
             meta: serde_json::Value::Null,
             source: None,
+            unit_conversions: Vec::new(),
         }
     }
 
@@ -164,12 +180,44 @@ impl Record {
         })?;
         let mut rec = Self::parse_csv(&text, path)?;
         rec.source = Some(path.to_path_buf());
+        rec.convert_units(path)?;
         let sidecar = path.with_extension("json");
         if sidecar.is_file() {
             rec.meta = read_sidecar(&sidecar)?;
             rec.apply_convention(&sidecar, opts)?;
         }
         Ok(rec)
+    }
+
+    /// Convert channels of known quantities in other units to the toolkit's channels, refuse
+    /// those in units that cannot be converted ([`units::classify`]). A converted channel
+    /// whose SI channel is also in the file stays as it is, an extra column.
+    fn convert_units(&mut self, path: &Path) -> Result<(), RecordError> {
+        for i in 0..self.names.len() {
+            match units::classify(&self.names[i]) {
+                units::ChannelUnit::Keep => {}
+                units::ChannelUnit::Convert { to, factor } => {
+                    if self.names.contains(&to) {
+                        continue;
+                    }
+                    for v in &mut self.columns[i] {
+                        *v *= factor;
+                    }
+                    let from = std::mem::replace(&mut self.names[i], to.clone());
+                    self.unit_conversions
+                        .push(UnitConversion { from, to, factor });
+                }
+                units::ChannelUnit::Refuse { reason } => {
+                    return Err(RecordError::Parse {
+                        path: path.to_path_buf(),
+                        line: 1,
+                        column: i + 1,
+                        message: reason,
+                    });
+                }
+            }
+        }
+        Ok(())
     }
 
     fn apply_convention(&mut self, sidecar: &Path, opts: &ReadOptions) -> Result<(), RecordError> {
@@ -359,6 +407,49 @@ mod tests {
         assert_eq!(r.column("force_n").unwrap(), &[1.5, 2.5]);
         assert!(r.column("extra_x").is_some());
         assert!(r.column("p_rod_pa").is_none());
+    }
+
+    fn scratch_file(name: &str, text: &str) -> PathBuf {
+        let dir = std::env::temp_dir().join(format!("afsv-records-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let path = dir.join(name);
+        std::fs::write(&path, text).unwrap();
+        path
+    }
+
+    #[test]
+    fn channels_in_other_units_are_converted_and_listed() {
+        let path = scratch_file(
+            "units.csv",
+            "time_s,az_g,force_kn,p_rod_bar,extra_x\n0,1,2,50,7\n0.01,-0.5,-1,10,7\n",
+        );
+        let r = Record::read(&path).unwrap();
+        assert_eq!(r.column("az_m_s2").unwrap(), &[9.806_65, -4.903_325]);
+        assert_eq!(r.column("force_n").unwrap(), &[2000.0, -1000.0]);
+        assert_eq!(r.column("p_rod_pa").unwrap(), &[5.0e6, 1.0e6]);
+        assert!(r.column("az_g").is_none());
+        assert_eq!(r.column("extra_x").unwrap(), &[7.0, 7.0]);
+        let from: Vec<&str> = r.unit_conversions.iter().map(|c| c.from.as_str()).collect();
+        assert_eq!(from, ["az_g", "force_kn", "p_rod_bar"]);
+    }
+
+    #[test]
+    fn a_channel_in_an_unconvertible_unit_is_refused_with_its_column() {
+        let path = scratch_file("badunit.csv", "time_s,az_ft_s2\n0,1\n0.01,2\n");
+        let e = Record::read(&path).unwrap_err().to_string();
+        assert!(
+            e.contains(":1:2:") && e.contains("az_ft_s2") && e.contains("m_s2"),
+            "{e}"
+        );
+    }
+
+    #[test]
+    fn an_si_channel_next_to_its_converted_twin_wins() {
+        let path = scratch_file("twin.csv", "time_s,az_m_s2,az_g\n0,1,1\n0.01,2,2\n");
+        let r = Record::read(&path).unwrap();
+        assert_eq!(r.column("az_m_s2").unwrap(), &[1.0, 2.0]);
+        assert_eq!(r.column("az_g").unwrap(), &[1.0, 2.0]);
+        assert!(r.unit_conversions.is_empty());
     }
 
     #[test]

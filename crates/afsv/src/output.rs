@@ -347,6 +347,18 @@ pub fn mark_svg(path: &Path) -> Result<(), String> {
     std::fs::write(path, marked).map_err(err)
 }
 
+/// The channels a record was converted from another unit on reading, as JSON
+/// (`[{"from": "az_g", "to": "az_m_s2", "factor": 9.80665}, ...]`), so a command's output says
+/// which channels it used and how.
+pub fn unit_conversions(rec: &afsv_records::Record) -> Value {
+    Value::Array(
+        rec.unit_conversions
+            .iter()
+            .map(|c| serde_json::json!({ "from": c.from, "to": c.to, "factor": c.factor }))
+            .collect(),
+    )
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

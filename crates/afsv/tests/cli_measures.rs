@@ -99,6 +99,44 @@ fn wbv_of_a_vertical_sine() {
 }
 
 #[test]
+fn wbv_converts_an_acceleration_in_g_and_refuses_an_unknown_unit() {
+    // The same vertical sine as above, written in g: same a_w, and the output says so.
+    let g = 9.806_65;
+    let si = write_csv(
+        "seat_si.csv",
+        "time_s,az_m_s2",
+        (0..6000).map(|i| {
+            let t = i as f64 / 100.0;
+            vec![t, (2.0 * PI * 5.0 * t).sin()]
+        }),
+    );
+    let in_g = write_csv(
+        "seat_g.csv",
+        "time_s,az_g",
+        (0..6000).map(|i| {
+            let t = i as f64 / 100.0;
+            vec![t, (2.0 * PI * 5.0 * t).sin() / g]
+        }),
+    );
+    let a = json(&afsv(&["measures", "wbv", "-i", &si]));
+    let b = json(&afsv(&["measures", "wbv", "-i", &in_g]));
+    let (aw_a, aw_b) = (
+        a["axes"][0]["a_w"].as_f64().unwrap(),
+        b["axes"][0]["a_w"].as_f64().unwrap(),
+    );
+    assert!((aw_a - aw_b).abs() < 1e-9 * aw_a, "{aw_a} vs {aw_b}");
+    assert_eq!(b["unit_conversions"][0]["from"], "az_g");
+    assert_eq!(b["unit_conversions"][0]["to"], "az_m_s2");
+    assert!(a.get("unit_conversions").is_none());
+    let bad = write_csv(
+        "seat_ft.csv",
+        "time_s,az_ft_s2",
+        (0..10).map(|i| vec![i as f64 / 100.0, 0.0]),
+    );
+    one_line_error(&afsv(&["measures", "wbv", "-i", &bad]), "az_ft_s2");
+}
+
+#[test]
 fn decay_fit_of_articulation_record() {
     // Pulse at t < 1 s, then free decay at 2.81 Hz, zeta 0.15, settling at 0.4 deg.
     let wn = 2.0 * PI * 2.81;

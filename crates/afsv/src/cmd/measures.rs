@@ -269,7 +269,11 @@ fn wbv(a: WbvArgs) -> CmdResult {
     }
     let r = assess_whole_body(&inputs, fs, a.hours, k, method)
         .map_err(|e| format!("{}: {e}", a.input.display()))?;
-    afsv::output::print_json(&r)?;
+    let mut out = serde_json::to_value(&r)?;
+    if !rec.unit_conversions.is_empty() {
+        out["unit_conversions"] = afsv::output::unit_conversions(&rec);
+    }
+    afsv::output::print_json(&out)?;
     Ok(())
 }
 
