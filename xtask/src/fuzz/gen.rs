@@ -199,8 +199,18 @@ pub(crate) fn bad_csv(rng: &mut Rng, cols: &[&str]) -> Vec<u8> {
     // Header damage.
     match rng.below(12) {
         0 => {
+            // An unknown column, or a known quantity in another unit (converted or refused).
             let i = rng.below(names.len());
-            names[i] = "bogus_x".into();
+            names[i] = rng
+                .pick(&[
+                    "bogus_x",
+                    "az_g",
+                    "az_ft_s2",
+                    "force_kn",
+                    "p_rod_bar",
+                    "time_ms",
+                ])
+                .to_string();
         }
         1 if names.len() > 1 => {
             let i = 1 + rng.below(names.len() - 1);
