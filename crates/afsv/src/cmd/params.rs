@@ -107,30 +107,10 @@ pub fn run(cmd: Command) -> CmdResult {
                     let p = super::yaw::read_params(&file)?;
                     json!({ "load": p.load, "parameters": named(&p) })
                 }
-                ParamSet::Strut => {
-                    let p: StrutParams = read(&file)?;
-                    p.validate()
-                        .map_err(|e| format!("{}: {e}", file.display()))?;
-                    json!({ "parameters": named(&p) })
-                }
-                ParamSet::Tire => {
-                    let p: TireParams = read(&file)?;
-                    p.validate()
-                        .map_err(|e| format!("{}: {e}", file.display()))?;
-                    json!({ "parameters": named(&p) })
-                }
-                ParamSet::Terrain => {
-                    let p: TwoTrackSpec = read(&file)?;
-                    p.validate()
-                        .map_err(|e| format!("{}: {e}", file.display()))?;
-                    json!({ "parameters": named(&p) })
-                }
-                ParamSet::Surface => {
-                    let p: SurfaceParams = read(&file)?;
-                    p.validate()
-                        .map_err(|e| format!("{}: {e}", file.display()))?;
-                    json!({ "parameters": named(&p) })
-                }
+                ParamSet::Strut => json!({ "parameters": checked::<StrutParams>(&file)? }),
+                ParamSet::Tire => json!({ "parameters": checked::<TireParams>(&file)? }),
+                ParamSet::Terrain => json!({ "parameters": checked::<TwoTrackSpec>(&file)? }),
+                ParamSet::Surface => json!({ "parameters": checked::<SurfaceParams>(&file)? }),
             };
             report["valid"] = json!(true);
             report["file"] = json!(file);
@@ -154,6 +134,14 @@ pub fn run(cmd: Command) -> CmdResult {
 fn read<T: serde::de::DeserializeOwned>(path: &Path) -> Result<T, String> {
     let text = std::fs::read_to_string(path).map_err(|e| format!("{}: {e}", path.display()))?;
     serde_json::from_str(&text).map_err(|e| format!("{}: {e}", path.display()))
+}
+
+/// The parameter file `path` read as `T` and validated by the set's own check; its named
+/// parameters with their values.
+fn checked<T: serde::de::DeserializeOwned + Named>(path: &Path) -> Result<Value, String> {
+    let p: T = read(path)?;
+    p.check().map_err(|e| format!("{}: {e}", path.display()))?;
+    Ok(named(&p))
 }
 
 /// Every named parameter of `p` with its value.
