@@ -13,6 +13,9 @@ mod cmd;
 #[derive(Parser)]
 #[command(name = "afsv", version, propagate_version = true)]
 struct Cli {
+    /// No progress lines on stderr (long commands report one line per step by default).
+    #[arg(long, global = true)]
+    quiet: bool,
     #[command(subcommand)]
     command: Command,
 }
@@ -78,6 +81,7 @@ fn main() -> ExitCode {
             return ExitCode::from(2);
         }
     };
+    afsv::progress::set_quiet(cli.quiet);
     let result = match cli.command {
         Command::Evaluate(args) => cmd::evaluate::run(args),
         Command::Check(args) => cmd::check::run(args),

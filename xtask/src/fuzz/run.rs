@@ -138,6 +138,12 @@ pub(crate) fn run_case(
     let stdout = std::fs::read(&out_path).unwrap_or_default();
     let stderr =
         String::from_utf8_lossy(&std::fs::read(&err_path).unwrap_or_default()).into_owned();
+    // Progress lines (`afsv yaw sensitivity: 3/34 ...`, afsv::progress) may precede an error.
+    let stderr: String = stderr
+        .lines()
+        .filter(|l| !is_progress_line(l))
+        .map(|l| format!("{l}\n"))
+        .collect();
     let first_err = stderr.lines().next().unwrap_or("").to_string();
     // Inputs must be as they were.
     for (name, h) in &hashes {
@@ -209,6 +215,12 @@ pub(crate) fn run_case(
         Some(c) => (Outcome::Abort, format!("exit {c}; {first_err}"), false),
         None => (Outcome::Abort, first_err, false),
     }
+}
+
+/// A progress line of `afsv::progress`: `afsv SUBCOMMAND...: N/TOTAL ... elapsed...`
+/// (errors start with `afsv:`).
+fn is_progress_line(line: &str) -> bool {
+    line.starts_with("afsv ") && line.contains(" elapsed")
 }
 
 pub(crate) fn written_non_finite(dir: &Path, inputs: &[(String, Vec<u8>)]) -> Option<String> {

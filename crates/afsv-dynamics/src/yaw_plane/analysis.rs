@@ -4,11 +4,14 @@
 //! leakage, and the gain-efficiency correlation over a leakage sweep (Fig 4.7).
 
 use crate::error::DynError;
-use crate::yaw_plane::params::{Load, VehicleParams};
+use crate::yaw_plane::params::{Load, VehicleParams, YawPlaneParams};
 use crate::yaw_plane::simulate::{simulate, Manoeuvre, SimOptions, YawRecord};
 use crate::{EquationForm, SteerInput};
 use afs_hydraulics::{AfsParams, AfsSystem};
+use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
+use std::sync::atomic::{AtomicUsize, Ordering};
+use vehicle_components::ParamSet;
 
 /// Test definition of the measures (section 3.3).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
@@ -169,6 +172,11 @@ pub fn measures_for(
     spec: &MeasureSpec,
 ) -> Result<YawMeasures, DynError> {
     let sys = AfsSystem::new(afs.clone()).map_err(|e| DynError::Steering(e.to_string()))?;
+    // The measures use neither energy channel; recording them costs a quadrature per sample.
+    let options = SimOptions {
+        record_energy: false,
+        ..spec.options
+    };
     let pulse = Manoeuvre::open_loop(
         speed_m_s,
         spec.duration_s,
@@ -185,13 +193,13 @@ pub fn measures_for(
         SteerInput::step_deg(spec.step_amplitude_deg, spec.input_time_s),
         "step",
     );
-    let rp = simulate(vehicle, &sys, &pulse, &spec.options)?;
+    let rp = simulate(vehicle, &sys, &pulse, &options)?;
     let (fit, peak) = pulse_measures(
         &rp,
         spec.input_time_s + spec.pulse_duration_s,
         spec.decay_window_s,
     )?;
-    let rs = simulate(vehicle, &sys, &step, &spec.options)?;
+    let rs = simulate(vehicle, &sys, &step, &options)?;
     let (sm, eta) = step_measures(&rs, spec.input_time_s, spec.step_amplitude_deg)?;
     Ok(YawMeasures {
         load,
@@ -259,16 +267,41 @@ impl SensitivityParam {
         }
     }
 
-    /// `p` with this parameter scaled by `factor`.
+    /// The parameter's name in the yaw-plane registry
+    /// ([`crate::yaw_plane::registry::YAW_PLANE_PARAMS`], the steering system's part:
+    /// [`afs_hydraulics::AFS_PARAMS`]), as `afsv params list yaw-plane` prints it.
+    pub fn name(self) -> &'static str {
+        match self {
+            SensitivityParam::A0 => "a0_rad",
+            SensitivityParam::BulkModulus => "bulk_modulus_pa",
+            SensitivityParam::SealViscous => "seal_viscous_n_s_m",
+            SensitivityParam::LeakVelocity => "leak_velocity",
+        }
+    }
+
+    /// `p` with this parameter, addressed by [`Self::name`], scaled by `factor`, without
+    /// the registry's bounds (an exploration may leave them). Every name is in the
+    /// registry (tested); the set is returned unchanged otherwise.
     pub fn scaled(self, p: &AfsParams, factor: f64) -> AfsParams {
         let mut q = p.clone();
-        match self {
-            SensitivityParam::A0 => q.a0_rad *= factor,
-            SensitivityParam::BulkModulus => q.bulk_modulus_pa *= factor,
-            SensitivityParam::SealViscous => q.seal_viscous_n_s_m *= factor,
-            SensitivityParam::LeakVelocity => q.leak_velocity *= factor,
+        if let Ok((i, _)) = q.find(self.name()) {
+            let v = q.value(i);
+            q.assign(i, v * factor);
         }
         q
+    }
+
+    /// The whole yaw-plane set `p` with this parameter scaled by `factor` through
+    /// [`ParamSet::set`]: the value must stay inside the registry's bounds and pass the
+    /// set's validation, else the error names the parameter.
+    pub fn try_scaled(self, p: &YawPlaneParams, factor: f64) -> Result<YawPlaneParams, DynError> {
+        let mut q = p.clone();
+        let name = self.name();
+        let scaled = q
+            .get(name)
+            .and_then(|v| q.set(name, v * factor))
+            .map_err(|e| DynError::InvalidInput(format!("sensitivity study: {e}")));
+        scaled.map(|()| q)
     }
 }
 
@@ -388,27 +421,65 @@ fn na(v: f64, prec: usize, signed: bool) -> String {
 pub const VARIATIONS_PERCENT: [f64; 4] = [-30.0, -15.0, 15.0, 30.0];
 
 /// Section 3.4.3: each of A_0, B_eff, mu_v, k_l at -30, -15, +15, +30 % for both loads.
+/// Same as [`sensitivity_with_progress`] without a progress report.
 pub fn sensitivity(speed_m_s: f64, spec: &MeasureSpec) -> Result<SensitivityTable, DynError> {
-    let afs = AfsParams::nominal();
-    let mut nominal = Vec::new();
-    let mut rows = Vec::new();
+    sensitivity_with_progress(speed_m_s, spec, &|_, _| {})
+}
+
+/// One configuration of the sensitivity study: a load, and the parameter varied with its
+/// variation (%), or `None` for the nominal vehicle.
+type StudyCase = (Load, Option<(SensitivityParam, f64)>);
+
+/// Section 3.4.3, with the 34 configurations (nominal plus 4 parameters x 4 variations, per
+/// load) measured in parallel on the rayon thread pool. Each configuration is an
+/// independent pair of runs, so the table does not depend on the number of threads
+/// (tested). `progress(done, total)` is called once per finished configuration, from
+/// whichever thread finished it.
+pub fn sensitivity_with_progress(
+    speed_m_s: f64,
+    spec: &MeasureSpec,
+    progress: &(dyn Fn(usize, usize) + Sync),
+) -> Result<SensitivityTable, DynError> {
+    let mut cases: Vec<StudyCase> = Vec::new();
     for load in Load::ALL {
-        let v = VehicleParams::nominal(load);
-        let nom = measures_for(&v, &afs, Some(load), speed_m_s, spec)?;
+        cases.push((load, None));
         for p in SensitivityParam::ALL {
             for pctv in VARIATIONS_PERCENT {
-                let a = p.scaled(&afs, 1.0 + pctv / 100.0);
-                let m = measures_for(&v, &a, Some(load), speed_m_s, spec)?;
+                cases.push((load, Some((p, pctv))));
+            }
+        }
+    }
+    let total = cases.len();
+    let done = AtomicUsize::new(0);
+    let measured: Vec<YawMeasures> = cases
+        .par_iter()
+        .map(|&(load, variation)| {
+            let nominal = YawPlaneParams::nominal(load);
+            let p = match variation {
+                None => nominal,
+                Some((param, pctv)) => param.try_scaled(&nominal, 1.0 + pctv / 100.0)?,
+            };
+            let m = measures_for(&p.vehicle, &p.afs, Some(load), speed_m_s, spec);
+            progress(done.fetch_add(1, Ordering::Relaxed) + 1, total);
+            m
+        })
+        .collect::<Result<_, _>>()?;
+    let mut nominal = Vec::new();
+    let mut rows = Vec::new();
+    for (&(load, variation), m) in cases.iter().zip(measured) {
+        match variation {
+            None => nominal.push(m),
+            Some((parameter, variation_percent)) => {
+                let nom = nominal.last().expect("a load's nominal case comes first");
                 rows.push(SensitivityRow {
                     load,
-                    parameter: p,
-                    variation_percent: pctv,
-                    change: MeasureChanges::between(&m, &nom),
+                    parameter,
+                    variation_percent,
+                    change: MeasureChanges::between(&m, nom),
                     measures: m,
                 });
             }
         }
-        nominal.push(nom);
     }
     Ok(SensitivityTable {
         speed_m_s,
@@ -551,5 +622,67 @@ mod na_tests {
         assert_eq!(na(f64::INFINITY, 2, false), "n/a");
         assert_eq!(na(1.234, 2, true), "+1.23");
         assert_eq!(na(-1.0, 1, false), "-1.0");
+    }
+}
+
+#[cfg(test)]
+mod study_tests {
+    use super::*;
+    use afs_hydraulics::AFS_PARAMS;
+
+    #[test]
+    fn parameters_are_addressed_by_their_registry_names() {
+        let base = YawPlaneParams::nominal(Load::Loaded);
+        for p in SensitivityParam::ALL {
+            assert!(
+                AFS_PARAMS.iter().any(|s| s.name == p.name()),
+                "{}",
+                p.name()
+            );
+            let by_name = p.try_scaled(&base, 1.15).unwrap();
+            assert_eq!(by_name.afs, p.scaled(&base.afs, 1.15));
+            let v0 = base.get(p.name()).unwrap();
+            assert!((by_name.get(p.name()).unwrap() / v0 - 1.15).abs() < 1e-12);
+            // only that parameter changed
+            let mut back = by_name.clone();
+            back.set(p.name(), v0).unwrap();
+            assert_eq!(back, base);
+        }
+        // out of the registry's bounds: an error naming the parameter, not a silent run
+        let err = SensitivityParam::A0.try_scaled(&base, 10.0).unwrap_err();
+        assert!(err.to_string().contains("a0_rad"), "{err}");
+    }
+
+    #[test]
+    fn the_parallel_study_does_not_depend_on_the_thread_count() {
+        let spec = MeasureSpec::default();
+        let run = |threads: usize| {
+            let calls = AtomicUsize::new(0);
+            let pool = rayon::ThreadPoolBuilder::new()
+                .num_threads(threads)
+                .build()
+                .unwrap();
+            let t = pool
+                .install(|| {
+                    sensitivity_with_progress(50.0 / 3.6, &spec, &|done, total| {
+                        assert!(done >= 1 && done <= total && total == 34);
+                        calls.fetch_add(1, Ordering::Relaxed);
+                    })
+                })
+                .unwrap();
+            assert_eq!(calls.into_inner(), 34);
+            t
+        };
+        let one = run(1);
+        let three = run(3);
+        assert_eq!(one, three);
+        assert_eq!(one.rows.len(), 32);
+        assert_eq!(one.nominal[0].load, Some(Load::Loaded));
+        assert_eq!(one.nominal[1].load, Some(Load::Unloaded));
+        // rows in the paper's order: load, parameter, variation
+        assert_eq!(one.rows[0].parameter, SensitivityParam::A0);
+        assert_eq!(one.rows[0].variation_percent, -30.0);
+        assert_eq!(one.rows[31].load, Load::Unloaded);
+        assert_eq!(one.rows[31].parameter, SensitivityParam::LeakVelocity);
     }
 }

@@ -2,6 +2,7 @@
 
 use super::{args, CmdResult};
 use afsv::output::{OutputGuard, OutputKind};
+use afsv::progress::Progress;
 use afsv_records::Record;
 use serde_json::{json, Value};
 use std::path::{Path, PathBuf};
@@ -213,6 +214,9 @@ fn rms(v: &[f64]) -> f64 {
     (v.iter().map(|x| (x - m) * (x - m)).sum::<f64>() / v.len() as f64).sqrt()
 }
 
+/// Profiles of at least this many samples report progress on stderr.
+const LONG_PROFILE_SAMPLES: f64 = 1e6;
+
 fn generate(a: GenerateArgs) -> CmdResult {
     args::check_samples(
         &format!("--length {}", args::show(a.length)),
@@ -227,7 +231,13 @@ fn generate(a: GenerateArgs) -> CmdResult {
     let band: Band = a.band.parse().map_err(|e| format!("--band: {e}"))?;
     let coherence = coherence_model(&a)?;
     let spec = TwoTrackSpec::new(psd, band, coherence)?;
+    // A long profile takes seconds to synthesise and write: report the two stages.
+    let progress = (a.length / a.dx >= LONG_PROFILE_SAMPLES)
+        .then(|| Progress::new("afsv terrain generate", "stages", Some(2)));
     let prof = synthesize(&spec, a.length, a.dx, a.seed)?;
+    if let Some(p) = &progress {
+        p.step("synthesised");
+    }
     let meta = json!({
         "written_by": "afsv terrain generate",
         "generator": "afsv terrain generate",
@@ -247,6 +257,10 @@ fn generate(a: GenerateArgs) -> CmdResult {
             rec.push_column("right_m", prof.right_m.clone())?;
             rec.meta = meta.clone();
             rec.write(path)?;
+            if let Some(p) = &progress {
+                p.step("written");
+                p.finish();
+            }
             let mut out = meta;
             out["output"] = json!(path.display().to_string());
             out["sidecar"] = json!(path.with_extension("json").display().to_string());
@@ -262,6 +276,10 @@ fn generate(a: GenerateArgs) -> CmdResult {
             out["left_m"] = json!(prof.left_m);
             out["right_m"] = json!(prof.right_m);
             afsv::output::print_json(&out)?;
+            if let Some(p) = &progress {
+                p.step("printed");
+                p.finish();
+            }
         }
     }
     Ok(())

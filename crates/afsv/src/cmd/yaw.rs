@@ -4,12 +4,14 @@
 
 use super::{args, CmdResult};
 use afsv::output::{OutputGuard, OutputKind};
+use afsv::progress::Progress;
 use afsv_dynamics::yaw_plane::analysis::{
-    gain_efficiency_correlation, measures_for, steady_turn_decay, MeasureSpec,
+    gain_efficiency_correlation, measures_for, sensitivity_with_progress, steady_turn_decay,
+    MeasureSpec,
 };
 use afsv_dynamics::{
-    sensitivity, simulate, Course, EquationForm, Load, Manoeuvre, PathDriver, SimOptions, Solver,
-    SteerInput, YawPlaneParams,
+    simulate, Course, EquationForm, Load, Manoeuvre, PathDriver, SimOptions, Solver, SteerInput,
+    YawPlaneParams,
 };
 use afsv_records::Record;
 use std::path::{Path, PathBuf};
@@ -353,7 +355,10 @@ pub fn run(cmd: Command) -> CmdResult {
         } => {
             let mut spec = MeasureSpec::default();
             spec.options.form = form.into();
-            let t = sensitivity(kmh(speed_kmh)?, &spec)?;
+            let progress = Progress::new("afsv yaw sensitivity", "configurations", Some(34));
+            let t = sensitivity_with_progress(kmh(speed_kmh)?, &spec, &|_, _| progress.step(""));
+            progress.finish();
+            let t = t?;
             if table {
                 println!(
                     "Percent change of the measures (section 3.4.3), {speed_kmh} km/h, {:?}",
