@@ -174,3 +174,65 @@ fn bad_input_is_a_one_line_error() {
 fn tmp(name: &str) -> std::path::PathBuf {
     scratch("yaw", name)
 }
+
+#[test]
+fn sensitivity_reports_progress_lines_with_count_and_eta_when_piped() {
+    let (ok, stdout, err) = afsv(&["yaw", "sensitivity"]);
+    assert!(ok, "{err}");
+    serde_json::from_str::<serde_json::Value>(&stdout).expect("stdout stays JSON");
+    let lines: Vec<&str> = err.lines().collect();
+    assert_eq!(lines.len(), 34, "{err}");
+    for (i, l) in lines.iter().enumerate() {
+        let prefix = format!("afsv yaw sensitivity: {}/34 configurations, ", i + 1);
+        assert!(l.starts_with(&prefix), "line {i}: {l}");
+        assert!(l.contains(" s elapsed, ETA "), "{l}");
+    }
+    assert!(lines[33].ends_with("ETA 0.00 s"), "{}", lines[33]);
+    let (ok, _, err) = afsv(&["--quiet", "yaw", "sensitivity"]);
+    assert!(ok && err.is_empty(), "{err}");
+}
+
+#[test]
+fn simulate_writes_only_the_chosen_columns() {
+    let out = tmp("cols.csv");
+    let (ok, stdout, err) = afsv(&[
+        "yaw",
+        "simulate",
+        "--duration",
+        "2",
+        "--columns",
+        "articulation_deg,steer_wheel_deg",
+        "-o",
+        out.to_str().unwrap(),
+    ]);
+    assert!(ok, "{err}");
+    let v: serde_json::Value = serde_json::from_str(&stdout).unwrap();
+    assert_eq!(
+        v["columns"],
+        serde_json::json!(["time_s", "articulation_deg", "steer_wheel_deg"])
+    );
+    let header = std::fs::read_to_string(&out).unwrap();
+    assert!(header.starts_with("time_s,articulation_deg,steer_wheel_deg\n"));
+    for (cols, msg) in [
+        (
+            "articulation_deg,yaw_rate",
+            "no column `yaw_rate` (known: time_s,",
+        ),
+        (
+            "articulation_deg,articulation_deg",
+            "`articulation_deg` is named twice",
+        ),
+    ] {
+        let (ok, _, err) = afsv(&[
+            "yaw",
+            "simulate",
+            "--duration",
+            "1",
+            "--columns",
+            cols,
+            "-o",
+            tmp("bad.csv").to_str().unwrap(),
+        ]);
+        assert!(!ok && err.contains(msg), "{err}");
+    }
+}

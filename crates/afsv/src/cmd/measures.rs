@@ -89,6 +89,11 @@ pub struct WbvArgs {
     /// accurate only well below the Nyquist frequency).
     #[arg(long, value_name = "METHOD", default_value = "fft", value_parser = ["fft", "iir"])]
     pub method: String,
+    /// Column of an axis, AXIS=COLUMN (repeatable), for records whose channels have other
+    /// names, e.g. --channel y=lateral_accel_front_m_s2 (a column in m/s^2, name ending
+    /// in _m_s2). Default: ax_m_s2, ay_m_s2, az_m_s2.
+    #[arg(long, value_name = "AXIS=COLUMN")]
+    pub channel: Vec<String>,
 }
 
 /// Options of `afsv measures decay`.
@@ -208,21 +213,42 @@ fn parse_axis_weightings(specs: &[String]) -> Result<[Weighting; 3], String> {
         let (axis, name) = s
             .split_once('=')
             .ok_or_else(|| format!("--weighting `{s}`: expected AXIS=W, e.g. z=wk"))?;
-        let idx = match axis.trim().to_ascii_lowercase().as_str() {
-            "x" => 0,
-            "y" => 1,
-            "z" => 2,
-            other => {
-                return Err(format!(
-                    "--weighting `{s}`: unknown axis `{other}` (x, y or z)"
-                ))
-            }
-        };
-        w[idx] = name
+        w[axis_index("--weighting", s, axis)?] = name
             .parse()
             .map_err(|e| format!("--weighting `{s}`: {e}"))?;
     }
     Ok(w)
+}
+
+/// Index of axis `x`, `y` or `z` in `option`'s value `spec`.
+fn axis_index(option: &str, spec: &str, axis: &str) -> Result<usize, String> {
+    match axis.trim().to_ascii_lowercase().as_str() {
+        "x" => Ok(0),
+        "y" => Ok(1),
+        "z" => Ok(2),
+        other => Err(format!(
+            "{option} `{spec}`: unknown axis `{other}` (x, y or z)"
+        )),
+    }
+}
+
+/// The column of each axis and whether `--channel` named it (then the record must have
+/// it): `ax_m_s2`, `ay_m_s2`, `az_m_s2` by default.
+fn axis_columns(specs: &[String]) -> Result<[(String, bool); 3], String> {
+    let mut c = ["ax_m_s2", "ay_m_s2", "az_m_s2"].map(|n| (n.to_string(), false));
+    for s in specs {
+        let (axis, column) = s.split_once('=').ok_or_else(|| {
+            format!("--channel `{s}`: expected AXIS=COLUMN, e.g. y=lateral_accel_front_m_s2")
+        })?;
+        let column = column.trim();
+        if !column.ends_with("_m_s2") {
+            return Err(format!(
+                "--channel `{s}`: column `{column}` must be in m/s^2 (name ending in _m_s2)"
+            ));
+        }
+        c[axis_index("--channel", s, axis)?] = (column.to_string(), true);
+    }
+    Ok(c)
 }
 
 fn wbv(a: WbvArgs) -> CmdResult {
@@ -243,16 +269,18 @@ fn wbv(a: WbvArgs) -> CmdResult {
     } else {
         FilterMethod::Fft
     };
+    let columns = axis_columns(&a.channel)?;
     let mut inputs = Vec::new();
-    for (i, (axis, name)) in [
-        (Axis::X, "ax_m_s2"),
-        (Axis::Y, "ay_m_s2"),
-        (Axis::Z, "az_m_s2"),
-    ]
-    .into_iter()
-    .enumerate()
-    {
-        if let Some(col) = rec.column(name) {
+    let mut used = serde_json::Map::new();
+    for (i, axis) in [Axis::X, Axis::Y, Axis::Z].into_iter().enumerate() {
+        let (name, chosen) = &columns[i];
+        let col = if *chosen {
+            Some(rec.require(name, &a.input)?)
+        } else {
+            rec.column(name)
+        };
+        if let Some(col) = col {
+            used.insert(["x", "y", "z"][i].into(), json!(name));
             inputs.push(AxisInput {
                 axis,
                 weighting: w[i],
@@ -262,7 +290,7 @@ fn wbv(a: WbvArgs) -> CmdResult {
     }
     if inputs.is_empty() {
         return Err(format!(
-            "{}: no acceleration column (expected any of ax_m_s2, ay_m_s2, az_m_s2)",
+            "{}: no acceleration column (expected any of ax_m_s2, ay_m_s2, az_m_s2, or name one with --channel AXIS=COLUMN)",
             a.input.display()
         )
         .into());
@@ -270,6 +298,7 @@ fn wbv(a: WbvArgs) -> CmdResult {
     let r = assess_whole_body(&inputs, fs, a.hours, k, method)
         .map_err(|e| format!("{}: {e}", a.input.display()))?;
     let mut out = serde_json::to_value(&r)?;
+    out["channels"] = serde_json::Value::Object(used);
     if !rec.unit_conversions.is_empty() {
         out["unit_conversions"] = afsv::output::unit_conversions(&rec);
     }

@@ -114,6 +114,11 @@ pub enum Command {
         /// be an input; an existing file afsv did not write needs --force.
         #[arg(short = 'o', long)]
         output: PathBuf,
+        /// Write only these columns, comma-separated (`time_s` always comes first), e.g.
+        /// time_s,steer_wheel_deg,articulation_deg. Default: every channel and state (the
+        /// names are listed in the printed `columns` of a run without this option).
+        #[arg(long, value_name = "NAME,...", value_delimiter = ',')]
+        columns: Vec<String>,
         /// Replace an existing output file that afsv did not write (never an input, never
         /// a foreign JSON at the sidecar's name).
         #[arg(long)]
@@ -265,6 +270,38 @@ fn parse_input(
     Ok(m)
 }
 
+/// The record's columns named in `--columns` (all when it is empty), `time_s` first; an
+/// unknown or repeated name is an error listing the known ones.
+fn selected_columns<'a>(
+    all: Vec<(String, &'a [f64])>,
+    wanted: &[String],
+) -> Result<Vec<(String, &'a [f64])>, String> {
+    if wanted.is_empty() {
+        return Ok(all);
+    }
+    let mut names: Vec<&str> = vec!["time_s"];
+    for w in wanted.iter().map(|w| w.trim()) {
+        if w == "time_s" {
+            continue;
+        }
+        if names.contains(&w) {
+            return Err(format!("--columns: `{w}` is named twice"));
+        }
+        if !all.iter().any(|(n, _)| n == w) {
+            let known: Vec<&str> = all.iter().map(|(n, _)| n.as_str()).collect();
+            return Err(format!(
+                "--columns: no column `{w}` (known: {})",
+                known.join(", ")
+            ));
+        }
+        names.push(w);
+    }
+    Ok(names
+        .iter()
+        .filter_map(|n| all.iter().find(|(m, _)| m == n).cloned())
+        .collect())
+}
+
 /// Run an `afsv yaw` subcommand.
 pub fn run(cmd: Command) -> CmdResult {
     match cmd {
@@ -277,6 +314,7 @@ pub fn run(cmd: Command) -> CmdResult {
             solver,
             rtol,
             output,
+            columns,
             force,
         } => {
             args::check_samples(
@@ -311,7 +349,7 @@ pub fn run(cmd: Command) -> CmdResult {
             };
             let rec = simulate(&p.vehicle, &sys, &man, &opts)?;
             let mut out = Record::new();
-            for (name, values) in rec.columns() {
+            for (name, values) in selected_columns(rec.columns(), &columns)? {
                 out.push_column(&name, values.to_vec())?;
             }
             let form: EquationForm = vehicle.form.into();
