@@ -35,7 +35,7 @@ fn samples_are_small_and_regenerate_from_their_documented_commands() {
         let b = Record::read(&dir.join("samples").join(format!("{name}.csv"))).unwrap();
         assert_eq!(a.names(), b.names(), "{name}");
         for col in a.names() {
-            let (x, y) = (a.column(&col).unwrap(), b.column(&col).unwrap());
+            let (x, y) = (a.column(col).unwrap(), b.column(col).unwrap());
             assert_eq!(x.len(), y.len(), "{name}.{col}");
             let range = x.iter().fold(0.0f64, |m, v| m.max(v.abs()));
             let worst = x
