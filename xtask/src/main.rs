@@ -4,6 +4,8 @@
 //!   one table of mean times. A benchmark whose id ends in `_sim<N>s` simulates N seconds
 //!   (`p` may stand for the decimal point: `_sim1p25s`), and the table adds its real-time
 //!   factor = simulated seconds / wall seconds.
+//!   Then the whole-command timings of what users run (`commands.rs`: the release binary run
+//!   `--runs N` times per command, default 20, median). `bench --commands` prints only these.
 //! - `bench --summary`: only print the table from the last run's results.
 //! - `validate [--fixtures DIR] [--out DIR]`: compare our models with the dissertation's
 //!   reported numbers (`fixtures/reported/`, see `docs/validation.md`), print the table,
@@ -14,6 +16,7 @@
 //!   10,000) generated bad inputs and fail on any panic, hang, abort, non-finite output or
 //!   modified input (see `fuzz.rs`).
 
+mod commands;
 mod fuzz;
 
 use std::path::{Path, PathBuf};
@@ -41,7 +44,7 @@ fn main() -> ExitCode {
     }
 }
 
-const HELP: &str = "usage: cargo xtask <task>\n\ntasks:\n  bench [--summary] [ARGS...]  run the criterion benches (ARGS go to the bench harness) and print mean times and real-time factors\n  validate [--fixtures DIR] [--out DIR]  compare the models with fixtures/reported/ and write target/validation/report.md\n  fuzz [--cases N] [--seed S] [--jobs J] [--timeout SECS] [--mem-mib MIB] [--bin PATH] [--only GROUPS] [--skip GROUPS] [--keep]  run afsv on N generated bad inputs (default 10000); fail on panics, hangs, aborts, non-finite output or modified inputs\n  discover-matrix  run the discovery workflow on every catalogue effect of both models and print the detection table (minutes)";
+const HELP: &str = "usage: cargo xtask <task>\n\ntasks:\n  bench [--summary] [--commands] [--runs N] [ARGS...]  run the criterion benches (ARGS go to the bench harness) and print mean times and real-time factors, then time whole afsv commands (median of N runs, default 20); --commands: only those\n  validate [--fixtures DIR] [--out DIR]  compare the models with fixtures/reported/ and write target/validation/report.md\n  fuzz [--cases N] [--seed S] [--jobs J] [--timeout SECS] [--mem-mib MIB] [--bin PATH] [--only GROUPS] [--skip GROUPS] [--keep]  run afsv on N generated bad inputs (default 10000); fail on panics, hangs, aborts, non-finite output or modified inputs\n  discover-matrix  run the discovery workflow on every catalogue effect of both models and print the detection table (minutes)";
 
 /// The full detection matrix of the discovery workflow (the slow tests of
 /// `crates/afsv-discovery/tests/discover_matrix.rs`).
@@ -119,6 +122,23 @@ fn validate(args: &[String]) -> Result<(), String> {
 
 fn bench(args: &[String]) -> Result<(), String> {
     let root = workspace_root();
+    let mut args = args.to_vec();
+    let runs = match args.iter().position(|a| a == "--runs") {
+        Some(i) => {
+            let n = args
+                .get(i + 1)
+                .and_then(|v| v.parse::<usize>().ok())
+                .filter(|&n| (1..=1000).contains(&n))
+                .ok_or("--runs needs a count from 1 to 1000")?;
+            args.drain(i..i + 2);
+            n
+        }
+        None => 20,
+    };
+    if args.iter().any(|a| a == "--commands") {
+        return commands::command_timings(&root, runs);
+    }
+    let args = &args[..];
     let summary_only = args.iter().any(|a| a == "--summary");
     if !summary_only {
         let mut cmd = Command::new(std::env::var("CARGO").unwrap_or_else(|_| "cargo".into()));
@@ -157,6 +177,9 @@ fn bench(args: &[String]) -> Result<(), String> {
     }
     if !summary_only && !args.iter().any(|a| a == "--no-discovery") {
         discovery_rows(&root)?;
+    }
+    if !summary_only {
+        commands::command_timings(&root, runs)?;
     }
     Ok(())
 }
