@@ -234,3 +234,49 @@ fn help_documents_the_options() {
 fn tmp(name: &str) -> std::path::PathBuf {
     scratch("tire", name)
 }
+
+#[test]
+fn sweep_plot_names_the_tire_and_conditions_with_units() {
+    let svg = tmp("units.svg");
+    let out = afsv(&[
+        "tire",
+        "sweep",
+        "--fz",
+        "50000:100000:50000",
+        "--alpha-deg",
+        "-10:10:1",
+        "--plot",
+        svg.to_str().unwrap(),
+    ]);
+    json(&out);
+    let text = std::fs::read_to_string(&svg).unwrap();
+    for must in [
+        "Fiala lateral force F_y versus slip angle",
+        "nominal 29.5R29 tire; F_z = 50, 100 kN; kappa = 0",
+        "slip angle alpha (deg)",
+        "lateral force F_y (kN)",
+        "Fz = 50 kN, kappa = 0",
+    ] {
+        assert!(text.contains(must), "`{must}` missing from the SVG");
+    }
+    let svg = tmp("fx.svg");
+    let out = afsv(&[
+        "tire",
+        "sweep",
+        "--fz",
+        "100000",
+        "--kappa",
+        "0:0.5:0.05",
+        "--plot",
+        svg.to_str().unwrap(),
+    ]);
+    json(&out);
+    let text = std::fs::read_to_string(&svg).unwrap();
+    for must in [
+        "slip ratio kappa (-)",
+        "longitudinal force F_x (kN)",
+        "alpha = 0 deg",
+    ] {
+        assert!(text.contains(must), "`{must}` missing from the SVG");
+    }
+}

@@ -249,7 +249,11 @@ fn sweep(args: SweepArgs) -> CmdResult {
         }
     }
     if let Some(path) = &args.plot {
-        plot_sweep(path, &rows, &fzs, &kappas, &alphas)?;
+        let tire_name = match &args.params {
+            Some(f) => format!("tire {}", f.display()),
+            None => "nominal 29.5R29 tire".to_string(),
+        };
+        plot_sweep(path, &tire_name, &rows, &fzs, &kappas, &alphas)?;
         afsv::output::mark_svg(path)?;
     }
     afsv::output::print_json(&rows)?;
@@ -259,6 +263,7 @@ fn sweep(args: SweepArgs) -> CmdResult {
 /// One curve per (F_z, other slip): F_y(alpha) if alpha is swept, else F_x(kappa).
 fn plot_sweep(
     path: &Path,
+    tire_name: &str,
     rows: &[SweepRow],
     fzs: &[f64],
     kappas: &[f64],
@@ -297,15 +302,35 @@ fn plot_sweep(
             curves.len()
         ));
     }
-    let (title, xd, yd) = if lateral {
-        ("Fiala lateral force", "slip angle alpha (deg)", "F_y (kN)")
+    let (title, x, y) = if lateral {
+        (
+            "Fiala lateral force F_y versus slip angle",
+            afsv_plot::Axis::new("slip angle alpha", "deg"),
+            afsv_plot::Axis::new("lateral force F_y", "kN"),
+        )
     } else {
         (
-            "Fiala longitudinal force",
-            "slip ratio kappa (-)",
-            "F_x (kN)",
+            "Fiala longitudinal force F_x versus slip ratio",
+            afsv_plot::Axis::new("slip ratio kappa", "-"),
+            afsv_plot::Axis::new("longitudinal force F_x", "kN"),
         )
     };
+    let show = |v: &[f64], s: f64| match v {
+        [a, .., b] if v.len() > 6 => format!("{} to {} ({} values)", a * s, b * s, v.len()),
+        _ => {
+            let parts: Vec<String> = v.iter().map(|x| format!("{}", x * s)).collect();
+            parts.join(", ")
+        }
+    };
+    let conditions = format!(
+        "{tire_name}; F_z = {} kN; {}",
+        show(fzs, 1e-3),
+        if lateral {
+            format!("kappa = {}", show(kappas, 1.0))
+        } else {
+            format!("alpha = {} deg", show(alphas, 1.0))
+        }
+    );
     let xy: Vec<(Vec<f64>, Vec<f64>)> = curves
         .iter()
         .map(|(_, pts)| pts.iter().copied().unzip())
@@ -315,7 +340,16 @@ fn plot_sweep(
         .zip(&xy)
         .map(|((label, _), (x, y))| afsv_plot::Series { label, x, y })
         .collect();
-    afsv_plot::line_plot(path, title, xd, yd, &series)
+    afsv_plot::figure(
+        path,
+        &afsv_plot::Figure {
+            title,
+            conditions: &conditions,
+            x,
+            y,
+        },
+        &series,
+    )
 }
 
 #[derive(serde::Serialize)]
