@@ -120,6 +120,20 @@ fn yaw_case(g: &mut Gen<'_>, group: &str) {
                     .to_string();
                 g.push_opt("--solver", &s);
             }
+            if g.rng.chance(0.15) {
+                let c = g
+                    .rng
+                    .pick(&[
+                        "articulation_deg",
+                        "time_s,bogus",
+                        "articulation_deg,articulation_deg",
+                        "",
+                        ",,",
+                        "steer_wheel_deg,p_c_pa",
+                    ])
+                    .to_string();
+                g.push_opt("--columns", &c);
+            }
             let o = g.output("out.csv", &["in.csv", "in.json", "p.json", "p.csv"]);
             g.push_opt("-o", &o);
         }
@@ -436,6 +450,21 @@ fn measures_case(g: &mut Gen<'_>, group: &str) {
             if g.rng.chance(0.3) {
                 let m = g.rng.pick(&["fft", "iir", "bogus"]).to_string();
                 g.push_opt("--method", &m);
+            }
+            if g.rng.chance(0.2) {
+                let c = g
+                    .rng
+                    .pick(&[
+                        "y=ay_m_s2",
+                        "z=az_g",
+                        "q=ax_m_s2",
+                        "y=",
+                        "=ax_m_s2",
+                        "zax",
+                        "x=bogus_m_s2",
+                    ])
+                    .to_string();
+                g.push_opt("--channel", &c);
             }
         }
         "measures decay" => {
