@@ -95,24 +95,53 @@ const HEIGHT: u32 = 560;
 /// Draw `series` into a 1000x560 SVG at `path`: title and conditions on top, the plot
 /// area, and the legend in a column on the right.
 pub fn figure(path: &Path, fig: &Figure<'_>, series: &[Series<'_>]) -> Result<(), String> {
+    render(
+        path,
+        fig.title,
+        fig.conditions,
+        &fig.x.label(),
+        &fig.y.label(),
+        series,
+    )
+}
+
+/// [`figure`] with the axis labels as text and the conditions line `conditions` (may be
+/// empty).
+fn render(
+    path: &Path,
+    title: &str,
+    conditions: &str,
+    x_label: &str,
+    y_label: &str,
+    series: &[Series<'_>],
+) -> Result<(), String> {
     let err = |e: &dyn std::fmt::Display| format!("{}: {e}", path.display());
     let ranges = ranges(series).ok_or_else(|| format!("nothing to plot in {}", path.display()))?;
     let root = SVGBackend::new(path, (WIDTH, HEIGHT)).into_drawing_area();
     root.fill(&WHITE).map_err(|e| err(&e))?;
-    let area = root
-        .titled(fig.title, ("sans-serif", 20))
-        .map_err(|e| err(&e))?;
-    let area = if fig.conditions.is_empty() {
-        area
-    } else {
-        area.titled(fig.conditions, ("sans-serif", 14))
-            .map_err(|e| err(&e))?
-    };
+    let area = titled(&root, title, conditions).map_err(|e| err(&e))?;
     let (plot, legend) = area.split_horizontally(WIDTH - legend_width(series));
-    draw_panel(&plot, None, fig.x, fig.y, ranges, series).map_err(|e| err(&e))?;
+    draw_labelled(&plot, None, x_label, y_label, ranges, series).map_err(|e| err(&e))?;
     draw_legend(&legend, series).map_err(|e| err(&e))?;
     root.present().map_err(|e| err(&e))?;
     Ok(())
+}
+
+/// `area` below a title line and, when not empty, a conditions line.
+fn titled<'b>(
+    area: &DrawingArea<SVGBackend<'b>, Shift>,
+    title: &str,
+    conditions: &str,
+) -> Result<DrawingArea<SVGBackend<'b>, Shift>, String> {
+    let e = |e: &dyn std::fmt::Display| e.to_string();
+    let below = area.titled(title, ("sans-serif", 20)).map_err(|x| e(&x))?;
+    if conditions.is_empty() {
+        Ok(below)
+    } else {
+        below
+            .titled(conditions, ("sans-serif", 14))
+            .map_err(|x| e(&x))
+    }
 }
 
 /// One panel of a [`panels`] figure: its caption, axes and curves.
@@ -145,15 +174,7 @@ pub fn panels(
     let (w, h) = (600 * columns as u32, 450 * rows as u32 + 60);
     let root = SVGBackend::new(path, (w, h)).into_drawing_area();
     root.fill(&WHITE).map_err(|e| err(&e))?;
-    let area = root
-        .titled(title, ("sans-serif", 20))
-        .map_err(|e| err(&e))?;
-    let area = if conditions.is_empty() {
-        area
-    } else {
-        area.titled(conditions, ("sans-serif", 14))
-            .map_err(|e| err(&e))?
-    };
+    let area = titled(&root, title, conditions).map_err(|e| err(&e))?;
     for (cell, p) in area.split_evenly((rows, columns)).iter().zip(panels) {
         let ranges = ranges(&p.series).ok_or_else(|| {
             format!(
@@ -180,18 +201,7 @@ pub fn line_plot(
     y_label: &str,
     series: &[Series<'_>],
 ) -> Result<(), String> {
-    let err = |e: &dyn std::fmt::Display| format!("{}: {e}", path.display());
-    let ranges = ranges(series).ok_or_else(|| format!("nothing to plot in {}", path.display()))?;
-    let root = SVGBackend::new(path, (WIDTH, HEIGHT)).into_drawing_area();
-    root.fill(&WHITE).map_err(|e| err(&e))?;
-    let area = root
-        .titled(title, ("sans-serif", 20))
-        .map_err(|e| err(&e))?;
-    let (plot, legend) = area.split_horizontally(WIDTH - legend_width(series));
-    draw_labelled(&plot, None, x_label, y_label, ranges, series).map_err(|e| err(&e))?;
-    draw_legend(&legend, series).map_err(|e| err(&e))?;
-    root.present().map_err(|e| err(&e))?;
-    Ok(())
+    render(path, title, "", x_label, y_label, series)
 }
 
 /// Padded (x0, x1, y0, y1) over the finite points of `series`, or `None` without any.
