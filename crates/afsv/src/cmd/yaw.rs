@@ -368,6 +368,7 @@ pub fn run(cmd: Command) -> CmdResult {
                 "rtol": opts.rtol,
                 "solver_stats": rec.stats,
             });
+            afsv::output::check_finite_record(&out)?;
             out.write(&output)?;
             afsv::output::print_json(&serde_json::json!({
                 "output": output,
