@@ -1,6 +1,7 @@
 //! The chapter-4 solver sequence (section 4.3.5): pattern search with a Latin-hypercube
 //! search step from several starts (the current design and a maximin Latin hypercube of
-//! further starts), then SQP from the best pattern-search point. The pattern search sees
+//! further starts), each down to a coarse screening mesh; the best of them continued to the
+//! fine mesh; then SQP from that pattern-search point. The pattern search sees
 //! the [`AfsProblem::screened`] view (an infeasible point is not simulated); SQP the full
 //! problem, whose objective it differentiates just outside the active boundary.
 //!
@@ -26,15 +27,19 @@ pub struct AfsOptimisationSettings {
     pub extra_starts: usize,
     /// Seed of the starts and of each start's search hypercube (seed + 1 + start index).
     pub seed: u64,
-    /// Pattern search of each start (its `seed` is set per start).
+    /// Pattern search of each start (its `seed` is set per start); `min_mesh` is the final
+    /// mesh of the best start.
     pub pattern: PatternSearchOptions,
+    /// Mesh below which a start's search stops (screening); the best start then continues
+    /// to `pattern.min_mesh`. Equal to `pattern.min_mesh`: every start runs to the end.
+    pub screen_min_mesh: f64,
     /// SQP from the best pattern-search point.
     pub sqp: SqpOptions,
 }
 
 impl Default for AfsOptimisationSettings {
-    /// 4 extra starts; pattern search from mesh 0.25 to 1/512 with a 75-point (15 n)
-    /// search hypercube; SQP with central differences at a unit step of 1e-2 (the noise
+    /// 4 extra starts; pattern search from mesh 0.25 with a 75-point (15 n) search
+    /// hypercube, every start to mesh 1/32, the best on to 1/512; SQP with central differences at a unit step of 1e-2 (the noise
     /// of F is about 2e-5 at rtol 1e-8, docs/optimisation.md), at most 40 calls.
     fn default() -> Self {
         Self {
@@ -47,6 +52,7 @@ impl Default for AfsOptimisationSettings {
                 max_evaluations: 2000,
                 ..PatternSearchOptions::default()
             },
+            screen_min_mesh: 1.0 / 32.0,
             sqp: SqpOptions {
                 fd_step: 1e-2,
                 central: true,
@@ -59,13 +65,16 @@ impl Default for AfsOptimisationSettings {
     }
 }
 
-/// A resumable run: finished starts, the search in progress, the SQP log.
+/// A resumable run: screened starts, the screening search in progress, the refinement of
+/// the best start, the SQP log.
 #[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
 pub struct AfsRunState {
-    /// Pattern searches of the finished starts, in start order.
+    /// Pattern searches of the screened starts, in start order.
     pub finished: Vec<PatternSearchState>,
-    /// The pattern search in progress.
+    /// The screening search in progress.
     pub current: Option<PatternSearchState>,
+    /// The refinement of the best start (finished once its `stop` is set).
+    pub refined: Option<PatternSearchState>,
     /// SQP evaluations so far.
     pub sqp_log: Vec<LoggedEvaluation>,
 }
@@ -77,9 +86,9 @@ pub struct StartOutcome {
     pub start: AfsDesign,
     /// The design the pattern search ended at.
     pub end: AfsDesign,
-    /// Its F (`null` in JSON if no feasible point was found).
+    /// Its F at the end of the screening (`null` in JSON if no feasible point was found).
     pub f: Option<f64>,
-    /// Evaluations of this start (search step, polls and the start point).
+    /// Evaluations of this start's screening (search step, polls and the start point).
     pub evaluations: usize,
     /// Pattern-search iterations.
     pub iterations: usize,
@@ -98,11 +107,11 @@ pub struct AfsOptimum {
     pub sqp_improved: bool,
     /// SLSQP's termination status.
     pub sqp_status: String,
-    /// Evaluations: pattern search (all starts) and SQP.
+    /// Pattern-search evaluations (screening of all starts and refinement of the best).
     pub evaluations_ps: usize,
     /// SQP evaluations.
     pub evaluations_sqp: usize,
-    /// Spread (max - min) of F over the starts that ended feasible.
+    /// Spread (max - min) of F over the screened starts that ended feasible.
     pub start_spread_f: f64,
 }
 
@@ -158,10 +167,22 @@ pub fn optimise(
             reason: "the checkpoint holds more starts than these settings".into(),
         });
     }
+    if !(s.screen_min_mesh >= s.pattern.min_mesh && s.screen_min_mesh < s.pattern.initial_mesh) {
+        return Err(DesignError::Invalid {
+            field: "screen_min_mesh",
+            value: s.screen_min_mesh,
+            reason: "must be in [pattern.min_mesh, pattern.initial_mesh)",
+        });
+    }
+    let ck_err = |e: String| DesignError::Shape {
+        field: "checkpoint",
+        reason: e,
+    };
     while run.finished.len() < starts.len() {
         let i = run.finished.len();
         let o = PatternSearchOptions {
             seed: s.seed.wrapping_add(1 + i as u64),
+            min_mesh: s.screen_min_mesh,
             ..s.pattern
         };
         let ps = PatternSearch::new(&screened, o).map_err(opt_err)?;
@@ -171,8 +192,7 @@ pub fn optimise(
         };
         let mut snapshot = AfsRunState {
             finished: run.finished.clone(),
-            current: None,
-            sqp_log: Vec::new(),
+            ..AfsRunState::default()
         };
         let end = ps
             .run(state, progress, &mut |st| {
@@ -181,22 +201,40 @@ pub fn optimise(
             })
             .map_err(opt_err)?;
         run.finished.push(end);
-        checkpoint(&run).map_err(|e| DesignError::Shape {
-            field: "checkpoint",
-            reason: e,
-        })?;
+        checkpoint(&run).map_err(ck_err)?;
     }
     let best = (0..run.finished.len())
         .min_by(|&a, &b| run.finished[a].eval.deb_cmp(&run.finished[b].eval))
         .unwrap_or(0);
-    let ps_x = run.finished[best].x.clone();
-    let finished = run.finished.clone();
+    // Refinement of the best start: the same search continued to the fine mesh.
+    let refine = PatternSearch::new(&screened, s.pattern).map_err(opt_err)?;
+    let mut state = run.refined.take().unwrap_or_else(|| {
+        let mut st = run.finished[best].clone();
+        st.stop = None;
+        st
+    });
+    if state.stop.is_none() {
+        let mut snapshot = AfsRunState {
+            finished: run.finished.clone(),
+            ..AfsRunState::default()
+        };
+        state = refine
+            .run(state, progress, &mut |st| {
+                snapshot.refined = Some(st.clone());
+                checkpoint(&snapshot)
+            })
+            .map_err(opt_err)?;
+    }
+    let screened_evals = run.finished[best].evaluations;
+    let refine_evals = state.evaluations - screened_evals;
+    let ps_x = state.x.clone();
+    run.refined = Some(state);
+    let frozen = run.clone();
     let log = std::mem::take(&mut run.sqp_log);
     let r = sqp(problem, &ps_x, &s.sqp, log, progress, &mut |log| {
         checkpoint(&AfsRunState {
-            finished: finished.clone(),
-            current: None,
             sqp_log: log.to_vec(),
+            ..frozen.clone()
         })
     })
     .map_err(opt_err)?;
@@ -219,7 +257,7 @@ pub fn optimise(
     let spread =
         fs.iter().fold(f64::MIN, |a, b| a.max(*b)) - fs.iter().fold(f64::MAX, |a, b| a.min(*b));
     Ok(AfsOptimum {
-        evaluations_ps: outcomes.iter().map(|o| o.evaluations).sum(),
+        evaluations_ps: outcomes.iter().map(|o| o.evaluations).sum::<usize>() + refine_evals,
         evaluations_sqp: r.evaluations,
         start_spread_f: if fs.is_empty() { 0.0 } else { spread },
         starts: outcomes,
