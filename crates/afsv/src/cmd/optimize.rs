@@ -467,6 +467,15 @@ fn to_text(a: &AfsArgs, current: &DesignEvaluation, runs: &[RunOutcome]) -> Stri
                 sq.ratios.get(m)
             );
         }
+        s += "  V of Eq 4.8 (L/L_0, omega_0/omega, zeta_0/zeta, Gamma_0/Gamma, OS/OS_0, psi_0/psi)\n";
+        for (name, e) in [("PS", ps), ("PS/SQP", sq)] {
+            let v: Vec<String> = e
+                .objective_vector
+                .iter()
+                .map(|v| format!("{v:.3}"))
+                .collect();
+            s += &format!("  {:<22} {}\n", name, v.join(" "));
+        }
         s += &format!(
             "  {:<22} {:>10.3} {:>10.4} {:>10.4}\n",
             "F = W.V (Eq 4.8)", current.f, ps.f, sq.f
