@@ -10,6 +10,66 @@ use serde::Serialize;
 
 const DEG: f64 = std::f64::consts::PI / 180.0;
 
+/// One entry of the chapter-4 design vector chi, by name (Table 4.2's rows, in order).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum AfsVariable {
+    /// A_0, angle between the strut mounts at zero articulation.
+    A0,
+    /// l_1, front mount distance from the joint.
+    L1,
+    /// l_2, rear mount distance from the joint.
+    L2,
+    /// a_v, valve flow gain.
+    ValveAv,
+    /// B_eff, effective bulk modulus.
+    BulkModulus,
+}
+
+impl AfsVariable {
+    /// The five variables in Table 4.2's order.
+    pub const ALL: [AfsVariable; 5] = [
+        AfsVariable::A0,
+        AfsVariable::L1,
+        AfsVariable::L2,
+        AfsVariable::ValveAv,
+        AfsVariable::BulkModulus,
+    ];
+
+    /// Field name of the SI value in [`AfsDesign`] (`a0_rad`, ...).
+    pub fn name(self) -> &'static str {
+        match self {
+            AfsVariable::A0 => "a0_rad",
+            AfsVariable::L1 => "l1_m",
+            AfsVariable::L2 => "l2_m",
+            AfsVariable::ValveAv => "valve_av",
+            AfsVariable::BulkModulus => "bulk_modulus_pa",
+        }
+    }
+
+    /// Symbol and unit of Table 4.2 (`A_0 (deg)`, ...; a_v in the table unit, L/min per
+    /// bar per unit opening, docs/afs-hydraulics.md).
+    pub fn table_label(self) -> &'static str {
+        match self {
+            AfsVariable::A0 => "A_0 (deg)",
+            AfsVariable::L1 => "l_1 (m)",
+            AfsVariable::L2 => "l_2 (m)",
+            AfsVariable::ValveAv => "a_v (L/min/bar)",
+            AfsVariable::BulkModulus => "B_eff (GPa)",
+        }
+    }
+
+    /// SI value per Table 4.2 unit (rad per deg, 1, 1, SI per table unit, Pa per GPa).
+    pub fn table_unit(self) -> f64 {
+        match self {
+            AfsVariable::A0 => DEG,
+            AfsVariable::L1 | AfsVariable::L2 => 1.0,
+            AfsVariable::ValveAv => VALVE_AV_TABLE_UNIT,
+            AfsVariable::BulkModulus => 1e9,
+        }
+    }
+}
+
 /// One chapter-4 design chi (SI units, as in [`AfsParams`]).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct AfsDesign {
@@ -28,6 +88,29 @@ pub struct AfsDesign {
 impl AfsDesign {
     /// Names of the entries of [`AfsDesign::to_vector`], in Table 4.2's order.
     pub const NAMES: [&'static str; 5] = ["a0_rad", "l1_m", "l2_m", "valve_av", "bulk_modulus_pa"];
+
+    /// The SI value of variable `v`.
+    pub fn get(&self, v: AfsVariable) -> f64 {
+        match v {
+            AfsVariable::A0 => self.a0_rad,
+            AfsVariable::L1 => self.l1_m,
+            AfsVariable::L2 => self.l2_m,
+            AfsVariable::ValveAv => self.valve_av,
+            AfsVariable::BulkModulus => self.bulk_modulus_pa,
+        }
+    }
+
+    /// Sets variable `v` to the SI value `value` (unchecked; [`AfsDesign::apply`] and
+    /// [`AfsDesign::from_vector`] validate).
+    pub fn set(&mut self, v: AfsVariable, value: f64) {
+        match v {
+            AfsVariable::A0 => self.a0_rad = value,
+            AfsVariable::L1 => self.l1_m = value,
+            AfsVariable::L2 => self.l2_m = value,
+            AfsVariable::ValveAv => self.valve_av = value,
+            AfsVariable::BulkModulus => self.bulk_modulus_pa = value,
+        }
+    }
 
     /// A design with every entry finite and positive, A_0 below 180 deg.
     pub fn new(
@@ -98,29 +181,21 @@ impl AfsDesign {
 
     /// The entries in Table 4.2's units: A_0 (deg), l_1, l_2 (m), a_v (table unit), B_eff (GPa).
     pub fn table_units(&self) -> [f64; 5] {
-        [
-            self.a0_rad / DEG,
-            self.l1_m,
-            self.l2_m,
-            self.valve_av / VALVE_AV_TABLE_UNIT,
-            self.bulk_modulus_pa / 1e9,
-        ]
+        AfsVariable::ALL.map(|v| self.get(v) / v.table_unit())
     }
 
     /// chi as a vector in SI units, in the order of [`AfsDesign::NAMES`].
     pub fn to_vector(&self) -> [f64; 5] {
-        [
-            self.a0_rad,
-            self.l1_m,
-            self.l2_m,
-            self.valve_av,
-            self.bulk_modulus_pa,
-        ]
+        AfsVariable::ALL.map(|v| self.get(v))
     }
 
     /// [`AfsDesign::new`] from a vector in the order of [`AfsDesign::NAMES`].
     pub fn from_vector(x: [f64; 5]) -> Result<Self, DesignError> {
-        Self::new(x[0], x[1], x[2], x[3], x[4])
+        let mut d = Self::of(&AfsParams::nominal());
+        for (v, value) in AfsVariable::ALL.into_iter().zip(x) {
+            d.set(v, value);
+        }
+        Self::new(d.a0_rad, d.l1_m, d.l2_m, d.valve_av, d.bulk_modulus_pa)
     }
 
     /// Initial strut length l_0 = sqrt(l_1^2 + l_2^2 - 2 l_1 l_2 cos A_0) (m), Eq 3.7: the
@@ -142,12 +217,11 @@ pub struct AfsDesignBounds {
 impl AfsDesignBounds {
     /// Bounds with `lower < upper` in every entry.
     pub fn new(lower: AfsDesign, upper: AfsDesign) -> Result<Self, DesignError> {
-        let (lo, hi) = (lower.to_vector(), upper.to_vector());
-        for i in 0..5 {
-            if lo[i] >= hi[i] {
+        for v in AfsVariable::ALL {
+            if lower.get(v) >= upper.get(v) {
                 return Err(DesignError::Invalid {
-                    field: AfsDesign::NAMES[i],
-                    value: lo[i],
+                    field: v.name(),
+                    value: lower.get(v),
                     reason: "lower bound must be below the upper bound",
                 });
             }
@@ -173,23 +247,21 @@ impl AfsDesignBounds {
     }
 
     fn table(a0_deg: f64, l1: f64, l2: f64, a_v: f64, b_gpa: f64) -> AfsDesign {
-        AfsDesign {
-            a0_rad: a0_deg * DEG,
-            l1_m: l1,
-            l2_m: l2,
-            valve_av: a_v * VALVE_AV_TABLE_UNIT,
-            bulk_modulus_pa: b_gpa * 1e9,
+        let mut d = AfsDesign::of(&AfsParams::nominal());
+        for (v, value) in AfsVariable::ALL
+            .into_iter()
+            .zip([a0_deg, l1, l2, a_v, b_gpa])
+        {
+            d.set(v, value * v.table_unit());
         }
+        d
     }
 
     /// Whether `d` lies inside the bounds (bounds included).
     pub fn contains(&self, d: &AfsDesign) -> bool {
-        let (lo, hi, x) = (
-            self.lower.to_vector(),
-            self.upper.to_vector(),
-            d.to_vector(),
-        );
-        (0..5).all(|i| lo[i] <= x[i] && x[i] <= hi[i])
+        AfsVariable::ALL
+            .iter()
+            .all(|&v| self.lower.get(v) <= d.get(v) && d.get(v) <= self.upper.get(v))
     }
 }
 

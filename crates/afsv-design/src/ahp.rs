@@ -101,6 +101,52 @@ impl AhpHierarchy {
         })
     }
 
+    /// The chapter-4 hierarchy as printed in section 4.3.4: M2 of Eq 4.11 over (yaw
+    /// oscillation/stability, steering power efficiency, manoeuvrability), the three
+    /// matrices of Eq 4.14 over (L, omega, zeta), (zeta, Gamma), (Gamma, OS, psi), and
+    /// W_a = diag(3/6, 2/6, 3/6) of Eq 4.16. Its composite weights are those of Eq 4.17.
+    pub fn chapter4() -> Self {
+        use Measure::*;
+        let c = |name: &str, matrix: Vec<Vec<f64>>, measures: Vec<Measure>| GoalComparison {
+            name: name.to_string(),
+            matrix,
+            measures,
+        };
+        Self {
+            goal_matrix: vec![
+                vec![1.0, 3.0, 2.0],
+                vec![1.0 / 3.0, 1.0, 0.5],
+                vec![0.5, 2.0, 1.0],
+            ],
+            comparisons: vec![
+                c(
+                    "M3/A(1)",
+                    vec![
+                        vec![1.0, 0.2, 1.0],
+                        vec![5.0, 1.0, 1.59],
+                        vec![1.0, 0.63, 1.0],
+                    ],
+                    vec![StrutLength, YawFrequency, DampingRatio],
+                ),
+                c(
+                    "M3/A(2)",
+                    vec![vec![1.0, 1.76], vec![0.57, 1.0]],
+                    vec![DampingRatio, SteeringGain],
+                ),
+                c(
+                    "M3/A(3)",
+                    vec![
+                        vec![1.0, 1.25, 1.0],
+                        vec![0.8, 1.0, 1.3],
+                        vec![1.0, 0.77, 1.0],
+                    ],
+                    vec![SteeringGain, Overshoot, ResponseRate],
+                ),
+            ],
+            shares: vec![0.5, 1.0 / 3.0, 0.5],
+        }
+    }
+
     /// The goals' comparisons of their related measures, in M2's order.
     pub fn comparisons(&self) -> &[GoalComparison] {
         &self.comparisons
@@ -163,6 +209,16 @@ fn check_matrix(m: &[Vec<f64>], n: usize) -> Result<(), DesignError> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn chapter4_hierarchy_gives_the_weights_of_eq_4_17() {
+        // Exact weights of the printed matrices (reading notes, section 3.5).
+        let w = AhpHierarchy::chapter4().weights().unwrap().composite;
+        let want = [0.0971, 0.3313, 0.2158, 0.1543, 0.1058, 0.0957];
+        for (a, b) in w.iter().zip(want) {
+            assert!((a - b).abs() < 6e-5, "{w:?}");
+        }
+    }
     use Measure::*;
 
     /// A consistent 3 x 3 matrix: weights 4/7, 2/7, 1/7.

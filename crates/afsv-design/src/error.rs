@@ -33,6 +33,9 @@ pub enum DesignError {
     /// The AFS parameter set a design produced is not valid.
     #[error("design applied to the AFS parameters: {0}")]
     Afs(#[from] afs_hydraulics::AfsError),
+    /// A design could not be simulated (the measures could not be computed).
+    #[error("simulation: {0}")]
+    Simulation(String),
     /// The strut parameter set a design produced is not valid.
     #[error("design applied to the strut parameters: {0}")]
     Hps(#[from] hps_emulsion::HpsError),

@@ -6,6 +6,11 @@
 //! - [`ahp`]: the AHP weights W (Eqs 4.11-4.17) from the pairwise-comparison matrices;
 //! - [`afs_design`]: the chapter-4 design vector [A_0, l_1, l_2, a_v, B_eff] (Table 4.2)
 //!   applied to the AFS parameters, its bounds, and the A_0 of the longest steering arm;
+//! - [`afs_problem`]: the chapter-4 optimisation problem (Eq 4.8 over chi with Eq 4.10,
+//!   a minimum steering arm and the optional Eq 4.9 as constraints) for the `optimize`
+//!   solvers;
+//! - [`afs_optimum`]: the solver sequence of section 4.3.5 (multi-start pattern search
+//!   with a Latin-hypercube search step, then SQP), resumable;
 //! - [`hps_design`]: the chapter-6 design vector [A_hc, A_v, A_b] (Table 6.5) applied to
 //!   a strut parameter set;
 //! - [`sweep`]: the optimum of a one-variable design sweep (parabolic peak).
@@ -14,6 +19,8 @@
 //! `docs/design.md` maps each equation to its code.
 
 pub mod afs_design;
+pub mod afs_optimum;
+pub mod afs_problem;
 pub mod ahp;
 pub mod error;
 pub mod hps_design;
@@ -21,7 +28,11 @@ pub mod measures;
 pub mod objective;
 pub mod sweep;
 
-pub use afs_design::{a0_of_longest_initial_arm, AfsDesign, AfsDesignBounds};
+pub use afs_design::{a0_of_longest_initial_arm, AfsDesign, AfsDesignBounds, AfsVariable};
+pub use afs_optimum::{optimise, AfsOptimisationSettings, AfsOptimum, AfsRunState};
+pub use afs_problem::{
+    AfsConstraint, AfsProblem, AfsProblemSpec, DesignEvaluation, InterferenceGeometry,
+};
 pub use ahp::{AhpHierarchy, AhpLevels, GoalComparison};
 pub use error::DesignError;
 pub use hps_design::HpsDesign;

@@ -48,6 +48,9 @@ enum Command {
     /// Parameter sets as JSON: `dump` the nominal set, `check` a file.
     #[command(subcommand)]
     Params(cmd::params::Command),
+    /// Design optimisation: `afs` (Chapter 4 frame steering, pattern search + SQP).
+    #[command(subcommand)]
+    Optimize(cmd::optimize::Command),
 }
 
 fn main() -> ExitCode {
@@ -93,6 +96,7 @@ fn main() -> ExitCode {
         Command::Tire(c) => cmd::tire::run(c),
         Command::Yaw(c) => cmd::yaw::run(c),
         Command::Params(c) => cmd::params::run(c),
+        Command::Optimize(c) => cmd::optimize::run(c),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

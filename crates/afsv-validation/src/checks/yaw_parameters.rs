@@ -119,13 +119,6 @@ fn design_rows(ctx: &mut Ctx) {
                 val,
                 "current design = AfsParams::nominal",
             );
-            for k in ["ps", "ps_sqp"] {
-                ctx.not_reproducible(
-                    &format!("{t}_opt_{name}"),
-                    Some(k),
-                    "optimum location needs the chapter-4 PS / PS-SQP optimisation, not implemented",
-                );
-            }
         }
     }
 }

@@ -7,6 +7,7 @@ pub mod discover;
 pub mod evaluate;
 pub mod hps;
 pub mod measures;
+pub mod optimize;
 pub mod params;
 pub mod terrain;
 pub mod tire;

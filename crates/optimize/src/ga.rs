@@ -1,0 +1,367 @@
+//! A real-coded genetic algorithm on the unit-scaled box (Deb 2000; Deb & Agrawal 1995):
+//! binary tournaments under Deb's feasibility rules (no penalty parameter), simulated
+//! binary crossover (SBX) and polynomial mutation, both bounded, and elitist (mu + lambda)
+//! survival: parents and children are ranked together by Deb's rules and the best
+//! `population` survive, so the best point never gets lost.
+//!
+//! All random numbers are drawn in the calling thread from one seeded stream whose position
+//! is part of [`GaState`]; only the evaluations run in parallel. A run therefore gives the
+//! same bytes on any number of threads, and one resumed from a saved state continues
+//! exactly as an uninterrupted one.
+
+use crate::batch::{evaluate_batch, Progress};
+use crate::lhs::{latin_hypercube, LhsOptions};
+use crate::problem::{require, ConstrainedProblem, Evaluation, OptimizeError};
+use crate::rng::{Stream, StreamState};
+use serde::{Deserialize, Serialize};
+
+/// Largest population (bounds the allocation of a generation).
+pub const MAX_POPULATION: usize = 100_000;
+
+/// Settings of the genetic algorithm.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub struct GaOptions {
+    /// Individuals per generation (even, 4 ..= [`MAX_POPULATION`]).
+    pub population: usize,
+    /// Generations after the initial one.
+    pub generations: usize,
+    /// Probability that a pair of parents is crossed.
+    pub crossover_probability: f64,
+    /// SBX distribution index (larger: children closer to the parents).
+    pub eta_crossover: f64,
+    /// Probability that one variable of a child mutates (`None`: 1 / n).
+    pub mutation_probability: Option<f64>,
+    /// Polynomial-mutation distribution index.
+    pub eta_mutation: f64,
+    /// Seed of the random stream.
+    pub seed: u64,
+}
+
+impl Default for GaOptions {
+    fn default() -> Self {
+        Self {
+            population: 40,
+            generations: 50,
+            crossover_probability: 0.9,
+            eta_crossover: 15.0,
+            mutation_probability: None,
+            eta_mutation: 20.0,
+            seed: 0,
+        }
+    }
+}
+
+impl GaOptions {
+    /// Checks every setting.
+    pub fn validate(&self) -> Result<(), OptimizeError> {
+        require(
+            (4..=MAX_POPULATION).contains(&self.population) && self.population % 2 == 0,
+            "population",
+            "even, 4 ..= 100000",
+        )?;
+        require(
+            (0.0..=1.0).contains(&self.crossover_probability),
+            "crossover_probability",
+            "in [0, 1]",
+        )?;
+        require(
+            self.eta_crossover.is_finite() && self.eta_crossover >= 0.0,
+            "eta_crossover",
+            "finite and >= 0",
+        )?;
+        require(
+            self.eta_mutation.is_finite() && self.eta_mutation >= 0.0,
+            "eta_mutation",
+            "finite and >= 0",
+        )?;
+        if let Some(p) = self.mutation_probability {
+            require(
+                (0.0..=1.0).contains(&p),
+                "mutation_probability",
+                "in [0, 1]",
+            )?;
+        }
+        Ok(())
+    }
+}
+
+/// One member of a population.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct Individual {
+    /// Unit-cube coordinates.
+    pub u: Vec<f64>,
+    /// The problem's units.
+    pub x: Vec<f64>,
+    /// Evaluation.
+    pub eval: Evaluation,
+}
+
+/// The whole state of a GA between generations.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct GaState {
+    /// Completed generations (0: the initial population).
+    pub generation: usize,
+    /// The population, best first by Deb's rules.
+    pub population: Vec<Individual>,
+    /// Position of the random stream.
+    pub rng: StreamState,
+    /// Evaluations made so far.
+    pub evaluations: usize,
+}
+
+impl GaState {
+    /// The best individual.
+    pub fn best(&self) -> &Individual {
+        &self.population[0]
+    }
+}
+
+/// A GA of one problem with fixed settings.
+pub struct GeneticAlgorithm<'a, P: ConstrainedProblem + ?Sized> {
+    problem: &'a P,
+    options: GaOptions,
+}
+
+impl<'a, P: ConstrainedProblem + ?Sized> GeneticAlgorithm<'a, P> {
+    /// A GA of `problem` with validated `options`.
+    pub fn new(problem: &'a P, options: GaOptions) -> Result<Self, OptimizeError> {
+        options.validate()?;
+        Ok(Self { problem, options })
+    }
+
+    /// The initial population: the `seeds` (problem units, projected onto the bounds; at
+    /// most `population`) and a Latin hypercube for the rest, evaluated and ranked.
+    pub fn start(&self, seeds: &[Vec<f64>]) -> Result<GaState, OptimizeError> {
+        let b = self.problem.bounds();
+        let n = b.dim();
+        require(
+            seeds.len() <= self.options.population,
+            "seeds",
+            "at most `population`",
+        )?;
+        require(
+            seeds
+                .iter()
+                .all(|s| s.len() == n && s.iter().all(|v| v.is_finite())),
+            "seeds",
+            "finite, one value per variable",
+        )?;
+        let mut units: Vec<Vec<f64>> = seeds
+            .iter()
+            .map(|s| b.to_unit(s).iter().map(|v| v.clamp(0.0, 1.0)).collect())
+            .collect();
+        let rest = self.options.population - units.len();
+        if rest > 0 {
+            units.extend(latin_hypercube(&LhsOptions {
+                points: rest,
+                dim: n,
+                seed: self.options.seed,
+                maximin_candidates: 1,
+            })?);
+        }
+        let population = self.evaluate(units);
+        let evaluations = population.len();
+        let mut s = GaState {
+            generation: 0,
+            population,
+            // The hypercube used `seed`; the operators draw from the next stream.
+            rng: Stream::new(self.options.seed.wrapping_add(1)).state(),
+            evaluations,
+        };
+        rank(&mut s.population);
+        Ok(s)
+    }
+
+    /// Checks that a saved state belongs to this problem and these settings.
+    pub fn check_state(&self, s: &GaState) -> Result<(), OptimizeError> {
+        let (n, nc) = (self.problem.bounds().dim(), self.problem.n_constraints());
+        let ok = s.population.len() == self.options.population
+            && s.population
+                .iter()
+                .all(|i| i.u.len() == n && i.eval.constraints.len() == nc);
+        if ok {
+            Ok(())
+        } else {
+            Err(OptimizeError::Checkpoint(
+                "GA state of another population size, dimension or constraint count".into(),
+            ))
+        }
+    }
+
+    /// One generation: `population` children from tournament-selected parents by SBX and
+    /// polynomial mutation, evaluated in parallel, then (mu + lambda) survival.
+    pub fn step(&self, s: &mut GaState) {
+        let mut rng = Stream::restore(s.rng);
+        let mut children = Vec::with_capacity(self.options.population);
+        while children.len() < self.options.population {
+            let a = tournament(&s.population, &mut rng);
+            let b = tournament(&s.population, &mut rng);
+            let (mut c1, mut c2) = (a.u.clone(), b.u.clone());
+            if rng.uniform() < self.options.crossover_probability {
+                sbx(&mut c1, &mut c2, self.options.eta_crossover, &mut rng);
+            }
+            for c in [&mut c1, &mut c2] {
+                self.mutate(c, &mut rng);
+            }
+            children.push(c1);
+            children.push(c2);
+        }
+        s.rng = rng.state();
+        let children = self.evaluate(children);
+        s.evaluations += children.len();
+        s.population.extend(children);
+        rank(&mut s.population);
+        s.population.truncate(self.options.population);
+        s.generation += 1;
+    }
+
+    /// Runs to `generations`, calling `checkpoint` after every generation.
+    pub fn run(
+        &self,
+        mut s: GaState,
+        progress: &dyn Progress,
+        checkpoint: &mut dyn FnMut(&GaState) -> Result<(), String>,
+    ) -> Result<GaState, OptimizeError> {
+        self.check_state(&s)?;
+        while s.generation < self.options.generations {
+            self.step(&mut s);
+            progress.report(
+                "genetic algorithm",
+                s.generation,
+                self.options.generations,
+                s.best().eval.barrier_value(),
+            );
+            checkpoint(&s).map_err(|e| OptimizeError::Invalid {
+                field: "checkpoint",
+                reason: e,
+            })?;
+        }
+        Ok(s)
+    }
+
+    fn evaluate(&self, units: Vec<Vec<f64>>) -> Vec<Individual> {
+        let b = self.problem.bounds();
+        let xs: Vec<Vec<f64>> = units.iter().map(|u| b.from_unit(u)).collect();
+        let evals = evaluate_batch(self.problem, &xs);
+        units
+            .into_iter()
+            .zip(xs)
+            .zip(evals)
+            .map(|((u, x), eval)| Individual { u, x, eval })
+            .collect()
+    }
+
+    /// Bounded polynomial mutation of each variable with the mutation probability.
+    fn mutate(&self, u: &mut [f64], rng: &mut Stream) {
+        let p = self
+            .options
+            .mutation_probability
+            .unwrap_or(1.0 / u.len() as f64);
+        let pow = 1.0 / (self.options.eta_mutation + 1.0);
+        for y in u.iter_mut() {
+            if rng.uniform() >= p {
+                continue;
+            }
+            let r = rng.uniform();
+            let dq = if r < 0.5 {
+                let xy = 1.0 - *y;
+                let val = 2.0 * r + (1.0 - 2.0 * r) * xy.powf(self.options.eta_mutation + 1.0);
+                val.powf(pow) - 1.0
+            } else {
+                let xy = *y;
+                let val =
+                    2.0 * (1.0 - r) + 2.0 * (r - 0.5) * xy.powf(self.options.eta_mutation + 1.0);
+                1.0 - val.powf(pow)
+            };
+            *y = (*y + dq).clamp(0.0, 1.0);
+        }
+    }
+}
+
+/// Stable sort by Deb's rules (best first).
+fn rank(pop: &mut [Individual]) {
+    pop.sort_by(|a, b| a.eval.deb_cmp(&b.eval));
+}
+
+/// Binary tournament under Deb's rules (the first drawn wins a tie).
+fn tournament<'p>(pop: &'p [Individual], rng: &mut Stream) -> &'p Individual {
+    let a = &pop[rng.index(pop.len())];
+    let b = &pop[rng.index(pop.len())];
+    if b.eval.deb_cmp(&a.eval).is_lt() {
+        b
+    } else {
+        a
+    }
+}
+
+/// Bounded simulated binary crossover on [0, 1] (Deb & Agrawal 1995), each variable
+/// crossed with probability 1/2.
+fn sbx(c1: &mut [f64], c2: &mut [f64], eta: f64, rng: &mut Stream) {
+    let betaq = |beta: f64, r: f64| {
+        let alpha = 2.0 - beta.powf(-(eta + 1.0));
+        if r <= 1.0 / alpha {
+            (r * alpha).powf(1.0 / (eta + 1.0))
+        } else {
+            (1.0 / (2.0 - r * alpha)).powf(1.0 / (eta + 1.0))
+        }
+    };
+    for (a, b) in c1.iter_mut().zip(c2.iter_mut()) {
+        if rng.uniform() >= 0.5 || (*a - *b).abs() < 1e-14 {
+            continue;
+        }
+        let (y1, y2) = (a.min(*b), a.max(*b));
+        let r = rng.uniform();
+        let lo = 0.5 * ((y1 + y2) - betaq(1.0 + 2.0 * y1 / (y2 - y1), r) * (y2 - y1));
+        let hi = 0.5 * ((y1 + y2) + betaq(1.0 + 2.0 * (1.0 - y2) / (y2 - y1), r) * (y2 - y1));
+        let (lo, hi) = (lo.clamp(0.0, 1.0), hi.clamp(0.0, 1.0));
+        if rng.uniform() < 0.5 {
+            (*a, *b) = (hi, lo);
+        } else {
+            (*a, *b) = (lo, hi);
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn operators_stay_in_the_unit_box_and_keep_the_mean_of_sbx() {
+        let mut rng = Stream::new(3);
+        let (mut sum, mut count) = (0.0, 0);
+        for _ in 0..2000 {
+            let (mut a, mut b) = (vec![0.3, 0.9], vec![0.5, 0.95]);
+            sbx(&mut a, &mut b, 15.0, &mut rng);
+            for v in a.iter().chain(&b) {
+                assert!((0.0..=1.0).contains(v));
+            }
+            sum += a[0] + b[0];
+            count += 1;
+        }
+        // SBX is symmetric about the parents' mean away from the bounds.
+        assert!(
+            (sum / count as f64 - 0.8).abs() < 0.01,
+            "{}",
+            sum / count as f64
+        );
+    }
+
+    #[test]
+    fn invalid_settings_name_the_field() {
+        let e = GaOptions {
+            population: 5,
+            ..GaOptions::default()
+        }
+        .validate()
+        .unwrap_err();
+        assert!(e.to_string().contains("population"), "{e}");
+        let e = GaOptions {
+            mutation_probability: Some(1.5),
+            ..GaOptions::default()
+        }
+        .validate()
+        .unwrap_err();
+        assert!(e.to_string().contains("mutation_probability"), "{e}");
+    }
+}

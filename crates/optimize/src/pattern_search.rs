@@ -1,0 +1,282 @@
+//! Generalized pattern search (Torczon 1997; Audet & Dennis 2003) on the unit-scaled box:
+//! a complete poll of the 2n directions `±e_i` times the mesh size, the mesh doubled after a
+//! successful iteration and halved after a failed one, an optional search step (one Latin
+//! hypercube, evaluated at the first iteration), trial points projected onto the bounds, and
+//! nonlinear constraints as an extreme barrier (an infeasible or failed point counts as
+//! [`crate::BARRIER`]; from an infeasible start the search first walks to feasibility by
+//! Deb's rules, i.e. by falling total violation).
+//!
+//! The state after each iteration ([`PatternSearchState`]) holds everything the next
+//! iterations depend on; a run resumed from it continues exactly as an uninterrupted one.
+
+use crate::batch::{evaluate_batch, Progress};
+use crate::lhs::{latin_hypercube, LhsOptions};
+use crate::problem::{require, ConstrainedProblem, Evaluation, OptimizeError};
+use serde::{Deserialize, Serialize};
+
+/// Settings of the pattern search (mesh sizes in unit-cube coordinates).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub struct PatternSearchOptions {
+    /// Initial mesh size (0 < mesh <= `max_mesh`).
+    pub initial_mesh: f64,
+    /// Stop when the mesh falls below this.
+    pub min_mesh: f64,
+    /// Largest mesh size.
+    pub max_mesh: f64,
+    /// Mesh factor after a successful iteration (>= 1).
+    pub expansion: f64,
+    /// Mesh factor after a failed poll (in (0, 1)).
+    pub contraction: f64,
+    /// Stop when this many evaluations have been made (checked after each iteration).
+    pub max_evaluations: usize,
+    /// Points of the Latin hypercube of the search step (0: no search step).
+    pub search_points: usize,
+    /// Seed of that hypercube.
+    pub seed: u64,
+    /// Hypercubes drawn for its maximin criterion.
+    pub maximin_candidates: usize,
+}
+
+impl Default for PatternSearchOptions {
+    fn default() -> Self {
+        Self {
+            initial_mesh: 0.25,
+            min_mesh: 1e-4,
+            max_mesh: 1.0,
+            expansion: 2.0,
+            contraction: 0.5,
+            max_evaluations: 5000,
+            search_points: 0,
+            seed: 0,
+            maximin_candidates: 10,
+        }
+    }
+}
+
+impl PatternSearchOptions {
+    /// Checks every setting.
+    pub fn validate(&self) -> Result<(), OptimizeError> {
+        require(
+            self.max_mesh.is_finite() && self.max_mesh > 0.0,
+            "max_mesh",
+            "finite and > 0",
+        )?;
+        require(
+            self.initial_mesh > 0.0 && self.initial_mesh <= self.max_mesh,
+            "initial_mesh",
+            "in (0, max_mesh]",
+        )?;
+        require(
+            self.min_mesh > 0.0 && self.min_mesh < self.initial_mesh,
+            "min_mesh",
+            "in (0, initial_mesh)",
+        )?;
+        require(
+            self.expansion.is_finite() && self.expansion >= 1.0,
+            "expansion",
+            ">= 1",
+        )?;
+        require(
+            self.contraction > 0.0 && self.contraction < 1.0,
+            "contraction",
+            "in (0, 1)",
+        )?;
+        require(self.max_evaluations >= 1, "max_evaluations", ">= 1")?;
+        require(self.maximin_candidates >= 1, "maximin_candidates", ">= 1")
+    }
+}
+
+/// Why a pattern search stopped.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum PatternStop {
+    /// The mesh fell below `min_mesh`: the point is a mesh-local optimum.
+    MeshConverged,
+    /// `max_evaluations` was reached.
+    EvaluationLimit,
+}
+
+/// The whole state of a pattern search between iterations.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct PatternSearchState {
+    /// Incumbent in unit-cube coordinates.
+    pub u: Vec<f64>,
+    /// Incumbent in the problem's units.
+    pub x: Vec<f64>,
+    /// Its evaluation.
+    pub eval: Evaluation,
+    /// Current mesh size.
+    pub mesh: f64,
+    /// Completed iterations.
+    pub iteration: usize,
+    /// Evaluations made so far (the start point included).
+    pub evaluations: usize,
+    /// Set once the search has stopped.
+    pub stop: Option<PatternStop>,
+}
+
+impl PatternSearchState {
+    /// The incumbent's value under the extreme barrier.
+    pub fn value(&self) -> f64 {
+        self.eval.barrier_value()
+    }
+}
+
+/// A pattern search of one problem with fixed settings.
+pub struct PatternSearch<'a, P: ConstrainedProblem + ?Sized> {
+    problem: &'a P,
+    options: PatternSearchOptions,
+}
+
+impl<'a, P: ConstrainedProblem + ?Sized> PatternSearch<'a, P> {
+    /// A search of `problem` with validated `options`.
+    pub fn new(problem: &'a P, options: PatternSearchOptions) -> Result<Self, OptimizeError> {
+        options.validate()?;
+        Ok(Self { problem, options })
+    }
+
+    /// The state at `x0` (projected onto the bounds and evaluated once).
+    pub fn start(&self, x0: &[f64]) -> Result<PatternSearchState, OptimizeError> {
+        let b = self.problem.bounds();
+        require(x0.len() == b.dim(), "x0", "one value per variable")?;
+        require(x0.iter().all(|v| v.is_finite()), "x0", "finite")?;
+        let u: Vec<f64> = b.to_unit(x0).iter().map(|v| v.clamp(0.0, 1.0)).collect();
+        let x = b.from_unit(&u);
+        let eval = self.problem.evaluate(&x);
+        Ok(PatternSearchState {
+            u,
+            x,
+            eval,
+            mesh: self.options.initial_mesh,
+            iteration: 0,
+            evaluations: 1,
+            stop: None,
+        })
+    }
+
+    /// Checks that a saved state belongs to this problem.
+    pub fn check_state(&self, s: &PatternSearchState) -> Result<(), OptimizeError> {
+        let b = self.problem.bounds();
+        let ok = s.u.len() == b.dim()
+            && s.x.len() == b.dim()
+            && s.eval.constraints.len() == self.problem.n_constraints()
+            && s.mesh > 0.0
+            && s.u.iter().all(|u| (0.0..=1.0).contains(u));
+        if ok {
+            Ok(())
+        } else {
+            Err(OptimizeError::Checkpoint(
+                "pattern-search state of another dimension or constraint count".into(),
+            ))
+        }
+    }
+
+    /// One iteration: the search step at iteration 0 (if configured; a success skips the
+    /// poll), otherwise a complete poll; then the mesh update and the stopping tests.
+    pub fn step(&self, s: &mut PatternSearchState) -> Result<(), OptimizeError> {
+        if s.stop.is_some() {
+            return Ok(());
+        }
+        let searched = s.iteration == 0 && self.options.search_points > 0;
+        let success = if searched && self.search(s)? {
+            true
+        } else {
+            self.poll(s)
+        };
+        if success {
+            s.mesh = (s.mesh * self.options.expansion).min(self.options.max_mesh);
+        } else {
+            s.mesh *= self.options.contraction;
+        }
+        s.iteration += 1;
+        if s.mesh < self.options.min_mesh {
+            s.stop = Some(PatternStop::MeshConverged);
+        } else if s.evaluations >= self.options.max_evaluations {
+            s.stop = Some(PatternStop::EvaluationLimit);
+        }
+        Ok(())
+    }
+
+    /// Iterates until a stop, calling `checkpoint` after every iteration (a failing
+    /// checkpoint stops the run with its error).
+    pub fn run(
+        &self,
+        mut s: PatternSearchState,
+        progress: &dyn Progress,
+        checkpoint: &mut dyn FnMut(&PatternSearchState) -> Result<(), String>,
+    ) -> Result<PatternSearchState, OptimizeError> {
+        self.check_state(&s)?;
+        while s.stop.is_none() {
+            self.step(&mut s)?;
+            progress.report(
+                "pattern search",
+                s.evaluations,
+                self.options.max_evaluations,
+                s.value(),
+            );
+            checkpoint(&s).map_err(|e| OptimizeError::Invalid {
+                field: "checkpoint",
+                reason: e,
+            })?;
+        }
+        Ok(s)
+    }
+
+    /// The search step: one Latin hypercube; moves to its best point if that improves.
+    fn search(&self, s: &mut PatternSearchState) -> Result<bool, OptimizeError> {
+        let units = latin_hypercube(&LhsOptions {
+            points: self.options.search_points,
+            dim: s.u.len(),
+            seed: self.options.seed,
+            maximin_candidates: self.options.maximin_candidates,
+        })?;
+        Ok(self.try_points(s, units))
+    }
+
+    /// The complete poll of the 2n directions; moves to the best improving point.
+    fn poll(&self, s: &mut PatternSearchState) -> bool {
+        let mut units = Vec::with_capacity(2 * s.u.len());
+        for i in 0..s.u.len() {
+            for sign in [1.0, -1.0] {
+                let mut u = s.u.clone();
+                u[i] = (u[i] + sign * s.mesh).clamp(0.0, 1.0);
+                if u[i] != s.u[i] {
+                    units.push(u);
+                }
+            }
+        }
+        self.try_points(s, units)
+    }
+
+    /// Evaluates `units` in parallel and moves to the first best one if it beats the
+    /// incumbent: under the extreme barrier from a feasible incumbent; by Deb's rules (less
+    /// total violation) while the incumbent is still infeasible.
+    fn try_points(&self, s: &mut PatternSearchState, units: Vec<Vec<f64>>) -> bool {
+        let b = self.problem.bounds();
+        let xs: Vec<Vec<f64>> = units.iter().map(|u| b.from_unit(u)).collect();
+        let evals = evaluate_batch(self.problem, &xs);
+        s.evaluations += evals.len();
+        let feasible = s.eval.is_feasible();
+        let mut best: Option<usize> = None;
+        for (i, e) in evals.iter().enumerate() {
+            let incumbent = best.map_or(&s.eval, |j| &evals[j]);
+            let better = if feasible {
+                e.barrier_value() < incumbent.barrier_value()
+            } else {
+                e.deb_cmp(incumbent).is_lt()
+            };
+            if better {
+                best = Some(i);
+            }
+        }
+        match best {
+            Some(i) => {
+                s.u = units[i].clone();
+                s.x = xs[i].clone();
+                s.eval = evals[i].clone();
+                true
+            }
+            None => false,
+        }
+    }
+}

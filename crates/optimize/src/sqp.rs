@@ -1,0 +1,300 @@
+//! Sequential quadratic programming from a given point: the SLSQP method of Kraft (1988)
+//! from the `slsqp` crate (a pure-Rust translation of NLopt's implementation), on the
+//! unit-scaled box, with the gradients of the objective and of every constraint by finite
+//! differences (central where the step fits inside the box, one-sided at a bound), each
+//! gradient's 2n points evaluated in parallel.
+//!
+//! Every evaluation is kept in an ordered log with a cache keyed by the point's bits. SLSQP
+//! is deterministic, so a run resumed from a saved log replays the logged values (no
+//! evaluation is repeated) and continues exactly as an uninterrupted run.
+
+use crate::batch::{evaluate_batch, Progress};
+use crate::problem::{require, ConstrainedProblem, Evaluation, OptimizeError};
+use serde::{Deserialize, Serialize};
+use std::cell::RefCell;
+use std::collections::HashMap;
+
+/// Settings of [`sqp`].
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub struct SqpOptions {
+    /// Finite-difference step in unit-cube coordinates (> 0, < 0.5).
+    pub fd_step: f64,
+    /// Central differences (2n evaluations per gradient) rather than forward (n).
+    pub central: bool,
+    /// Largest number of SLSQP function calls (each gradient call costs 1 + n or 1 + 2n
+    /// evaluations).
+    pub max_calls: usize,
+    /// Stop when F changes by less than this relative amount.
+    pub ftol_rel: f64,
+    /// Stop when every unit coordinate moves by less than this.
+    pub xtol_abs: f64,
+    /// SLSQP sees each constraint as `c_j + margin <= 0`: it converges onto the boundary
+    /// up to round-off, and the margin keeps its end point feasible in exact terms.
+    pub constraint_margin: f64,
+}
+
+impl Default for SqpOptions {
+    fn default() -> Self {
+        Self {
+            fd_step: 1e-3,
+            central: true,
+            max_calls: 100,
+            ftol_rel: 1e-8,
+            xtol_abs: 1e-6,
+            constraint_margin: 1e-9,
+        }
+    }
+}
+
+/// One logged evaluation (unit-cube point and its result).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct LoggedEvaluation {
+    /// Point in unit-cube coordinates.
+    pub u: Vec<f64>,
+    /// Its evaluation.
+    pub eval: Evaluation,
+}
+
+/// Outcome of [`sqp`].
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct SqpResult {
+    /// Final point in the problem's units: the best feasible point among those SLSQP
+    /// visited (iterates and line-search points), or the start if none beats it.
+    pub x: Vec<f64>,
+    /// Its evaluation.
+    pub eval: Evaluation,
+    /// Whether a visited point beat the start.
+    pub improved: bool,
+    /// SLSQP's termination status.
+    pub status: String,
+    /// Problem evaluations of this run, replayed ones included.
+    pub evaluations: usize,
+    /// Of those, replayed from the log given to [`sqp`].
+    pub replayed: usize,
+    /// The evaluation log (the checkpoint of a later resume).
+    pub log: Vec<LoggedEvaluation>,
+}
+
+/// Caches and logs the evaluations of one SQP run.
+struct Evaluator<'a, P: ConstrainedProblem + ?Sized> {
+    problem: &'a P,
+    options: SqpOptions,
+    cache: RefCell<HashMap<Vec<u64>, Evaluation>>,
+    log: RefCell<Vec<LoggedEvaluation>>,
+    checkpoint: RefCell<&'a mut SqpCheckpoint<'a>>,
+    progress: &'a dyn Progress,
+    error: RefCell<Option<String>>,
+    /// The points SLSQP asked for (its iterates and line-search points, not the
+    /// difference points), in order.
+    visited: RefCell<Vec<Vec<f64>>>,
+}
+
+/// The checkpoint callback of [`sqp`]: receives the whole evaluation log.
+pub type SqpCheckpoint<'a> = dyn FnMut(&[LoggedEvaluation]) -> Result<(), String> + 'a;
+
+/// A constraint callback as SLSQP calls it.
+type ConstraintFn<'a> = dyn Fn(&[f64], Option<&mut [f64]>, &mut ()) -> f64 + 'a;
+
+fn key(u: &[f64]) -> Vec<u64> {
+    u.iter().map(|v| v.to_bits()).collect()
+}
+
+impl<P: ConstrainedProblem + ?Sized> Evaluator<'_, P> {
+    /// Evaluations of `units` (cached where known; the rest in one parallel batch).
+    fn many(&self, units: &[Vec<f64>]) -> Vec<Evaluation> {
+        let mut miss: Vec<Vec<f64>> = Vec::new();
+        {
+            let cache = self.cache.borrow();
+            for u in units {
+                if !cache.contains_key(&key(u)) && !miss.contains(u) {
+                    miss.push(u.clone());
+                }
+            }
+        }
+        if !miss.is_empty() && self.error.borrow().is_none() {
+            let b = self.problem.bounds();
+            let xs: Vec<Vec<f64>> = miss.iter().map(|u| b.from_unit(u)).collect();
+            let evals = evaluate_batch(self.problem, &xs);
+            let mut cache = self.cache.borrow_mut();
+            let mut log = self.log.borrow_mut();
+            for (u, e) in miss.into_iter().zip(evals) {
+                cache.insert(key(&u), e.clone());
+                log.push(LoggedEvaluation { u, eval: e });
+            }
+            let best = log
+                .iter()
+                .map(|l| l.eval.barrier_value())
+                .fold(f64::MAX, f64::min);
+            self.progress
+                .report("sqp", log.len(), self.max_evaluations(), best);
+            if let Err(e) = (self.checkpoint.borrow_mut())(&log) {
+                *self.error.borrow_mut() = Some(e);
+            }
+        }
+        let cache = self.cache.borrow();
+        let failed = Evaluation::failed(self.problem.n_constraints());
+        units
+            .iter()
+            .map(|u| {
+                cache
+                    .get(&key(u))
+                    .cloned()
+                    .unwrap_or_else(|| failed.clone())
+            })
+            .collect()
+    }
+
+    /// An upper bound of the evaluations (for the progress bar).
+    fn max_evaluations(&self) -> usize {
+        let n = self.problem.bounds().dim();
+        self.options.max_calls * (1 + if self.options.central { 2 * n } else { n })
+    }
+
+    /// Value (and gradient into `grad`) of `pick` of the evaluation at `u`.
+    fn value(&self, u: &[f64], grad: Option<&mut [f64]>, pick: &dyn Fn(&Evaluation) -> f64) -> f64 {
+        let u: Vec<f64> = u.iter().map(|v| v.clamp(0.0, 1.0)).collect();
+        self.visited.borrow_mut().push(u.clone());
+        let Some(g) = grad else {
+            return pick(&self.many(std::slice::from_ref(&u))[0]);
+        };
+        let h = self.options.fd_step;
+        let mut pts = vec![u.clone()];
+        // (index of the + point, index of the - point, step between them) per variable.
+        let mut pairs = Vec::with_capacity(u.len());
+        for i in 0..u.len() {
+            let (up, down) = (u[i] + h <= 1.0, u[i] - h >= 0.0);
+            let plus = |pts: &mut Vec<Vec<f64>>, d: f64| {
+                let mut p = u.clone();
+                p[i] += d;
+                pts.push(p);
+                pts.len() - 1
+            };
+            pairs.push(if self.options.central && up && down {
+                (plus(&mut pts, h), plus(&mut pts, -h), 2.0 * h)
+            } else if up {
+                (plus(&mut pts, h), 0, h)
+            } else {
+                (0, plus(&mut pts, -h), h)
+            });
+        }
+        let evals = self.many(&pts);
+        let vals: Vec<f64> = evals.iter().map(pick).collect();
+        for (gi, (p, m, d)) in g.iter_mut().zip(pairs) {
+            *gi = (vals[p] - vals[m]) / d;
+        }
+        vals[0]
+    }
+}
+
+/// SLSQP from `x0` (projected onto the bounds), continuing a saved `log` (empty for a new
+/// run); `checkpoint` receives the whole log after every batch of new evaluations.
+pub fn sqp<P: ConstrainedProblem + ?Sized>(
+    problem: &P,
+    x0: &[f64],
+    options: &SqpOptions,
+    log: Vec<LoggedEvaluation>,
+    progress: &dyn Progress,
+    checkpoint: &mut SqpCheckpoint<'_>,
+) -> Result<SqpResult, OptimizeError> {
+    let b = problem.bounds();
+    let n = b.dim();
+    require(x0.len() == n, "x0", "one value per variable")?;
+    require(x0.iter().all(|v| v.is_finite()), "x0", "finite")?;
+    require(
+        options.fd_step > 0.0 && options.fd_step < 0.5,
+        "fd_step",
+        "in (0, 0.5)",
+    )?;
+    require(options.max_calls >= 1, "max_calls", ">= 1")?;
+    require(
+        options.constraint_margin.is_finite() && options.constraint_margin >= 0.0,
+        "constraint_margin",
+        "finite and >= 0",
+    )?;
+    let nc = problem.n_constraints();
+    if log
+        .iter()
+        .any(|l| l.u.len() != n || l.eval.constraints.len() != nc)
+    {
+        return Err(OptimizeError::Checkpoint(
+            "SQP log of another dimension or constraint count".into(),
+        ));
+    }
+    let replay_len = log.len();
+    let cache = log.iter().map(|l| (key(&l.u), l.eval.clone())).collect();
+    let ev = Evaluator {
+        problem,
+        options: *options,
+        cache: RefCell::new(cache),
+        log: RefCell::new(log),
+        checkpoint: RefCell::new(checkpoint),
+        progress,
+        error: RefCell::new(None),
+        visited: RefCell::new(Vec::new()),
+    };
+    let u0: Vec<f64> = b.to_unit(x0).iter().map(|v| v.clamp(0.0, 1.0)).collect();
+    let start = ev.many(std::slice::from_ref(&u0))[0].clone();
+    let margin = options.constraint_margin;
+    let objective = |u: &[f64], g: Option<&mut [f64]>, _: &mut ()| ev.value(u, g, &|e| e.f);
+    let cons: Vec<Box<ConstraintFn<'_>>> = (0..nc)
+        .map(|j| {
+            let ev = &ev;
+            Box::new(move |u: &[f64], g: Option<&mut [f64]>, _: &mut ()| {
+                ev.value(u, g, &|e| e.constraints[j] + margin)
+            }) as Box<ConstraintFn<'_>>
+        })
+        .collect();
+    let cons_ref: Vec<&ConstraintFn<'_>> = cons.iter().map(|c| c.as_ref()).collect();
+    let tols = slsqp::StopTols {
+        ftol_rel: options.ftol_rel,
+        xtol_abs: vec![options.xtol_abs; n],
+        ..slsqp::StopTols::default()
+    };
+    let bounds = vec![(0.0, 1.0); n];
+    let status = match slsqp::minimize(
+        objective,
+        &u0,
+        &bounds,
+        &cons_ref,
+        (),
+        options.max_calls,
+        Some(tols),
+    ) {
+        Ok((s, _, _)) => format!("{s:?}"),
+        Err((s, _, _)) => format!("{s:?}"),
+    };
+    if let Some(e) = ev.error.borrow_mut().take() {
+        return Err(OptimizeError::Invalid {
+            field: "checkpoint",
+            reason: e,
+        });
+    }
+    drop(cons_ref);
+    drop(cons);
+    // SLSQP's own "best feasible" point uses a zero tolerance on the margin-shifted
+    // constraints, which round-off defeats on an active constraint; take the best visited
+    // point that is feasible in the problem's terms instead (the first of equals).
+    let visited = ev.visited.into_inner();
+    let cache = ev.cache.into_inner();
+    let mut best = (u0.clone(), start.clone());
+    for u in visited {
+        if let Some(e) = cache.get(&key(&u)) {
+            if e.is_feasible() && e.f < best.1.barrier_value() {
+                best = (u, e.clone());
+            }
+        }
+    }
+    let improved = best.0 != u0;
+    let (u, eval) = best;
+    let log = ev.log.into_inner();
+    let evaluations = log.len();
+    Ok(SqpResult {
+        x: b.from_unit(&u),
+        eval,
+        improved,
+        status,
+        evaluations,
+        replayed: replay_len.min(evaluations),
+        log,
+    })
+}
