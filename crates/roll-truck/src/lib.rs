@@ -16,6 +16,7 @@
 pub mod calibration;
 pub mod driver;
 mod error;
+mod findings;
 pub mod measures;
 pub mod model;
 pub mod params;
@@ -29,6 +30,7 @@ pub mod vehicle;
 
 pub use driver::SteerDirection;
 pub use error::TruckError;
+pub use findings::{r_squared, Finding};
 pub use params::TruckParams;
 pub use simulate::{simulate, RunOptions, RunRecord};
 pub use vehicle::{ModelOptions, TruckVehicle};
