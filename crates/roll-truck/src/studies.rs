@@ -284,6 +284,12 @@ pub struct StudyPoint {
     pub sp_drt_g: Stat,
     /// Sustained period ΔT (s).
     pub sustained_period_s: Stat,
+    /// Lowest |a_y| within the sustained period (g).
+    pub sustained_min_g: Stat,
+    /// Highest |a_y| within the sustained period (g).
+    pub sustained_max_g: Stat,
+    /// End of the sustained period A⁴ (s).
+    pub sustained_end_s: Stat,
     /// |a_y| at A⁴ (g).
     pub ay_at_a4_g: Stat,
     /// |a_y| at absolute rollover B′ (g).
@@ -398,6 +404,9 @@ fn point(v: &Variant, i: usize, results: &[JobResult]) -> Result<StudyPoint, Tru
         smooth_drt_g: smooth.as_ref().and_then(|m| m.drt_g),
         ssf: crate::measures::ssf(&v.params),
         sustained_period_s: stat(&|m| m.sustained_period_s),
+        sustained_min_g: stat(&|m| m.sustained_range_g.map(|r| r.0)),
+        sustained_max_g: stat(&|m| m.sustained_range_g.map(|r| r.1)),
+        sustained_end_s: stat(&|m| m.sustained_end_s),
         ay_at_a4_g: stat(&|m| m.ay_at_a4_g),
         ay_at_rollover_g: stat(&|m| m.ay_at_rollover_g),
         peak_ay_g: stat(&|m| Some(m.peak_ay_g)),

@@ -8,6 +8,7 @@ pub mod evaluate;
 pub mod hps;
 pub mod measures;
 pub mod params;
+pub mod roll;
 pub mod terrain;
 pub mod tire;
 pub mod yaw;
