@@ -325,6 +325,18 @@ pub fn run_study(
     sp: &SustainedPeriodParams,
     progress: &(dyn Fn(usize, usize) + Sync),
 ) -> Result<StudyResult, TruckError> {
+    run_variants(study, &study.variants(base)?, seeds, options, sp, progress)
+}
+
+/// [`run_study`] for a chosen subset of `study`'s variants (e.g. one curve of Fig 2.12).
+pub fn run_variants(
+    study: Study,
+    variants: &[Variant],
+    seeds: &[u64],
+    options: &RunOptions,
+    sp: &SustainedPeriodParams,
+    progress: &(dyn Fn(usize, usize) + Sync),
+) -> Result<StudyResult, TruckError> {
     use rayon::prelude::*;
     use std::sync::atomic::{AtomicUsize, Ordering};
     if seeds.is_empty() || seeds.len() > MAX_SEEDS {
@@ -339,7 +351,6 @@ pub fn run_study(
         measure: "sustained period",
         source,
     })?;
-    let variants = study.variants(base)?;
     let mut jobs: Vec<(usize, Option<u64>)> = Vec::new();
     for (i, v) in variants.iter().enumerate() {
         if v.with_smooth {
