@@ -18,14 +18,25 @@ fn simulate_writes_a_record_and_prints_the_measures() {
     assert!(rec.column("normal_force_rear_right_outer_n").is_some());
     assert!(rec.meta["written_by"].as_str().unwrap().starts_with("afsv"));
     // rerunning onto afsv's own record is allowed
-    assert!(afsv(&["roll", "simulate", "--smooth", "-o", path]).status.success());
+    assert!(afsv(&["roll", "simulate", "--smooth", "-o", path])
+        .status
+        .success());
 }
 
 #[test]
 fn left_and_right_ramps_give_the_same_smooth_measures() {
     let left = json(&afsv(&["roll", "measures", "--smooth", "--json"]));
-    let right = json(&afsv(&["roll", "measures", "--smooth", "--direction", "right"]));
-    let (l, r) = (left["drt_g"].as_f64().unwrap(), right["drt_g"].as_f64().unwrap());
+    let right = json(&afsv(&[
+        "roll",
+        "measures",
+        "--smooth",
+        "--direction",
+        "right",
+    ]));
+    let (l, r) = (
+        left["drt_g"].as_f64().unwrap(),
+        right["drt_g"].as_f64().unwrap(),
+    );
     assert!((l - r).abs() < 1e-4, "{l} vs {r}");
     assert!((l - 0.288).abs() < 0.01, "calibrated smooth DRT {l}");
 }

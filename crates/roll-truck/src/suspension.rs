@@ -156,21 +156,29 @@ impl Suspension {
 mod tests {
     use super::*;
 
-    #[test]
-    fn joint_forces_are_the_gradient_of_the_energy() {
-        let mut p = TruckParams::nominal();
-        p.strut_spacing_ratio = 0.6;
-        let s = Suspension::new(&p);
-        let q = [0.16, -0.05, 0.02, 0.04];
-        let f = s.forces(&q, &[0.0; 4]);
-        let tau = s.joint_forces(&f);
-        for j in 0..4 {
-            let h = 1e-6;
-            let (mut a, mut b) = (q, q);
-            a[j] += h;
-            b[j] -= h;
-            let grad = (s.energy(&a) - s.energy(&b)) / (2.0 * h);
-            assert!((tau[j] + grad).abs() < 1e-3 * grad.abs().max(1.0), "{j}");
+    proptest::proptest! {
+        /// With the dampers at rest the struts are conservative: tau = -grad(energy), on and
+        /// off the bump stops, for any spacing ratio.
+        #[test]
+        fn joint_forces_are_the_gradient_of_the_energy(
+            ratio in 0.05..1.0_f64,
+            q in proptest::array::uniform4(-0.3..0.3_f64),
+        ) {
+            let mut p = TruckParams::nominal();
+            p.strut_spacing_ratio = ratio;
+            let s = Suspension::new(&p);
+            let tau = s.joint_forces(&s.forces(&q, &[0.0; 4]));
+            for j in 0..4 {
+                let h = 1e-7;
+                let (mut a, mut b) = (q, q);
+                a[j] += h;
+                b[j] -= h;
+                let grad = (s.energy(&a) - s.energy(&b)) / (2.0 * h);
+                // a bump stop's kink inside the difference step costs at most k_b h (about
+                // 6 N with the lever of the rear roll joint)
+                let tol = 10.0 + 1e-7 * grad.abs();
+                proptest::prop_assert!((tau[j] + grad).abs() < tol, "{} {} {}", j, tau[j], grad);
+            }
         }
     }
 
