@@ -45,6 +45,9 @@ enum Command {
     /// Yaw-plane vehicle with hydraulic frame steering: `simulate`, `measures`, `sensitivity`, `leakage`.
     #[command(subcommand)]
     Yaw(cmd::yaw::Command),
+    /// Roll stability of the rigid mining truck (chapter 2): `simulate`, `measures`, `study`, `calibrate`.
+    #[command(subcommand)]
+    Roll(cmd::roll::Command),
     /// Parameter sets as JSON: `dump` the nominal set, `check` a file.
     #[command(subcommand)]
     Params(cmd::params::Command),
@@ -95,6 +98,7 @@ fn main() -> ExitCode {
         Command::Terrain(c) => cmd::terrain::run(c),
         Command::Tire(c) => cmd::tire::run(c),
         Command::Yaw(c) => cmd::yaw::run(c),
+        Command::Roll(c) => cmd::roll::run(c),
         Command::Params(c) => cmd::params::run(c),
         Command::Optimize(c) => cmd::optimize::run(c),
     };

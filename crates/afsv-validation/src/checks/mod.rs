@@ -3,6 +3,7 @@
 //! computes no physics itself.
 
 mod ahp;
+mod chapter2;
 mod chapter4;
 mod hps;
 mod sensitivity;
@@ -88,6 +89,24 @@ pub const CHECKS: &[(&str, &[&str], CheckFn)] = &[
         yaw_plane::check_gain_efficiency,
     ),
     ("chapter_4_designs", &[], chapter4::check_chapter4),
+    (
+        "chapter_2_truck",
+        &[
+            "s2_drt_smooth",
+            "s2_smooth_oscillation_time",
+            "s2_drt_rough",
+            "s2_sustained_period",
+            "s2_t_lift_a4",
+            "s2_ay_at_a4_b_prime",
+            "s2_ay_range_sustained",
+            "s2_drt_rough_vs_smooth_cg",
+            "s2_drt_correlation_r2",
+            "s2_drt_change_class_a_to_e",
+            "s2_drt_change_waviness",
+            "s2_drt_change_low_frequency_content",
+        ],
+        chapter2::check_chapter2,
+    ),
     ("not_reproducible", &[], unmodelled::list_not_reproducible),
 ];
 

@@ -9,6 +9,7 @@ pub mod hps;
 pub mod measures;
 pub mod optimize;
 pub mod params;
+pub mod roll;
 pub mod terrain;
 pub mod tire;
 pub mod yaw;

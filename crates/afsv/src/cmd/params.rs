@@ -6,6 +6,7 @@ use super::hps::StrutChoice;
 use super::CmdResult;
 use afsv_dynamics::YawPlaneParams;
 use hps_emulsion::StrutParams;
+use roll_truck::TruckParams;
 use serde_json::{json, Value};
 use std::path::{Path, PathBuf};
 use terrain_psd::{SurfaceParams, TwoTrackSpec};
@@ -26,6 +27,8 @@ pub enum ParamSet {
     Terrain,
     /// Terrain surface (track width, friction).
     Surface,
+    /// The rigid mining truck of chapter 2 (Tables 2.1-2.3 and the documented assumptions).
+    Truck,
 }
 
 /// `afsv params` subcommands.
@@ -91,6 +94,7 @@ pub fn run(cmd: Command) -> CmdResult {
                 ParamSet::Tire => serde_json::to_value(TireParams::nominal())?,
                 ParamSet::Terrain => serde_json::to_value(TwoTrackSpec::paper_nominal())?,
                 ParamSet::Surface => serde_json::to_value(SurfaceParams::default())?,
+                ParamSet::Truck => serde_json::to_value(TruckParams::nominal())?,
             };
             match output {
                 Some(path) => {
@@ -111,6 +115,7 @@ pub fn run(cmd: Command) -> CmdResult {
                 ParamSet::Tire => json!({ "parameters": checked::<TireParams>(&file)? }),
                 ParamSet::Terrain => json!({ "parameters": checked::<TwoTrackSpec>(&file)? }),
                 ParamSet::Surface => json!({ "parameters": checked::<SurfaceParams>(&file)? }),
+                ParamSet::Truck => json!({ "parameters": checked::<TruckParams>(&file)? }),
             };
             report["valid"] = json!(true);
             report["file"] = json!(file);
@@ -123,6 +128,7 @@ pub fn run(cmd: Command) -> CmdResult {
                 ParamSet::Tire => specs(&TireParams::nominal()),
                 ParamSet::Terrain => specs(&TwoTrackSpec::paper_nominal()),
                 ParamSet::Surface => specs(&SurfaceParams::default()),
+                ParamSet::Truck => specs(&TruckParams::nominal()),
             };
             afsv::output::print_json(&list)?;
         }
@@ -131,7 +137,7 @@ pub fn run(cmd: Command) -> CmdResult {
 }
 
 /// A parameter file as `T`, refusing unknown fields; errors name the file, line and column.
-fn read<T: serde::de::DeserializeOwned>(path: &Path) -> Result<T, String> {
+pub(super) fn read<T: serde::de::DeserializeOwned>(path: &Path) -> Result<T, String> {
     let text = std::fs::read_to_string(path).map_err(|e| format!("{}: {e}", path.display()))?;
     serde_json::from_str(&text).map_err(|e| format!("{}: {e}", path.display()))
 }

@@ -1,0 +1,72 @@
+//! `afsv roll`: a run writes its record and sidecar and prints finite measures; the
+//! measures of a left and a right ramp agree; the truck parameter set dumps and checks;
+//! bad input is a one-line error naming the field or option.
+
+mod cli_support;
+use cli_support::{afsv, json, scratch};
+
+#[test]
+fn simulate_writes_a_record_and_prints_the_measures() {
+    let out = scratch("roll", "run.csv");
+    let path = out.to_str().unwrap();
+    let v = json(&afsv(&["roll", "simulate", "--seed", "2", "-o", path]));
+    let rollover = v["rollover_s"].as_f64().unwrap();
+    assert!(rollover > 10.0 && rollover < 60.0, "{v}");
+    assert!(v["sp_drt_g"].as_f64().unwrap() > 0.1);
+    let rec = afsv_records::Record::read(&out).unwrap();
+    assert_eq!(rec.len(), v["samples"].as_u64().unwrap() as usize);
+    assert!(rec.column("normal_force_rear_right_outer_n").is_some());
+    assert!(rec.meta["written_by"].as_str().unwrap().starts_with("afsv"));
+    // rerunning onto afsv's own record is allowed
+    assert!(afsv(&["roll", "simulate", "--smooth", "-o", path])
+        .status
+        .success());
+}
+
+#[test]
+fn left_and_right_ramps_give_the_same_smooth_measures() {
+    let left = json(&afsv(&["roll", "measures", "--smooth", "--json"]));
+    let right = json(&afsv(&[
+        "roll",
+        "measures",
+        "--smooth",
+        "--direction",
+        "right",
+    ]));
+    let (l, r) = (
+        left["drt_g"].as_f64().unwrap(),
+        right["drt_g"].as_f64().unwrap(),
+    );
+    assert!((l - r).abs() < 1e-4, "{l} vs {r}");
+    assert!((l - 0.288).abs() < 0.01, "calibrated smooth DRT {l}");
+}
+
+#[test]
+fn truck_parameters_dump_and_check() {
+    let file = scratch("roll", "truck.json");
+    let f = file.to_str().unwrap();
+    json(&afsv(&["params", "dump", "truck", "-o", f]));
+    let v = json(&afsv(&["params", "check", "truck", f]));
+    assert_eq!(v["parameters"]["cg_height_m"], 3.15);
+    std::fs::write(&file, r#"{"cg_to_front_axle_m": 9.0}"#).unwrap();
+    let out = afsv(&["params", "check", "truck", f]);
+    assert!(!out.status.success());
+    assert!(String::from_utf8_lossy(&out.stderr).contains("cg_to_front_axle_m"));
+}
+
+#[test]
+fn bad_input_is_a_one_line_error() {
+    for (args, needle) in [
+        (vec!["roll", "study", "cg", "--seeds", "0"], "--seeds"),
+        (vec!["roll", "study", "sideways"], "sideways"),
+        (vec!["roll", "measures", "--waviness", "nan"], "finite"),
+        (vec!["roll", "measures", "--band", "0.02,20"], "band.n_max"),
+        (vec!["roll", "measures", "--duration", "1e9"], "--duration"),
+    ] {
+        let out = afsv(&args);
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert!(!out.status.success(), "{args:?}");
+        assert_eq!(err.trim_end().lines().count(), 1, "{args:?}: {err}");
+        assert!(err.contains(needle), "{args:?}: {err}");
+    }
+}

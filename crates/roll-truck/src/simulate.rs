@@ -1,0 +1,177 @@
+//! A ramp-steer run to absolute rollover (section 2.3): the truck starts at static
+//! equilibrium at the target speed, the ramp starts at `ramp_start_s` (a breakpoint), and
+//! the run ends at absolute rollover, located as a terminal `odeint` event on the
+//! rollover margin (whole-vehicle cg over the plane through the outer contact centres),
+//! or at `t_end_s`.
+
+use odeint::{Atol, Control, Direction, Event, Integrator, Problem, SampleKind, Solver};
+use serde::Serialize;
+
+use crate::error::{positive, rejected, TruckError};
+use crate::model::NV;
+use crate::vehicle::{state, TruckVehicle};
+
+/// Largest number of output samples of one run.
+pub const MAX_SAMPLES: usize = 1_000_000;
+
+/// Run settings.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct RunOptions {
+    /// End time if the truck does not roll over (s).
+    pub t_end_s: f64,
+    /// Output interval (s).
+    pub output_dt_s: f64,
+    /// Relative tolerance of the Dormand-Prince integrator.
+    pub rtol: f64,
+    /// Largest step (s).
+    pub max_step_s: f64,
+}
+
+impl Default for RunOptions {
+    fn default() -> Self {
+        Self {
+            t_end_s: 60.0,
+            output_dt_s: 0.01,
+            rtol: 1e-4,
+            max_step_s: 0.02,
+        }
+    }
+}
+
+impl RunOptions {
+    /// Check the fields and bound the sample count.
+    pub fn validate(&self) -> Result<usize, TruckError> {
+        positive("t_end_s", self.t_end_s)?;
+        positive("output_dt_s", self.output_dt_s)?;
+        positive("rtol", self.rtol)?;
+        positive("max_step_s", self.max_step_s)?;
+        let n = (self.t_end_s / self.output_dt_s).floor() + 1.0;
+        if n > MAX_SAMPLES as f64 {
+            return Err(rejected(
+                "output_dt_s",
+                self.output_dt_s,
+                "more than 1e6 output samples (raise output_dt_s or lower t_end_s)",
+            ));
+        }
+        Ok(n as usize)
+    }
+}
+
+/// The recorded channels of a run, one entry per output sample (and the rollover instant).
+#[derive(Debug, Clone, PartialEq, Default, Serialize)]
+pub struct RunRecord {
+    /// Time (s).
+    pub t_s: Vec<f64>,
+    /// Road-wheel steering angle (rad).
+    pub steer_rad: Vec<f64>,
+    /// Forward speed of the rear axle (m/s), the controlled speed.
+    pub speed_m_s: Vec<f64>,
+    /// Horizontal lateral acceleration of the whole-vehicle cg in the heading frame
+    /// (m/s²): the sum of the tire forces' lateral components over the total mass.
+    pub lateral_accel_m_s2: Vec<f64>,
+    /// LTR of the whole truck (Eq 2.11).
+    pub ltr: Vec<f64>,
+    /// Roll angle of the sprung mass (rad): right-handed about the forward axis, positive
+    /// with the left side up.
+    pub roll_rad: Vec<f64>,
+    /// Rollover margin (m): cg distance inside the outer contact line.
+    pub rollover_margin_m: Vec<f64>,
+    /// Drive force (N).
+    pub drive_force_n: Vec<f64>,
+    /// Whether a strut is on its bump stop (any of the four).
+    pub on_bump_stop: Vec<bool>,
+    /// Tire normal forces (N) in [`crate::model::TIRE_NAMES`] order.
+    pub normal_force_n: [Vec<f64>; 6],
+    /// Time of absolute rollover (s), if reached.
+    pub rollover_s: Option<f64>,
+}
+
+/// One output sample from the state `y` at `t`.
+fn push_sample(vehicle: &TruckVehicle, t: f64, y: &[f64], rec: &mut RunRecord) {
+    let mut ws = vehicle.ws.borrow_mut();
+    let mut tau = [0.0; NV];
+    let Ok(tires) = vehicle.apply_forces(t, y, &mut ws, &mut tau) else {
+        return;
+    };
+    let fz = &tires.normal_force;
+    let left = [fz[0], fz[2] + fz[3]];
+    let right = [fz[1], fz[4] + fz[5]];
+    let ltr = perf_measures::roll::ltr(&left, &right).unwrap_or(f64::NAN);
+    let rot = ws.body_rotation(crate::model::body::SPRUNG);
+    let s = vehicle.suspension.compressions(&[y[7], y[8], y[9], y[10]]);
+    let stop = s[..2].iter().any(|&x| vehicle.suspension.front.on_stop(x))
+        || s[2..].iter().any(|&x| vehicle.suspension.rear.on_stop(x));
+    rec.t_s.push(t);
+    rec.steer_rad.push(vehicle.steer.angle(t));
+    rec.speed_m_s.push(tires.speed);
+    rec.lateral_accel_m_s2
+        .push(tires.lateral_total / vehicle.model.total_mass());
+    rec.ltr.push(ltr);
+    rec.roll_rad.push(rot[(2, 1)].atan2(rot[(2, 2)]));
+    rec.rollover_margin_m.push(vehicle.rollover_margin_ws(&ws));
+    rec.drive_force_n.push(tires.drive_force);
+    rec.on_bump_stop.push(stop);
+    for (ch, f) in rec.normal_force_n.iter_mut().zip(fz) {
+        ch.push(*f);
+    }
+}
+
+/// Typical magnitudes of the states (for the absolute tolerances).
+fn typical() -> [f64; state::DIM] {
+    let mut t = [1.0; state::DIM];
+    t[7..11].fill(0.05);
+    t[state::V..state::V + 3].fill(0.1);
+    t[state::V + 6..state::V + NV].fill(0.1);
+    t[state::LAG..state::LAG + 6].fill(0.1);
+    t
+}
+
+/// Integrate `vehicle` from its static state at the target speed (module docs).
+pub fn simulate(vehicle: &TruckVehicle, options: &RunOptions) -> Result<RunRecord, TruckError> {
+    let n = options.validate()?;
+    let y0 = vehicle.initial_state(vehicle.params.target_speed_m_s);
+    let t_out: Vec<f64> = (0..n).map(|i| i as f64 * options.output_dt_s).collect();
+    let margin = |t: f64, y: &[f64]| -> f64 {
+        let mut ws = vehicle.ws.borrow_mut();
+        let mut tau = [0.0; NV];
+        match vehicle.apply_forces(t, y, &mut ws, &mut tau) {
+            Ok(_) => vehicle.rollover_margin_ws(&ws),
+            Err(_) => f64::NAN,
+        }
+    };
+    let events = [Event::new(&margin, Direction::Falling).terminal()];
+    let breakpoints = [vehicle.params.ramp_start_s];
+    let problem = Problem::new(0.0, &y0, &t_out)
+        .with_breakpoints(&breakpoints)
+        .with_events(&events);
+    let integrator = Integrator::new(
+        Solver::Dopri5,
+        options.rtol,
+        Atol::scaled(options.rtol, typical()),
+    )
+    .with_max_step(options.max_step_s);
+    let mut ws = odeint::Workspace::with_events(state::DIM, 1);
+    let mut rec = RunRecord::default();
+    integrator.run(vehicle, &problem, &mut ws, |s| {
+        push_sample(vehicle, s.t, s.y, &mut rec);
+        if let SampleKind::Event(_) = s.kind {
+            rec.rollover_s = Some(s.t);
+        }
+        Control::Continue
+    })?;
+    Ok(rec)
+}
+
+/// Forces and contact quantities of `vehicle` at `(t, y)` (one right-hand-side
+/// evaluation's tire state).
+pub fn tire_state(
+    vehicle: &TruckVehicle,
+    t: f64,
+    y: &[f64],
+) -> Result<crate::vehicle::TireState, TruckError> {
+    let mut ws = vehicle.ws.borrow_mut();
+    let mut tau = [0.0; NV];
+    vehicle
+        .apply_forces(t, y, &mut ws, &mut tau)
+        .map_err(|source| TruckError::Dynamics { t, source })
+}

@@ -1,0 +1,428 @@
+//! Runs on the terrains of Chapter 2 and the parametric studies of section 2.4: every
+//! rough-terrain point is a mean ± SD over terrain seeds (the same seeds for every
+//! variant of a study), run in parallel with rayon.
+
+use perf_measures::roll::SustainedPeriodParams;
+use serde::Serialize;
+use terrain_psd::{synthesize, SurfaceParams, TwoTrackSpec, TwoTrackTerrain};
+
+use crate::driver::SteerDirection;
+use crate::error::TruckError;
+use crate::measures::{level_ground, roll_measures, RollMeasures};
+use crate::params::TruckParams;
+use crate::simulate::{simulate, RunOptions, RunRecord};
+use crate::vehicle::{ModelOptions, TruckVehicle};
+
+/// Sample spacing of the synthesized profiles (m): Nyquist 10 cycles/m, the highest band
+/// limit of the study (L682).
+pub const TERRAIN_DX_M: f64 = 0.05;
+
+/// Length of the synthesized terrain (m): a 60 s run at 40 km/h (667 m) plus margins.
+pub const TERRAIN_LENGTH_M: f64 = 800.0;
+
+/// A two-track terrain of `spec` from `seed`, `length_m` long, for the truck: the track
+/// width of the surface is immaterial (the tires read the tracks themselves) and set to
+/// the mean of the front and rear tracks.
+pub fn rough_terrain(
+    p: &TruckParams,
+    spec: &TwoTrackSpec,
+    length_m: f64,
+    seed: u64,
+) -> Result<TwoTrackTerrain, TruckError> {
+    let profile = synthesize(spec, length_m, TERRAIN_DX_M, seed)?;
+    let surface = SurfaceParams {
+        track_width_m: 0.5 * (p.front_track_m + p.rear_track_m),
+        ..SurfaceParams::nominal()
+    };
+    Ok(TwoTrackTerrain::new(profile, surface)?)
+}
+
+/// The truck `p` on `terrain`, each side's tires on its track, the enveloping cache
+/// covering `path_length_m` (at most the terrain's length).
+pub fn truck_on(
+    p: &TruckParams,
+    terrain: &TwoTrackTerrain,
+    direction: SteerDirection,
+    path_length_m: f64,
+) -> Result<TruckVehicle, TruckError> {
+    let options = ModelOptions {
+        direction,
+        path_length_m: path_length_m.min(terrain.profile().length_m()),
+        ..ModelOptions::default()
+    };
+    TruckVehicle::new(p, terrain, 0.5 * terrain.params().track_width_m, options)
+}
+
+/// One run and its measures.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Run {
+    /// The record.
+    pub record: RunRecord,
+    /// Its roll measures.
+    pub measures: RollMeasures,
+}
+
+/// A ramp-steer run of `p` on level ground (`spec = None`) or on the terrain of `spec`
+/// and `seed`.
+pub fn run_case(
+    p: &TruckParams,
+    spec: Option<&TwoTrackSpec>,
+    seed: u64,
+    direction: SteerDirection,
+    options: &RunOptions,
+    sp: &SustainedPeriodParams,
+) -> Result<Run, TruckError> {
+    let path_length_m = p.target_speed_m_s * options.t_end_s * 1.1 + 10.0;
+    let record = match spec {
+        None => {
+            let v = TruckVehicle::new(
+                p,
+                &level_ground(),
+                1.0,
+                ModelOptions {
+                    direction,
+                    path_length_m,
+                    ..ModelOptions::default()
+                },
+            )?;
+            simulate(&v, options)?
+        }
+        Some(spec) => {
+            let terrain = rough_terrain(p, spec, TERRAIN_LENGTH_M, seed)?;
+            simulate(&truck_on(p, &terrain, direction, path_length_m)?, options)?
+        }
+    };
+    let measures = roll_measures(p, &record, sp)?;
+    Ok(Run { record, measures })
+}
+
+/// Largest number of terrain seeds of one study (bounds the work and the output).
+pub const MAX_SEEDS: usize = 1000;
+
+/// The studies of section 2.4 (Figs 2.10-2.14).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Study {
+    /// Sprung cg height 3.15 m ± 0.15 / ± 0.3 m on the nominal class E terrain and on the
+    /// smooth road (Figs 2.10-2.11, L664-L666).
+    CgHeight,
+    /// ISO classes A-E for m_c = 0.3, 0.6, 0.9 cycles/m (Fig 2.12, L684).
+    Roughness,
+    /// Waviness w = 1.6-2.4 at alpha_r of class E (Fig 2.13, L688).
+    Waviness,
+    /// Band limits: upper 1, 3, 5, 10 and lower 0.02, 0.05, 0.15, 0.25 cycles/m
+    /// (Fig 2.14, L688, L700).
+    Band,
+}
+
+impl std::str::FromStr for Study {
+    type Err = String;
+    fn from_str(s: &str) -> Result<Self, String> {
+        match s {
+            "cg" => Ok(Self::CgHeight),
+            "roughness" => Ok(Self::Roughness),
+            "waviness" => Ok(Self::Waviness),
+            "band" => Ok(Self::Band),
+            _ => Err(format!(
+                "unknown study `{s}` (cg, roughness, waviness, band)"
+            )),
+        }
+    }
+}
+
+/// One variant of a study: a parameter set, a terrain and where it sits on the plot.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Variant {
+    /// Curve the point belongs to (e.g. `m_c = 0.3`).
+    pub group: String,
+    /// Abscissa (cg height m, alpha_r, waviness, band limit cycles/m).
+    pub x: f64,
+    /// The truck.
+    pub params: TruckParams,
+    /// The rough terrain.
+    pub spec: TwoTrackSpec,
+    /// Whether the smooth-road run of this truck is part of the study.
+    pub with_smooth: bool,
+}
+
+fn spec_with(
+    alpha_r: f64,
+    waviness: f64,
+    band: (f64, f64),
+    m_c: f64,
+) -> Result<TwoTrackSpec, TruckError> {
+    Ok(TwoTrackSpec::new(
+        terrain_psd::PowerLawPsd::new(alpha_r, waviness)?,
+        terrain_psd::Band::new(band.0, band.1)?,
+        terrain_psd::CoherenceModel::piecewise(m_c)?,
+    )?)
+}
+
+impl Study {
+    /// Name of the abscissa with its unit.
+    pub fn x_label(self) -> &'static str {
+        match self {
+            Study::CgHeight => "sprung cg height (m)",
+            Study::Roughness => "roughness coefficient alpha_r (m^3)",
+            Study::Waviness => "waviness w (-)",
+            Study::Band => "band limit (cycles/m)",
+        }
+    }
+
+    /// The variants, one parameter changed at a time from the nominal truck and terrain
+    /// (class E, w = 2, 0.02-5 cycles/m, m_c = 0.3; L680-L682).
+    pub fn variants(self, base: &TruckParams) -> Result<Vec<Variant>, TruckError> {
+        let e = terrain_psd::IsoClass::E.alpha_r();
+        let nominal = |x: f64, group: &str, spec: TwoTrackSpec| Variant {
+            group: group.into(),
+            x,
+            params: *base,
+            spec,
+            with_smooth: false,
+        };
+        let mut out = Vec::new();
+        match self {
+            Study::CgHeight => {
+                for dh in [-0.3, -0.15, 0.0, 0.15, 0.3] {
+                    let mut p = *base;
+                    p.cg_height_m += dh;
+                    out.push(Variant {
+                        params: p,
+                        with_smooth: true,
+                        ..nominal(
+                            p.cg_height_m,
+                            "class E",
+                            spec_with(e, 2.0, (0.02, 5.0), 0.3)?,
+                        )
+                    });
+                }
+            }
+            Study::Roughness => {
+                for m_c in [0.3, 0.6, 0.9] {
+                    for class in ["A", "B", "C", "D", "E"] {
+                        let c: terrain_psd::IsoClass =
+                            class.parse().map_err(TruckError::Terrain)?;
+                        let spec = spec_with(c.alpha_r(), 2.0, (0.02, 5.0), m_c)?;
+                        out.push(nominal(c.alpha_r(), &format!("m_c = {m_c}"), spec));
+                    }
+                }
+            }
+            Study::Waviness => {
+                for w in [1.6, 1.8, 2.0, 2.2, 2.4] {
+                    out.push(nominal(
+                        w,
+                        "class E alpha_r",
+                        spec_with(e, w, (0.02, 5.0), 0.3)?,
+                    ));
+                }
+            }
+            Study::Band => {
+                for hi in [1.0, 3.0, 5.0, 10.0] {
+                    let spec = spec_with(e, 2.0, (0.02, hi), 0.3)?;
+                    out.push(nominal(hi, "upper limit (0.02-x)", spec));
+                }
+                for lo in [0.02, 0.05, 0.15, 0.25] {
+                    let spec = spec_with(e, 2.0, (lo, 5.0), 0.3)?;
+                    out.push(nominal(lo, "lower limit (x-5)", spec));
+                }
+            }
+        }
+        Ok(out)
+    }
+}
+
+/// Mean, sample standard deviation and count of the seeds that gave a value.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct Stat {
+    /// Mean (NaN if `n == 0`; printed as null).
+    pub mean: f64,
+    /// Sample standard deviation (0 for one value).
+    pub sd: f64,
+    /// Number of values.
+    pub n: usize,
+}
+
+impl Stat {
+    /// Of the `Some` values.
+    pub fn of(values: impl Iterator<Item = Option<f64>>) -> Self {
+        let v: Vec<f64> = values.flatten().filter(|x| x.is_finite()).collect();
+        let n = v.len();
+        if n == 0 {
+            return Self {
+                mean: f64::NAN,
+                sd: f64::NAN,
+                n,
+            };
+        }
+        let mean = v.iter().sum::<f64>() / n as f64;
+        let var = if n > 1 {
+            v.iter().map(|x| (x - mean).powi(2)).sum::<f64>() / (n - 1) as f64
+        } else {
+            0.0
+        };
+        Self {
+            mean,
+            sd: var.sqrt(),
+            n,
+        }
+    }
+}
+
+/// One point of a study: the smooth-road measures (if part of the study) and the
+/// rough-terrain measures as mean ± SD over the seeds.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct StudyPoint {
+    /// Curve.
+    pub group: String,
+    /// Abscissa.
+    pub x: f64,
+    /// Smooth-road DRT (g).
+    pub smooth_drt_g: Option<f64>,
+    /// SSF of the truck (-).
+    pub ssf: f64,
+    /// Rough-terrain SP-DRT (g).
+    pub sp_drt_g: Stat,
+    /// Sustained period ΔT (s).
+    pub sustained_period_s: Stat,
+    /// Lowest |a_y| within the sustained period (g).
+    pub sustained_min_g: Stat,
+    /// Highest |a_y| within the sustained period (g).
+    pub sustained_max_g: Stat,
+    /// End of the sustained period A⁴ (s).
+    pub sustained_end_s: Stat,
+    /// |a_y| at A⁴ (g).
+    pub ay_at_a4_g: Stat,
+    /// |a_y| at absolute rollover B′ (g).
+    pub ay_at_rollover_g: Stat,
+    /// Peak |a_y| (g).
+    pub peak_ay_g: Stat,
+    /// Time of absolute rollover (s).
+    pub rollover_s: Stat,
+    /// Seeds whose run failed or gave no sustained period.
+    pub seeds_without_period: usize,
+}
+
+/// A study's points, its seeds and its derived numbers.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct StudyResult {
+    /// Which study.
+    pub study: Study,
+    /// The terrain seeds (common to every variant).
+    pub seeds: Vec<u64>,
+    /// The points in variant order.
+    pub points: Vec<StudyPoint>,
+}
+
+/// Run `study` for the truck `base` over `seeds` (common to every variant), in parallel
+/// with rayon; `progress(done, total)` is called after every run. A run that fails
+/// counts against its point's `seeds_without_period` (the error is not lost: a study in
+/// which every run of a point fails returns the first error).
+pub fn run_study(
+    study: Study,
+    base: &TruckParams,
+    seeds: &[u64],
+    options: &RunOptions,
+    sp: &SustainedPeriodParams,
+    progress: &(dyn Fn(usize, usize) + Sync),
+) -> Result<StudyResult, TruckError> {
+    run_variants(study, &study.variants(base)?, seeds, options, sp, progress)
+}
+
+/// [`run_study`] for a chosen subset of `study`'s variants (e.g. one curve of Fig 2.12).
+pub fn run_variants(
+    study: Study,
+    variants: &[Variant],
+    seeds: &[u64],
+    options: &RunOptions,
+    sp: &SustainedPeriodParams,
+    progress: &(dyn Fn(usize, usize) + Sync),
+) -> Result<StudyResult, TruckError> {
+    use rayon::prelude::*;
+    use std::sync::atomic::{AtomicUsize, Ordering};
+    if seeds.is_empty() || seeds.len() > MAX_SEEDS {
+        return Err(crate::error::rejected(
+            "seeds",
+            seeds.len() as f64,
+            "a study needs 1 to 1000 terrain seeds",
+        ));
+    }
+    options.validate()?;
+    sp.validate().map_err(|source| TruckError::Measure {
+        measure: "sustained period",
+        source,
+    })?;
+    let mut jobs: Vec<(usize, Option<u64>)> = Vec::new();
+    for (i, v) in variants.iter().enumerate() {
+        if v.with_smooth {
+            jobs.push((i, None));
+        }
+        jobs.extend(seeds.iter().map(|s| (i, Some(*s))));
+    }
+    let done = AtomicUsize::new(0);
+    let total = jobs.len();
+    let results: Vec<(usize, Option<u64>, Result<RollMeasures, TruckError>)> = jobs
+        .par_iter()
+        .map(|&(i, seed)| {
+            let v = &variants[i];
+            let spec = seed.map(|_| &v.spec);
+            let r = run_case(
+                &v.params,
+                spec,
+                seed.unwrap_or(0),
+                SteerDirection::Left,
+                options,
+                sp,
+            )
+            .map(|run| run.measures);
+            progress(done.fetch_add(1, Ordering::Relaxed) + 1, total);
+            (i, seed, r)
+        })
+        .collect();
+    let points = variants
+        .iter()
+        .enumerate()
+        .map(|(i, v)| point(v, i, &results))
+        .collect::<Result<Vec<_>, _>>()?;
+    Ok(StudyResult {
+        study,
+        seeds: seeds.to_vec(),
+        points,
+    })
+}
+
+type JobResult = (usize, Option<u64>, Result<RollMeasures, TruckError>);
+
+fn point(v: &Variant, i: usize, results: &[JobResult]) -> Result<StudyPoint, TruckError> {
+    let smooth = results
+        .iter()
+        .find(|(j, seed, _)| *j == i && seed.is_none())
+        .map(|(_, _, r)| r.clone())
+        .transpose()?;
+    let rough: Vec<&Result<RollMeasures, TruckError>> = results
+        .iter()
+        .filter(|(j, seed, _)| *j == i && seed.is_some())
+        .map(|(_, _, r)| r)
+        .collect();
+    if let Some(Err(e)) = rough.first().filter(|_| rough.iter().all(|r| r.is_err())) {
+        return Err(e.clone());
+    }
+    let ok: Vec<&RollMeasures> = rough.iter().filter_map(|r| r.as_ref().ok()).collect();
+    let stat = |f: &dyn Fn(&RollMeasures) -> Option<f64>| Stat::of(ok.iter().map(|m| f(m)));
+    let sp_drt_g = stat(&|m| m.sp_drt_g);
+    Ok(StudyPoint {
+        group: v.group.clone(),
+        x: v.x,
+        smooth_drt_g: smooth.as_ref().and_then(|m| m.drt_g),
+        ssf: crate::measures::ssf(&v.params),
+        sustained_period_s: stat(&|m| m.sustained_period_s),
+        sustained_min_g: stat(&|m| m.sustained_range_g.map(|r| r.0)),
+        sustained_max_g: stat(&|m| m.sustained_range_g.map(|r| r.1)),
+        sustained_end_s: stat(&|m| m.sustained_end_s),
+        ay_at_a4_g: stat(&|m| m.ay_at_a4_g),
+        ay_at_rollover_g: stat(&|m| m.ay_at_rollover_g),
+        peak_ay_g: stat(&|m| Some(m.peak_ay_g)),
+        rollover_s: stat(&|m| m.rollover_s),
+        seeds_without_period: rough.len() - sp_drt_g.n,
+        sp_drt_g,
+    })
+}

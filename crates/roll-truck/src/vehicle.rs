@@ -1,0 +1,384 @@
+//! The truck as one ODE system: multibody tree + struts + tires + driver, state
+//! `[q (11), v (10), V_sy (6), speed-error integral, path coordinate]`.
+//!
+//! One right-hand-side evaluation: kinematics of the tree; strut forces in joint space
+//! ([`crate::suspension`]); per tire the contact on its cached effective track, the
+//! normal force of Eq 2.1, the lateral force of Eqs 2.5-2.6 from the lagged contact
+//! velocity, the rear drive share; forces applied at the contact points; forward dynamics
+//! (CRBA + RNEA + Cholesky); `qdot` from `v`; the lag of Eq 2.7; the PI integral; the
+//! path coordinate `ds/dt = v . h` (h the sprung-mass heading). Nothing allocates.
+//!
+//! A dynamics failure (a mass matrix that is not positive definite) writes NaN
+//! derivatives, which the integrator reports as a divergence with time and state.
+
+use std::cell::RefCell;
+
+use multibody::Workspace;
+use nalgebra::Vector3;
+use tire_fiala::relaxation::contact_velocity_lag_rate;
+use tire_fiala::{LoadDeflectionTable, Track, VerticalContact};
+use vehicle_components::Terrain;
+
+use crate::driver::{RampSteer, SpeedController, SteerDirection};
+use crate::error::{positive, TruckError};
+use crate::model::{body, build_tree, TireMount, NQ, NV};
+use crate::params::TruckParams;
+use crate::statics::Statics;
+use crate::suspension::Suspension;
+use crate::tires::{lateral_force, EffectiveTrack};
+
+/// Offsets of the state blocks.
+pub mod state {
+    /// Configuration q (11).
+    pub const Q: usize = 0;
+    /// Velocities v (10).
+    pub const V: usize = 11;
+    /// Lagged lateral contact velocities V_sy of the six tires (Eq 2.7).
+    pub const LAG: usize = 21;
+    /// Integral of the speed error (m).
+    pub const PI: usize = 27;
+    /// Path coordinate of the sprung cg (m).
+    pub const PATH: usize = 28;
+    /// State dimension.
+    pub const DIM: usize = 29;
+}
+
+/// How the truck is put on its terrain.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ModelOptions {
+    /// Ramp direction.
+    pub direction: SteerDirection,
+    /// Path length the effective tracks cover beyond the start (m).
+    pub path_length_m: f64,
+    /// Path coordinate of the sprung cg at the start (m), so the rear wheels start on the
+    /// profile.
+    pub start_s_m: f64,
+    /// Grid spacing of the enveloping cache (m).
+    pub track_grid_m: f64,
+    /// Profile sampling step of the circle-line enveloping (m).
+    pub envelope_sample_m: f64,
+}
+
+impl Default for ModelOptions {
+    fn default() -> Self {
+        Self {
+            direction: SteerDirection::Left,
+            path_length_m: 700.0,
+            start_s_m: 5.0,
+            track_grid_m: 0.1,
+            envelope_sample_m: 0.1,
+        }
+    }
+}
+
+/// Forces and contact quantities of one evaluation.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct TireState {
+    /// Normal force F_z (N), Eq 2.1.
+    pub normal_force: [f64; 6],
+    /// Lateral force F_y (N), Eq 2.5.
+    pub lateral_force: [f64; 6],
+    /// Lateral velocity of the wheel centre V_y (m/s), the input of Eq 2.7.
+    pub lateral_velocity: [f64; 6],
+    /// Forward velocity of the wheel centre V_x (m/s).
+    pub forward_velocity: [f64; 6],
+    /// Tire deflection (m).
+    pub deflection: [f64; 6],
+    /// Sum of the horizontal tire forces along the heading's lateral axis (N).
+    pub lateral_total: f64,
+    /// Drive force (N).
+    pub drive_force: f64,
+    /// Forward speed of the rear axle centre along the heading (m/s): the controlled speed.
+    pub speed: f64,
+    /// Speed of the sprung cg along the heading (m/s): the rate of the path coordinate.
+    pub path_rate: f64,
+    /// Heading psi of the sprung mass (rad).
+    pub heading: f64,
+}
+
+/// The truck on a terrain, ready to integrate (module docs).
+#[derive(Debug)]
+pub struct TruckVehicle {
+    pub(crate) params: TruckParams,
+    pub(crate) suspension: Suspension,
+    pub(crate) model: multibody::Model,
+    pub(crate) ws: RefCell<Workspace>,
+    pub(crate) mounts: [TireMount; 6],
+    /// Effective tracks: left, right.
+    tracks: [EffectiveTrack; 2],
+    vertical: VerticalContact,
+    coefficient: f64,
+    pub(crate) steer: RampSteer,
+    speed: SpeedController,
+    pub(crate) options: ModelOptions,
+}
+
+fn track_index(m: &TireMount) -> usize {
+    usize::from(!m.left)
+}
+
+impl TruckVehicle {
+    /// The truck of `params` on `terrain`, its left tires on the line `y = +half_width`,
+    /// its right tires on `y = -half_width` (for terrain-psd's `TwoTrackTerrain`, half its
+    /// track width). Validates the parameters and options and builds the enveloping cache.
+    pub fn new<T: Terrain>(
+        params: &TruckParams,
+        terrain: &T,
+        half_width: f64,
+        options: ModelOptions,
+    ) -> Result<Self, TruckError> {
+        params.validate()?;
+        positive("path_length_m", options.path_length_m)?;
+        positive("envelope_sample_m", options.envelope_sample_m)?;
+        if !options.start_s_m.is_finite() {
+            return Err(crate::error::rejected(
+                "start_s_m",
+                options.start_s_m,
+                "must be finite",
+            ));
+        }
+        let (model, mounts) = build_tree(params)?;
+        let statics = Statics::of(params);
+        let margin = params.wheelbase_m + 2.0 * params.tire_free_radius_m;
+        let range = (
+            options.start_s_m - margin,
+            options.start_s_m + options.path_length_m + margin,
+        );
+        let build = |y: f64, deflection: f64| {
+            EffectiveTrack::build(
+                &Track { terrain, y },
+                range,
+                options.track_grid_m,
+                params.tire_free_radius_m,
+                options.envelope_sample_m,
+                deflection,
+            )
+        };
+        let deflection = 0.5 * (statics.front_tire_deflection_m + statics.rear_tire_deflection_m);
+        let tracks = [
+            build(half_width, deflection)?,
+            build(-half_width, deflection)?,
+        ];
+        let vertical = VerticalContact::new(
+            LoadDeflectionTable::linear(params.tire_vertical_stiffness_n_per_m)?,
+            params.tire_vertical_damping_n_s_per_m,
+        )?;
+        let ws = RefCell::new(Workspace::new(&model));
+        Ok(Self {
+            params: *params,
+            suspension: Suspension::new(params),
+            model,
+            ws,
+            mounts,
+            tracks,
+            vertical,
+            coefficient: params.cornering_coefficient_per_rad(),
+            steer: RampSteer::new(params, options.direction),
+            speed: SpeedController::new(params),
+            options,
+        })
+    }
+
+    /// The parameters.
+    pub fn params(&self) -> &TruckParams {
+        &self.params
+    }
+
+    /// The options.
+    pub fn options(&self) -> &ModelOptions {
+        &self.options
+    }
+
+    /// The multibody tree.
+    pub fn tree(&self) -> &multibody::Model {
+        &self.model
+    }
+
+    /// The struts.
+    pub fn suspension(&self) -> &Suspension {
+        &self.suspension
+    }
+
+    /// The tire mounts, in [`crate::model::TIRE_NAMES`] order.
+    pub fn mounts(&self) -> &[TireMount; 6] {
+        &self.mounts
+    }
+
+    /// The static equilibrium at forward speed `speed` (m/s) along +x: joints at zero, lag
+    /// states and the PI integral at rest, path coordinate at the start.
+    pub fn initial_state(&self, speed: f64) -> [f64; state::DIM] {
+        let mut y = [0.0; state::DIM];
+        y[2] = self.params.cg_height_m;
+        y[3] = 1.0;
+        y[state::V + 3] = speed;
+        y[state::PATH] = self.options.start_s_m;
+        y
+    }
+
+    /// Joint coordinates the struts act on, from a slice of `q` or `v` starting at the
+    /// first joint.
+    fn strut_joints(x: &[f64]) -> [f64; 4] {
+        [x[0], x[1], x[2], x[3]]
+    }
+
+    /// Updates the kinematics at `y` and applies all external forces to the workspace;
+    /// writes the joint forces into `tau` and returns the tire state. Allocation free.
+    pub(crate) fn apply_forces(
+        &self,
+        t: f64,
+        y: &[f64],
+        ws: &mut Workspace,
+        tau: &mut [f64; NV],
+    ) -> Result<TireState, multibody::DynamicsError> {
+        let (q, v) = (&y[state::Q..state::Q + NQ], &y[state::V..state::V + NV]);
+        multibody::update_kinematics(&self.model, ws, q, v)?;
+        let dq = Self::strut_joints(&v[6..]);
+        let f = self.suspension.forces(&Self::strut_joints(&q[7..]), &dq);
+        tau.fill(0.0);
+        tau[6..].copy_from_slice(&self.suspension.joint_forces(&f));
+        let rot = ws.body_rotation(body::SPRUNG);
+        let heading = rot[(1, 0)].atan2(rot[(0, 0)]);
+        let h = Vector3::new(heading.cos(), heading.sin(), 0.0);
+        let lat = Vector3::new(-h.y, h.x, 0.0);
+        let origin = ws.body_position(body::SPRUNG);
+        // The controller reads the drive axle's speed (a wheel-speed signal): the sprung
+        // cg's speed includes pitch motion, and a drive force at the ground reacting to it
+        // would feed the pitch mode.
+        let speed = ws
+            .point_velocity(body::REAR_AXLE, &Vector3::zeros())
+            .dot(&h);
+        let mut out = TireState {
+            heading,
+            speed,
+            path_rate: ws.point_velocity(body::SPRUNG, &Vector3::zeros()).dot(&h),
+            drive_force: self.speed.force(speed, y[state::PI]),
+            ..TireState::default()
+        };
+        let mut centres = [Vector3::zeros(); 6];
+        let mut velocities = [Vector3::zeros(); 6];
+        let mut slopes = [0.0; 6];
+        let mut rear_load = 0.0;
+        for (i, m) in self.mounts.iter().enumerate() {
+            let c = ws.point_position(m.body, &m.point);
+            let vc = ws.point_velocity(m.body, &m.point);
+            let s = y[state::PATH] + (c - origin).dot(&h);
+            let contact = self.tracks[track_index(m)].contact(s, c.z);
+            let (sin, cos) = contact.slope.sin_cos();
+            let rate = vc.dot(&h) * sin - vc.z * cos;
+            let fz = self.vertical.normal_force(contact.deflection, rate);
+            out.normal_force[i] = fz;
+            out.deflection[i] = contact.deflection;
+            (centres[i], velocities[i], slopes[i]) = (c, vc, contact.slope);
+            if !m.front {
+                rear_load += fz;
+            }
+        }
+        let steer = self.steer.angle(t);
+        for (i, m) in self.mounts.iter().enumerate() {
+            let psi = if m.front { heading + steer } else { heading };
+            let (sin_w, cos_w) = psi.sin_cos();
+            let (e_x, e_y) = (
+                Vector3::new(cos_w, sin_w, 0.0),
+                Vector3::new(-sin_w, cos_w, 0.0),
+            );
+            let vc = velocities[i];
+            let (v_x, v_y) = (vc.dot(&e_x), vc.dot(&e_y));
+            let fz = out.normal_force[i];
+            let fy = lateral_force(self.coefficient, fz, y[state::LAG + i], v_x);
+            let fx = if m.front || rear_load <= 0.0 {
+                0.0
+            } else {
+                out.drive_force * fz / rear_load
+            };
+            let (sin, cos) = slopes[i].sin_cos();
+            let normal = Vector3::new(-sin * h.x, -sin * h.y, cos);
+            let tangent = Vector3::new(cos * e_x.x, cos * e_x.y, sin);
+            let force = normal * fz + e_y * fy + tangent * fx;
+            let lever = self.params.tire_free_radius_m - out.deflection[i].max(0.0);
+            let point = centres[i] - normal * lever;
+            ws.apply_force_world(m.body, &force, &point);
+            out.lateral_force[i] = fy;
+            out.lateral_velocity[i] = v_y;
+            out.forward_velocity[i] = v_x;
+            out.lateral_total += force.dot(&lat);
+        }
+        Ok(out)
+    }
+
+    /// Mechanical energy (J) at state `y`: kinetic + gravitational + strut springs and
+    /// bump stops + tire springs (`k_t delta^2 / 2` in contact). Conserved with every
+    /// damper off, no drive and no lateral tire force (`tests/energy.rs`).
+    pub fn energy(&self, y: &[f64]) -> Result<f64, TruckError> {
+        let mut ws = self.ws.borrow_mut();
+        let mut tau = [0.0; NV];
+        let tires = self
+            .apply_forces(0.0, y, &mut ws, &mut tau)
+            .map_err(|source| TruckError::Dynamics { t: 0.0, source })?;
+        let dynamics = |source| TruckError::Dynamics { t: 0.0, source };
+        let kinetic = multibody::kinetic_energy(&self.model, &ws).map_err(dynamics)?;
+        let gravity = multibody::potential_energy(&self.model, &ws).map_err(dynamics)?;
+        let q = &y[state::Q..state::Q + NQ];
+        let struts = self.suspension.energy(&Self::strut_joints(&q[7..]));
+        let k = self.params.tire_vertical_stiffness_n_per_m;
+        let tire: f64 = tires
+            .deflection
+            .iter()
+            .map(|d| 0.5 * k * d.max(0.0).powi(2))
+            .sum();
+        Ok(kinetic + gravity + struts + tire)
+    }
+
+    /// Signed horizontal distance (m) of the whole-vehicle cg inside the nearer of the two
+    /// vertical planes through the outer front and outer rear contact centres of each side:
+    /// absolute rollover when it reaches zero (section 2.3, L648). Needs current
+    /// kinematics in `ws`.
+    pub(crate) fn rollover_margin_ws(&self, ws: &Workspace) -> f64 {
+        let cg = multibody::centre_of_mass(&self.model, ws).unwrap_or(Vector3::zeros());
+        let side = |front: usize, rear: usize, inward: f64| {
+            let f = ws.point_position(self.mounts[front].body, &self.mounts[front].point);
+            let r = ws.point_position(self.mounts[rear].body, &self.mounts[rear].point);
+            let (dx, dy) = (f.x - r.x, f.y - r.y);
+            let len = dx.hypot(dy);
+            // inward normal: right of the line for the left side, left for the right side
+            let (nx, ny) = (inward * dy / len, -inward * dx / len);
+            (cg.x - r.x) * nx + (cg.y - r.y) * ny
+        };
+        side(0, 2, 1.0).min(side(1, 5, -1.0))
+    }
+}
+
+impl odeint::OdeSystem for TruckVehicle {
+    fn dim(&self) -> usize {
+        state::DIM
+    }
+
+    fn rhs(&self, t: f64, y: &[f64], dydt: &mut [f64]) {
+        let mut ws = self.ws.borrow_mut();
+        let mut tau = [0.0; NV];
+        let Ok(tires) = self.apply_forces(t, y, &mut ws, &mut tau) else {
+            dydt.fill(f64::NAN);
+            return;
+        };
+        let Ok(vdot) = multibody::forward_dynamics(&self.model, &mut ws, &tau) else {
+            dydt.fill(f64::NAN);
+            return;
+        };
+        dydt[state::V..state::V + NV].copy_from_slice(vdot.as_slice());
+        self.model.velocity_to_qdot(
+            &y[state::Q..state::Q + NQ],
+            &y[state::V..state::V + NV],
+            &mut dydt[state::Q..state::Q + NQ],
+        );
+        let sigma = self.params.relaxation_length_m;
+        for i in 0..6 {
+            dydt[state::LAG + i] = contact_velocity_lag_rate(
+                y[state::LAG + i],
+                tires.lateral_velocity[i],
+                tires.forward_velocity[i],
+                sigma,
+            );
+        }
+        dydt[state::PI] = self.speed.error(tires.speed);
+        dydt[state::PATH] = tires.path_rate;
+    }
+}
