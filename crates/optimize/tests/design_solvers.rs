@@ -6,7 +6,7 @@ use optimize::ga::{GaOptions, GaState, GeneticAlgorithm};
 use optimize::pattern_search::{
     PatternSearch, PatternSearchOptions, PatternSearchState, PatternStop,
 };
-use optimize::sqp::{sqp, SqpOptions};
+use optimize::sqp::{sqp, sqp_ask, LoggedEvaluation, SqpOptions, SqpStep};
 use optimize::{Bounds, ConstrainedProblem, Evaluation, Silent};
 
 /// A problem from closures.
@@ -215,7 +215,7 @@ fn genetic_algorithm_on_constrained_himmelblau() {
     let mut s = ga.start(&[]).unwrap();
     let mut prev = s.best().eval.clone();
     for _ in 0..20 {
-        ga.step(&mut s);
+        ga.step(&mut s).unwrap();
         assert!(s.best().eval.deb_cmp(&prev).is_le());
         prev = s.best().eval.clone();
     }
@@ -246,7 +246,7 @@ fn interrupted_runs_resume_to_identical_bytes() {
     let full = run_ga(&p, ga_options());
     let mut s = ga.start(&[]).unwrap();
     for _ in 0..7 {
-        ga.step(&mut s);
+        ga.step(&mut s).unwrap();
     }
     let saved = serde_json::to_string(&s).unwrap();
     let resumed = ga
@@ -302,4 +302,86 @@ fn results_do_not_depend_on_the_thread_count() {
         })
     };
     assert_eq!(on(1), on(3));
+}
+
+/// Evaluates `units` as `shards` separate pieces (as separate processes would) and puts
+/// the results back in id order.
+fn evaluate_in_shards<P: ConstrainedProblem>(
+    p: &P,
+    units: &[Vec<f64>],
+    shards: usize,
+) -> Vec<Evaluation> {
+    let mut out: Vec<Option<Evaluation>> = vec![None; units.len()];
+    for shard in 0..shards {
+        for (id, u) in units
+            .iter()
+            .enumerate()
+            .filter(|(id, _)| id % shards == shard)
+        {
+            out[id] = Some(p.evaluate(&p.bounds().from_unit(u)));
+        }
+    }
+    out.into_iter().map(Option::unwrap).collect()
+}
+
+#[test]
+fn ask_and_tell_with_sharded_evaluation_equal_the_in_process_runs() {
+    let p = himmelblau();
+    // Pattern search.
+    let ps = PatternSearch::new(&p, ps_options(10)).unwrap();
+    let full = run_ps(&p, ps_options(10), &[1.0, 2.5]);
+    let mut s = ps.start(&[1.0, 2.5]).unwrap();
+    while s.stop.is_none() {
+        let units = ps.ask(&s).unwrap();
+        let evals = evaluate_in_shards(&p, &units, 3);
+        ps.tell(&mut s, evals).unwrap();
+    }
+    assert_eq!(
+        serde_json::to_string(&s).unwrap(),
+        serde_json::to_string(&full).unwrap()
+    );
+    assert!(
+        ps.tell(&mut s.clone(), vec![]).is_ok(),
+        "a stopped search ignores tells"
+    );
+    // GA.
+    let ga = GeneticAlgorithm::new(&p, ga_options()).unwrap();
+    let full = run_ga(&p, ga_options());
+    let mut s = ga.start(&[]).unwrap();
+    while s.generation < ga_options().generations {
+        let units = ga.ask(&s);
+        ga.tell(&mut s, evaluate_in_shards(&p, &units, 4)).unwrap();
+    }
+    assert_eq!(
+        serde_json::to_string(&s).unwrap(),
+        serde_json::to_string(&full).unwrap()
+    );
+    assert!(
+        ga.tell(&mut s, vec![]).is_err(),
+        "a batch of the wrong size is refused"
+    );
+    // SQP.
+    let o = SqpOptions::default();
+    let full = sqp(&p, &[1.0, 2.5], &o, vec![], &Silent, &mut |_| Ok(())).unwrap();
+    let mut log = Vec::new();
+    let mut asks = 0;
+    let done = loop {
+        match sqp_ask(p.bounds(), p.n_constraints(), &[1.0, 2.5], &o, log.clone()).unwrap() {
+            SqpStep::Need(units) => {
+                asks += 1;
+                let evals = evaluate_in_shards(&p, &units, 2);
+                log.extend(
+                    units
+                        .into_iter()
+                        .zip(evals)
+                        .map(|(u, eval)| LoggedEvaluation { u, eval }),
+                );
+            }
+            SqpStep::Done(r) => break r,
+        }
+    };
+    assert!(asks > 3);
+    assert_eq!(done.x, full.x);
+    assert_eq!(done.log, full.log);
+    assert_eq!(done.status, full.status);
 }
