@@ -385,3 +385,75 @@ fn ask_and_tell_with_sharded_evaluation_equal_the_in_process_runs() {
     assert_eq!(done.log, full.log);
     assert_eq!(done.status, full.status);
 }
+
+mod invariants {
+    use super::*;
+    use proptest::prelude::*;
+    use std::sync::atomic::{AtomicBool, Ordering};
+
+    /// A shifted quadratic on a random box that records any evaluation outside the box.
+    struct Watched {
+        bounds: Bounds,
+        centre: Vec<f64>,
+        outside: AtomicBool,
+    }
+
+    impl ConstrainedProblem for Watched {
+        fn bounds(&self) -> &Bounds {
+            &self.bounds
+        }
+        fn n_constraints(&self) -> usize {
+            1
+        }
+        fn evaluate(&self, x: &[f64]) -> Evaluation {
+            let (lo, hi) = (self.bounds.lower(), self.bounds.upper());
+            if x.iter()
+                .zip(lo.iter().zip(hi))
+                .any(|(v, (l, h))| v < l || v > h)
+            {
+                self.outside.store(true, Ordering::Relaxed);
+            }
+            let f = x
+                .iter()
+                .zip(&self.centre)
+                .map(|(a, c)| (a - c) * (a - c))
+                .sum();
+            // A half-space constraint through the box: x_0 + x_1 <= hi_0 + lo_1.
+            Evaluation {
+                f,
+                constraints: vec![x[0] + x[1] - hi[0] - lo[1]],
+            }
+        }
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(32))]
+        #[test]
+        fn every_point_is_inside_the_box_and_the_incumbent_never_worsens(
+            lo in prop::collection::vec(-5.0f64..0.0, 3),
+            width in prop::collection::vec(0.5f64..5.0, 3),
+            centre in prop::collection::vec(-8.0f64..8.0, 3),
+            start in prop::collection::vec(0.0f64..1.0, 3),
+            seed in 0u64..100,
+        ) {
+            let hi: Vec<f64> = lo.iter().zip(&width).map(|(l, w)| l + w).collect();
+            let p = Watched { bounds: Bounds::new(lo, hi).unwrap(), centre, outside: AtomicBool::new(false) };
+            let x0 = p.bounds().from_unit(&start);
+            let o = PatternSearchOptions { search_points: 6, seed, ..PatternSearchOptions::default() };
+            let ps = PatternSearch::new(&p, o).unwrap();
+            let mut s = ps.start(&x0).unwrap();
+            let mut prev = s.eval.clone();
+            while s.stop.is_none() {
+                ps.step(&mut s).unwrap();
+                prop_assert!(!s.eval.deb_cmp(&prev).is_gt());
+                prev = s.eval.clone();
+            }
+            prop_assert!(!p.outside.load(Ordering::Relaxed));
+            let ga = GeneticAlgorithm::new(&p, GaOptions { population: 8, generations: 5, seed, ..GaOptions::default() }).unwrap();
+            let g = ga.run(ga.start(std::slice::from_ref(&x0)).unwrap(), &Silent, &mut |_| Ok(())).unwrap();
+            // Elitism: the GA's best is no worse than its seed, the start point.
+            prop_assert!(!g.best().eval.deb_cmp(&p.evaluate(&x0)).is_gt());
+            prop_assert!(!p.outside.load(Ordering::Relaxed));
+        }
+    }
+}
