@@ -189,8 +189,50 @@ impl<'a, P: ConstrainedProblem + ?Sized> GeneticAlgorithm<'a, P> {
     }
 
     /// One generation: `population` children from tournament-selected parents by SBX and
-    /// polynomial mutation, evaluated in parallel, then (mu + lambda) survival.
-    pub fn step(&self, s: &mut GaState) {
+    /// polynomial mutation, evaluated in parallel, then (mu + lambda) survival
+    /// ([`GeneticAlgorithm::ask`], [`GeneticAlgorithm::tell`]).
+    pub fn step(&self, s: &mut GaState) -> Result<(), OptimizeError> {
+        let b = self.problem.bounds();
+        let xs: Vec<Vec<f64>> = self.ask(s).iter().map(|u| b.from_unit(u)).collect();
+        let evals = evaluate_batch(self.problem, &xs);
+        self.tell(s, evals)
+    }
+
+    /// The children of the next generation in unit-cube coordinates. Evaluate them
+    /// anywhere (in order) and hand the results to [`GeneticAlgorithm::tell`].
+    pub fn ask(&self, s: &GaState) -> Vec<Vec<f64>> {
+        self.children(s).0
+    }
+
+    /// Advances one generation with the evaluations of the children [`GeneticAlgorithm::ask`]
+    /// gives for `s` (in its order): (mu + lambda) survival under Deb's rules.
+    pub fn tell(&self, s: &mut GaState, evals: Vec<Evaluation>) -> Result<(), OptimizeError> {
+        let (children, rng) = self.children(s);
+        require(
+            evals.len() == children.len()
+                && evals
+                    .iter()
+                    .all(|e| e.constraints.len() == self.problem.n_constraints()),
+            "evals",
+            "one evaluation per asked child, with every constraint",
+        )?;
+        let b = self.problem.bounds();
+        s.rng = rng;
+        s.evaluations += evals.len();
+        s.population
+            .extend(children.into_iter().zip(evals).map(|(u, eval)| Individual {
+                x: b.from_unit(&u),
+                u,
+                eval,
+            }));
+        rank(&mut s.population);
+        s.population.truncate(self.options.population);
+        s.generation += 1;
+        Ok(())
+    }
+
+    /// The children of `s` and the stream position after drawing them.
+    fn children(&self, s: &GaState) -> (Vec<Vec<f64>>, StreamState) {
         let mut rng = Stream::restore(s.rng);
         let mut children = Vec::with_capacity(self.options.population);
         while children.len() < self.options.population {
@@ -206,13 +248,7 @@ impl<'a, P: ConstrainedProblem + ?Sized> GeneticAlgorithm<'a, P> {
             children.push(c1);
             children.push(c2);
         }
-        s.rng = rng.state();
-        let children = self.evaluate(children);
-        s.evaluations += children.len();
-        s.population.extend(children);
-        rank(&mut s.population);
-        s.population.truncate(self.options.population);
-        s.generation += 1;
+        (children, rng.state())
     }
 
     /// Runs to `generations`, calling `checkpoint` after every generation.
@@ -224,7 +260,7 @@ impl<'a, P: ConstrainedProblem + ?Sized> GeneticAlgorithm<'a, P> {
     ) -> Result<GaState, OptimizeError> {
         self.check_state(&s)?;
         while s.generation < self.options.generations {
-            self.step(&mut s);
+            self.step(&mut s)?;
             progress.report(
                 "genetic algorithm",
                 s.generation,

@@ -113,6 +113,9 @@ pub struct PatternSearchState {
     pub evaluations: usize,
     /// Set once the search has stopped.
     pub stop: Option<PatternStop>,
+    /// Whether the search step of the first iteration has been evaluated.
+    #[serde(default)]
+    pub search_done: bool,
 }
 
 impl PatternSearchState {
@@ -151,6 +154,7 @@ impl<'a, P: ConstrainedProblem + ?Sized> PatternSearch<'a, P> {
             iteration: 0,
             evaluations: 1,
             stop: None,
+            search_done: false,
         })
     }
 
@@ -172,17 +176,76 @@ impl<'a, P: ConstrainedProblem + ?Sized> PatternSearch<'a, P> {
     }
 
     /// One iteration: the search step at iteration 0 (if configured; a success skips the
-    /// poll), otherwise a complete poll; then the mesh update and the stopping tests.
+    /// poll), otherwise a complete poll; then the mesh update and the stopping tests. The
+    /// batches are evaluated in parallel ([`PatternSearch::ask`], [`PatternSearch::tell`]).
     pub fn step(&self, s: &mut PatternSearchState) -> Result<(), OptimizeError> {
+        let iteration = s.iteration;
+        let b = self.problem.bounds();
+        while s.stop.is_none() && s.iteration == iteration {
+            let xs: Vec<Vec<f64>> = self.ask(s)?.iter().map(|u| b.from_unit(u)).collect();
+            let evals = evaluate_batch(self.problem, &xs);
+            self.tell(s, evals)?;
+        }
+        Ok(())
+    }
+
+    /// The next batch in unit-cube coordinates (empty once stopped): the search hypercube
+    /// at the first iteration if configured and not yet evaluated, else the poll points.
+    /// Evaluate them anywhere (in order) and hand the results to [`PatternSearch::tell`].
+    pub fn ask(&self, s: &PatternSearchState) -> Result<Vec<Vec<f64>>, OptimizeError> {
+        if s.stop.is_some() {
+            return Ok(Vec::new());
+        }
+        if self.in_search(s) {
+            return latin_hypercube(&LhsOptions {
+                points: self.options.search_points,
+                dim: s.u.len(),
+                seed: self.options.seed,
+                maximin_candidates: self.options.maximin_candidates,
+            });
+        }
+        let mut units = Vec::with_capacity(2 * s.u.len());
+        for i in 0..s.u.len() {
+            for sign in [1.0, -1.0] {
+                let mut u = s.u.clone();
+                u[i] = (u[i] + sign * s.mesh).clamp(0.0, 1.0);
+                if u[i] != s.u[i] {
+                    units.push(u);
+                }
+            }
+        }
+        Ok(units)
+    }
+
+    /// Advances by the evaluations of the batch [`PatternSearch::ask`] gives for `s` (in
+    /// its order): moves to the best improving point, then (after a poll, or a successful
+    /// search) updates the mesh and tests the stops; a failed search leaves the poll of the
+    /// same iteration to come.
+    pub fn tell(
+        &self,
+        s: &mut PatternSearchState,
+        evals: Vec<Evaluation>,
+    ) -> Result<(), OptimizeError> {
+        let units = self.ask(s)?;
+        require(
+            evals.len() == units.len()
+                && evals
+                    .iter()
+                    .all(|e| e.constraints.len() == self.problem.n_constraints()),
+            "evals",
+            "one evaluation per asked point, with every constraint",
+        )?;
         if s.stop.is_some() {
             return Ok(());
         }
-        let searched = s.iteration == 0 && self.options.search_points > 0;
-        let success = if searched && self.search(s)? {
-            true
-        } else {
-            self.poll(s)
-        };
+        let searching = self.in_search(s);
+        let success = self.accept(s, units, evals);
+        if searching {
+            s.search_done = true;
+            if !success {
+                return Ok(());
+            }
+        }
         if success {
             s.mesh = (s.mesh * self.options.expansion).min(self.options.max_mesh);
         } else {
@@ -195,6 +258,10 @@ impl<'a, P: ConstrainedProblem + ?Sized> PatternSearch<'a, P> {
             s.stop = Some(PatternStop::EvaluationLimit);
         }
         Ok(())
+    }
+
+    fn in_search(&self, s: &PatternSearchState) -> bool {
+        s.iteration == 0 && self.options.search_points > 0 && !s.search_done
     }
 
     /// Iterates until a stop, calling `checkpoint` after every iteration (a failing
@@ -222,39 +289,17 @@ impl<'a, P: ConstrainedProblem + ?Sized> PatternSearch<'a, P> {
         Ok(s)
     }
 
-    /// The search step: one Latin hypercube; moves to its best point if that improves.
-    fn search(&self, s: &mut PatternSearchState) -> Result<bool, OptimizeError> {
-        let units = latin_hypercube(&LhsOptions {
-            points: self.options.search_points,
-            dim: s.u.len(),
-            seed: self.options.seed,
-            maximin_candidates: self.options.maximin_candidates,
-        })?;
-        Ok(self.try_points(s, units))
-    }
-
-    /// The complete poll of the 2n directions; moves to the best improving point.
-    fn poll(&self, s: &mut PatternSearchState) -> bool {
-        let mut units = Vec::with_capacity(2 * s.u.len());
-        for i in 0..s.u.len() {
-            for sign in [1.0, -1.0] {
-                let mut u = s.u.clone();
-                u[i] = (u[i] + sign * s.mesh).clamp(0.0, 1.0);
-                if u[i] != s.u[i] {
-                    units.push(u);
-                }
-            }
-        }
-        self.try_points(s, units)
-    }
-
-    /// Evaluates `units` in parallel and moves to the first best one if it beats the
-    /// incumbent: under the extreme barrier from a feasible incumbent; by Deb's rules (less
-    /// total violation) while the incumbent is still infeasible.
-    fn try_points(&self, s: &mut PatternSearchState, units: Vec<Vec<f64>>) -> bool {
+    /// Moves to the first best of the evaluated `units` if it beats the incumbent: under the
+    /// extreme barrier from a feasible incumbent; by Deb's rules (less total violation)
+    /// while the incumbent is still infeasible.
+    fn accept(
+        &self,
+        s: &mut PatternSearchState,
+        units: Vec<Vec<f64>>,
+        evals: Vec<Evaluation>,
+    ) -> bool {
         let b = self.problem.bounds();
         let xs: Vec<Vec<f64>> = units.iter().map(|u| b.from_unit(u)).collect();
-        let evals = evaluate_batch(self.problem, &xs);
         s.evaluations += evals.len();
         let feasible = s.eval.is_feasible();
         let mut best: Option<usize> = None;

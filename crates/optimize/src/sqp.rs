@@ -8,8 +8,8 @@
 //! is deterministic, so a run resumed from a saved log replays the logged values (no
 //! evaluation is repeated) and continues exactly as an uninterrupted run.
 
-use crate::batch::{evaluate_batch, Progress};
-use crate::problem::{require, ConstrainedProblem, Evaluation, OptimizeError};
+use crate::batch::{evaluate_batch, Progress, Silent};
+use crate::problem::{require, Bounds, ConstrainedProblem, Evaluation, OptimizeError};
 use serde::{Deserialize, Serialize};
 use std::cell::RefCell;
 use std::collections::HashMap;
@@ -76,8 +76,13 @@ pub struct SqpResult {
 }
 
 /// Caches and logs the evaluations of one SQP run.
-struct Evaluator<'a, P: ConstrainedProblem + ?Sized> {
-    problem: &'a P,
+struct Evaluator<'a> {
+    /// The problem, or `None` when only the log answers (ask mode: a missing point is
+    /// recorded in `wanted` and answered with a placeholder).
+    problem: Option<&'a dyn ConstrainedProblem>,
+    bounds: &'a Bounds,
+    nc: usize,
+    wanted: RefCell<Option<Batch>>,
     options: SqpOptions,
     cache: RefCell<HashMap<Vec<u64>, Evaluation>>,
     log: RefCell<Vec<LoggedEvaluation>>,
@@ -99,7 +104,7 @@ fn key(u: &[f64]) -> Vec<u64> {
     u.iter().map(|v| v.to_bits()).collect()
 }
 
-impl<P: ConstrainedProblem + ?Sized> Evaluator<'_, P> {
+impl Evaluator<'_> {
     /// Evaluations of `units` (cached where known; the rest in one parallel batch).
     fn many(&self, units: &[Vec<f64>]) -> Vec<Evaluation> {
         let mut miss: Vec<Vec<f64>> = Vec::new();
@@ -111,10 +116,30 @@ impl<P: ConstrainedProblem + ?Sized> Evaluator<'_, P> {
                 }
             }
         }
+        let Some(problem) = self.problem else {
+            // Ask mode: record the first batch that is missing; answer every missing point
+            // with one constant placeholder, whose zero differences end SLSQP quickly.
+            if !miss.is_empty() && self.wanted.borrow().is_none() {
+                *self.wanted.borrow_mut() = Some(miss);
+            }
+            let placeholder = Evaluation {
+                f: 0.0,
+                constraints: vec![-1.0; self.nc],
+            };
+            let cache = self.cache.borrow();
+            return units
+                .iter()
+                .map(|u| {
+                    cache
+                        .get(&key(u))
+                        .cloned()
+                        .unwrap_or_else(|| placeholder.clone())
+                })
+                .collect();
+        };
         if !miss.is_empty() && self.error.borrow().is_none() {
-            let b = self.problem.bounds();
-            let xs: Vec<Vec<f64>> = miss.iter().map(|u| b.from_unit(u)).collect();
-            let evals = evaluate_batch(self.problem, &xs);
+            let xs: Vec<Vec<f64>> = miss.iter().map(|u| self.bounds.from_unit(u)).collect();
+            let evals = evaluate_batch(problem, &xs);
             let mut cache = self.cache.borrow_mut();
             let mut log = self.log.borrow_mut();
             for (u, e) in miss.into_iter().zip(evals) {
@@ -132,7 +157,7 @@ impl<P: ConstrainedProblem + ?Sized> Evaluator<'_, P> {
             }
         }
         let cache = self.cache.borrow();
-        let failed = Evaluation::failed(self.problem.n_constraints());
+        let failed = Evaluation::failed(self.nc);
         units
             .iter()
             .map(|u| {
@@ -146,7 +171,7 @@ impl<P: ConstrainedProblem + ?Sized> Evaluator<'_, P> {
 
     /// An upper bound of the evaluations (for the progress bar).
     fn max_evaluations(&self) -> usize {
-        let n = self.problem.bounds().dim();
+        let n = self.bounds.dim();
         self.options.max_calls * (1 + if self.options.central { 2 * n } else { n })
     }
 
@@ -188,7 +213,7 @@ impl<P: ConstrainedProblem + ?Sized> Evaluator<'_, P> {
 
 /// SLSQP from `x0` (projected onto the bounds), continuing a saved `log` (empty for a new
 /// run); `checkpoint` receives the whole log after every batch of new evaluations.
-pub fn sqp<P: ConstrainedProblem + ?Sized>(
+pub fn sqp<P: ConstrainedProblem>(
     problem: &P,
     x0: &[f64],
     options: &SqpOptions,
@@ -196,7 +221,67 @@ pub fn sqp<P: ConstrainedProblem + ?Sized>(
     progress: &dyn Progress,
     checkpoint: &mut SqpCheckpoint<'_>,
 ) -> Result<SqpResult, OptimizeError> {
-    let b = problem.bounds();
+    let source = Source {
+        problem: Some(problem),
+        bounds: problem.bounds(),
+        nc: problem.n_constraints(),
+    };
+    drive(source, x0, options, log, progress, checkpoint).map(|(r, _)| r)
+}
+
+/// What [`sqp_ask`] found: the next batch to evaluate, or the end of the run.
+#[derive(Debug, Clone, PartialEq)]
+pub enum SqpStep {
+    /// Unit-cube points to evaluate next; append each with its evaluation to the log
+    /// (as a [`LoggedEvaluation`], in this order) and ask again.
+    Need(Vec<Vec<f64>>),
+    /// The run is complete; the result equals the one of [`sqp`] with the same inputs.
+    Done(SqpResult),
+}
+
+/// The ask half of an SQP run evaluated elsewhere: SLSQP replayed on `log` up to the first
+/// point the log does not hold. A problem's shape (`bounds`, `n_constraints`) is all it
+/// needs; the loop "ask, evaluate, append, ask" gives exactly the run of [`sqp`].
+pub fn sqp_ask(
+    bounds: &Bounds,
+    n_constraints: usize,
+    x0: &[f64],
+    options: &SqpOptions,
+    log: Vec<LoggedEvaluation>,
+) -> Result<SqpStep, OptimizeError> {
+    let source = Source {
+        problem: None,
+        bounds,
+        nc: n_constraints,
+    };
+    let (r, wanted) = drive(source, x0, options, log, &Silent, &mut |_| Ok(()))?;
+    Ok(match wanted {
+        Some(w) => SqpStep::Need(w),
+        None => SqpStep::Done(r),
+    })
+}
+
+/// A batch of unit-cube points.
+type Batch = Vec<Vec<f64>>;
+
+/// Where the evaluations come from: a problem, or (ask mode) only the log.
+struct Source<'a> {
+    problem: Option<&'a dyn ConstrainedProblem>,
+    bounds: &'a Bounds,
+    nc: usize,
+}
+
+/// The SLSQP run shared by [`sqp`] and [`sqp_ask`]; also returns the first missing batch
+/// in ask mode.
+fn drive(
+    source: Source<'_>,
+    x0: &[f64],
+    options: &SqpOptions,
+    log: Vec<LoggedEvaluation>,
+    progress: &dyn Progress,
+    checkpoint: &mut SqpCheckpoint<'_>,
+) -> Result<(SqpResult, Option<Batch>), OptimizeError> {
+    let b = source.bounds;
     let n = b.dim();
     require(x0.len() == n, "x0", "one value per variable")?;
     require(x0.iter().all(|v| v.is_finite()), "x0", "finite")?;
@@ -211,7 +296,7 @@ pub fn sqp<P: ConstrainedProblem + ?Sized>(
         "constraint_margin",
         "finite and >= 0",
     )?;
-    let nc = problem.n_constraints();
+    let nc = source.nc;
     if log
         .iter()
         .any(|l| l.u.len() != n || l.eval.constraints.len() != nc)
@@ -223,7 +308,10 @@ pub fn sqp<P: ConstrainedProblem + ?Sized>(
     let replay_len = log.len();
     let cache = log.iter().map(|l| (key(&l.u), l.eval.clone())).collect();
     let ev = Evaluator {
-        problem,
+        problem: source.problem,
+        bounds: b,
+        nc,
+        wanted: RefCell::new(None),
         options: *options,
         cache: RefCell::new(cache),
         log: RefCell::new(log),
@@ -286,9 +374,10 @@ pub fn sqp<P: ConstrainedProblem + ?Sized>(
     }
     let improved = best.0 != u0;
     let (u, eval) = best;
+    let wanted = ev.wanted.into_inner();
     let log = ev.log.into_inner();
     let evaluations = log.len();
-    Ok(SqpResult {
+    let result = SqpResult {
         x: b.from_unit(&u),
         eval,
         improved,
@@ -296,5 +385,6 @@ pub fn sqp<P: ConstrainedProblem + ?Sized>(
         evaluations,
         replayed: replay_len.min(evaluations),
         log,
-    })
+    };
+    Ok((result, wanted))
 }

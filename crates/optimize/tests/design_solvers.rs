@@ -6,7 +6,7 @@ use optimize::ga::{GaOptions, GaState, GeneticAlgorithm};
 use optimize::pattern_search::{
     PatternSearch, PatternSearchOptions, PatternSearchState, PatternStop,
 };
-use optimize::sqp::{sqp, SqpOptions};
+use optimize::sqp::{sqp, sqp_ask, LoggedEvaluation, SqpOptions, SqpStep};
 use optimize::{Bounds, ConstrainedProblem, Evaluation, Silent};
 
 /// A problem from closures.
@@ -215,7 +215,7 @@ fn genetic_algorithm_on_constrained_himmelblau() {
     let mut s = ga.start(&[]).unwrap();
     let mut prev = s.best().eval.clone();
     for _ in 0..20 {
-        ga.step(&mut s);
+        ga.step(&mut s).unwrap();
         assert!(s.best().eval.deb_cmp(&prev).is_le());
         prev = s.best().eval.clone();
     }
@@ -246,7 +246,7 @@ fn interrupted_runs_resume_to_identical_bytes() {
     let full = run_ga(&p, ga_options());
     let mut s = ga.start(&[]).unwrap();
     for _ in 0..7 {
-        ga.step(&mut s);
+        ga.step(&mut s).unwrap();
     }
     let saved = serde_json::to_string(&s).unwrap();
     let resumed = ga
@@ -302,4 +302,158 @@ fn results_do_not_depend_on_the_thread_count() {
         })
     };
     assert_eq!(on(1), on(3));
+}
+
+/// Evaluates `units` as `shards` separate pieces (as separate processes would) and puts
+/// the results back in id order.
+fn evaluate_in_shards<P: ConstrainedProblem>(
+    p: &P,
+    units: &[Vec<f64>],
+    shards: usize,
+) -> Vec<Evaluation> {
+    let mut out: Vec<Option<Evaluation>> = vec![None; units.len()];
+    for shard in 0..shards {
+        for (id, u) in units
+            .iter()
+            .enumerate()
+            .filter(|(id, _)| id % shards == shard)
+        {
+            out[id] = Some(p.evaluate(&p.bounds().from_unit(u)));
+        }
+    }
+    out.into_iter().map(Option::unwrap).collect()
+}
+
+#[test]
+fn ask_and_tell_with_sharded_evaluation_equal_the_in_process_runs() {
+    let p = himmelblau();
+    // Pattern search.
+    let ps = PatternSearch::new(&p, ps_options(10)).unwrap();
+    let full = run_ps(&p, ps_options(10), &[1.0, 2.5]);
+    let mut s = ps.start(&[1.0, 2.5]).unwrap();
+    while s.stop.is_none() {
+        let units = ps.ask(&s).unwrap();
+        let evals = evaluate_in_shards(&p, &units, 3);
+        ps.tell(&mut s, evals).unwrap();
+    }
+    assert_eq!(
+        serde_json::to_string(&s).unwrap(),
+        serde_json::to_string(&full).unwrap()
+    );
+    assert!(
+        ps.tell(&mut s.clone(), vec![]).is_ok(),
+        "a stopped search ignores tells"
+    );
+    // GA.
+    let ga = GeneticAlgorithm::new(&p, ga_options()).unwrap();
+    let full = run_ga(&p, ga_options());
+    let mut s = ga.start(&[]).unwrap();
+    while s.generation < ga_options().generations {
+        let units = ga.ask(&s);
+        ga.tell(&mut s, evaluate_in_shards(&p, &units, 4)).unwrap();
+    }
+    assert_eq!(
+        serde_json::to_string(&s).unwrap(),
+        serde_json::to_string(&full).unwrap()
+    );
+    assert!(
+        ga.tell(&mut s, vec![]).is_err(),
+        "a batch of the wrong size is refused"
+    );
+    // SQP.
+    let o = SqpOptions::default();
+    let full = sqp(&p, &[1.0, 2.5], &o, vec![], &Silent, &mut |_| Ok(())).unwrap();
+    let mut log = Vec::new();
+    let mut asks = 0;
+    let done = loop {
+        match sqp_ask(p.bounds(), p.n_constraints(), &[1.0, 2.5], &o, log.clone()).unwrap() {
+            SqpStep::Need(units) => {
+                asks += 1;
+                let evals = evaluate_in_shards(&p, &units, 2);
+                log.extend(
+                    units
+                        .into_iter()
+                        .zip(evals)
+                        .map(|(u, eval)| LoggedEvaluation { u, eval }),
+                );
+            }
+            SqpStep::Done(r) => break r,
+        }
+    };
+    assert!(asks > 3);
+    assert_eq!(done.x, full.x);
+    assert_eq!(done.log, full.log);
+    assert_eq!(done.status, full.status);
+}
+
+mod invariants {
+    use super::*;
+    use proptest::prelude::*;
+    use std::sync::atomic::{AtomicBool, Ordering};
+
+    /// A shifted quadratic on a random box that records any evaluation outside the box.
+    struct Watched {
+        bounds: Bounds,
+        centre: Vec<f64>,
+        outside: AtomicBool,
+    }
+
+    impl ConstrainedProblem for Watched {
+        fn bounds(&self) -> &Bounds {
+            &self.bounds
+        }
+        fn n_constraints(&self) -> usize {
+            1
+        }
+        fn evaluate(&self, x: &[f64]) -> Evaluation {
+            let (lo, hi) = (self.bounds.lower(), self.bounds.upper());
+            if x.iter()
+                .zip(lo.iter().zip(hi))
+                .any(|(v, (l, h))| v < l || v > h)
+            {
+                self.outside.store(true, Ordering::Relaxed);
+            }
+            let f = x
+                .iter()
+                .zip(&self.centre)
+                .map(|(a, c)| (a - c) * (a - c))
+                .sum();
+            // A half-space constraint through the box: x_0 + x_1 <= hi_0 + lo_1.
+            Evaluation {
+                f,
+                constraints: vec![x[0] + x[1] - hi[0] - lo[1]],
+            }
+        }
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(32))]
+        #[test]
+        fn every_point_is_inside_the_box_and_the_incumbent_never_worsens(
+            lo in prop::collection::vec(-5.0f64..0.0, 3),
+            width in prop::collection::vec(0.5f64..5.0, 3),
+            centre in prop::collection::vec(-8.0f64..8.0, 3),
+            start in prop::collection::vec(0.0f64..1.0, 3),
+            seed in 0u64..100,
+        ) {
+            let hi: Vec<f64> = lo.iter().zip(&width).map(|(l, w)| l + w).collect();
+            let p = Watched { bounds: Bounds::new(lo, hi).unwrap(), centre, outside: AtomicBool::new(false) };
+            let x0 = p.bounds().from_unit(&start);
+            let o = PatternSearchOptions { search_points: 6, seed, ..PatternSearchOptions::default() };
+            let ps = PatternSearch::new(&p, o).unwrap();
+            let mut s = ps.start(&x0).unwrap();
+            let mut prev = s.eval.clone();
+            while s.stop.is_none() {
+                ps.step(&mut s).unwrap();
+                prop_assert!(!s.eval.deb_cmp(&prev).is_gt());
+                prev = s.eval.clone();
+            }
+            prop_assert!(!p.outside.load(Ordering::Relaxed));
+            let ga = GeneticAlgorithm::new(&p, GaOptions { population: 8, generations: 5, seed, ..GaOptions::default() }).unwrap();
+            let g = ga.run(ga.start(std::slice::from_ref(&x0)).unwrap(), &Silent, &mut |_| Ok(())).unwrap();
+            // Elitism: the GA's best is no worse than its seed, the start point.
+            prop_assert!(!g.best().eval.deb_cmp(&p.evaluate(&x0)).is_gt());
+            prop_assert!(!p.outside.load(Ordering::Relaxed));
+        }
+    }
 }
