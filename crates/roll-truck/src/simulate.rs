@@ -90,6 +90,8 @@ pub struct RunRecord {
 fn push_sample(vehicle: &TruckVehicle, t: f64, y: &[f64], rec: &mut RunRecord) {
     let mut ws = vehicle.ws.borrow_mut();
     let mut tau = [0.0; NV];
+    // The integrator only hands out states at which the right-hand side succeeded (a
+    // failure there is a divergence error), so this evaluation succeeds too.
     let Ok(tires) = vehicle.apply_forces(t, y, &mut ws, &mut tau) else {
         return;
     };

@@ -333,7 +333,10 @@ impl TruckVehicle {
     /// absolute rollover when it reaches zero (section 2.3, L648). Needs current
     /// kinematics in `ws`.
     pub(crate) fn rollover_margin_ws(&self, ws: &Workspace) -> f64 {
-        let cg = multibody::centre_of_mass(&self.model, ws).unwrap_or(Vector3::zeros());
+        // The callers have just updated the kinematics, the only failure condition.
+        let Ok(cg) = multibody::centre_of_mass(&self.model, ws) else {
+            return f64::NAN;
+        };
         let side = |front: usize, rear: usize, inward: f64| {
             let f = ws.point_position(self.mounts[front].body, &self.mounts[front].point);
             let r = ws.point_position(self.mounts[rear].body, &self.mounts[rear].point);

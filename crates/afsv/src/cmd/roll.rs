@@ -46,7 +46,8 @@ pub struct CaseArgs {
     /// Terrain seed.
     #[arg(long, default_value_t = 1)]
     pub seed: u64,
-    /// Simulated time if the truck does not roll over (s), at most 3600.
+    /// Simulated time if the truck does not roll over (s), at most 3600. The rough terrain
+    /// is 800 m long (72 s at 40 km/h); beyond it the ground keeps its end height.
     #[arg(long, default_value_t = 60.0, allow_hyphen_values = true, value_parser = args::positive_f64)]
     pub duration: f64,
 }
