@@ -12,8 +12,8 @@
 use super::{ActiveEffect, DiscoveryError, DiscoveryModel, EffectSpec, ParamSpec, Phase};
 use afsv_records::Record;
 use hps_emulsion::{
-    simulate_strut, AsymmetricFriction, Excitation, GasFractionGrowth, HeatTransfer, HpsExtensions,
-    HpsStrut, SimOptions, StrutParams, ValveLag,
+    simulate_strut_from, AsymmetricFriction, Excitation, GasFractionGrowth, HeatTransfer,
+    HpsExtensions, HpsStrut, SimOptions, StrutParams, ValveLag,
 };
 
 /// Channels the strut model predicts (bench-record names of docs/records.md).
@@ -348,8 +348,13 @@ impl DiscoveryModel for HpsStrutModel {
     ) -> Result<Vec<Option<Vec<f64>>>, DiscoveryError> {
         let p = self.apply_baseline(baseline)?;
         let ext = self.apply_effects(effects)?;
-        let strut = HpsStrut::new(&p, &ext, prepared.peak_velocity_m_s)?;
-        let out = simulate_strut(&strut, &prepared.excitation, &self.sim)?;
+        let strut = HpsStrut::new(&p, &ext)?;
+        let out = simulate_strut_from(
+            &strut,
+            &prepared.excitation,
+            prepared.peak_velocity_m_s,
+            &self.sim,
+        )?;
         Ok(vec![Some(out.force), Some(out.p_piston), Some(out.p_rod)])
     }
 
