@@ -9,11 +9,11 @@ use crate::system::AfsSystem;
 use vehicle_components::{ChannelInfo, Component, StateInfo};
 
 /// The states in order; the fourth only with the valve-lag extension. The typical
-/// magnitudes of the first three are [`AfsSystem::STATE_SCALE`].
+/// magnitudes of the first three are [`AfsSystem::STATE_TYPICAL`].
 const STATES: [StateInfo; 4] = [
-    StateInfo::new("p_c_pa", "Pa", AfsSystem::STATE_SCALE[0]),
-    StateInfo::new("p_r_pa", "Pa", AfsSystem::STATE_SCALE[1]),
-    StateInfo::new("theta_h_rad", "rad", AfsSystem::STATE_SCALE[2]),
+    StateInfo::new("p_c_pa", "Pa", AfsSystem::STATE_TYPICAL[0]),
+    StateInfo::new("p_r_pa", "Pa", AfsSystem::STATE_TYPICAL[1]),
+    StateInfo::new("theta_h_rad", "rad", AfsSystem::STATE_TYPICAL[2]),
     StateInfo::new("valve_spool_rad", "rad", 1.0),
 ];
 

@@ -73,11 +73,9 @@ pub struct AfsOutput {
 /// - `state[3]` = x_v (rad), only with the [`crate::ValveLag`] extension: the lagged spool
 ///   displacement that meters the flows ([`AfsSystem::n_states`] = 4).
 ///
-/// Tolerances: pressures are 1e4..1.4e7 Pa and theta_h is O(0.1..10) rad. With a
-/// scalar `atol` (odeint) use rtol 1e-6 and atol 1e-8: the pressure components are then
-/// controlled by the relative term (rtol·p >= 1e-2 Pa since p >= p_cav), the angle by
-/// atol. Per-state absolute tolerances, if available: 1 Pa for P_c, P_r and 1e-8 rad for
-/// theta_h. See [`AfsSystem::STATE_SCALE`] for a scaled-state option.
+/// Tolerances: pressures are 1e4..1.4e7 Pa and theta_h is O(0.1..10) rad. Integrate the
+/// SI states with per-state absolute tolerances `atol * AfsSystem::STATE_TYPICAL[i]`
+/// (`odeint::Atol::scaled`), e.g. atol 1e-6: 1 Pa for P_c, P_r and 1e-6 rad for theta_h.
 #[derive(Debug, Clone, PartialEq)]
 pub struct AfsSystem {
     params: AfsParams,
@@ -90,9 +88,10 @@ pub struct AfsSystem {
 impl AfsSystem {
     /// Number of states: [P_c, P_r, theta_h].
     pub const N_STATES: usize = 3;
-    /// Typical magnitudes of the states (Pa, Pa, rad). An integrator with a single absolute
-    /// tolerance may integrate `y_i / STATE_SCALE[i]` instead of `y_i`.
-    pub const STATE_SCALE: [f64; 3] = [1.0e6, 1.0e6, 1.0];
+    /// Typical magnitudes of the states (Pa, Pa, rad): they set the per-state absolute
+    /// tolerances of a run (`atol * STATE_TYPICAL[i]`) and the component's
+    /// [`vehicle_components::StateInfo::typical`].
+    pub const STATE_TYPICAL: [f64; 3] = [1.0e6, 1.0e6, 1.0];
 
     /// Build the component with the baseline model (all extensions off).
     pub fn new(params: AfsParams) -> Result<Self, AfsError> {

@@ -115,6 +115,17 @@ pub enum DiscoveryError {
     /// The vehicle model refused its parameters or failed to simulate.
     #[error(transparent)]
     Vehicle(#[from] afsv_dynamics::DynError),
+    /// A calibrated parameter's name is not in its model's registry.
+    #[error(transparent)]
+    Param(#[from] vehicle_components::ParamError),
+    /// A baseline vector of the wrong length was applied.
+    #[error("a baseline vector has {got} values, the calibration set has {expected}")]
+    BaselineLength {
+        /// Size of the calibration set.
+        expected: usize,
+        /// Values given.
+        got: usize,
+    },
     /// A least-squares fit could not run.
     #[error(transparent)]
     Fit(#[from] optimize::least_squares::LeastSquaresError),

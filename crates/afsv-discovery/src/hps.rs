@@ -12,9 +12,10 @@
 use super::{ActiveEffect, DiscoveryError, DiscoveryModel, EffectSpec, ParamSpec, Phase};
 use afsv_records::Record;
 use hps_emulsion::{
-    simulate_strut, AsymmetricFriction, Excitation, GasFractionGrowth, HeatTransfer, HpsExtensions,
-    HpsStrut, SimOptions, StrutParams, ValveLag,
+    simulate_strut_from, AsymmetricFriction, Excitation, GasFractionGrowth, HeatTransfer,
+    HpsExtensions, HpsStrut, SimOptions, StrutParams, ValveLag,
 };
+use vehicle_components::ParamSet;
 
 /// Channels the strut model predicts (bench-record names of docs/records.md).
 pub const CHANNELS: [&str; 3] = ["force_n", "p_piston_pa", "p_rod_pa"];
@@ -67,17 +68,23 @@ impl HpsStrutModel {
         Self::new(StrutParams::front_axle(), Some("front-axle"))
     }
 
-    /// Parameters with the baseline vector applied (order of [`Self::baseline_params`]).
+    /// Parameters with the baseline vector applied: value `i` to the registry parameter
+    /// [`CALIBRATED`]`[i]`, the gas fraction last with [`StrutParams::with_gamma0`].
     pub fn apply_baseline(&self, v: &[f64]) -> Result<StrutParams, DiscoveryError> {
+        if v.len() != CALIBRATED.len() {
+            return Err(DiscoveryError::BaselineLength {
+                expected: CALIBRATED.len(),
+                got: v.len(),
+            });
+        }
+        let (fields, gamma0) = v.split_at(CALIBRATED.len() - 1);
         let mut p = self.params;
-        p.n = v[0];
-        p.p_h0 = v[1];
-        p.v_g0 = v[2];
-        p.friction.f_c = v[3];
-        p.friction.mu_v = v[4];
-        p.c_b = v[5];
+        for (name, &x) in CALIBRATED.iter().zip(fields) {
+            let (i, _) = p.find(name)?;
+            p.assign(i, x);
+        }
         p.validate()?;
-        Ok(p.with_gamma0(v[6])?)
+        Ok(p.with_gamma0(gamma0[0])?)
     }
 
     /// Extensions for the active effects.
@@ -222,6 +229,52 @@ fn cubic_derivative_weights(m: usize) -> Vec<f64> {
         .collect()
 }
 
+/// The calibrated baseline of the strut, by the names of the strut registry
+/// ([`hps_emulsion::STRUT_PARAMS`], which gives each one's unit, bounds and typical size), in
+/// the order of [`DiscoveryModel::baseline_params`]. `gamma0` comes last: it is applied with
+/// [`StrutParams::with_gamma0`], which moves gas between the free volume and the emulsion.
+pub const CALIBRATED: [&str; 7] = [
+    "n",
+    "p_h0",
+    "v_g0",
+    "friction.f_c",
+    "friction.mu_v",
+    "c_b",
+    "gamma0",
+];
+
+/// The calibration window of registry parameter `name` around its value in `p`: narrower
+/// than the registry's bounds (a calibration moves a parameter near its nominal value), the
+/// friction levels with a floor that lets a zero nominal grow.
+fn calibration_window(p: &StrutParams, name: &str) -> ParamSpec {
+    let x = p.get(name).unwrap_or(f64::NAN);
+    match name {
+        "n" => ParamSpec::new(name, x, 1.0, 1.8),
+        "p_h0" | "v_g0" => ParamSpec::new(name, x, 0.5 * x, 1.5 * x),
+        "friction.f_c" => ParamSpec {
+            typical: x.abs().max(100.0),
+            ..ParamSpec::new(name, x, 0.0, 20.0 * x.max(100.0))
+        },
+        "friction.mu_v" => ParamSpec {
+            typical: x.abs().max(100.0),
+            ..ParamSpec::new(name, x, 0.0, 50.0 * x.max(100.0))
+        },
+        "c_b" => ParamSpec::new(name, x, 0.2, 1.0),
+        "gamma0" => ParamSpec {
+            typical: x.max(0.01),
+            ..ParamSpec::new(name, x, 0.0, 0.3)
+        },
+        // Any other registry parameter: the registry's own bounds and typical size.
+        _ => match p.find(name) {
+            Ok((_, s)) => ParamSpec {
+                typical: s.typical,
+                ..ParamSpec::new(name, x, s.lower, s.upper)
+            },
+            Err(_) => ParamSpec::new(name, f64::NAN, f64::NAN, f64::NAN),
+        },
+    }
+}
+
 impl DiscoveryModel for HpsStrutModel {
     type Prepared = StrutReplay;
 
@@ -234,35 +287,10 @@ impl DiscoveryModel for HpsStrutModel {
     }
 
     fn baseline_params(&self) -> Vec<ParamSpec> {
-        let p = &self.params;
-        vec![
-            ParamSpec::new("n", p.n, 1.0, 1.8),
-            ParamSpec::new("p_h0_pa", p.p_h0, 0.5 * p.p_h0, 1.5 * p.p_h0),
-            ParamSpec::new("v_g0_m3", p.v_g0, 0.5 * p.v_g0, 1.5 * p.v_g0),
-            ParamSpec {
-                typical: p.friction.f_c.abs().max(100.0),
-                ..ParamSpec::new(
-                    "f_c_n",
-                    p.friction.f_c,
-                    0.0,
-                    20.0 * p.friction.f_c.max(100.0),
-                )
-            },
-            ParamSpec {
-                typical: p.friction.mu_v.abs().max(100.0),
-                ..ParamSpec::new(
-                    "mu_v_n_s_m",
-                    p.friction.mu_v,
-                    0.0,
-                    50.0 * p.friction.mu_v.max(100.0),
-                )
-            },
-            ParamSpec::new("c_b", p.c_b, 0.2, 1.0),
-            ParamSpec {
-                typical: p.gamma0.max(0.01),
-                ..ParamSpec::new("gamma0", p.gamma0, 0.0, 0.3)
-            },
-        ]
+        CALIBRATED
+            .iter()
+            .map(|&name| calibration_window(&self.params, name))
+            .collect()
     }
 
     fn catalogue(&self) -> Vec<EffectSpec> {
@@ -348,8 +376,13 @@ impl DiscoveryModel for HpsStrutModel {
     ) -> Result<Vec<Option<Vec<f64>>>, DiscoveryError> {
         let p = self.apply_baseline(baseline)?;
         let ext = self.apply_effects(effects)?;
-        let strut = HpsStrut::new(&p, &ext, prepared.peak_velocity_m_s)?;
-        let out = simulate_strut(&strut, &prepared.excitation, &self.sim)?;
+        let strut = HpsStrut::new(&p, &ext)?;
+        let out = simulate_strut_from(
+            &strut,
+            &prepared.excitation,
+            prepared.peak_velocity_m_s,
+            &self.sim,
+        )?;
         Ok(vec![Some(out.force), Some(out.p_piston), Some(out.p_rod)])
     }
 
@@ -405,5 +438,33 @@ mod tests {
         for i in 10..3590 {
             assert!((v[i] - 0.01 * w * (w * t[i]).cos()).abs() < 2e-4, "{i}");
         }
+    }
+
+    #[test]
+    fn the_calibration_set_is_named_by_the_strut_registry() {
+        let m = HpsStrutModel::nominal();
+        let specs = m.baseline_params();
+        let names: Vec<&str> = specs.iter().map(|s| s.name.as_str()).collect();
+        assert_eq!(names, CALIBRATED);
+        for s in &specs {
+            let (_, reg) = m.params.find(&s.name).unwrap();
+            assert_eq!(s.initial, m.params.get(&s.name).unwrap(), "{}", s.name);
+            assert!(s.lower <= s.initial && s.initial <= s.upper, "{}", s.name);
+            assert!(s.lower >= reg.lower, "{}", s.name);
+        }
+        // The nominal vector gives back the nominal strut; a changed value lands on its field.
+        let mut v: Vec<f64> = specs.iter().map(|s| s.initial).collect();
+        assert_eq!(m.apply_baseline(&v).unwrap(), m.params);
+        v[1] *= 1.1;
+        v[3] = 123.0;
+        let p = m.apply_baseline(&v).unwrap();
+        assert_eq!((p.p_h0, p.friction.f_c), (1.1 * m.params.p_h0, 123.0));
+        assert!(matches!(
+            m.apply_baseline(&v[..6]),
+            Err(DiscoveryError::BaselineLength {
+                expected: 7,
+                got: 6
+            })
+        ));
     }
 }

@@ -500,7 +500,7 @@ pub fn yaw_records(
             afsv_dynamics::Load::Loaded => &model.loaded,
             afsv_dynamics::Load::Unloaded => &model.unloaded,
         };
-        let params = model.apply_baseline(vehicle, &base);
+        let params = model.apply_baseline(vehicle, &base)?;
         let sys = afs_hydraulics::AfsSystem::new(params.afs.clone())
             .and_then(|s| s.with_extensions(ext))?;
         let rec = afsv_dynamics::simulate(&params.vehicle, &sys, &man, &model.sim)?;

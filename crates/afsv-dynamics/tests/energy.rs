@@ -6,7 +6,7 @@ use afsv_dynamics::yaw_plane::mechanics::{kinetic_energy, Motion};
 use afsv_dynamics::{
     EquationForm, SteerInput, SteerSource, SteeringActuator, VehicleParams, YawPlaneModel,
 };
-use odeint::{Control, Integrator, Solver};
+use odeint::{Atol, Control, Integrator, Solver};
 
 fn lossless() -> (VehicleParams, AfsSystem) {
     let mut v = VehicleParams::loaded();
@@ -36,7 +36,8 @@ fn energy_drift(speed: f64, form: EquationForm) -> f64 {
     let mut last: Option<(f64, f64)> = None; // (t, traction power)
     let mut d = vec![0.0; y0.len()];
     let act0 = model.layout().act0;
-    Integrator::new(Solver::Dopri5, 1e-11, 1e-12)
+    let atol = Atol::scaled(1e-12, (0..y0.len()).map(|i| model.state_typical(i)));
+    Integrator::new(Solver::Dopri5, 1e-11, atol)
         .integrate(&model, 0.0, &y0, &t_out, |t, y| {
             let e = model.evaluate(t, y, &mut d);
             let m = Motion {
@@ -46,7 +47,7 @@ fn energy_drift(speed: f64, form: EquationForm) -> f64 {
                 r_f: y[2],
                 r_r: y[3],
             };
-            let state = [y[act0] * 1e6, y[act0 + 1] * 1e6, y[act0 + 2]];
+            let state = [y[act0], y[act0 + 1], y[act0 + 2]];
             let power = e.acc.traction_force * speed;
             if let Some((tp, pp)) = last {
                 work += 0.5 * (power + pp) * (t - tp);

@@ -199,7 +199,7 @@ pub struct StrutSummary {
 /// of amplitude `amplitude_m`.
 pub fn summary(params: &StrutParams, amplitude_m: f64) -> Result<StrutSummary, HpsError> {
     let ext = HpsExtensions::none();
-    let s = HpsStrut::new(params, &ext, 0.0)?;
+    let s = HpsStrut::new(params, &ext)?;
     let test = HarmonicTest {
         frequency_hz: 1.0,
         amplitude_m,

@@ -17,11 +17,32 @@ pub struct Emulsion {
 /// `rho = rho_h / (1 - (p - p0)/beta_h)`, `beta = beta_h`. `p` must be positive.
 #[inline]
 pub fn emulsion(p: f64, p0: f64, n: f64, beta_h: f64, rho_h: f64, gamma0: f64) -> Emulsion {
+    let ratio = if gamma0 > 0.0 {
+        (p0 / p).powf(1.0 / n)
+    } else {
+        0.0
+    };
+    emulsion_from_ratio(p, ratio, p0, n, beta_h, rho_h, gamma0)
+}
+
+/// As [`emulsion`] with the entrapped gas's volume ratio `(p0 / p)^(1/n)` of Eq 5.9 given
+/// (`gas_ratio`), for a caller that already has it (the strut's piston side, where it is the
+/// relative free gas volume `V_g / V_g0` of Eq 5.4).
+#[inline]
+pub fn emulsion_from_ratio(
+    p: f64,
+    gas_ratio: f64,
+    p0: f64,
+    n: f64,
+    beta_h: f64,
+    rho_h: f64,
+    gamma0: f64,
+) -> Emulsion {
     // Eq 5.8: oil volume ratio V_hi / V_hi0.
     let oil = 1.0 - (p - p0) / beta_h;
     let gamma = if gamma0 > 0.0 {
         // Eq 5.9.
-        gamma0 * (p0 / p).powf(1.0 / n) / oil
+        gamma0 * gas_ratio / oil
     } else {
         0.0
     };

@@ -30,9 +30,49 @@ pub fn check_valve_flow(ca: f64, dp: f64, rho: f64, p_reg: f64, opening: f64) ->
     }
 }
 
+/// Total flow from the piston to the rod side of Eq 5.12 (m^3/s):
+/// `orifice_flow(ca_b) + check_valve_flow(ca_v, opening) + k_l dp`, with the regularised
+/// root and the density factor computed once for both orifice laws. `ca_b`, `ca_v` are the
+/// total effective areas `C n A` of the bleed orifices and the check valves (m^2), `k_l` the
+/// laminar leakage coefficient (m^3/(Pa s)), `rho` the mean density (kg/m^3).
+#[inline]
+pub fn piston_to_rod_flow(
+    ca_b: f64,
+    ca_v: f64,
+    opening: f64,
+    k_l: f64,
+    dp: f64,
+    rho: f64,
+    p_reg: f64,
+) -> f64 {
+    let ca = if dp > 0.0 {
+        ca_b + opening * ca_v
+    } else {
+        ca_b
+    };
+    ca * (2.0 / rho).sqrt() * reg_sqrt(dp, p_reg) + k_l * dp
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn total_flow_is_the_sum_of_the_three_paths() {
+        let (ca_b, ca_v, k_l, rho) = (0.7 * 11e-6, 0.6 * 2.0 * 8e-6, 5e-12, 840.0);
+        for &dp in &[-2e6, -3e3, -50.0, 0.0, 40.0, 7e3, 1.5e6] {
+            for &opening in &[0.0, 0.4, 1.0] {
+                let sum = orifice_flow(ca_b, dp, rho, 100.0)
+                    + check_valve_flow(ca_v, dp, rho, 100.0, opening)
+                    + k_l * dp;
+                let q = piston_to_rod_flow(ca_b, ca_v, opening, k_l, dp, rho, 100.0);
+                assert!(
+                    (q - sum).abs() <= 1e-14 * sum.abs().max(1e-12),
+                    "{dp} {opening}"
+                );
+            }
+        }
+    }
 
     #[test]
     fn sqrt_law_far_from_zero() {

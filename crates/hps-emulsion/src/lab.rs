@@ -202,7 +202,7 @@ pub fn identify_lab(rep: &LabReported, config: LabConfig) -> LabIdentification {
     fresh.v_r0 = oil_r;
     fresh.p_h0 = rep.charge_pressure * (gas_length / (gas_length - mid)).powf(rep.n);
     let mut static_pressures = [f64::NAN; 3];
-    if let Ok(s) = HpsStrut::new(&fresh, &HpsExtensions::none(), 0.0) {
+    if let Ok(s) = HpsStrut::new(&fresh, &HpsExtensions::none()) {
         for i in 0..3 {
             static_pressures[i] = s
                 .static_pressure(rep.static_displacements[i] - mid)

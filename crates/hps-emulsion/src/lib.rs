@@ -11,7 +11,9 @@
 //!
 //! - [`StrutParams`]: parameter sets ([`StrutParams::front_axle`], Table 6.3;
 //!   [`StrutParams::lab`], the chapter 5 strut identified in [`lab`]).
-//! - [`HpsStrut`]: the strut as a force element with its own states (for a vehicle model).
+//! - [`HpsStrut`]: the strut as a force element with its own states, one allocation-free
+//!   evaluate, and a `vehicle_components::Component` ([`StrutMotion`] in, force out) for a
+//!   vehicle model.
 //! - [`simulate_displacement`]: prescribed-displacement runs (harmonic or sampled).
 //! - [`characterize`], [`lab_programme`], [`loop_metrics`]: the harmonic characterisation;
 //!   [`HysteresisLoop`]: the samples of one period for the loop plots.
@@ -24,6 +26,7 @@
 #![allow(clippy::needless_range_loop)]
 
 pub mod characterize;
+pub mod component;
 pub mod emulsion;
 pub mod error;
 pub mod extensions;
@@ -41,6 +44,7 @@ pub use characterize::{
     characterize, front_axle_summary, lab_programme, loop_metrics, run_harmonic, summary,
     HarmonicTest, LoopMetrics, StrutSummary,
 };
+pub use component::StrutMotion;
 pub use error::HpsError;
 pub use extensions::{
     AsymmetricFriction, GasFractionGrowth, HeatTransfer, HpsExtensions, ValveLag,
@@ -53,6 +57,7 @@ pub use loops::HysteresisLoop;
 pub use params::{FrictionParams, StrutParams};
 pub use registry::STRUT_PARAMS;
 pub use simulate::{
-    simulate_displacement, simulate_strut, Excitation, SimOptions, Solver, StrutRecord,
+    simulate_displacement, simulate_strut, simulate_strut_from, Excitation, SimOptions, Solver,
+    StrutRecord,
 };
 pub use strut::{HpsStrut, StrutOutputs};

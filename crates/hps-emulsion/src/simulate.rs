@@ -345,8 +345,9 @@ impl StrutRecord {
 }
 
 /// Simulate the strut under a prescribed displacement, starting from static equilibrium at
-/// the first displacement. The peak velocity of the excitation sets the friction band `v_h`
-/// (and the gas-fraction growth, when that extension is on).
+/// the first displacement with the velocity amplitude at the excitation's peak velocity, so
+/// the peak-velocity laws (friction band `v_h`, gas-fraction growth when that extension is
+/// on) start in their steady state.
 pub fn simulate_displacement(
     params: &StrutParams,
     ext: &HpsExtensions,
@@ -355,17 +356,29 @@ pub fn simulate_displacement(
 ) -> Result<StrutRecord, HpsError> {
     params.validate()?;
     excitation.validate(params.travel)?;
-    let strut = HpsStrut::new(params, ext, excitation.peak_velocity())?;
+    let strut = HpsStrut::new(params, ext)?;
     simulate_strut(&strut, excitation, opts)
 }
 
 /// Most output samples one harmonic run produces (duration times output rate).
 pub const MAX_OUTPUT_SAMPLES: f64 = 1e7;
 
-/// As [`simulate_displacement`] for an already built strut (its own `v_peak`).
+/// As [`simulate_displacement`] for an already built strut: the velocity amplitude starts at
+/// [`Excitation::peak_velocity`].
 pub fn simulate_strut(
     strut: &HpsStrut,
     excitation: &Excitation,
+    opts: &SimOptions,
+) -> Result<StrutRecord, HpsError> {
+    simulate_strut_from(strut, excitation, excitation.peak_velocity(), opts)
+}
+
+/// As [`simulate_strut`] with the initial velocity amplitude `u0` (m/s) given: a caller that
+/// replays one excitation many times computes its peak once; `u0 = 0` starts at rest.
+pub fn simulate_strut_from(
+    strut: &HpsStrut,
+    excitation: &Excitation,
+    u0: f64,
     opts: &SimOptions,
 ) -> Result<StrutRecord, HpsError> {
     excitation.validate(strut.params().travel)?;
@@ -436,7 +449,7 @@ pub fn simulate_strut(
     };
     let (z0, _) = sys.input.eval(t0);
     let mut y0 = vec![0.0; strut.n_states()];
-    strut.initial_state(z0, &mut y0)?;
+    strut.initial_state_at(z0, u0, &mut y0)?;
     let mut rec = StrutRecord::with_capacity(t_out.len());
     let mut observe = |t: f64, y: &[f64]| {
         let (z, zd) = sys.input.eval(t);

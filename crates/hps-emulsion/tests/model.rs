@@ -182,7 +182,7 @@ fn invalid_parameters_are_named() {
         }),
         ..Default::default()
     };
-    assert!(HpsStrut::new(&base, &bad, 0.1).is_err());
+    assert!(HpsStrut::new(&base, &bad).is_err());
 }
 
 fn range(v: &[f64]) -> f64 {
@@ -235,7 +235,7 @@ fn solvers_agree() {
 #[test]
 fn force_element_rests_at_static_equilibrium() {
     for p in [lab1(), StrutParams::front_axle()] {
-        let s = HpsStrut::new(&p, &HpsExtensions::none(), 0.1).unwrap();
+        let s = HpsStrut::new(&p, &HpsExtensions::none()).unwrap();
         let mut y = vec![0.0; s.n_states()];
         for z in [-0.03, 0.0, 0.04] {
             s.initial_state(z, &mut y).unwrap();
@@ -257,7 +257,7 @@ fn force_element_rests_at_static_equilibrium() {
         assert!(s.static_stiffness(0.0).unwrap() > 0.0);
     }
     // front axle: 5.8 MPa on 0.0254 m^2 carries ~145 kN
-    let s = HpsStrut::new(&StrutParams::front_axle(), &HpsExtensions::none(), 0.0).unwrap();
+    let s = HpsStrut::new(&StrutParams::front_axle(), &HpsExtensions::none()).unwrap();
     assert!((s.static_force(0.0).unwrap() - 144_746.0).abs() < 10.0);
 }
 

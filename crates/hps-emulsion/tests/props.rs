@@ -37,7 +37,7 @@ proptest! {
     #[test]
     fn static_force_monotone(g0 in 0.0f64..0.1, z in -0.06f64..0.06) {
         let p = StrutParams::lab(LabConfig::TwoOrifices).with_gamma0(g0).unwrap();
-        let s = HpsStrut::new(&p, &HpsExtensions::none(), 0.0).unwrap();
+        let s = HpsStrut::new(&p, &HpsExtensions::none()).unwrap();
         prop_assert!(s.static_force(z + 1e-3).unwrap() > s.static_force(z).unwrap());
     }
 }

@@ -33,9 +33,10 @@ pub struct ActuatorOutput {
 pub trait SteeringActuator {
     /// Number of states (at most [`MAX_ACTUATOR_STATES`]).
     fn n_states(&self) -> usize;
-    /// Factor from the SI state to the integrated variable (e.g. `1e-6` to integrate
-    /// pressures in MPa so that one absolute tolerance fits all states).
-    fn state_scale(&self, i: usize) -> f64;
+    /// Typical magnitude of state `i` in its SI unit (e.g. `1e6` Pa for a chamber
+    /// pressure): the model integrates SI states and gives state `i` the absolute tolerance
+    /// `atol * state_typical(i)` (`odeint::Atol::scaled`).
+    fn state_typical(&self, i: usize) -> f64;
     /// Record column name of state `i`, ending in its SI unit (e.g. `p_c_pa`).
     fn state_name(&self, i: usize) -> &'static str;
     /// Equilibrium state at articulation angle `theta` with the valve centred (SI).
@@ -71,7 +72,7 @@ impl SteeringActuator for EquivalentTorsion {
     fn n_states(&self) -> usize {
         0
     }
-    fn state_scale(&self, _i: usize) -> f64 {
+    fn state_typical(&self, _i: usize) -> f64 {
         1.0
     }
     fn state_name(&self, _i: usize) -> &'static str {

@@ -1,23 +1,25 @@
 //! [`afs_hydraulics::AfsSystem`] as the articulation actuator of the yaw-plane model.
 //!
-//! States P_c, P_r (Pa) are integrated in MPa (scale 1e-6) and theta_h in rad, so a single
-//! absolute tolerance of 1e-8 suits every state of the coupled model. With the valve-lag
-//! extension a fourth state, the lagged spool displacement x_v (rad, starts centred), follows.
+//! States P_c, P_r (Pa) and theta_h (rad) are integrated in SI units; their typical
+//! magnitudes (1 MPa, 1 MPa, 1 rad, from the AFS component's [`StateInfo`]s) scale the
+//! per-state absolute tolerances of the coupled model. With the valve-lag extension a fourth
+//! state, the lagged spool displacement x_v (rad, starts centred), follows.
+//!
+//! [`StateInfo`]: vehicle_components::StateInfo
 
 use crate::yaw_plane::actuator::{ActuatorOutput, SteeringActuator};
 use afs_hydraulics::{AfsInput, AfsSystem};
-
-const NAMES: [&str; 4] = ["p_c_pa", "p_r_pa", "theta_h_rad", "valve_spool_rad"];
+use vehicle_components::Component;
 
 impl SteeringActuator for AfsSystem {
     fn n_states(&self) -> usize {
         AfsSystem::n_states(self)
     }
-    fn state_scale(&self, i: usize) -> f64 {
-        AfsSystem::STATE_SCALE.get(i).map_or(1.0, |s| 1.0 / s)
+    fn state_typical(&self, i: usize) -> f64 {
+        Component::states(self)[i].typical
     }
     fn state_name(&self, i: usize) -> &'static str {
-        NAMES[i]
+        Component::states(self)[i].name
     }
     fn initial_state(&self, theta: f64, out: &mut [f64]) {
         out.fill(0.0);

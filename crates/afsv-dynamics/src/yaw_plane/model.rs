@@ -12,7 +12,11 @@
 //! | 6 | front-unit heading psi_f | rad | d(psi_f)/dt = phi_f |
 //! | 7..11 | lagged slip angles alpha_1..alpha_4 (only if sigma_y > 0) | rad | Eq 3.16 |
 //! | next | steering-wheel angle (only with a path-following driver) | rad | driver law |
-//! | rest | actuator states, scaled by [`SteeringActuator::state_scale`] (AFS: p_c, p_r in MPa, theta_h in rad) | | Eqs 3.4-3.12 |
+//! | rest | actuator states in SI (AFS: p_c, p_r in Pa, theta_h in rad) | | Eqs 3.4-3.12 |
+//!
+//! Every state is SI; [`YawPlaneModel::state_typical`] gives each one's typical magnitude
+//! (1 in rad, m/s, m; the actuator's own, e.g. 1 MPa for a pressure), from which a run
+//! builds per-state absolute tolerances.
 //!
 //! Tire 1/3 are the left tires, 2/4 the right ones; the steady slip angles are Eq 3.17.
 
@@ -145,8 +149,7 @@ impl<'a, A: SteeringActuator> YawPlaneModel<'a, A> {
         self.layout
     }
 
-    /// Name (with SI unit) of every state, in order. Actuator states are named by their SI
-    /// value; the integrated variable is that times [`SteeringActuator::state_scale`].
+    /// Name (with SI unit) of every state, in order.
     pub fn state_names(&self) -> Vec<String> {
         let mut v: Vec<String> = [
             "articulation_rad",
@@ -182,13 +185,26 @@ impl<'a, A: SteeringActuator> YawPlaneModel<'a, A> {
             y[4] = xa - self.vehicle.l_f1_m;
             y[5] = ya;
         }
-        let mut a = [0.0; MAX_ACTUATOR_STATES];
-        let n = self.layout.n_act;
-        self.actuator.initial_state(theta0, &mut a[..n]);
-        for i in 0..n {
-            y[self.layout.act0 + i] = a[i] * self.actuator.state_scale(i);
-        }
+        let act = self.actuator_range();
+        self.actuator.initial_state(theta0, &mut y[act]);
         y
+    }
+
+    /// Typical magnitude of state `i` in its SI unit: 1 for the vehicle states (rad, m/s, m)
+    /// and the driver's wheel angle, the actuator's [`SteeringActuator::state_typical`] for
+    /// its states. A run's absolute tolerance of state `i` is `atol * state_typical(i)`.
+    pub fn state_typical(&self, i: usize) -> f64 {
+        if i >= self.layout.act0 {
+            self.actuator.state_typical(i - self.layout.act0)
+        } else {
+            1.0
+        }
+    }
+
+    /// Indices of the actuator states in the state vector.
+    #[inline]
+    pub fn actuator_range(&self) -> std::ops::Range<usize> {
+        self.layout.act0..self.layout.act0 + self.layout.n_act
     }
 
     /// Steering-wheel angle at (t, y).
@@ -198,24 +214,6 @@ impl<'a, A: SteeringActuator> YawPlaneModel<'a, A> {
             (SteerSource::Open(inp), _) => inp.angle(t),
             (SteerSource::Driver(_), Some(i)) => y[i],
             (SteerSource::Driver(_), None) => 0.0,
-        }
-    }
-
-    /// State `i` of `y` in SI units (undoes the actuator-state scaling).
-    #[inline]
-    pub fn state_si(&self, i: usize, y: &[f64]) -> f64 {
-        if i >= self.layout.act0 {
-            y[i] / self.actuator.state_scale(i - self.layout.act0)
-        } else {
-            y[i]
-        }
-    }
-
-    /// Unscaled actuator state (SI) into `out`.
-    #[inline]
-    pub fn actuator_state(&self, y: &[f64], out: &mut [f64; MAX_ACTUATOR_STATES]) {
-        for i in 0..self.layout.n_act {
-            out[i] = y[self.layout.act0 + i] / self.actuator.state_scale(i);
         }
     }
 
@@ -262,21 +260,15 @@ impl<'a, A: SteeringActuator> YawPlaneModel<'a, A> {
         let theta_dot = motion.r_f - motion.r_r;
         let steer_wheel = self.steer_wheel(t, y);
 
-        // Actuator.
-        let n = self.layout.n_act;
-        let mut xs = [0.0; MAX_ACTUATOR_STATES];
-        let mut dxs = [0.0; MAX_ACTUATOR_STATES];
-        self.actuator_state(y, &mut xs);
+        // Actuator, on its slice of the (SI) state vector.
+        let act = self.actuator_range();
         let out = self.actuator.evaluate(
             motion.theta,
             theta_dot,
             steer_wheel,
-            &xs[..n],
-            &mut dxs[..n],
+            &y[act.clone()],
+            &mut dydt[act],
         );
-        for i in 0..n {
-            dydt[self.layout.act0 + i] = dxs[i] * self.actuator.state_scale(i);
-        }
 
         // Eq 3.15 forces and moments, summed per axle.
         let loads = Loads {

@@ -9,7 +9,7 @@ use crate::yaw_plane::mechanics::{kinetic_energy, Motion};
 use crate::yaw_plane::model::{SteerSource, YawPlaneModel};
 use crate::yaw_plane::params::VehicleParams;
 use crate::EquationForm;
-use odeint::{Control, Integrator, OdeError, Problem, Solver, Workspace};
+use odeint::{Atol, Control, Integrator, OdeError, Problem, Solver, Workspace};
 use serde::{Deserialize, Serialize};
 
 /// A constant-speed manoeuvre: forward speed, duration and steering.
@@ -102,7 +102,9 @@ pub struct SimOptions {
     pub solver: Solver,
     /// Relative tolerance (adaptive methods).
     pub rtol: f64,
-    /// Absolute tolerance (states in rad, m/s, m, MPa).
+    /// Absolute tolerance per typical magnitude: state `i` gets
+    /// `atol * YawPlaneModel::state_typical(i)` (1 for states in rad, m/s, m; 1 MPa for the
+    /// chamber pressures, which are integrated in Pa).
     pub atol: f64,
     /// Largest step (s) of the adaptive methods.
     pub max_step_s: f64,
@@ -443,21 +445,23 @@ pub fn simulate<A: SteeringActuator>(
         rec.traction_force_n.push(e.acc.traction_force);
         if options.record_energy {
             rec.kinetic_energy_j.push(kinetic_energy(vehicle, &m));
-            let mut xs = [0.0; MAX_ACTUATOR_STATES];
-            model.actuator_state(y, &mut xs);
             rec.actuator_energy_j.push(model.actuator.energy(
                 y[0],
                 e.steer_wheel,
-                &xs[..layout.n_act],
+                &y[model.actuator_range()],
             ));
         }
         for (i, s) in states.iter_mut().enumerate() {
-            s.push(model.state_si(i, y));
+            s.push(y[i]);
         }
         Control::Continue
     };
     let problem = Problem::new(0.0, &y0, &grid).with_breakpoints(&cuts);
-    let res = Integrator::new(options.solver, options.rtol, options.atol)
+    let atol = Atol::scaled(
+        options.atol,
+        (0..layout.dim).map(|i| model.state_typical(i)),
+    );
+    let res = Integrator::new(options.solver, options.rtol, atol)
         .with_max_step(options.max_step_s)
         .run(&model, &problem, &mut Workspace::new(layout.dim), observe);
     if let Some(f) = failure.take() {

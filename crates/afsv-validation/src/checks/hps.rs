@@ -134,8 +134,7 @@ fn compare_static(ctx: &mut Ctx, rep: &LabReported, one: &LabIdentification) -> 
         "fresh strut at mid-stroke (75 mm from the bottom)",
     );
     // Static pressure curve of the fresh strut for the plot.
-    let strut =
-        HpsStrut::new(&one.fresh, &HpsExtensions::none(), 0.0).map_err(|e| e.to_string())?;
+    let strut = HpsStrut::new(&one.fresh, &HpsExtensions::none()).map_err(|e| e.to_string())?;
     let (mut xs, mut ps) = (Vec::new(), Vec::new());
     for i in 0..=30 {
         let z = 0.020 + 0.100 * i as f64 / 30.0;
