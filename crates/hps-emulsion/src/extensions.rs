@@ -19,8 +19,10 @@ pub struct HeatTransfer {
 }
 
 /// Growth of the emulsion's gas fraction with strut velocity (Fig 5.4b: the identified mean
-/// gamma_0 rises with the peak velocity): `gamma_0,eff = gamma_0 + k_gamma v_peak`, with the gas
-/// taken from the free gas volume ([`crate::StrutParams::with_gamma0`]).
+/// gamma_0 rises with the peak velocity): `gamma_0,eff = gamma_0 + k_gamma u` on the strut's
+/// velocity-amplitude state `u` (a peak detector of the strut speed, [`crate::HpsStrut`]),
+/// with the gas taken from the free gas volume at the current pressure (the bookkeeping of
+/// [`crate::StrutParams::with_gamma0`]).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 pub struct GasFractionGrowth {
     /// Growth rate k_gamma (s/m).

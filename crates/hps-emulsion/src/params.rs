@@ -18,7 +18,8 @@ pub struct FrictionParams {
     /// Stribeck coefficient k_s (s/m), Eq 5.2.
     pub k_s: f64,
     /// Hysteresis transition band as a fraction of the peak strut velocity:
-    /// `v_h = max(vh_ratio * v_peak, vh_min)` (section 5.3.1: the band widens with peak velocity).
+    /// `v_h = max(vh_ratio * v_peak, vh_min)` (section 5.3.1: the band widens with peak
+    /// velocity); the strut uses its velocity-amplitude state `u` as `v_peak`.
     pub vh_ratio: f64,
     /// Smallest transition band v_h (m/s).
     pub vh_min: f64,
