@@ -1,7 +1,7 @@
 //! Joint-space dynamics `H(q) vdot + C(q, v) = tau`: the composite-rigid-body algorithm
 //! for `H` (Featherstone, "Rigid Body Dynamics Algorithms", 2008, Table 6.2), the
 //! recursive Newton-Euler algorithm for `C` and inverse dynamics (Table 5.1), and forward
-//! dynamics by a Cholesky solve of the joint-space equation (ch. 6).
+//! dynamics by a sparse `L^T L` solve of the joint-space equation (section 6.5).
 //!
 //! Gravity enters RNEA as a fictitious base acceleration `a_0 = -a_g` (ch. 5);
 //! external forces are those accumulated in the [`Workspace`] since the last
@@ -9,10 +9,11 @@
 
 use crate::error::DynamicsError;
 use crate::kinematics::{check_len, subspace_times};
+use crate::ltl;
 use crate::model::{Link, Model};
 use crate::spatial::{cross_force, cross_motion, spatial};
 use crate::workspace::Workspace;
-use nalgebra::{Cholesky, DMatrix, Vector3, Vector6};
+use nalgebra::{DMatrix, Vector3, Vector6};
 
 /// Composite-rigid-body algorithm (Featherstone 2008, Table 6.2): fills and returns the
 /// symmetric joint-space mass matrix `H(q)` at the configuration of the last
@@ -28,11 +29,11 @@ pub fn mass_matrix<'w>(
 
 fn crba(model: &Model, ws: &mut Workspace) {
     for (ic, link) in ws.ic.iter_mut().zip(&model.links) {
-        *ic = link.inertia;
+        *ic = link.rigid_inertia;
     }
     for (i, body) in model.bodies().iter().enumerate().rev() {
         if let Some(p) = body.parent {
-            let ic_parent = ws.x_up[i].transform_inertia_to_parent(&ws.ic[i]);
+            let ic_parent = ws.ic[i].in_parent(&ws.x_up[i]);
             ws.ic[p] += ic_parent;
         }
     }
@@ -41,7 +42,7 @@ fn crba(model: &Model, ws: &mut Workspace) {
         let mut f_store = [Vector6::zeros(); 6];
         let f = &mut f_store[..link.nv];
         for (k, fk) in f.iter_mut().enumerate() {
-            *fk = ws.ic[i] * link.subspace.column(k);
+            *fk = ws.ic[i].apply(&link.subspace.column(k).into_owned());
         }
         set_block(&mut ws.h, link, link, f);
         let mut j = i;
@@ -128,8 +129,9 @@ pub fn inverse_dynamics(
     Ok(())
 }
 
-/// Forward dynamics: solves `H vdot = tau - C` with a Cholesky factorisation of the CRBA
-/// mass matrix (Featherstone 2008, ch. 6) and returns `vdot` (length `nv`).
+/// Forward dynamics: solves `H vdot = tau - C` with the sparse `L^T L` factorisation of
+/// the CRBA mass matrix (Featherstone 2008, section 6.5, Tables 6.3-6.4; no fill-in on a
+/// tree) and returns `vdot` (length `nv`).
 ///
 /// `tau` are the caller's joint forces (springs, dampers, drive torques); floating-joint
 /// entries are a body-coordinate wrench `[moment; force]` about the body origin.
@@ -146,18 +148,9 @@ pub fn forward_dynamics<'w>(
     for ((vd, t), c) in ws.vdot.iter_mut().zip(tau).zip(ws.c.iter()) {
         *vd = t - c;
     }
-    // The factor borrows the preallocated buffer; `take` leaves an empty matrix
-    // (no allocation) and the buffer is handed back below.
-    let mut buffer = std::mem::take(&mut ws.chol);
-    buffer.copy_from(&ws.h);
-    let chol = Cholesky::new_unchecked(buffer);
-    let l = chol.l_dirty();
-    let definite = (0..l.nrows()).all(|j| l[(j, j)].is_finite() && l[(j, j)] > 0.0);
-    if definite {
-        chol.solve_mut(&mut ws.vdot);
-    }
-    ws.chol = chol.unpack_dirty();
-    if definite {
+    ws.chol.copy_from(&ws.h);
+    if ltl::factor(&mut ws.chol, &model.dof_parent) {
+        ltl::solve(&ws.chol, &model.dof_parent, &mut ws.vdot);
         Ok(&ws.vdot)
     } else {
         Err(DynamicsError::MassMatrixNotPositiveDefinite)

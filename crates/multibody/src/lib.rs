@@ -36,8 +36,10 @@
 mod dynamics;
 mod energy;
 mod error;
+mod inertia;
 pub mod joint;
 mod kinematics;
+mod ltl;
 mod model;
 pub mod spatial;
 mod workspace;

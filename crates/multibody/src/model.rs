@@ -3,6 +3,7 @@
 //! builder.
 
 use crate::error::ModelError;
+use crate::inertia::RigidInertia;
 use crate::joint::Joint;
 use crate::spatial::{rigid_body_inertia, SpatialTransform};
 use nalgebra::{DVector, Isometry3, Matrix3, Matrix6, SymmetricEigen, Vector3};
@@ -33,6 +34,8 @@ pub struct Body {
 pub(crate) struct Link {
     pub(crate) x_tree: SpatialTransform,
     pub(crate) inertia: Matrix6<f64>,
+    /// The same inertia by its ten parameters (CRBA accumulates these).
+    pub(crate) rigid_inertia: RigidInertia,
     pub(crate) subspace: Matrix6<f64>,
     pub(crate) nv: usize,
     pub(crate) q_offset: usize,
@@ -47,6 +50,9 @@ pub struct Model {
     gravity: Vector3<f64>,
     nq: usize,
     nv: usize,
+    /// Per degree of freedom, the previous one on its path to the root (`λ` of
+    /// Featherstone 2008, Table 6.3), for the sparse factorisation of `H`.
+    pub(crate) dof_parent: Vec<Option<usize>>,
 }
 
 /// Collects bodies and validates them into a [`Model`].
@@ -103,6 +109,7 @@ impl ModelBuilder {
                 let link = Link {
                     x_tree: SpatialTransform::from_pose(&b.placement),
                     inertia: rigid_body_inertia(b.mass, &b.com, &b.inertia),
+                    rigid_inertia: RigidInertia::new(b.mass, &b.com, &b.inertia),
                     subspace: b.joint.motion_subspace(),
                     nv: b.joint.nv(),
                     q_offset: nq,
@@ -112,15 +119,38 @@ impl ModelBuilder {
                 nv += b.joint.nv();
                 link
             })
-            .collect();
+            .collect::<Vec<_>>();
+        let dof_parent = dof_parents(&bodies, &links);
         Ok(Model {
             bodies,
             links,
             gravity: self.gravity,
             nq,
             nv,
+            dof_parent,
         })
     }
+}
+
+/// `λ(k)` for every degree of freedom: the one before it in its joint, or else the last
+/// one of the nearest ancestor body whose joint moves (fixed joints have none).
+fn dof_parents(bodies: &[Body], links: &[Link]) -> Vec<Option<usize>> {
+    let mut parent = Vec::new();
+    for (i, link) in links.iter().enumerate() {
+        let mut up = bodies[i].parent;
+        while let Some(p) = up {
+            if links[p].nv > 0 {
+                break;
+            }
+            up = bodies[p].parent;
+        }
+        let mut prev = up.map(|p| links[p].v_offset + links[p].nv - 1);
+        for k in 0..link.nv {
+            parent.push(prev);
+            prev = Some(link.v_offset + k);
+        }
+    }
+    parent
 }
 
 fn non_finite(body: &Body, field: &'static str) -> ModelError {

@@ -5,12 +5,13 @@
 //! (one ODE right-hand-side evaluation) performs no heap allocation.
 
 use crate::error::DynamicsError;
+use crate::inertia::RigidInertia;
 use crate::model::Model;
 use crate::spatial::{spatial, SpatialTransform};
-use nalgebra::{DMatrix, DVector, Matrix6, Vector3, Vector6};
+use nalgebra::{DMatrix, DVector, Vector3, Vector6};
 
 /// Per-evaluation state of one [`Model`]: transforms, velocities, accelerations, forces,
-/// composite inertias, mass matrix, bias vector, accelerations and the Cholesky buffer.
+/// composite inertias, mass matrix, bias vector, accelerations and the factor buffer.
 #[derive(Debug, Clone)]
 pub struct Workspace {
     /// `i X lambda(i)`: parent-to-body transforms.
@@ -28,7 +29,7 @@ pub struct Workspace {
     /// External forces on each body, body coordinates, about the body origin.
     pub(crate) f_ext: Vec<Vector6<f64>>,
     /// CRBA composite inertias, body coordinates.
-    pub(crate) ic: Vec<Matrix6<f64>>,
+    pub(crate) ic: Vec<RigidInertia>,
     /// Joint velocities of the last kinematics update.
     pub(crate) v: DVector<f64>,
     /// Joint-space mass matrix `H(q)`.
@@ -37,7 +38,7 @@ pub struct Workspace {
     pub(crate) c: DVector<f64>,
     /// Joint accelerations of the last forward-dynamics call.
     pub(crate) vdot: DVector<f64>,
-    /// Cholesky factor storage (lent to nalgebra during the solve).
+    /// Storage of the sparse `L^T L` factor of `H` (lower triangle).
     pub(crate) chol: DMatrix<f64>,
     /// Whether `update_kinematics` has filled the pose and velocity buffers.
     pub(crate) kinematics_ready: bool,
@@ -56,7 +57,7 @@ impl Workspace {
             acc: vec![Vector6::zeros(); nb],
             force: vec![Vector6::zeros(); nb],
             f_ext: vec![Vector6::zeros(); nb],
-            ic: vec![Matrix6::zeros(); nb],
+            ic: vec![RigidInertia::zero(); nb],
             v: DVector::zeros(nv),
             h: DMatrix::zeros(nv, nv),
             c: DVector::zeros(nv),

@@ -1,9 +1,11 @@
 //! Mass-matrix properties over random trees and states: symmetric, positive definite,
 //! equal column by column to RNEA with unit accelerations (zero velocity and gravity), and
 //! consistent with the body-sum kinetic energy 1/2 v^T H v; and the RNEA bias forces obey
-//! the power balance v^T C = d/dt(potential) + 1/2 v^T Hdot v (Hdot by central differences).
+//! the power balance v^T C = d/dt(potential) + 1/2 v^T Hdot v (Hdot by central differences);
+//! forward dynamics (the sparse L^T L solve) inverts inverse dynamics and agrees with a
+//! dense Cholesky solve of H.
 use multibody::{
-    bias_forces, inverse_dynamics, kinetic_energy, mass_matrix, potential_energy,
+    bias_forces, forward_dynamics, inverse_dynamics, kinetic_energy, mass_matrix, potential_energy,
     update_kinematics, Body, Joint, Model, ModelBuilder, Workspace,
 };
 use nalgebra::{
@@ -178,5 +180,32 @@ proptest! {
         let expected = pe_dot + 0.5 * vv.dot(&(&h_dot * &vv));
         let scale = 1.0 + power.abs() + pe_dot.abs();
         prop_assert!((power - expected).abs() < 1e-6 * scale, "{power} vs {expected}");
+    }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(300))]
+    #[test]
+    fn forward_dynamics_inverts_inverse_dynamics_on_branched_trees(
+        bodies in prop::collection::vec(random_body(), 1..9),
+        seed in 0u64..1000,
+    ) {
+        let (model, q, v) = random_tree(&bodies);
+        let nv = model.nv();
+        let mut ws = Workspace::new(&model);
+        let vdot: Vec<f64> = (0..nv).map(|k| ((seed + 7 * k as u64) % 13) as f64 - 6.0).collect();
+        update_kinematics(&model, &mut ws, &q, &v).unwrap();
+        let mut tau = vec![0.0; nv];
+        inverse_dynamics(&model, &mut ws, &vdot, &mut tau).unwrap();
+        let h = mass_matrix(&model, &mut ws).unwrap().clone();
+        let c = bias_forces(&model, &mut ws).unwrap().clone();
+        let rhs = nalgebra::DVector::from_column_slice(&tau) - &c;
+        let dense = h.clone().cholesky().expect("H is positive definite").solve(&rhs);
+        let got = forward_dynamics(&model, &mut ws, &tau).unwrap().clone();
+        let scale = 1.0 + dense.amax();
+        for k in 0..nv {
+            prop_assert!((got[k] - vdot[k]).abs() <= 1e-7 * scale, "vdot[{k}] {} vs {}", got[k], vdot[k]);
+            prop_assert!((got[k] - dense[k]).abs() <= 1e-9 * scale, "vdot[{k}] {} vs dense {}", got[k], dense[k]);
+        }
     }
 }

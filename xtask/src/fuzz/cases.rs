@@ -28,6 +28,11 @@ pub(crate) const GROUPS: &[(&str, u32)] = &[
     ("check", 1),
     ("synth", 2),
     ("discover", 3),
+    ("roll simulate", 3),
+    ("roll measures", 4),
+    ("roll study", 1),
+    ("roll calibrate", 1),
+    ("params check truck", 2),
 ];
 
 pub(crate) fn make_case(
@@ -35,12 +40,14 @@ pub(crate) fn make_case(
     id: usize,
     groups: &[(&'static str, u32)],
     yaw_params: &str,
+    truck_params: &str,
 ) -> Case {
     let mut g = Gen {
         rng: Rng::new(seed, id),
         args: Vec::new(),
         files: Vec::new(),
         yaw_params,
+        truck_params,
         scale: 1.0,
     };
     g.scale = *g.rng.pick(&[&0.0, &0.3, &1.0, &1.5]);
@@ -58,6 +65,8 @@ pub(crate) fn make_case(
         g.arg(w);
     }
     match group.split(' ').next().unwrap_or(group) {
+        _ if group == "params check truck" => roll_case(&mut g, group),
+        "roll" => roll_case(&mut g, group),
         "yaw" => yaw_case(&mut g, group),
         "hps" => hps_case(&mut g, group),
         "tire" => tire_case(&mut g, group),
@@ -617,5 +626,96 @@ fn other_case(g: &mut Gen<'_>, group: &str) {
             }
         }
         _ => unreachable!("group {group}"),
+    }
+}
+
+/// The options and files of one `afsv roll ...` (and `afsv params check truck`) case.
+/// Successes are kept short (a few simulated seconds); the study and the calibration get
+/// only values they must refuse, since a valid one runs many simulations.
+fn roll_case(g: &mut Gen<'_>, group: &str) {
+    match group {
+        "roll simulate" | "roll measures" => {
+            roll_case_args(g);
+            if group == "roll simulate" {
+                g.num("--dt", "0.01", 0.3);
+                let o = g.output("run.csv", &["p.json", "run.json", "in.csv"]);
+                g.push_opt("-o", &o);
+            } else if g.rng.chance(0.3) {
+                g.arg("--json");
+            }
+        }
+        "roll study" => {
+            let s = g
+                .rng
+                .pick(&["cg", "roughness", "waviness", "band", "bogus", ""])
+                .to_string();
+            g.arg(&s);
+            let v = g.bad();
+            g.push_opt("--seeds", &v);
+            if g.rng.chance(0.3) {
+                let o = g.output("plot.svg", &["p.json"]);
+                g.push_opt("--plot", &o);
+            }
+        }
+        "roll calibrate" => {
+            if g.rng.chance(0.5) {
+                let v = g
+                    .rng
+                    .pick(&["-1", "0", "nan", "inf", "abc", ""])
+                    .to_string();
+                g.push_opt("--target-g", &v);
+            } else {
+                let t = g.rng.pick(&["", "{}", "[1]", "{\"bogus\": 1}"]).to_string();
+                g.file("p.json", t.into_bytes());
+                g.push_opt("--params", "p.json");
+            }
+        }
+        "params check truck" => {
+            g.truck_params_file("p.json");
+            g.arg("p.json");
+        }
+        _ => unreachable!("group {group}"),
+    }
+}
+
+/// The truck and terrain options shared by `afsv roll simulate` and `afsv roll measures`.
+fn roll_case_args(g: &mut Gen<'_>) {
+    if g.rng.chance(0.4) {
+        g.truck_params_file("p.json");
+        g.push_opt("--params", "p.json");
+    }
+    g.num("--cg-height-m", "3.15", 0.15);
+    if g.rng.chance(0.3) {
+        g.arg("--smooth");
+    }
+    if g.rng.chance(0.3) {
+        let c = g.rng.pick(&["A", "C", "E", "F", "", "e"]).to_string();
+        g.push_opt("--class", &c);
+    }
+    if g.rng.chance(0.2) {
+        let d = g.rng.pick(&["left", "right", "up", ""]).to_string();
+        g.push_opt("--direction", &d);
+    }
+    g.num("--waviness", "2", 0.15);
+    g.num("--mc", "0.3", 0.15);
+    if g.rng.chance(0.2) {
+        let b = g
+            .rng
+            .pick(&["0.02,5", "5,0.02", "nan,5", "0.02,11", "0,1", "0.1", ""])
+            .to_string();
+        g.push_opt("--band", &b);
+    }
+    if g.rng.chance(0.1) {
+        let s = g
+            .rng
+            .pick(&["-1", "18446744073709551616", "abc"])
+            .to_string();
+        g.push_opt("--seed", &s);
+    }
+    if g.rng.chance(0.3 * g.scale) {
+        let v = g.bad();
+        g.push_opt("--duration", &v);
+    } else {
+        g.push_opt("--duration", "3");
     }
 }

@@ -69,6 +69,8 @@ pub(crate) struct Gen<'a> {
     pub(crate) args: Vec<String>,
     pub(crate) files: Vec<(String, Vec<u8>)>,
     pub(crate) yaw_params: &'a str,
+    /// `afsv params dump truck`, the template of the truck parameter files.
+    pub(crate) truck_params: &'a str,
     /// Scales the probability of a bad option value: 0 leaves the damage to the files.
     pub(crate) scale: f64,
 }
@@ -130,6 +132,10 @@ impl Gen<'_> {
     }
     pub(crate) fn yaw_params_file(&mut self, name: &str) {
         let text = mutate_json(&mut self.rng, self.yaw_params);
+        self.file(name, text.into_bytes());
+    }
+    pub(crate) fn truck_params_file(&mut self, name: &str) {
+        let text = mutate_json(&mut self.rng, self.truck_params);
         self.file(name, text.into_bytes());
     }
 }

@@ -119,6 +119,11 @@ pub fn fuzz(args: &[String], root: &Path) -> Result<(), String> {
         .output()
         .map_err(|e| format!("cannot run {}: {e}", bin.display()))?;
     let yaw_params = String::from_utf8(yaw_params.stdout).map_err(|e| e.to_string())?;
+    let truck_params = Command::new(&bin)
+        .args(["params", "dump", "truck"])
+        .output()
+        .map_err(|e| format!("cannot run {}: {e}", bin.display()))?;
+    let truck_params = String::from_utf8(truck_params.stdout).map_err(|e| e.to_string())?;
     let scratch = root
         .join("target")
         .join("fuzz")
@@ -136,7 +141,7 @@ pub fn fuzz(args: &[String], root: &Path) -> Result<(), String> {
         bin.display()
     );
     let t0 = Instant::now();
-    let results = run_all(&opts, &bin, &scratch, &groups, &yaw_params);
+    let results = run_all(&opts, &bin, &scratch, &groups, &yaw_params, &truck_params);
     let elapsed = t0.elapsed();
     print_summary(&results, elapsed);
     let failures: Vec<&Result1> = results.iter().filter(|r| r.outcome.failed()).collect();
@@ -174,6 +179,7 @@ fn run_all(
     scratch: &Path,
     groups: &[(&'static str, u32)],
     yaw_params: &str,
+    truck_params: &str,
 ) -> Vec<Result1> {
     let t0 = Instant::now();
     let next = AtomicUsize::new(0);
@@ -186,7 +192,7 @@ fn run_all(
                 if id >= opts.cases {
                     break;
                 }
-                let case = make_case(opts.seed, id, groups, yaw_params);
+                let case = make_case(opts.seed, id, groups, yaw_params, truck_params);
                 let dir = scratch.join(format!("case-{id:05}"));
                 let started = Instant::now();
                 let (outcome, detail, multi_line) = run_case(bin, &dir, &case, opts);
@@ -281,14 +287,14 @@ mod tests {
     fn cases_are_reproducible_and_cover_every_group() {
         let p = "{\"a\": 1.5, \"b\": [2, 3]}";
         let a: Vec<String> = (0..300)
-            .map(|i| make_case(7, i, GROUPS, p).args.join(" "))
+            .map(|i| make_case(7, i, GROUPS, p, p).args.join(" "))
             .collect();
         let b: Vec<String> = (0..300)
-            .map(|i| make_case(7, i, GROUPS, p).args.join(" "))
+            .map(|i| make_case(7, i, GROUPS, p, p).args.join(" "))
             .collect();
         assert_eq!(a, b);
         let groups: std::collections::BTreeSet<&str> = (0..3000)
-            .map(|i| make_case(1, i, GROUPS, p).group)
+            .map(|i| make_case(1, i, GROUPS, p, p).group)
             .collect();
         assert_eq!(groups.len(), GROUPS.len());
     }

@@ -1,11 +1,10 @@
-//! Fixtures that need models we do not have (chapter 2 truck, chapter 6 vehicle,
-//! optimisations), listed with the reason.
+//! Fixtures that need models we do not have (chapter 6 vehicle, optimisations), listed
+//! with the reason. The chapter 2 truck is modelled (`roll-truck`, `checks/chapter2.rs`).
 
 use super::Ctx;
 
 /// Fixtures that need models we do not have, with the reason.
 pub(super) fn list_not_reproducible(ctx: &mut Ctx) -> Result<(), String> {
-    let ch2 = "needs the chapter-2 TruckSim model of the 50 t rigid truck (Tables 2.1-2.3) driven over synthesized terrain; we have the terrain synthesis (terrain-psd) and the DRT/LTR measures (perf-measures) but not that vehicle";
     let ch6 = "needs the chapter-6 3-D multibody AFSV (12 bodies, Table 6.1) with tire enveloping, ride and roll dynamics; not implemented yet";
     let ch6_hps = "needs the chapter-6 3-D vehicle with the front-axle HPS (hps-emulsion has the strut, not the vehicle); not implemented yet";
     let ch6_opt = "needs the chapter-6 HPS optimisation on the 3-D vehicle; not implemented";
@@ -28,9 +27,7 @@ pub(super) fn list_not_reproducible(ctx: &mut Ctx) -> Result<(), String> {
         .filter(|f| f.kind == "result" || f.kind == "qualitative")
         .filter_map(|f| {
             let id = f.id.as_str();
-            let reason = if id.starts_with("s2_") {
-                ch2
-            } else if id.starts_with("s6_hps_opt") || id.starts_with("t6_5_") {
+            let reason = if id.starts_with("s6_hps_opt") || id.starts_with("t6_5_") {
                 ch6_opt
             } else if id.starts_with("t6_4_") || id.starts_with("s6_hps_") {
                 ch6_hps
