@@ -24,6 +24,10 @@ pub const VALVE_AM_TABLE_UNIT: f64 = L_PER_MIN / 316.227_766_016_837_94; // sqrt
 /// Paper's a_v is in (L/min)/bar per unit normalised opening.
 pub const VALVE_AV_TABLE_UNIT: f64 = L_PER_MIN / BAR;
 
+/// Largest accepted dead volume V_0 (m³) of Eq 3.7. A steering circuit holds litres; a
+/// volume near `f64::MAX` makes the stored hydraulic energy overflow to infinity.
+pub const MAX_DEAD_VOLUME_M3: f64 = 1.0;
+
 /// Parameters of the hydraulic AFS component (SI units throughout).
 ///
 /// Sources: Table 3.1 (steering model parameters), Table 4.1 (valve coefficients a_0, a_m,
@@ -178,8 +182,8 @@ impl AfsParams {
         check(
             "dead_volume_m3",
             self.dead_volume_m3,
-            self.dead_volume_m3 > 0.0,
-            "must be > 0",
+            self.dead_volume_m3 > 0.0 && self.dead_volume_m3 <= MAX_DEAD_VOLUME_M3,
+            "must be > 0 and at most 1 m³ (a steering circuit holds litres; larger volumes overflow the stored hydraulic energy)",
         )?;
         check(
             "bulk_modulus_pa",

@@ -378,6 +378,16 @@ fn parameter_validation_names_the_field() {
 }
 
 #[test]
+fn a_dead_volume_beyond_a_cubic_metre_is_rejected_by_name() {
+    let mut p = AfsParams::nominal();
+    p.dead_volume_m3 = 1e308;
+    let err = p.validate().unwrap_err().to_string();
+    assert!(err.contains("dead_volume_m3"), "{err}");
+    p.dead_volume_m3 = 1.0;
+    assert!(p.validate().is_ok());
+}
+
+#[test]
 fn params_round_trip_through_json() {
     let p = AfsParams::nominal();
     let s = serde_json::to_string_pretty(&p).unwrap();
