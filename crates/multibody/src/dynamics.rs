@@ -1,7 +1,7 @@
 //! Joint-space dynamics `H(q) vdot + C(q, v) = tau`: the composite-rigid-body algorithm
 //! for `H` (Featherstone, "Rigid Body Dynamics Algorithms", 2008, Table 6.2), the
 //! recursive Newton-Euler algorithm for `C` and inverse dynamics (Table 5.1), and forward
-//! dynamics by a sparse `L^T L` solve of the joint-space equation (section 6.5).
+//! dynamics by a Cholesky solve of the joint-space equation (ch. 6).
 //!
 //! Gravity enters RNEA as a fictitious base acceleration `a_0 = -a_g` (ch. 5);
 //! external forces are those accumulated in the [`Workspace`] since the last
@@ -9,11 +9,10 @@
 
 use crate::error::DynamicsError;
 use crate::kinematics::{check_len, subspace_times};
-use crate::ltl;
 use crate::model::{Link, Model};
 use crate::spatial::{cross_force, cross_motion, spatial};
 use crate::workspace::Workspace;
-use nalgebra::{DMatrix, Vector3, Vector6};
+use nalgebra::{Cholesky, DMatrix, Vector3, Vector6};
 
 /// Composite-rigid-body algorithm (Featherstone 2008, Table 6.2): fills and returns the
 /// symmetric joint-space mass matrix `H(q)` at the configuration of the last
@@ -129,9 +128,8 @@ pub fn inverse_dynamics(
     Ok(())
 }
 
-/// Forward dynamics: solves `H vdot = tau - C` with the sparse `L^T L` factorisation of
-/// the CRBA mass matrix (Featherstone 2008, section 6.5, Tables 6.3-6.4; no fill-in on a
-/// tree) and returns `vdot` (length `nv`).
+/// Forward dynamics: solves `H vdot = tau - C` with a Cholesky factorisation of the CRBA
+/// mass matrix (Featherstone 2008, ch. 6) and returns `vdot` (length `nv`).
 ///
 /// `tau` are the caller's joint forces (springs, dampers, drive torques); floating-joint
 /// entries are a body-coordinate wrench `[moment; force]` about the body origin.
@@ -148,9 +146,21 @@ pub fn forward_dynamics<'w>(
     for ((vd, t), c) in ws.vdot.iter_mut().zip(tau).zip(ws.c.iter()) {
         *vd = t - c;
     }
-    ws.chol.copy_from(&ws.h);
-    if ltl::factor(&mut ws.chol, &model.dof_parent) {
-        ltl::solve(&ws.chol, &model.dof_parent, &mut ws.vdot);
+    // The factor borrows the preallocated buffer; `take` leaves an empty matrix
+    // (no allocation) and the buffer is handed back below. A dense factorisation: with
+    // the floating base, 6 of this crate's typical 10-14 degrees of freedom form one chain,
+    // so Featherstone's sparse L^T L (Table 6.3) saves few operations and, with its
+    // index-chasing loops, measured slower than nalgebra's Cholesky (docs/multibody.md).
+    let mut buffer = std::mem::take(&mut ws.chol);
+    buffer.copy_from(&ws.h);
+    let chol = Cholesky::new_unchecked(buffer);
+    let l = chol.l_dirty();
+    let definite = (0..l.nrows()).all(|j| l[(j, j)].is_finite() && l[(j, j)] > 0.0);
+    if definite {
+        chol.solve_mut(&mut ws.vdot);
+    }
+    ws.chol = chol.unpack_dirty();
+    if definite {
         Ok(&ws.vdot)
     } else {
         Err(DynamicsError::MassMatrixNotPositiveDefinite)

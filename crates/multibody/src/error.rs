@@ -104,7 +104,7 @@ pub enum DynamicsError {
     /// A dynamics call came before [`crate::update_kinematics`] for the current state.
     #[error("update_kinematics must be called before this function")]
     KinematicsNotUpdated,
-    /// The `L^T L` factorisation of the mass matrix failed (a pivot not finite and positive).
+    /// The Cholesky factorisation of the mass matrix failed.
     #[error("the joint-space mass matrix is not positive definite")]
     MassMatrixNotPositiveDefinite,
 }

@@ -39,7 +39,6 @@ mod error;
 mod inertia;
 pub mod joint;
 mod kinematics;
-mod ltl;
 mod model;
 pub mod spatial;
 mod workspace;

@@ -50,9 +50,6 @@ pub struct Model {
     gravity: Vector3<f64>,
     nq: usize,
     nv: usize,
-    /// Per degree of freedom, the previous one on its path to the root (`λ` of
-    /// Featherstone 2008, Table 6.3), for the sparse factorisation of `H`.
-    pub(crate) dof_parent: Vec<Option<usize>>,
 }
 
 /// Collects bodies and validates them into a [`Model`].
@@ -119,38 +116,15 @@ impl ModelBuilder {
                 nv += b.joint.nv();
                 link
             })
-            .collect::<Vec<_>>();
-        let dof_parent = dof_parents(&bodies, &links);
+            .collect();
         Ok(Model {
             bodies,
             links,
             gravity: self.gravity,
             nq,
             nv,
-            dof_parent,
         })
     }
-}
-
-/// `λ(k)` for every degree of freedom: the one before it in its joint, or else the last
-/// one of the nearest ancestor body whose joint moves (fixed joints have none).
-fn dof_parents(bodies: &[Body], links: &[Link]) -> Vec<Option<usize>> {
-    let mut parent = Vec::new();
-    for (i, link) in links.iter().enumerate() {
-        let mut up = bodies[i].parent;
-        while let Some(p) = up {
-            if links[p].nv > 0 {
-                break;
-            }
-            up = bodies[p].parent;
-        }
-        let mut prev = up.map(|p| links[p].v_offset + links[p].nv - 1);
-        for k in 0..link.nv {
-            parent.push(prev);
-            prev = Some(link.v_offset + k);
-        }
-    }
-    parent
 }
 
 fn non_finite(body: &Body, field: &'static str) -> ModelError {

@@ -11,7 +11,7 @@ use crate::spatial::{spatial, SpatialTransform};
 use nalgebra::{DMatrix, DVector, Vector3, Vector6};
 
 /// Per-evaluation state of one [`Model`]: transforms, velocities, accelerations, forces,
-/// composite inertias, mass matrix, bias vector, accelerations and the factor buffer.
+/// composite inertias, mass matrix, bias vector, accelerations and the Cholesky buffer.
 #[derive(Debug, Clone)]
 pub struct Workspace {
     /// `i X lambda(i)`: parent-to-body transforms.
@@ -38,7 +38,7 @@ pub struct Workspace {
     pub(crate) c: DVector<f64>,
     /// Joint accelerations of the last forward-dynamics call.
     pub(crate) vdot: DVector<f64>,
-    /// Storage of the sparse `L^T L` factor of `H` (lower triangle).
+    /// Cholesky factor storage (lent to nalgebra during the solve).
     pub(crate) chol: DMatrix<f64>,
     /// Whether `update_kinematics` has filled the pose and velocity buffers.
     pub(crate) kinematics_ready: bool,

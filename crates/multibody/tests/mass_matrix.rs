@@ -2,8 +2,8 @@
 //! equal column by column to RNEA with unit accelerations (zero velocity and gravity), and
 //! consistent with the body-sum kinetic energy 1/2 v^T H v; and the RNEA bias forces obey
 //! the power balance v^T C = d/dt(potential) + 1/2 v^T Hdot v (Hdot by central differences);
-//! forward dynamics (the sparse L^T L solve) inverts inverse dynamics and agrees with a
-//! dense Cholesky solve of H.
+//! forward dynamics inverts inverse dynamics on branched trees with fixed joints and
+//! agrees with a direct Cholesky solve of H.
 use multibody::{
     bias_forces, forward_dynamics, inverse_dynamics, kinetic_energy, mass_matrix, potential_energy,
     update_kinematics, Body, Joint, Model, ModelBuilder, Workspace,
