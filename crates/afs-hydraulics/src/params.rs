@@ -209,6 +209,11 @@ impl AfsParams {
             self.leak_velocity >= 0.0,
             "must be >= 0",
         )?;
+        self.validate_valve_and_pressures()
+    }
+
+    /// The gerotor, valve (Eqs 3.9-3.12) and circuit-pressure part of [`Self::validate`].
+    fn validate_valve_and_pressures(&self) -> Result<(), AfsError> {
         check(
             "gerotor_displacement",
             self.gerotor_displacement,

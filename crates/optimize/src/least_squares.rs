@@ -114,48 +114,7 @@ pub fn fit<P: Problem + ?Sized>(
 ) -> Result<FitResult, LeastSquaresError> {
     let n = problem.n_params();
     let m = problem.n_residuals();
-    if p0.len() != n {
-        return Err(LeastSquaresError::Invalid(format!(
-            "start has {} parameters, problem has {n}",
-            p0.len()
-        )));
-    }
-    if n == 0 || m < n {
-        return Err(LeastSquaresError::Invalid(format!(
-            "need at least as many residuals ({m}) as parameters ({n}), and one parameter"
-        )));
-    }
-    let lo = opts
-        .lower
-        .clone()
-        .unwrap_or_else(|| vec![f64::NEG_INFINITY; n]);
-    let hi = opts.upper.clone().unwrap_or_else(|| vec![f64::INFINITY; n]);
-    if lo.len() != n
-        || hi.len() != n
-        || lo
-            .iter()
-            .zip(&hi)
-            .any(|(a, b)| a.is_nan() || b.is_nan() || a > b)
-    {
-        return Err(LeastSquaresError::Invalid(
-            "bounds must have one entry per parameter with lower <= upper".into(),
-        ));
-    }
-    if p0.iter().any(|v| !v.is_finite()) {
-        return Err(LeastSquaresError::Invalid(format!(
-            "start {p0:?} is not finite"
-        )));
-    }
-    let typical = opts.typical.clone().unwrap_or_else(|| {
-        p0.iter()
-            .map(|v| if *v != 0.0 { v.abs() } else { 1.0 })
-            .collect()
-    });
-    if typical.len() != n || typical.iter().any(|t| !t.is_finite() || *t == 0.0) {
-        return Err(LeastSquaresError::Invalid(
-            "typical magnitudes must have one finite, non-zero entry per parameter".into(),
-        ));
-    }
+    let (lo, hi, typical) = checked_inputs(n, m, p0, opts)?;
     // Column scales of the Jacobian: work in q_j = p_j / scale_j.
     let scale: Vec<f64> = typical.iter().map(|t| t.abs()).collect();
     let mut p = p0.to_vec();
@@ -267,11 +226,89 @@ pub fn fit<P: Problem + ?Sized>(
         }
     }
 
-    // Covariance from the final Jacobian.
-    let jtj = jac.transpose() * &jac;
+    let (covariance, std_errors) = covariance(&jac, rss, m, n, &scale);
+    Ok(FitResult {
+        params: p,
+        rss,
+        n_residuals: m,
+        iterations,
+        evaluations,
+        converged,
+        std_errors,
+        covariance,
+    })
+}
+
+/// Lower bounds, upper bounds and typical magnitudes of a checked fit.
+type CheckedInputs = (Vec<f64>, Vec<f64>, Vec<f64>);
+
+/// The bounds and typical magnitudes of a fit of `n` parameters to `m` residuals from `p0`,
+/// after checking that sizes agree, bounds are ordered and the start is finite.
+fn checked_inputs(
+    n: usize,
+    m: usize,
+    p0: &[f64],
+    opts: &FitOptions,
+) -> Result<CheckedInputs, LeastSquaresError> {
+    if p0.len() != n {
+        return Err(LeastSquaresError::Invalid(format!(
+            "start has {} parameters, problem has {n}",
+            p0.len()
+        )));
+    }
+    if n == 0 || m < n {
+        return Err(LeastSquaresError::Invalid(format!(
+            "need at least as many residuals ({m}) as parameters ({n}), and one parameter"
+        )));
+    }
+    let lo = opts
+        .lower
+        .clone()
+        .unwrap_or_else(|| vec![f64::NEG_INFINITY; n]);
+    let hi = opts.upper.clone().unwrap_or_else(|| vec![f64::INFINITY; n]);
+    if lo.len() != n
+        || hi.len() != n
+        || lo
+            .iter()
+            .zip(&hi)
+            .any(|(a, b)| a.is_nan() || b.is_nan() || a > b)
+    {
+        return Err(LeastSquaresError::Invalid(
+            "bounds must have one entry per parameter with lower <= upper".into(),
+        ));
+    }
+    if p0.iter().any(|v| !v.is_finite()) {
+        return Err(LeastSquaresError::Invalid(format!(
+            "start {p0:?} is not finite"
+        )));
+    }
+    let typical = opts.typical.clone().unwrap_or_else(|| {
+        p0.iter()
+            .map(|v| if *v != 0.0 { v.abs() } else { 1.0 })
+            .collect()
+    });
+    if typical.len() != n || typical.iter().any(|t| !t.is_finite() || *t == 0.0) {
+        return Err(LeastSquaresError::Invalid(
+            "typical magnitudes must have one finite, non-zero entry per parameter".into(),
+        ));
+    }
+    Ok((lo, hi, typical))
+}
+
+/// Parameter covariance (row-major, `n * n`) and standard errors from the final scaled
+/// Jacobian `jac` (`m` residuals, column scales `scale`) and residual sum of squares `rss`:
+/// `cov = scale_i scale_j (J_s^T J_s)^-1_ij rss / (m - n)`. NaN where `J^T J` is singular.
+fn covariance(
+    jac: &DMatrix<f64>,
+    rss: f64,
+    m: usize,
+    n: usize,
+    scale: &[f64],
+) -> (Vec<f64>, Vec<f64>) {
+    let jtj = jac.transpose() * jac;
     let dof = m.saturating_sub(n).max(1) as f64;
     let s2 = rss / dof;
-    let (covariance, std_errors) = match jtj.clone().try_inverse() {
+    match jtj.clone().try_inverse() {
         Some(inv) if inv.iter().all(|v| v.is_finite()) => {
             // Back from scaled parameters: cov_ij = scale_i scale_j (J_s^T J_s)^-1_ij s^2.
             let cov = DMatrix::from_fn(n, n, |i, j| inv[(i, j)] * scale[i] * scale[j] * s2);
@@ -294,17 +331,7 @@ pub fn fit<P: Problem + ?Sized>(
             (flat, se)
         }
         _ => (vec![f64::NAN; n * n], vec![f64::NAN; n]),
-    };
-    Ok(FitResult {
-        params: p,
-        rss,
-        n_residuals: m,
-        iterations,
-        evaluations,
-        converged,
-        std_errors,
-        covariance,
-    })
+    }
 }
 
 #[cfg(test)]
