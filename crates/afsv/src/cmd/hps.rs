@@ -414,7 +414,7 @@ fn identify_strut(
     }
 }
 
-/// The four loops of the last period (Figs 5.x): pressure-deflection (MPa, mm),
+/// The four loops of the last period, drawn as in Figs 5.7, 5.9 and 5.10: pressure-deflection (MPa, mm),
 /// force-deflection (kN, mm), force-velocity and damping force-velocity (kN, m/s).
 fn plot_loops(
     path: &Path,
