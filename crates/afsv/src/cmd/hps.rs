@@ -414,8 +414,9 @@ fn identify_strut(
     }
 }
 
-/// The four loops of the last period, drawn as in Figs 5.7, 5.9 and 5.10: pressure-deflection (MPa, mm),
-/// force-deflection (kN, mm), force-velocity and damping force-velocity (kN, m/s).
+/// The four loops of the last period, drawn as in Figs 5.7, 5.9 and 5.10:
+/// pressure-deflection (MPa, mm), force-deflection (kN, mm), force-velocity and damping
+/// force-velocity (kN, m/s).
 fn plot_loops(
     path: &Path,
     rec: &StrutRecord,
