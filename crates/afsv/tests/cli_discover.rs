@@ -419,6 +419,100 @@ fn sign_conventions_in_words_are_refused_and_both_ways_forward_work() {
 }
 
 /// `afsv synth --model MODEL --effects EFFECTS --seed SEED -o DIR`, which must succeed.
+#[test]
+fn synth_replaces_only_its_own_folder_and_only_with_force() {
+    let data = tmp("rerun");
+    synth("hps-strut", "none", "3", &data);
+    let truth: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(data.join("truth.json")).unwrap()).unwrap();
+    assert_eq!(truth["written_by"], "afsv synth");
+    let rerun = |force: bool| {
+        let mut args = vec!["synth", "--model", "hps-strut", "--seed", "4", "-o"];
+        args.push(data.to_str().unwrap());
+        if force {
+            args.push("--force");
+        }
+        afsv(&args)
+    };
+    let out = rerun(false);
+    assert!(!out.status.success());
+    assert!(String::from_utf8_lossy(&out.stderr).contains("--force"));
+    let out = rerun(true);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let truth: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(data.join("truth.json")).unwrap()).unwrap();
+    assert_eq!(truth["seed"], 4);
+
+    // A file afsv did not write makes the folder foreign: never replaced, not even in part.
+    let notes = data.join("train").join("notes.txt");
+    std::fs::write(&notes, "mine").unwrap();
+    let out = rerun(true);
+    assert!(!out.status.success());
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        err.contains("notes.txt") && err.contains("never replaced"),
+        "{err}"
+    );
+    assert_eq!(std::fs::read_to_string(&notes).unwrap(), "mine");
+    assert!(data.join("truth.json").is_file());
+    std::fs::remove_file(&notes).unwrap();
+
+    // A folder without synth's truth.json is foreign too.
+    let other = tmp("foreign");
+    std::fs::create_dir_all(&other).unwrap();
+    std::fs::write(other.join("truth.json"), r#"{"model": "hps-strut"}"#).unwrap();
+    let out = afsv(&[
+        "synth",
+        "--model",
+        "hps-strut",
+        "--force",
+        "-o",
+        other.to_str().unwrap(),
+    ]);
+    assert!(!out.status.success());
+    assert_eq!(
+        std::fs::read_to_string(other.join("truth.json")).unwrap(),
+        r#"{"model": "hps-strut"}"#
+    );
+
+    // Piped discover prints one progress line per fit (count unknown in advance).
+    let report = tmp("rerun-report");
+    let out = afsv(&[
+        "discover",
+        "--model",
+        "hps-strut",
+        "--train",
+        data.join("train").to_str().unwrap(),
+        "--holdout",
+        data.join("holdout").to_str().unwrap(),
+        "--effects",
+        "check-valve-lag",
+        "--max-effects",
+        "0",
+        "-o",
+        report.to_str().unwrap(),
+    ]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        err.lines().next().is_some_and(|l| l
+            .starts_with("afsv discover: 1 fits (baseline calibration), ")
+            && l.ends_with(" elapsed")),
+        "{err}"
+    );
+    std::fs::remove_dir_all(&data).unwrap();
+    std::fs::remove_dir_all(&other).unwrap();
+    std::fs::remove_dir_all(&report).unwrap();
+}
+
 fn synth(model: &str, effects: &str, seed: &str, dir: &std::path::Path) {
     let out = afsv(&[
         "synth",

@@ -114,6 +114,78 @@ fn errors_are_one_line() {
     assert!(String::from_utf8_lossy(&out.stdout).contains("--amp-mm"));
 }
 
+#[test]
+fn loop_plot_has_title_conditions_and_units_and_piped_runs_print_progress_lines() {
+    let csv = tmp("titled.csv");
+    let svg = tmp("titled.svg");
+    let out = afsv(&[
+        "hps",
+        "harmonic",
+        "--strut",
+        "lab-1orifice",
+        "--freq",
+        "1",
+        "--amp-mm",
+        "10",
+        "--cycles",
+        "2",
+        "-o",
+        csv.to_str().unwrap(),
+        "--plot",
+        svg.to_str().unwrap(),
+    ]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let text = std::fs::read_to_string(&svg).unwrap();
+    for must in [
+        "strut loops, last period",
+        "titled.csv, lab-1orifice strut",
+        "1 Hz, 10 mm amplitude",
+        "pressure (MPa)",
+        "deflection (mm)",
+        "force (kN)",
+        "velocity (m/s)",
+        "damping force (kN)",
+        "P_hc piston side",
+        "P_hr rod side",
+    ] {
+        assert!(text.contains(must), "the loop plot lacks `{must}`");
+    }
+
+    // stderr is a pipe here: one progress line per lab test, with count and ETA.
+    let out = afsv(&["hps", "characterize", "--strut", "lab-1orifice"]);
+    assert!(out.status.success());
+    let err = String::from_utf8_lossy(&out.stderr);
+    let lines: Vec<&str> = err.lines().collect();
+    assert_eq!(lines.len(), 43, "{err}");
+    assert!(lines[0].starts_with("afsv hps characterize: 1/43 tests (0.1 Hz, 5.0 mm), "));
+    assert!(lines[42].starts_with("afsv hps characterize: 43/43 tests (8 Hz, "));
+    assert!(lines.iter().all(|l| l.contains(" elapsed, ETA ")), "{err}");
+
+    let out = afsv(&[
+        "hps",
+        "identify",
+        "-i",
+        csv.to_str().unwrap(),
+        "--fit",
+        "gamma0",
+    ]);
+    assert!(out.status.success());
+    let err = String::from_utf8_lossy(&out.stderr);
+    let lines: Vec<&str> = err.lines().collect();
+    assert_eq!(lines.len(), 2, "{err}");
+    assert!(lines[0].starts_with("afsv hps identify: 1/2 steps (read 721 samples), "));
+    assert!(lines[1].starts_with("afsv hps identify: 2/2 steps (fitted in "));
+
+    // --quiet switches progress off.
+    let out = afsv(&["--quiet", "hps", "characterize", "--strut", "lab-1orifice"]);
+    assert!(out.status.success());
+    assert!(out.stderr.is_empty());
+}
+
 fn tmp(name: &str) -> std::path::PathBuf {
     scratch("hps", name)
 }

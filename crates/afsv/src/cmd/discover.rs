@@ -82,9 +82,14 @@ pub struct SynthArgs {
     /// Baseline parameters as JSON (as for `afsv discover --params`).
     #[arg(long)]
     pub params: Option<PathBuf>,
-    /// Output folder (must not exist or be empty): `train/`, `holdout/`, `truth.json`.
+    /// Output folder: `train/`, `holdout/`, `truth.json`. It must not exist or be empty,
+    /// unless it is a folder `afsv synth` wrote and `--force` is given.
     #[arg(short = 'o', long = "output")]
     pub output: PathBuf,
+    /// Replace an existing folder that `afsv synth` wrote (a folder afsv did not write is
+    /// never replaced).
+    #[arg(long)]
+    pub force: bool,
 }
 
 fn read_json<T: serde::de::DeserializeOwned>(path: &Path) -> Result<T, String> {
@@ -226,56 +231,13 @@ fn load(files: &[PathBuf], opts: &ReadOptions) -> Result<(Vec<Record>, Vec<Strin
     Ok((recs, names))
 }
 
-/// Progress of the fits: a spinner on a terminal, otherwise one line per finished fit on
-/// stderr (with the count and the time so far).
-enum Spinner {
-    Bar(indicatif::ProgressBar),
-    Lines {
-        start: std::time::Instant,
-        done: std::sync::atomic::AtomicUsize,
-    },
-}
+/// Progress of the fits on stderr ([`afsv::progress::Progress`]; the number of fits is
+/// not known in advance).
+struct FitProgress(afsv::progress::Progress);
 
-impl Spinner {
-    fn new() -> Result<Self, String> {
-        use std::io::IsTerminal;
-        if !std::io::stderr().is_terminal() {
-            return Ok(Spinner::Lines {
-                start: std::time::Instant::now(),
-                done: 0.into(),
-            });
-        }
-        let bar = indicatif::ProgressBar::new_spinner();
-        bar.set_style(
-            indicatif::ProgressStyle::with_template("{spinner} {pos} fits done ({elapsed}) {msg}")
-                .map_err(|e| e.to_string())?,
-        );
-        bar.enable_steady_tick(std::time::Duration::from_millis(200));
-        Ok(Spinner::Bar(bar))
-    }
-
-    fn finish(&self) {
-        if let Spinner::Bar(b) = self {
-            b.finish_and_clear();
-        }
-    }
-}
-
-impl Progress for Spinner {
+impl Progress for FitProgress {
     fn fit_done(&self, what: &str) {
-        match self {
-            Spinner::Bar(b) => {
-                b.inc(1);
-                b.set_message(format!("last: {what}"));
-            }
-            Spinner::Lines { start, done } => {
-                let n = done.fetch_add(1, std::sync::atomic::Ordering::Relaxed) + 1;
-                eprintln!(
-                    "afsv discover: fit {n} done ({what}), {:.0} s",
-                    start.elapsed().as_secs_f64()
-                );
-            }
-        }
+        self.0.step(what);
     }
 }
 
@@ -303,7 +265,7 @@ fn run_discover<M: DiscoveryModel>(model: &M, args: &DiscoverArgs) -> CmdResult 
         max_effects: args.max_effects,
         ..DiscoveryOptions::default()
     };
-    let spinner = Spinner::new()?;
+    let spinner = FitProgress(afsv::progress::Progress::new("afsv discover", "fits", None));
     let d = discover(
         model,
         &train,
@@ -313,7 +275,7 @@ fn run_discover<M: DiscoveryModel>(model: &M, args: &DiscoverArgs) -> CmdResult 
         &opts,
         &spinner,
     )?;
-    spinner.finish();
+    spinner.0.finish();
     let written = write_report(model, &d, &hold, &hold_names, output)?;
     afsv::output::print_json(&serde_json::json!({
         "model": d.model,
@@ -354,17 +316,7 @@ pub fn run_discover_cmd(args: DiscoverArgs) -> CmdResult {
 
 /// Run `afsv synth`.
 pub fn run_synth(args: SynthArgs) -> CmdResult {
-    if args.output.exists()
-        && std::fs::read_dir(&args.output)
-            .map(|mut d| d.next().is_some())
-            .unwrap_or(true)
-    {
-        return Err(format!(
-            "{} exists and is not empty; synth writes only into a new or empty folder",
-            args.output.display()
-        )
-        .into());
-    }
+    let replace = synth_folder_to_replace(&args.output, args.force)?;
     let noiseless = match args.noise.as_str() {
         "default" => false,
         "none" => true,
@@ -402,6 +354,16 @@ pub fn run_synth(args: SynthArgs) -> CmdResult {
             )
         }
     };
+    let (mut records, mut truth) = (records, truth);
+    truth["written_by"] = SYNTH_WRITTEN_BY.into();
+    for r in &mut records {
+        if let Some(meta) = r.record.meta.as_object_mut() {
+            meta.insert("written_by".into(), SYNTH_WRITTEN_BY.into());
+        }
+    }
+    for f in &replace {
+        std::fs::remove_file(f).map_err(|e| format!("{}: {e}", f.display()))?;
+    }
     synth::write_records(&args.output, &records, &truth)?;
     afsv::output::print_json(&serde_json::json!({
         "output": args.output,
@@ -410,4 +372,107 @@ pub fn run_synth(args: SynthArgs) -> CmdResult {
         "truth": args.output.join("truth.json"),
     }))?;
     Ok(())
+}
+
+/// `"written_by"` of the `truth.json` that marks a folder `afsv synth` wrote.
+const SYNTH_WRITTEN_BY: &str = "afsv synth";
+
+/// The files to delete before `afsv synth` writes into `dir`: none when `dir` does not
+/// exist or is empty. A non-empty `dir` is replaced only with `force` and only when afsv
+/// wrote all of it: a `truth.json` with `"written_by": "afsv synth"`, and `train/` and
+/// `holdout/` holding nothing but records (CSV) with afsv-written sidecars. Anything else
+/// in it is refused, so no file afsv did not write is ever deleted.
+fn synth_folder_to_replace(dir: &Path, force: bool) -> Result<Vec<PathBuf>, String> {
+    if !dir.exists() {
+        return Ok(Vec::new());
+    }
+    if !dir.is_dir() {
+        return Err(format!(
+            "-o {}: exists and is not a folder; synth writes a folder (train/, holdout/, truth.json)",
+            dir.display()
+        ));
+    }
+    let entries = list_dir(dir)?;
+    if entries.is_empty() {
+        return Ok(Vec::new());
+    }
+    let foreign = |what: &str| {
+        format!(
+            "-o {}: {what}; afsv synth did not write this folder, so it is never replaced (choose another folder)",
+            dir.display()
+        )
+    };
+    let truth = dir.join("truth.json");
+    let text = std::fs::read_to_string(&truth).map_err(|_| foreign("has no truth.json"))?;
+    let by_synth = serde_json::from_str::<serde_json::Value>(&text)
+        .ok()
+        .and_then(|v| v.get("written_by")?.as_str().map(|s| s == SYNTH_WRITTEN_BY))
+        .unwrap_or(false);
+    if !by_synth {
+        return Err(foreign(
+            "its truth.json does not say `\"written_by\": \"afsv synth\"`",
+        ));
+    }
+    let mut files = vec![truth.clone()];
+    for e in entries {
+        if e == truth {
+            continue;
+        }
+        let name = e.file_name().unwrap_or_default();
+        if !(is_real_dir(&e) && (name == "train" || name == "holdout")) {
+            return Err(foreign(&format!("holds {}", e.display())));
+        }
+        files.extend(synth_records(&e).map_err(|f| foreign(&format!("holds {}", f.display())))?);
+    }
+    if !force {
+        return Err(format!(
+            "-o {}: exists (written by an earlier afsv synth); add --force to replace it",
+            dir.display()
+        ));
+    }
+    Ok(files)
+}
+
+/// The records and sidecars in `sub` when all are afsv-written, else the first other file.
+fn synth_records(sub: &Path) -> Result<Vec<PathBuf>, PathBuf> {
+    let mut files = Vec::new();
+    for f in list_dir(sub).map_err(|_| sub.to_path_buf())? {
+        let ext = f.extension().and_then(|x| x.to_str());
+        let afsv_json = |j: &Path| {
+            j.is_file() && std::fs::read_to_string(j).is_ok_and(|t| afsv::output::is_afsv_json(&t))
+        };
+        let ours = !is_link(&f)
+            && f.is_file()
+            && match ext {
+                Some("csv") => afsv_json(&f.with_extension("json")),
+                Some("json") => afsv_json(&f) && f.with_extension("csv").is_file(),
+                _ => false,
+            };
+        if !ours {
+            return Err(f);
+        }
+        files.push(f);
+    }
+    Ok(files)
+}
+
+/// True when `p` is a symbolic link (never followed when replacing a folder).
+fn is_link(p: &Path) -> bool {
+    std::fs::symlink_metadata(p).map_or(true, |m| m.file_type().is_symlink())
+}
+
+/// True when `p` is a folder and not a link to one.
+fn is_real_dir(p: &Path) -> bool {
+    !is_link(p) && p.is_dir()
+}
+
+/// Entries of `dir`, sorted.
+fn list_dir(dir: &Path) -> Result<Vec<PathBuf>, String> {
+    let mut v = std::fs::read_dir(dir)
+        .map_err(|e| format!("{}: {e}", dir.display()))?
+        .map(|e| e.map(|e| e.path()))
+        .collect::<Result<Vec<_>, _>>()
+        .map_err(|e| format!("{}: {e}", dir.display()))?;
+    v.sort();
+    Ok(v)
 }

@@ -4,6 +4,7 @@
 
 use super::{args, CmdResult};
 use afsv::output::{OutputGuard, OutputKind};
+use afsv::progress::Progress;
 use afsv_records::Record;
 use hps_emulsion::{
     characterize, identify, lab_programme, loop_metrics, simulate_displacement, Excitation,
@@ -218,7 +219,18 @@ fn harmonic(a: HarmonicArgs) -> CmdResult {
         r.write(path)?;
     }
     if let Some(path) = &a.plot {
-        plot_loops(path, &rec, &test)?;
+        let record = match &a.output {
+            Some(csv) => format!("record {}", csv.display()),
+            None => "simulated (no record written)".to_string(),
+        };
+        let conditions = format!(
+            "{record}, {} strut, gamma0 {:.3}, {} Hz, {} mm amplitude",
+            a.strut.name(),
+            params.gamma0,
+            args::show(a.freq),
+            args::show(a.amp_mm)
+        );
+        plot_loops(path, &rec, &test, &conditions)?;
         afsv::output::mark_svg(path)?;
     }
     afsv::output::print_json(&serde_json::json!({
@@ -232,12 +244,23 @@ fn harmonic(a: HarmonicArgs) -> CmdResult {
 fn characterize_cmd(a: CharacterizeArgs) -> CmdResult {
     let params = with_gamma0(a.strut.params(), a.gamma0)?;
     let tests = lab_programme(params.travel);
-    let rows = characterize(
-        &params,
-        &HpsExtensions::none(),
-        &tests,
-        &SimOptions::default(),
-    )?;
+    let progress = Progress::new("afsv hps characterize", "tests", Some(tests.len()));
+    let mut rows = Vec::with_capacity(tests.len());
+    for t in &tests {
+        let row = characterize(
+            &params,
+            &HpsExtensions::none(),
+            std::slice::from_ref(t),
+            &SimOptions::default(),
+        )?;
+        rows.extend(row);
+        progress.step(&format!(
+            "{} Hz, {:.1} mm",
+            args::show(t.frequency_hz),
+            t.amplitude_m * 1e3
+        ));
+    }
+    progress.finish();
     afsv::output::print_json(&serde_json::json!({
         "strut": a.strut.name(),
         "gamma0": params.gamma0,
@@ -248,6 +271,7 @@ fn characterize_cmd(a: CharacterizeArgs) -> CmdResult {
 
 fn identify_cmd(a: IdentifyArgs) -> CmdResult {
     let which = FitParam::parse_list(&a.fit)?;
+    let progress = Progress::new("afsv hps identify", "steps", Some(2));
     let rec = Record::read(&a.input)?;
     let time = rec.require("time_s", &a.input)?.to_vec();
     let displacement = rec.require("displacement_m", &a.input)?.to_vec();
@@ -266,8 +290,11 @@ fn identify_cmd(a: IdentifyArgs) -> CmdResult {
     };
     let (strut, strut_source) = identify_strut(&a, &rec.meta)?;
     let start = strut.params();
+    progress.step(&format!("read {} samples", meas.time.len()));
     let res = identify(&meas, &start, &HpsExtensions::none(), &which, &opts)
         .map_err(|e| format!("{}: {e}", a.input.display()))?;
+    progress.step(&format!("fitted in {} iterations", res.iterations));
+    progress.finish();
     let mut at_bound = Vec::new();
     let fitted: Vec<serde_json::Value> = res
         .fitted
@@ -387,103 +414,57 @@ fn identify_strut(
     }
 }
 
-fn plot_loops(path: &Path, rec: &StrutRecord, test: &HarmonicTest) -> Result<(), String> {
-    use plotters::prelude::*;
-    let err = |e: &dyn std::fmt::Display| format!("{}: {e}", path.display());
-    let lp =
-        hps_emulsion::HysteresisLoop::last_period(rec, test.frequency_hz).map_err(|e| err(&e))?;
+/// The four loops of the last period, drawn as in Figs 5.7, 5.9 and 5.10:
+/// pressure-deflection (MPa, mm), force-deflection (kN, mm), force-velocity and damping
+/// force-velocity (kN, m/s).
+fn plot_loops(
+    path: &Path,
+    rec: &StrutRecord,
+    test: &HarmonicTest,
+    conditions: &str,
+) -> Result<(), String> {
+    use afsv_plot::{Axis, Panel, Series};
+    let lp = hps_emulsion::HysteresisLoop::last_period(rec, test.frequency_hz)
+        .map_err(|e| format!("{}: {e}", path.display()))?;
     let scaled = |v: &[f64], s: f64| v.iter().map(|x| x * s).collect::<Vec<f64>>();
     let z = scaled(&lp.displacement, 1e3);
-    let v = scaled(&lp.velocity, 1.0);
     let f = scaled(&lp.force, 1e-3);
     let pc = scaled(&lp.p_piston, 1e-6);
     let pr = scaled(&lp.p_rod, 1e-6);
     let fd = scaled(&lp.damping_force, 1e-3);
-    let root = SVGBackend::new(path, (1200, 900)).into_drawing_area();
-    root.fill(&WHITE).map_err(|e| err(&e))?;
-    let panels = root.split_evenly((2, 2));
-    type Curve<'a> = (&'a str, &'a [f64], &'a [f64], RGBColor);
-    let specs: [(&str, &str, &str, Vec<Curve>); 4] = [
-        (
-            "Pressure-deflection",
-            "deflection (mm)",
-            "pressure (MPa)",
-            vec![
-                ("P_hc", &z, &pc, RGBColor(31, 119, 180)),
-                ("P_hr", &z, &pr, RGBColor(214, 39, 40)),
+    let v = &lp.velocity;
+    let deflection = Axis::new("deflection", "mm");
+    let velocity = Axis::new("velocity", "m/s");
+    let force = Axis::new("force", "kN");
+    let series = |label, x, y| Series { label, x, y };
+    let panels = [
+        Panel {
+            caption: "pressure-deflection",
+            x: deflection,
+            y: Axis::new("pressure", "MPa"),
+            series: vec![
+                series("P_hc piston side", &z, &pc),
+                series("P_hr rod side", &z, &pr),
             ],
-        ),
-        (
-            "Force-deflection",
-            "deflection (mm)",
-            "force (kN)",
-            vec![("F_h", &z, &f, BLACK)],
-        ),
-        (
-            "Force-velocity",
-            "velocity (m/s)",
-            "force (kN)",
-            vec![("F_h", &v, &f, BLACK)],
-        ),
-        (
-            "Damping force-velocity",
-            "velocity (m/s)",
-            "damping force (kN)",
-            vec![("F_h - spring", &v, &fd, RGBColor(44, 160, 44))],
-        ),
+        },
+        Panel {
+            caption: "force-deflection",
+            x: deflection,
+            y: force,
+            series: vec![series("F_h", &z, &f)],
+        },
+        Panel {
+            caption: "force-velocity",
+            x: velocity,
+            y: force,
+            series: vec![series("F_h", v, &f)],
+        },
+        Panel {
+            caption: "damping force-velocity",
+            x: velocity,
+            y: Axis::new("damping force", "kN"),
+            series: vec![series("F_h - spring", v, &fd)],
+        },
     ];
-    for (area, (title, xl, yl, curves)) in panels.iter().zip(specs.iter()) {
-        let (x0, x1) = limits(curves.iter().map(|c| c.1));
-        let (y0, y1) = limits(curves.iter().map(|c| c.2));
-        let mut chart = ChartBuilder::on(area)
-            .caption(*title, ("sans-serif", 18))
-            .margin(10)
-            .x_label_area_size(35)
-            .y_label_area_size(55)
-            .build_cartesian_2d(x0..x1, y0..y1)
-            .map_err(|e| err(&e))?;
-        chart
-            .configure_mesh()
-            .x_desc(*xl)
-            .y_desc(*yl)
-            .draw()
-            .map_err(|e| err(&e))?;
-        for (label, x, y, color) in curves {
-            let color = *color;
-            chart
-                .draw_series(LineSeries::new(
-                    x.iter().copied().zip(y.iter().copied()),
-                    color,
-                ))
-                .map_err(|e| err(&e))?
-                .label(*label)
-                .legend(move |(a, b)| PathElement::new(vec![(a, b), (a + 18, b)], color));
-        }
-        chart
-            .configure_series_labels()
-            .background_style(WHITE.mix(0.8))
-            .border_style(BLACK)
-            .draw()
-            .map_err(|e| err(&e))?;
-    }
-    root.present().map_err(|e| err(&e))?;
-    Ok(())
-}
-
-fn limits<'a>(cols: impl Iterator<Item = &'a [f64]>) -> (f64, f64) {
-    let (mut lo, mut hi) = (f64::INFINITY, f64::NEG_INFINITY);
-    for c in cols {
-        for &x in c.iter().filter(|x| x.is_finite()) {
-            lo = lo.min(x);
-            hi = hi.max(x);
-        }
-    }
-    if !lo.is_finite() {
-        return (0.0, 1.0);
-    }
-    if hi <= lo {
-        hi = lo + 1.0;
-    }
-    let pad = 0.05 * (hi - lo);
-    (lo - pad, hi + pad)
+    afsv_plot::panels(path, "strut loops, last period", conditions, 2, &panels)
 }
