@@ -307,18 +307,9 @@ impl Problem for IdProblem<'_> {
     }
 }
 
-/// Fit the parameters `which` of `start` (other parameters fixed) to the measured record by
-/// bounded Levenberg-Marquardt. Each channel's residuals are divided by that channel's
-/// standard deviation so force and pressures weigh alike; standard errors come from the
-/// Jacobian at the solution (`s^2 (J^T J)^-1`).
-pub fn identify(
-    measured: &Measured,
-    start: &StrutParams,
-    ext: &HpsExtensions,
-    which: &[FitParam],
-    opts: &IdentifyOptions,
-) -> Result<IdentifyResult, HpsError> {
-    start.validate()?;
+/// The options and the parameter list of [`identify`]: a finite, non-negative warm-up and
+/// at least one parameter, none listed twice.
+fn check_request(which: &[FitParam], opts: &IdentifyOptions) -> Result<(), HpsError> {
     if !(opts.warmup_s.is_finite() && opts.warmup_s >= 0.0) {
         return Err(HpsError::Identification(format!(
             "`warmup_s` must be finite and >= 0, got {}",
@@ -336,6 +327,22 @@ pub fn identify(
             )));
         }
     }
+    Ok(())
+}
+
+/// Fit the parameters `which` of `start` (other parameters fixed) to the measured record by
+/// bounded Levenberg-Marquardt. Each channel's residuals are divided by that channel's
+/// standard deviation so force and pressures weigh alike; standard errors come from the
+/// Jacobian at the solution (`s^2 (J^T J)^-1`).
+pub fn identify(
+    measured: &Measured,
+    start: &StrutParams,
+    ext: &HpsExtensions,
+    which: &[FitParam],
+    opts: &IdentifyOptions,
+) -> Result<IdentifyResult, HpsError> {
+    start.validate()?;
+    check_request(which, opts)?;
     let n = measured.time.len();
     let exc = Excitation::Samples {
         time_s: measured.time.clone(),
