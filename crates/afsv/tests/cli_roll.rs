@@ -70,3 +70,26 @@ fn bad_input_is_a_one_line_error() {
         assert!(err.contains(needle), "{args:?}: {err}");
     }
 }
+
+#[test]
+fn a_piped_study_prints_one_progress_line_per_run() {
+    let out = afsv(&["roll", "study", "waviness", "--seeds", "1"]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let v = json(&out);
+    let runs = v["points"].as_array().unwrap().len();
+    let err = String::from_utf8_lossy(&out.stderr);
+    let lines: Vec<&str> = err
+        .lines()
+        .filter(|l| l.starts_with("afsv roll study: "))
+        .collect();
+    assert_eq!(lines.len(), runs, "{err}");
+    assert!(
+        lines[runs - 1].contains(&format!("{runs}/{runs} runs")),
+        "{err}"
+    );
+    assert!(lines[0].contains("ETA"), "{err}");
+}

@@ -332,10 +332,12 @@ fn run_study_cmd(
     }
     let p = truck(params, None)?;
     let seed_list: Vec<u64> = (1..=seeds as u64).collect();
-    let bar = progress_bar()?;
-    let report = |done: usize, total: usize| {
-        bar.set_length(total as u64);
-        bar.set_position(done as u64);
+    // The number of runs is known once the study has built its variants.
+    let progress = std::sync::OnceLock::new();
+    let report = |_done: usize, total: usize| {
+        progress
+            .get_or_init(|| afsv::progress::Progress::new("afsv roll study", "runs", Some(total)))
+            .step("");
     };
     let result = run_study(
         study,
@@ -345,7 +347,9 @@ fn run_study_cmd(
         &SustainedPeriodParams::default(),
         &report,
     )?;
-    bar.finish_and_clear();
+    if let Some(p) = progress.get() {
+        p.finish();
+    }
     if let Some(path) = plot {
         plot_study(path, &result)?;
     }
@@ -357,20 +361,6 @@ fn run_study_cmd(
         print!("{}", study_text(&result));
     }
     Ok(())
-}
-
-/// A progress bar on stderr (hidden when stderr is not a terminal).
-fn progress_bar() -> Result<indicatif::ProgressBar, String> {
-    let bar = if std::io::stderr().is_terminal() {
-        indicatif::ProgressBar::new(0)
-    } else {
-        indicatif::ProgressBar::hidden()
-    };
-    bar.set_style(
-        indicatif::ProgressStyle::with_template("{bar:40} {pos}/{len} runs ({elapsed})")
-            .map_err(|e| e.to_string())?,
-    );
-    Ok(bar)
 }
 
 fn study_text(r: &StudyResult) -> String {
