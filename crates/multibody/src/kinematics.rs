@@ -4,7 +4,7 @@
 
 use crate::error::DynamicsError;
 use crate::model::{Link, Model};
-use crate::spatial::{angular, linear};
+use crate::spatial::{angular, cross_motion, linear};
 use crate::workspace::Workspace;
 use nalgebra::{Matrix3, Vector3, Vector6};
 
@@ -52,6 +52,27 @@ pub fn update_kinematics(
     ws.v.copy_from_slice(v);
     ws.clear_external_forces();
     ws.kinematics_ready = true;
+    Ok(())
+}
+
+/// Computes every body's spatial acceleration (body coordinates) from the joint
+/// accelerations `vdot` at the state of the last [`update_kinematics`]:
+/// `a_i = X_up a_parent + S_i vdot_i + v_i x S_i v_i` (Featherstone 2008, Table 5.1, with
+/// `c_J = 0` for this crate's joints), for [`Workspace::point_acceleration`]. Allocation free.
+pub fn update_accelerations(
+    model: &Model,
+    ws: &mut Workspace,
+    vdot: &[f64],
+) -> Result<(), DynamicsError> {
+    ws.check(model)?;
+    check_len("vdot", vdot, model.nv())?;
+    for (i, (body, link)) in model.bodies().iter().zip(&model.links).enumerate() {
+        let aj = subspace_times(link, vdot) + cross_motion(&ws.vel[i], &ws.vel_joint[i]);
+        ws.acc_abs[i] = match body.parent {
+            Some(p) => ws.x_up[i].apply_motion(&ws.acc_abs[p]) + aj,
+            None => aj,
+        };
+    }
     Ok(())
 }
 
@@ -115,5 +136,18 @@ impl Workspace {
     pub fn point_velocity(&self, body: usize, point: &Vector3<f64>) -> Vector3<f64> {
         let v = &self.vel[body];
         self.x_world[body].rot.transpose() * (linear(v) + angular(v).cross(point))
+    }
+
+    /// World acceleration of the point fixed in `body` at `point` (body coordinates), m/s²,
+    /// from the last [`update_accelerations`]: `R (a_O + alpha x r + omega x (v_O + omega x r))`
+    /// with the spatial acceleration `[alpha; a_O]` and velocity `[omega; v_O]`.
+    ///
+    /// # Panics
+    /// If `body` is out of range.
+    pub fn point_acceleration(&self, body: usize, point: &Vector3<f64>) -> Vector3<f64> {
+        let (a, v) = (&self.acc_abs[body], &self.vel[body]);
+        let w = angular(v);
+        let local = linear(a) + angular(a).cross(point) + w.cross(&(linear(v) + w.cross(point)));
+        self.x_world[body].rot.transpose() * local
     }
 }

@@ -47,7 +47,7 @@ pub use dynamics::{bias_forces, forward_dynamics, inverse_dynamics, mass_matrix}
 pub use energy::{centre_of_mass, kinetic_energy, potential_energy, spatial_momentum};
 pub use error::{DynamicsError, ModelError};
 pub use joint::Joint;
-pub use kinematics::update_kinematics;
+pub use kinematics::{update_accelerations, update_kinematics};
 pub use model::{Body, Model, ModelBuilder};
 pub use spatial::SpatialTransform;
 pub use workspace::Workspace;

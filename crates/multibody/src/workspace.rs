@@ -24,6 +24,9 @@ pub struct Workspace {
     pub(crate) vel_joint: Vec<Vector6<f64>>,
     /// RNEA accelerations, body coordinates.
     pub(crate) acc: Vec<Vector6<f64>>,
+    /// Spatial accelerations of the last [`crate::update_accelerations`], body coordinates
+    /// (without the gravity offset RNEA uses).
+    pub(crate) acc_abs: Vec<Vector6<f64>>,
     /// RNEA joint forces, body coordinates.
     pub(crate) force: Vec<Vector6<f64>>,
     /// External forces on each body, body coordinates, about the body origin.
@@ -55,6 +58,7 @@ impl Workspace {
             vel: vec![Vector6::zeros(); nb],
             vel_joint: vec![Vector6::zeros(); nb],
             acc: vec![Vector6::zeros(); nb],
+            acc_abs: vec![Vector6::zeros(); nb],
             force: vec![Vector6::zeros(); nb],
             f_ext: vec![Vector6::zeros(); nb],
             ic: vec![RigidInertia::zero(); nb],

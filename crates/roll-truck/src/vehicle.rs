@@ -16,7 +16,7 @@ use std::cell::RefCell;
 use multibody::Workspace;
 use nalgebra::Vector3;
 use tire_fiala::relaxation::contact_velocity_lag_rate;
-use tire_fiala::{LoadDeflectionTable, Track, VerticalContact};
+use tire_fiala::{EffectiveTrack, LoadDeflectionTable, Track, VerticalContact};
 use vehicle_components::Terrain;
 
 use crate::driver::{RampSteer, SpeedController, SteerDirection};
@@ -25,7 +25,7 @@ use crate::model::{body, build_tree, TireMount, NQ, NV};
 use crate::params::TruckParams;
 use crate::statics::Statics;
 use crate::suspension::Suspension;
-use crate::tires::{lateral_force, EffectiveTrack};
+use crate::tires::{circle_line_track, lateral_force};
 
 /// Offsets of the state blocks.
 pub mod state {
@@ -145,7 +145,7 @@ impl TruckVehicle {
             options.start_s_m + options.path_length_m + margin,
         );
         let build = |y: f64, deflection: f64| {
-            EffectiveTrack::build(
+            circle_line_track(
                 &Track { terrain, y },
                 range,
                 options.track_grid_m,

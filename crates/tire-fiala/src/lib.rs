@@ -9,6 +9,7 @@
 //! - [`relaxation`]: first-order slip lag (Eqs 2.7, 3.16) as state derivatives;
 //! - [`assembly`]: the four composed as one tire on any `vehicle_components::Terrain`
 //!   ([`TireAssembly`], a `vehicle_components::Component`);
+//! - [`effective_track`]: the enveloping precomputed along a track for vehicle runs;
 //! - [`vertical`]: point contact with lift-off (Eq 2.1) and a load-deflection table;
 //! - [`terrain`] and [`envelope`]: the single-track [`Profile`] under a wheel (from any
 //!   `vehicle_components::Terrain`) and the circle-line (Eqs 2.2-2.4) and tandem-cam
@@ -27,6 +28,7 @@
 
 pub mod assembly;
 pub mod cornering;
+pub mod effective_track;
 pub mod envelope;
 pub mod error;
 pub mod fiala;
@@ -42,6 +44,7 @@ pub use assembly::{TireAssembly, TireOutput, WheelInput};
 pub use cornering::{
     CorneringStiffnessTable, ExponentialCornering, LinearCornering, TractionDependentCornering,
 };
+pub use effective_track::{EffectiveTrack, TrackContact};
 pub use envelope::{EffectiveContact, Envelope, EnvelopeMethod, EnvelopedPoint};
 pub use error::TireError;
 pub use fiala::Fiala;
