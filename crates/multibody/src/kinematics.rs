@@ -138,6 +138,15 @@ impl Workspace {
         self.x_world[body].rot.transpose() * (linear(v) + angular(v).cross(point))
     }
 
+    /// Spatial acceleration `[alpha; a_O]` of `body` in body coordinates from the last
+    /// [`update_accelerations`] (`alpha` is the angular acceleration in body axes).
+    ///
+    /// # Panics
+    /// If `body` is out of range.
+    pub fn body_acceleration(&self, body: usize) -> Vector6<f64> {
+        self.acc_abs[body]
+    }
+
     /// World acceleration of the point fixed in `body` at `point` (body coordinates), m/s²,
     /// from the last [`update_accelerations`]: `R (a_O + alpha x r + omega x (v_O + omega x r))`
     /// with the spatial acceleration `[alpha; a_O]` and velocity `[omega; v_O]`.

@@ -112,6 +112,35 @@ impl LoadDeflectionTable {
         xs[n - 1] + (load - ys[n - 1]) / slope
     }
 
+    /// Elastic energy (J) stored at deflection `delta` (m): the exact integral of
+    /// [`LoadDeflectionTable::load`] from 0 (piecewise linear, the last segment extended);
+    /// 0 for `delta <= 0`.
+    pub fn energy(&self, delta: f64) -> f64 {
+        if delta.is_nan() || delta <= 0.0 {
+            return 0.0;
+        }
+        let xs = self.table.xs();
+        let n = xs.len();
+        let mut e = 0.0;
+        for i in 0..n - 1 {
+            let (x0, x1) = (
+                xs[i],
+                if i == n - 2 {
+                    delta.max(xs[i + 1])
+                } else {
+                    xs[i + 1]
+                },
+            );
+            let end = x1.min(delta);
+            if end <= x0 {
+                break;
+            }
+            // trapezoid of the (clamped at 0) linear load over [x0, end]
+            e += 0.5 * (self.load(x0) + self.load(end)) * (end - x0);
+        }
+        e
+    }
+
     /// The rows `[deflection, load]`, including the `[0, 0]` row.
     pub fn rows(&self) -> Vec<[f64; 2]> {
         self.table.rows()
@@ -164,6 +193,26 @@ impl VerticalContact {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn energy_is_the_integral_of_the_load() {
+        let t = LoadDeflectionTable::default_29_5r29();
+        for &d in &[0.0, 0.013, 0.05, 0.2, 0.27] {
+            let n = 20_000;
+            let h = d / n as f64;
+            let fine: f64 = (0..n)
+                .map(|i| 0.5 * (t.load(i as f64 * h) + t.load((i + 1) as f64 * h)) * h)
+                .sum();
+            assert!(
+                (t.energy(d) - fine).abs() <= 1e-6 * (1.0 + fine),
+                "{d}: {} vs {fine}",
+                t.energy(d)
+            );
+        }
+        let lin = LoadDeflectionTable::linear(2.0e6).unwrap();
+        assert!((lin.energy(0.1) - 0.5 * 2.0e6 * 0.01).abs() < 1e-6);
+        assert_eq!(t.energy(-0.1), 0.0);
+    }
 
     #[test]
     fn default_table_reaches_rated_load() {

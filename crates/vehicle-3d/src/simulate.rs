@@ -1,0 +1,264 @@
+//! A run of the vehicle: from the static equilibrium at the target speed, integrated with
+//! `odeint` (Dormand-Prince 5(4), per-state absolute tolerances from typical magnitudes,
+//! breakpoints at the steering input's kinks), recorded on a uniform output grid. With
+//! `stop_at_rollover` the run ends at the rear unit's absolute rollover (L1843, point C),
+//! located as a terminal event on [`Vehicle`]'s rollover margin.
+//!
+//! Signs of the record: world axes x forward, y left, z up; the articulation angle is the
+//! paper's theta (positive in a right-hand turn); the front unit's accelerations are in its
+//! own body axes (x forward, y left, z up) at the a_wz point; rates and angular
+//! accelerations are right-handed about those axes (a left turn has a positive yaw rate).
+//! The CLI converts to the `afsv-v1` record convention (docs/records.md).
+
+use odeint::{Atol, Control, Direction, Event, Integrator, Problem, SampleKind, Solver};
+use serde::Serialize;
+
+use crate::error::{positive, rejected, VehicleError};
+use crate::model::body;
+use crate::vehicle::{Vehicle, MAX_DIM};
+
+/// Largest number of output samples of one run.
+pub const MAX_SAMPLES: usize = 2_000_000;
+
+/// Run settings.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct RunOptions {
+    /// End time (s).
+    pub t_end_s: f64,
+    /// Output interval (s).
+    pub output_dt_s: f64,
+    /// Relative tolerance.
+    pub rtol: f64,
+    /// Largest step (s).
+    pub max_step_s: f64,
+    /// End the run at the rear unit's absolute rollover.
+    pub stop_at_rollover: bool,
+}
+
+impl Default for RunOptions {
+    fn default() -> Self {
+        Self {
+            t_end_s: 10.0,
+            output_dt_s: 0.005,
+            rtol: 1e-5,
+            max_step_s: 0.01,
+            stop_at_rollover: false,
+        }
+    }
+}
+
+impl RunOptions {
+    /// Check the fields and bound the sample count; returns the number of samples.
+    pub fn validate(&self) -> Result<usize, VehicleError> {
+        positive("t_end_s", self.t_end_s)?;
+        positive("output_dt_s", self.output_dt_s)?;
+        positive("rtol", self.rtol)?;
+        positive("max_step_s", self.max_step_s)?;
+        let n = (self.t_end_s / self.output_dt_s).floor() + 1.0;
+        if n > MAX_SAMPLES as f64 {
+            return Err(rejected(
+                "output_dt_s",
+                self.output_dt_s,
+                "more than 2e6 output samples (raise output_dt_s or lower t_end_s)",
+            ));
+        }
+        Ok(n as usize)
+    }
+}
+
+/// The recorded channels of a run (module docs for the signs).
+#[derive(Debug, Clone, PartialEq, Default, Serialize)]
+pub struct RunRecord {
+    /// Time (s).
+    pub t_s: Vec<f64>,
+    /// Steering-wheel angle (rad).
+    pub steer_wheel_rad: Vec<f64>,
+    /// Mean wheel-centre forward speed (m/s), the controlled speed.
+    pub speed_m_s: Vec<f64>,
+    /// Articulation angle theta (rad).
+    pub articulation_rad: Vec<f64>,
+    /// Rear-unit roll relative to the front unit (rad).
+    pub rear_roll_rad: Vec<f64>,
+    /// Front-unit roll, pitch, yaw rates about its body axes (rad/s).
+    pub front_rate_rad_s: [Vec<f64>; 3],
+    /// Front-unit angular accelerations about its body axes (rad/s²).
+    pub front_angular_accel_rad_s2: [Vec<f64>; 3],
+    /// Acceleration of the a_wz point in the front unit's body axes (m/s², kinematic:
+    /// gravity not included).
+    pub cab_accel_m_s2: [Vec<f64>; 3],
+    /// Horizontal lateral acceleration of the front unit's cg (m/s², left positive).
+    pub front_lateral_accel_m_s2: Vec<f64>,
+    /// Horizontal lateral acceleration of the rear unit's cg with payload, along the rear
+    /// unit's horizontal y axis (m/s², left positive).
+    pub rear_lateral_accel_m_s2: Vec<f64>,
+    /// Load transfer ratio of the rear axle, `(F_zL - F_zR) / (F_zL + F_zR)` (signed).
+    pub rear_ltr: Vec<f64>,
+    /// Rear-unit rollover margin (m).
+    pub rollover_margin_m: Vec<f64>,
+    /// Steering-strut extensions d_L, d_R (m).
+    pub strut_disp_m: [Vec<f64>; 2],
+    /// P_c, P_r (Pa).
+    pub pressure_pa: [Vec<f64>; 2],
+    /// HPS travel z_s, left and right (m, compression positive).
+    pub hps_travel_m: [Vec<f64>; 2],
+    /// Tire normal forces (N) in [`crate::model::TIRE_NAMES`] order.
+    pub normal_force_n: [Vec<f64>; 4],
+    /// Drive torque per wheel (N m).
+    pub drive_torque_n_m: Vec<f64>,
+    /// Position of the front unit's cg, x and y (m).
+    pub position_m: [Vec<f64>; 2],
+    /// Time of the rear unit's absolute rollover (s), if reached.
+    pub rollover_s: Option<f64>,
+}
+
+impl RunRecord {
+    /// Number of samples.
+    pub fn len(&self) -> usize {
+        self.t_s.len()
+    }
+
+    /// Whether the record is empty.
+    pub fn is_empty(&self) -> bool {
+        self.t_s.is_empty()
+    }
+}
+
+/// One output sample from the state `y` at `t`.
+fn push_sample(vehicle: &Vehicle, t: f64, y: &[f64], rec: &mut RunRecord) {
+    let mut ws = vehicle.ws.borrow_mut();
+    let mut dydt = [0.0; MAX_DIM];
+    let o = vehicle.offsets;
+    // The integrator only hands out states at which the right-hand side succeeded (a
+    // failure there is a divergence error), so this evaluation succeeds too.
+    let Ok(snap) = vehicle.evaluate(t, y, &mut ws, &mut dydt[..o.dim]) else {
+        return;
+    };
+    if multibody::update_accelerations(&vehicle.model, &mut ws, &dydt[o.v..o.afs]).is_err() {
+        return;
+    }
+    let layout = &vehicle.layout;
+    let rot = ws.body_rotation(body::FRONT);
+    let cab = rot.transpose() * ws.point_acceleration(body::FRONT, &layout.cab);
+    let vel = ws.body_velocity(body::FRONT);
+    let angular_accel = multibody::spatial::angular(&ws.body_acceleration(body::FRONT));
+    let lateral = |b: usize, point: &nalgebra::Vector3<f64>| {
+        let r = ws.body_rotation(b);
+        let (x, y) = (r[(0, 0)], r[(1, 0)]);
+        let len = x.hypot(y);
+        let a = ws.point_acceleration(b, point);
+        (-y * a.x + x * a.y) / len
+    };
+    let front_lat = lateral(body::FRONT, &nalgebra::Vector3::zeros());
+    let rear_lat = lateral(body::REAR, &layout.rear_cg);
+    let fz = snap.tires.map(|c| c.normal_force);
+    let rear_sum = fz[2] + fz[3];
+    let ltr = if rear_sum > 0.0 {
+        (fz[2] - fz[3]) / rear_sum
+    } else {
+        0.0
+    };
+    let j = &vehicle.joints;
+    rec.t_s.push(t);
+    rec.steer_wheel_rad.push(snap.steer_wheel_rad);
+    rec.speed_m_s.push(snap.speed_m_s);
+    rec.articulation_rad.push(y[j.articulation.0]);
+    rec.rear_roll_rad
+        .push(j.rear_roll.map_or(0.0, |(qi, _)| y[qi]));
+    for k in 0..3 {
+        rec.front_rate_rad_s[k].push(vel[k]);
+        rec.front_angular_accel_rad_s2[k].push(angular_accel[k]);
+        rec.cab_accel_m_s2[k].push(cab[k]);
+    }
+    rec.front_lateral_accel_m_s2.push(front_lat);
+    rec.rear_lateral_accel_m_s2.push(rear_lat);
+    rec.rear_ltr.push(ltr);
+    rec.rollover_margin_m
+        .push(vehicle.rear_rollover_margin(&ws));
+    for k in 0..2 {
+        rec.strut_disp_m[k].push(snap.strut_disp_m[k]);
+        rec.pressure_pa[k].push(snap.pressure_pa[k]);
+        rec.hps_travel_m[k].push(snap.hps_travel_m[k]);
+        rec.position_m[k].push(ws.body_position(body::FRONT)[k]);
+    }
+    for (ch, f) in rec.normal_force_n.iter_mut().zip(fz) {
+        ch.push(f);
+    }
+    rec.drive_torque_n_m.push(snap.drive_torque_n_m);
+}
+
+/// Typical magnitudes of the states (for the absolute tolerances).
+fn typical(vehicle: &Vehicle) -> Vec<f64> {
+    let o = vehicle.offsets;
+    let mut t = vec![1.0; o.dim];
+    // joint coordinates after the floating base: small angles and travels
+    t[7..o.v].fill(0.05);
+    for &(qi, _) in &vehicle.joints.spin {
+        t[qi] = 10.0;
+    }
+    t[o.v..o.v + 6].fill(0.1);
+    t[o.v + 6..o.afs].fill(0.1);
+    for &(_, vi) in &vehicle.joints.spin {
+        t[o.v + vi] = 10.0;
+    }
+    t[o.afs..o.afs + 3].copy_from_slice(&afs_hydraulics::AfsSystem::STATE_TYPICAL);
+    t[o.tires..o.tires + 8].fill(0.05);
+    if let Some(strut) = vehicle.hps_strut() {
+        for side in 0..2 {
+            for k in 0..o.hps_states {
+                t[o.hps + side * o.hps_states + k] = strut.state_typical(k);
+            }
+        }
+    }
+    t
+}
+
+/// Integrate `vehicle` from its static state at the target speed (module docs).
+pub fn simulate(vehicle: &Vehicle, options: &RunOptions) -> Result<RunRecord, VehicleError> {
+    let n = options.validate()?;
+    let y0 = vehicle.initial_state();
+    if y0.iter().any(|v| !v.is_finite()) {
+        return Err(rejected(
+            "hps",
+            f64::NAN,
+            "no static equilibrium of the front struts",
+        ));
+    }
+    let t_out: Vec<f64> = (0..n).map(|i| i as f64 * options.output_dt_s).collect();
+    let margin = |t: f64, y: &[f64]| -> f64 {
+        let mut ws = vehicle.ws.borrow_mut();
+        let mut tau = [0.0; MAX_DIM];
+        let mut scratch = [0.0; MAX_DIM];
+        match vehicle.apply_forces(
+            t,
+            y,
+            &mut ws,
+            &mut tau[..vehicle.model.nv()],
+            &mut scratch[..y.len()],
+        ) {
+            Ok(_) => vehicle.rear_rollover_margin(&ws),
+            Err(_) => f64::NAN,
+        }
+    };
+    let events = [Event::new(&margin, Direction::Falling).terminal()];
+    let breakpoints = vehicle.options.steer.breakpoints();
+    let mut problem = Problem::new(0.0, &y0, &t_out).with_breakpoints(&breakpoints);
+    if options.stop_at_rollover {
+        problem = problem.with_events(&events);
+    }
+    let integrator = Integrator::new(
+        Solver::Dopri5,
+        options.rtol,
+        Atol::scaled(options.rtol, typical(vehicle)),
+    )
+    .with_max_step(options.max_step_s);
+    let mut ws = odeint::Workspace::with_events(vehicle.offsets.dim, 1);
+    let mut rec = RunRecord::default();
+    integrator.run(vehicle, &problem, &mut ws, |s| {
+        push_sample(vehicle, s.t, s.y, &mut rec);
+        if let SampleKind::Event(_) = s.kind {
+            rec.rollover_s = Some(s.t);
+        }
+        Control::Continue
+    })?;
+    Ok(rec)
+}

@@ -1,0 +1,595 @@
+//! The vehicle as one ODE system (section 6.2): the multibody tree of [`crate::model`], the
+//! strut-space AFS (Eqs 6.6-6.8), the front-axle HPS (Eqs 6.9-6.18), four Fiala tires with
+//! relaxation on cached tandem-cam tracks (Eqs 6.1-6.3, Table 6.2), and the PI drive.
+//!
+//! State `y = [q, v, AFS (P_c, P_r, theta_h), tire lags (kappa, alpha) x 4, HPS states x 2
+//! (HPS only), speed-error integral, path coordinate]`; [`Offsets`] gives the blocks.
+//!
+//! One right-hand-side evaluation, allocation free:
+//! 1. kinematics of the tree;
+//! 2. strut lengths and rates from the mount points, the AFS flows and strut forces, applied
+//!    along the strut axes ([`crate::steering`]);
+//! 3. with the HPS, each strut's force from its travel `z_s = z_static + c` (c the carrier
+//!    coordinate, positive up = compression), acting between the front unit and the carrier;
+//! 4. per tire ([`crate::tires`]): the contact on its effective track, the normal force with
+//!    damping (Eq 2.1 form with the nonlinear load curve), the slips and their lags, the
+//!    Fiala forces and moments, applied at the contact point;
+//! 5. one drive torque for all four wheels from the PI law ([`crate::params::DriveParams`]);
+//! 6. forward dynamics (CRBA + RNEA + Cholesky), `qdot` from `v`.
+//!
+//! A dynamics failure writes NaN derivatives, which the integrator reports as a divergence
+//! with time and state.
+
+use std::cell::RefCell;
+
+use afs_hydraulics::{AfsSystem, StrutInput};
+use afsv_dynamics::SteerInput;
+use hps_emulsion::{HpsExtensions, HpsStrut};
+use multibody::{Model, Workspace};
+use nalgebra::Vector3;
+use tire_fiala::{
+    EffectiveTrack, Envelope, EnvelopeMethod, Fiala, LoadDeflectionTable, Relaxation, Track,
+    VerticalContact,
+};
+use vehicle_components::Terrain;
+
+use crate::error::{finite, positive, rejected, VehicleError};
+use crate::model::{body, build_tree, FrontAxle, Layout, TIRE_MOUNTS};
+use crate::params::{Load, VehicleParams};
+use crate::statics::{strut_static_deflection, Statics};
+use crate::steering::{apply_strut_forces, strut_geometry, StrutGeometry};
+use crate::tires::{tire_forces, TireContact, TireInput};
+
+/// Largest state dimension (the HPS model with every strut extension on stays below it).
+pub const MAX_DIM: usize = 64;
+
+/// How the vehicle is set up for a run.
+#[derive(Debug, Clone, PartialEq)]
+pub struct VehicleOptions {
+    /// Front axle rigid (the prototype) or on the HPS.
+    pub front_axle: FrontAxle,
+    /// Steering-wheel angle history (rad, positive = right-hand turn).
+    pub steer: SteerInput,
+    /// Target speed of the PI drive, also the initial speed (m/s).
+    pub speed_m_s: f64,
+    /// Path length the effective tracks cover beyond the start (m).
+    pub path_length_m: f64,
+    /// Path coordinate of the front unit's cg at the start (m).
+    pub start_s_m: f64,
+    /// Grid spacing of the enveloping cache (m).
+    pub track_grid_m: f64,
+    /// Profile sampling step of the enveloping (m).
+    pub envelope_sample_m: f64,
+    /// Enveloping method: tandem cams (section 6.2.2) by default.
+    pub envelope: EnvelopeMethod,
+    /// Lock the rear-unit roll joint (for the yaw-mode analysis): its roll follows the
+    /// front unit's.
+    pub lock_rear_roll: bool,
+}
+
+impl Default for VehicleOptions {
+    fn default() -> Self {
+        Self {
+            front_axle: FrontAxle::Rigid,
+            steer: SteerInput::None,
+            speed_m_s: 20.0 / 3.6,
+            path_length_m: 150.0,
+            start_s_m: 10.0,
+            track_grid_m: 0.05,
+            envelope_sample_m: 0.02,
+            envelope: EnvelopeMethod::TandemCams,
+            lock_rear_roll: false,
+        }
+    }
+}
+
+/// Offsets of the state blocks (module docs).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Offsets {
+    /// Configuration q.
+    pub q: usize,
+    /// Velocities v.
+    pub v: usize,
+    /// AFS states P_c, P_r, theta_h.
+    pub afs: usize,
+    /// Tire lags, `(kappa, alpha)` per tire in [`crate::model::TIRE_NAMES`] order.
+    pub tires: usize,
+    /// HPS states, left then right (none without the HPS).
+    pub hps: usize,
+    /// States per HPS strut (0 without the HPS).
+    pub hps_states: usize,
+    /// Integral of the speed error (m).
+    pub pi: usize,
+    /// Path coordinate of the front unit's cg (m).
+    pub path: usize,
+    /// State dimension.
+    pub dim: usize,
+}
+
+/// Joint coordinate indices in `q` and `v` of the tree.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Joints {
+    /// Articulation theta: q and v index.
+    pub articulation: (usize, usize),
+    /// Rear-unit roll (None when locked).
+    pub rear_roll: Option<(usize, usize)>,
+    /// Wheel spins, q and v index, per tire.
+    pub spin: [(usize, usize); 4],
+    /// Front carriers (HPS only), left then right.
+    pub carrier: Option<[(usize, usize); 2]>,
+}
+
+/// What one evaluation computes besides the derivatives.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct Snapshot {
+    /// Per tire in [`crate::model::TIRE_NAMES`] order.
+    pub tires: [TireContact; 4],
+    /// Steering-wheel angle (rad).
+    pub steer_wheel_rad: f64,
+    /// Strut extensions d_L, d_R from l_0 (m).
+    pub strut_disp_m: [f64; 2],
+    /// Strut forces F_L, F_R (N, positive extending).
+    pub strut_force_n: [f64; 2],
+    /// P_c, P_r (Pa).
+    pub pressure_pa: [f64; 2],
+    /// HPS travel z_s, left and right (m, compression positive; 0 without the HPS).
+    pub hps_travel_m: [f64; 2],
+    /// HPS forces (N, compressive positive; 0 without the HPS).
+    pub hps_force_n: [f64; 2],
+    /// Mean forward speed of the four wheel centres (m/s), the controlled speed.
+    pub speed_m_s: f64,
+    /// Drive torque per wheel (N m).
+    pub drive_torque_n_m: f64,
+    /// Rate of the path coordinate (m/s).
+    pub path_rate_m_s: f64,
+    /// Heading of the front unit (rad, from x towards y).
+    pub heading_rad: f64,
+}
+
+/// The vehicle on a terrain, ready to integrate (module docs).
+#[derive(Debug)]
+pub struct Vehicle {
+    pub(crate) params: VehicleParams,
+    pub(crate) load: Load,
+    pub(crate) statics: Statics,
+    pub(crate) options: VehicleOptions,
+    pub(crate) model: Model,
+    pub(crate) layout: Layout,
+    pub(crate) ws: RefCell<Workspace>,
+    pub(crate) offsets: Offsets,
+    pub(crate) joints: Joints,
+    afs: AfsSystem,
+    l0: f64,
+    hps: Option<HpsStrut>,
+    hps_static_m: f64,
+    /// Effective tracks per tire in [`crate::model::TIRE_NAMES`] order.
+    tracks: [EffectiveTrack; 4],
+    vertical: VerticalContact,
+    fiala: Fiala,
+    relaxation: Relaxation,
+    rolling_torque_n_m: f64,
+}
+
+impl Vehicle {
+    /// The vehicle of `params` with `load` on `terrain`, its left tires on the line
+    /// `y = +half_width`, its right tires on `y = -half_width` (for terrain-psd's
+    /// `TwoTrackTerrain`, half its track width). Validates everything and builds the
+    /// enveloping caches.
+    pub fn new<T: Terrain>(
+        params: &VehicleParams,
+        load: Load,
+        options: VehicleOptions,
+        terrain: &T,
+        half_width: f64,
+    ) -> Result<Self, VehicleError> {
+        params.validate()?;
+        options.steer.validate()?;
+        positive("speed_m_s", options.speed_m_s)?;
+        positive("path_length_m", options.path_length_m)?;
+        positive("track_grid_m", options.track_grid_m)?;
+        positive("envelope_sample_m", options.envelope_sample_m)?;
+        finite("start_s_m", options.start_s_m)?;
+        positive("half_width", half_width)?;
+        let statics = Statics::of(params, load)?;
+        let (model, layout) = build_tree(
+            params,
+            load,
+            &statics,
+            options.front_axle,
+            options.lock_rear_roll,
+        )?;
+        let q_of = |b: usize| model.q_offset(b);
+        let v_of = |b: usize| model.v_offset(b);
+        let joint = |b: usize| (q_of(b), v_of(b));
+        let joints = Joints {
+            articulation: joint(body::HITCH),
+            rear_roll: (!options.lock_rear_roll).then(|| joint(body::REAR)),
+            spin: TIRE_MOUNTS.map(|m| joint(m.wheel)),
+            carrier: match options.front_axle {
+                FrontAxle::Rigid => None,
+                FrontAxle::Suspended => Some([joint(body::CARRIER_FL), joint(body::CARRIER_FR)]),
+            },
+        };
+        let (hps, hps_static_m) = match options.front_axle {
+            FrontAxle::Rigid => (None, 0.0),
+            FrontAxle::Suspended => {
+                let strut = HpsStrut::new(&params.hps, &HpsExtensions::default())?;
+                let z = strut_static_deflection(&strut, statics.front_strut_force_n(params))?;
+                (Some(strut), z)
+            }
+        };
+        let hps_states = hps.as_ref().map_or(0, HpsStrut::n_states);
+        let (nq, nv) = (model.nq(), model.nv());
+        let afs_at = nq + nv;
+        let tires_at = afs_at + AfsSystem::N_STATES;
+        let hps_at = tires_at + 8;
+        let pi = hps_at + 2 * hps_states;
+        let offsets = Offsets {
+            q: 0,
+            v: nq,
+            afs: afs_at,
+            tires: tires_at,
+            hps: hps_at,
+            hps_states,
+            pi,
+            path: pi + 1,
+            dim: pi + 2,
+        };
+        if offsets.dim > MAX_DIM {
+            return Err(rejected("hps", offsets.dim as f64, "too many states"));
+        }
+        let afs = AfsSystem::new(params.steering.clone())?;
+        let l0 = afs.initial_strut_length();
+        let radius = params.tire.unloaded_radius_m;
+        let envelope = Envelope::new(options.envelope, radius, options.envelope_sample_m)?;
+        let margin = params.wheelbase_m() + params.front_unit.cg_to_joint_m + 2.0 * radius;
+        let range = (
+            options.start_s_m - margin,
+            options.start_s_m + options.path_length_m + margin,
+        );
+        let track = |left: bool, front: bool| {
+            let y = if left { half_width } else { -half_width };
+            let deflection = if front {
+                statics.front_tire_deflection_m
+            } else {
+                statics.rear_tire_deflection_m
+            };
+            EffectiveTrack::build(
+                &Track { terrain, y },
+                range,
+                options.track_grid_m,
+                &envelope,
+                deflection,
+            )
+        };
+        let tracks = [
+            track(true, true)?,
+            track(false, true)?,
+            track(true, false)?,
+            track(false, false)?,
+        ];
+        let vertical = VerticalContact::new(
+            LoadDeflectionTable::new(&params.tire.load_deflection)?,
+            params.tire.vertical_damping_n_s_per_m,
+        )?;
+        let mean_load = 0.5 * (statics.front_tire_load_n + statics.rear_tire_load_n);
+        // the rolling-resistance moment of the tires is signed smoothly with the spin
+        // (`tires::ROLLING_SIGN_SPEED_M_S`): so is its feed-forward
+        let rolling_sign = (options.speed_m_s / crate::tires::ROLLING_SIGN_SPEED_M_S).tanh();
+        let rolling_torque_n_m = rolling_sign
+            * params.tire.rolling_resistance_coefficient
+            * (radius - 0.5 * (statics.front_tire_deflection_m + statics.rear_tire_deflection_m))
+            * mean_load;
+        let ws = RefCell::new(Workspace::new(&model));
+        Ok(Self {
+            params: params.clone(),
+            load,
+            statics,
+            options,
+            model,
+            layout,
+            ws,
+            offsets,
+            joints,
+            afs,
+            l0,
+            hps,
+            hps_static_m,
+            tracks,
+            vertical,
+            fiala: Fiala::new(&params.tire)?,
+            relaxation: Relaxation::from_params(&params.tire)?,
+            rolling_torque_n_m,
+        })
+    }
+
+    /// The parameters.
+    pub fn params(&self) -> &VehicleParams {
+        &self.params
+    }
+
+    /// The load case.
+    pub fn load(&self) -> Load {
+        self.load
+    }
+
+    /// The hand statics of the load case.
+    pub fn statics(&self) -> &Statics {
+        &self.statics
+    }
+
+    /// The options.
+    pub fn options(&self) -> &VehicleOptions {
+        &self.options
+    }
+
+    /// The multibody tree.
+    pub fn tree(&self) -> &Model {
+        &self.model
+    }
+
+    /// Points of the layout.
+    pub fn layout(&self) -> &Layout {
+        &self.layout
+    }
+
+    /// State block offsets.
+    pub fn offsets(&self) -> &Offsets {
+        &self.offsets
+    }
+
+    /// Joint coordinate indices.
+    pub fn joints(&self) -> &Joints {
+        &self.joints
+    }
+
+    /// Static deflection of the front struts (m, compression positive; 0 without the HPS).
+    pub fn hps_static_travel_m(&self) -> f64 {
+        self.hps_static_m
+    }
+
+    /// The front-axle strut (None without the HPS).
+    pub fn hps_strut(&self) -> Option<&HpsStrut> {
+        self.hps.as_ref()
+    }
+
+    /// The steering hydraulics.
+    pub fn steering(&self) -> &AfsSystem {
+        &self.afs
+    }
+
+    /// The static equilibrium at the target speed: the front unit's cg at its Table 6.1
+    /// height, level, moving along +x; wheels rolling without slip; joints at zero; AFS at
+    /// its standby pressures; struts at their static travel; PI integral at zero.
+    pub fn initial_state(&self) -> Vec<f64> {
+        let o = &self.offsets;
+        let mut y = vec![0.0; o.dim];
+        let speed = self.options.speed_m_s;
+        y[2] = self.params.front_unit.cg_height_m;
+        y[3] = 1.0;
+        y[o.v + 3] = speed;
+        let r = self.params.tire.unloaded_radius_m;
+        for (i, m) in TIRE_MOUNTS.iter().enumerate() {
+            let d = if m.front {
+                self.statics.front_tire_deflection_m
+            } else {
+                self.statics.rear_tire_deflection_m
+            };
+            y[o.v + self.joints.spin[i].1] = speed / (r - d);
+        }
+        y[o.afs..o.afs + 3].copy_from_slice(&self.afs.initial_state(0.0));
+        if let Some(strut) = &self.hps {
+            for side in 0..2 {
+                let at = o.hps + side * o.hps_states;
+                // the static deflection was found with this strut: its equilibrium exists
+                if strut
+                    .initial_state(self.hps_static_m, &mut y[at..at + o.hps_states])
+                    .is_err()
+                {
+                    y[at..at + o.hps_states].fill(f64::NAN);
+                }
+            }
+        }
+        y[o.path] = self.options.start_s_m;
+        y
+    }
+
+    /// Updates the kinematics at `y` and applies all external forces to the workspace;
+    /// writes the joint forces into `tau` and the derivatives of the non-mechanical states
+    /// into `dydt` (its q and v blocks untouched). Allocation free.
+    pub(crate) fn apply_forces(
+        &self,
+        t: f64,
+        y: &[f64],
+        ws: &mut Workspace,
+        tau: &mut [f64],
+        dydt: &mut [f64],
+    ) -> Result<Snapshot, multibody::DynamicsError> {
+        let o = &self.offsets;
+        let (q, v) = (&y[o.q..o.v], &y[o.v..o.afs]);
+        multibody::update_kinematics(&self.model, ws, q, v)?;
+        tau.fill(0.0);
+        let mut snap = Snapshot::default();
+
+        // steering struts (Eqs 6.6-6.8)
+        let g: StrutGeometry = strut_geometry(ws, &self.layout);
+        let steer = self.options.steer.angle(t);
+        let input = StrutInput {
+            disp_left: g.length[0] - self.l0,
+            disp_right: g.length[1] - self.l0,
+            vel_left: g.rate[0],
+            vel_right: g.rate[1],
+            steer_wheel: steer,
+        };
+        let afs =
+            self.afs
+                .strut_derivatives(&input, &y[o.afs..o.afs + 3], &mut dydt[o.afs..o.afs + 3]);
+        apply_strut_forces(ws, &g, [afs.force_left, afs.force_right]);
+        snap.steer_wheel_rad = steer;
+        snap.strut_disp_m = [input.disp_left, input.disp_right];
+        snap.strut_force_n = [afs.force_left, afs.force_right];
+        snap.pressure_pa = [afs.p_c, afs.p_r];
+
+        // front-axle struts (Eqs 6.9-6.18)
+        if let (Some(strut), Some(carrier)) = (&self.hps, self.joints.carrier) {
+            for (side, (qi, vi)) in carrier.into_iter().enumerate() {
+                let at = o.hps + side * o.hps_states;
+                let z = self.hps_static_m + y[o.q + qi];
+                let out = strut.evaluate(
+                    z,
+                    v[vi],
+                    &y[at..at + o.hps_states],
+                    &mut dydt[at..at + o.hps_states],
+                );
+                tau[vi] -= out.force;
+                snap.hps_travel_m[side] = z;
+                snap.hps_force_n[side] = out.force;
+            }
+        }
+
+        // tires (Eqs 6.1-6.3, Table 6.2) and the drive
+        let rot = ws.body_rotation(body::FRONT);
+        let heading = rot[(1, 0)].atan2(rot[(0, 0)]);
+        let h = Vector3::new(heading.cos(), heading.sin(), 0.0);
+        let origin = ws.body_position(body::FRONT);
+        let mut speed = 0.0;
+        for (i, m) in TIRE_MOUNTS.iter().enumerate() {
+            let c = ws.body_position(m.wheel);
+            let s = y[o.path] + (c - origin).dot(&h);
+            let at = o.tires + 2 * i;
+            let input = TireInput {
+                centre: c,
+                velocity: ws.point_velocity(m.wheel, &Vector3::zeros()),
+                carrier_rotation: ws.body_rotation(m.carrier),
+                wheel_angular_velocity: ws.body_rotation(m.wheel)
+                    * multibody::spatial::angular(&ws.body_velocity(m.wheel)),
+                path_direction: h,
+                contact: self.tracks[i].contact(s, c.z),
+                lag: [y[at], y[at + 1]],
+            };
+            let out = tire_forces(
+                &input,
+                self.params.tire.unloaded_radius_m,
+                &self.vertical,
+                &self.fiala,
+            );
+            let rates = self.relaxation.rates(
+                input.lag,
+                out.contact.slip_steady,
+                out.contact.forward_velocity,
+            );
+            dydt[at] = rates[0];
+            dydt[at + 1] = rates[1];
+            ws.apply_force_world(m.wheel, &out.force, &out.point);
+            ws.apply_moment_world(m.wheel, &out.moment);
+            speed += 0.25 * out.contact.forward_velocity;
+            snap.tires[i] = out.contact;
+        }
+        let d = &self.params.drive;
+        let error = self.options.speed_m_s - speed;
+        let torque =
+            (self.rolling_torque_n_m + d.kp_n_m_per_m_s * error + d.ki_n_m_per_m * y[o.pi])
+                .clamp(-d.max_torque_n_m, d.max_torque_n_m);
+        for &(_, vi) in &self.joints.spin {
+            tau[vi] += torque;
+        }
+        dydt[o.pi] = error;
+        let path_rate = ws.point_velocity(body::FRONT, &Vector3::zeros()).dot(&h);
+        dydt[o.path] = path_rate;
+        snap.speed_m_s = speed;
+        snap.drive_torque_n_m = torque;
+        snap.path_rate_m_s = path_rate;
+        snap.heading_rad = heading;
+        Ok(snap)
+    }
+
+    /// Full evaluation at `(t, y)`: derivatives into `dydt` and the snapshot. Leaves the
+    /// joint accelerations and body accelerations in the workspace for point accelerations.
+    pub(crate) fn evaluate(
+        &self,
+        t: f64,
+        y: &[f64],
+        ws: &mut Workspace,
+        dydt: &mut [f64],
+    ) -> Result<Snapshot, multibody::DynamicsError> {
+        let o = self.offsets;
+        let mut tau = [0.0; MAX_DIM];
+        let tau = &mut tau[..self.model.nv()];
+        let snap = self.apply_forces(t, y, ws, tau, dydt)?;
+        let vdot = multibody::forward_dynamics(&self.model, ws, tau)?;
+        dydt[o.v..o.afs].copy_from_slice(vdot.as_slice());
+        self.model
+            .velocity_to_qdot(&y[o.q..o.v], &y[o.v..o.afs], &mut dydt[o.q..o.v]);
+        Ok(snap)
+    }
+
+    /// Mechanical and hydraulic energy (J) at `y`, rigid front axle only: kinetic +
+    /// gravitational + the AFS chambers' compression energy + the tires' elastic energy.
+    /// Conserved with the valve closed (steering-wheel angle inside the dead band), no
+    /// leakage, no strut friction, no tire damping and no horizontal tire forces
+    /// (`tests/energy.rs`).
+    pub fn energy(&self, y: &[f64]) -> Result<f64, VehicleError> {
+        if self.hps.is_some() {
+            return Err(rejected(
+                "front_axle",
+                1.0,
+                "the energy balance is implemented for the rigid front axle only",
+            ));
+        }
+        let mut ws = self.ws.borrow_mut();
+        let mut tau = [0.0; MAX_DIM];
+        let mut scratch = [0.0; MAX_DIM];
+        let dynamics = |source| VehicleError::Dynamics { t: 0.0, source };
+        let snap = self
+            .apply_forces(
+                0.0,
+                y,
+                &mut ws,
+                &mut tau[..self.model.nv()],
+                &mut scratch[..y.len()],
+            )
+            .map_err(dynamics)?;
+        let kinetic = multibody::kinetic_energy(&self.model, &ws).map_err(dynamics)?;
+        let gravity = multibody::potential_energy(&self.model, &ws).map_err(dynamics)?;
+        let o = &self.offsets;
+        let hydraulic = self.afs.strut_hydraulic_energy(
+            snap.strut_disp_m[0],
+            snap.strut_disp_m[1],
+            &y[o.afs..o.afs + 3],
+        );
+        let table = self.vertical.load_deflection();
+        let tires: f64 = snap.tires.iter().map(|c| table.energy(c.deflection)).sum();
+        Ok(kinetic + gravity + hydraulic + tires)
+    }
+
+    /// Signed horizontal distance (m) of the rear unit's cg (with payload) inside the nearer
+    /// of the two vertical planes through the articulation joint and a rear wheel's contact
+    /// centre: absolute rollover of the rear unit when it reaches zero (L1843, point C).
+    /// Needs current kinematics in `ws`.
+    pub(crate) fn rear_rollover_margin(&self, ws: &Workspace) -> f64 {
+        let cg = ws.point_position(body::REAR, &self.layout.rear_cg);
+        let joint = ws.point_position(body::FRONT, &self.layout.joint_on_front);
+        let side = |wheel: usize, inward: f64| {
+            let w = ws.body_position(wheel);
+            let (dx, dy) = (joint.x - w.x, joint.y - w.y);
+            let len = dx.hypot(dy);
+            // inward normal of the line wheel -> joint: right of it on the left side
+            let (nx, ny) = (inward * dy / len, -inward * dx / len);
+            (cg.x - w.x) * nx + (cg.y - w.y) * ny
+        };
+        side(body::WHEEL_RL, 1.0).min(side(body::WHEEL_RR, -1.0))
+    }
+}
+
+impl odeint::OdeSystem for Vehicle {
+    fn dim(&self) -> usize {
+        self.offsets.dim
+    }
+
+    fn rhs(&self, t: f64, y: &[f64], dydt: &mut [f64]) {
+        let mut ws = self.ws.borrow_mut();
+        if self.evaluate(t, y, &mut ws, dydt).is_err() {
+            dydt.fill(f64::NAN);
+        }
+    }
+}
