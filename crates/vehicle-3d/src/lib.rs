@@ -8,7 +8,8 @@
 //!   loads; [`model`]: the tree (14 DOF, 16 with the HPS);
 //! - [`steering`]: the struts between their 3-D mounts; [`tires`]: one tire on its cached
 //!   track; [`vehicle`]: the ODE system; [`simulate`]: a recorded run;
-//! - [`scenarios`]: the design runs D1 (ride), D2 (roll), D3 (yaw) and their measures.
+//! - [`scenarios`]: the design runs D1 (ride), D2 (roll), D3 (yaw) and their measures;
+//!   [`yaw_mode`]: which addition of the 3-D model moves the yaw mode.
 //!
 //! Model notes: `docs/vehicle-3d.md`.
 
@@ -21,6 +22,7 @@ pub mod statics;
 pub mod steering;
 pub mod tires;
 pub mod vehicle;
+pub mod yaw_mode;
 
 pub use error::VehicleError;
 pub use model::FrontAxle;

@@ -295,6 +295,8 @@ pub struct YawSpec {
     pub fit_window_s: f64,
     /// Terrain: None for smooth ground.
     pub terrain: Option<TerrainSpec>,
+    /// Lock the rear-unit roll joint (the yaw-mode analysis).
+    pub lock_rear_roll: bool,
 }
 
 impl YawSpec {
@@ -310,6 +312,7 @@ impl YawSpec {
             t_end_s: 5.0,
             fit_window_s: 3.0,
             terrain: None,
+            lock_rear_roll: false,
         }
     }
 }
@@ -327,6 +330,7 @@ pub fn yaw(
         speed_m_s: speed,
         steer: SteerInput::pulse_deg(spec.pulse_deg, spec.pulse_s, spec.pulse_start_s),
         path_length_m: speed * spec.t_end_s + 5.0,
+        lock_rear_roll: spec.lock_rear_roll,
         ..VehicleOptions::default()
     };
     let run = RunOptions {

@@ -40,8 +40,8 @@ impl Default for RunOptions {
         Self {
             t_end_s: 10.0,
             output_dt_s: 0.005,
-            rtol: 1e-5,
-            max_step_s: 0.01,
+            rtol: 1e-4,
+            max_step_s: 0.03,
             stop_at_rollover: false,
         }
     }

@@ -40,6 +40,27 @@ use crate::statics::{strut_static_deflection, Statics};
 use crate::steering::{apply_strut_forces, strut_geometry, StrutGeometry};
 use crate::tires::{tire_forces, TireContact, TireInput};
 
+/// Stiffness of the front-strut end stops beyond the Table 6.3 travel of +-120 mm (N/m).
+/// Assumption: 2e7 N/m (a rubber stop about 15 times the gas spring), with
+/// [`END_STOP_DAMPING_N_S_M`]; the dissertation gives no end stops.
+pub const END_STOP_STIFFNESS_N_M: f64 = 2.0e7;
+
+/// Damping of the front-strut end stops while engaged (N s/m).
+pub const END_STOP_DAMPING_N_S_M: f64 = 2.0e4;
+
+/// Force of a strut end stop (N, compressive positive) at travel `z` and rate `zdot`
+/// beyond `travel`: a linear spring with damping, never pulling.
+#[inline]
+pub fn end_stop_force(z: f64, zdot: f64, travel: f64) -> f64 {
+    let over = z.abs() - travel;
+    if over <= 0.0 {
+        return 0.0;
+    }
+    let sign = z.signum();
+    let f = END_STOP_STIFFNESS_N_M * over + END_STOP_DAMPING_N_S_M * zdot * sign;
+    sign * f.max(0.0)
+}
+
 /// Largest state dimension (the HPS model with every strut extension on stays below it).
 pub const MAX_DIM: usize = 64;
 
@@ -441,9 +462,10 @@ impl Vehicle {
                     &y[at..at + o.hps_states],
                     &mut dydt[at..at + o.hps_states],
                 );
-                tau[vi] -= out.force;
+                let stop = end_stop_force(z, v[vi], strut.params().travel);
+                tau[vi] -= out.force + stop;
                 snap.hps_travel_m[side] = z;
-                snap.hps_force_n[side] = out.force;
+                snap.hps_force_n[side] = out.force + stop;
             }
         }
 

@@ -5,6 +5,7 @@
 mod ahp;
 mod chapter2;
 mod chapter4;
+mod chapter6;
 mod hps;
 mod sensitivity;
 mod terrain;
@@ -106,6 +107,19 @@ pub const CHECKS: &[(&str, &[&str], CheckFn)] = &[
             "s2_drt_change_low_frequency_content",
         ],
         chapter2::check_chapter2,
+    ),
+    (
+        "chapter_6_vehicle",
+        &[
+            "s6_awz_unsuspended",
+            "s6_hps_dominant_frequencies",
+            "s6_hps_awz_reduction",
+            "s6_dominant_ride_frequencies_unsuspended",
+            "s6_sp_drt_unsuspended",
+            "s6_sp_lateral_acceleration_range",
+            "s6_hps_stability_reduction",
+        ],
+        chapter6::check_chapter6,
     ),
     ("not_reproducible", &[], unmodelled::list_not_reproducible),
 ];

@@ -5,8 +5,8 @@ use super::Ctx;
 
 /// Fixtures that need models we do not have, with the reason.
 pub(super) fn list_not_reproducible(ctx: &mut Ctx) -> Result<(), String> {
-    let ch6 = "needs the chapter-6 3-D multibody AFSV (12 bodies, Table 6.1) with tire enveloping, ride and roll dynamics; not implemented yet";
-    let ch6_hps = "needs the chapter-6 3-D vehicle with the front-axle HPS (hps-emulsion has the strut, not the vehicle); not implemented yet";
+    let ch6 = "needs a chapter-6 scenario the 3-D vehicle (vehicle-3d) does not run yet (field measurements, the path change, the speed sweep)";
+    let ch6_hps = "needs the chapter-6 HPS sensitivity study on the 3-D vehicle (vehicle-3d); not implemented yet";
     let ch6_opt = "needs the chapter-6 HPS optimisation on the 3-D vehicle; not implemented";
     let ch4_opt = "needs the chapter-4 design optimisation; not implemented";
     let fx = ctx.fx();
