@@ -1,0 +1,84 @@
+//! The design scenarios on one terrain seed: the orderings the dissertation reports, the
+//! convergence of a_wz in the integrator tolerance, and the measures' plumbing.
+
+use vehicle_3d::scenarios::{ride, ride_measures, yaw, RideSpec, Spread, YawSpec, RUN_IN_M};
+use vehicle_3d::vehicle::end_stop_force;
+use vehicle_3d::{simulate, FrontAxle, Load, RunOptions, Vehicle, VehicleOptions, VehicleParams};
+
+#[test]
+fn unloaded_rides_rougher_and_the_hps_smooths_the_ride() {
+    let p = VehicleParams::nominal();
+    let awz = |load, axle| ride(&p, &RideSpec::d1(load, axle), 7).unwrap().1;
+    let (u, l) = (
+        awz(Load::Unloaded, FrontAxle::Rigid),
+        awz(Load::Loaded, FrontAxle::Rigid),
+    );
+    assert!(u.a_wz_m_s2 > l.a_wz_m_s2, "{u:?} {l:?}");
+    // the Wk weighting passes less than the unweighted band
+    assert!(u.a_wz_m_s2 < u.a_z_rms_m_s2);
+    assert!(u.strut_travel_p2p_m.is_none());
+    let h = awz(Load::Unloaded, FrontAxle::Suspended);
+    assert!(h.a_wz_m_s2 < 0.9 * u.a_wz_m_s2, "{h:?} vs {u:?}");
+    let ds = h.strut_travel_p2p_m.unwrap();
+    assert!(ds > 0.0 && ds < 0.24, "{ds}");
+}
+
+#[test]
+fn a_wz_is_converged_in_the_integrator_tolerance() {
+    let p = VehicleParams::nominal();
+    let spec = RideSpec::d1(Load::Loaded, FrontAxle::Rigid);
+    let terrain = spec.terrain.build(&p, 200.0, 3).unwrap();
+    let speed = spec.speed_kmh / 3.6;
+    let options = VehicleOptions {
+        speed_m_s: speed,
+        path_length_m: 125.0,
+        start_s_m: 15.0,
+        ..VehicleOptions::default()
+    };
+    let v = Vehicle::new(&p, Load::Loaded, options, &terrain, 0.5 * p.front_track_m).unwrap();
+    let run = |rtol: f64, max_step_s: f64| {
+        let rec = simulate(
+            &v,
+            &RunOptions {
+                t_end_s: 120.0 / speed,
+                rtol,
+                max_step_s,
+                ..RunOptions::default()
+            },
+        )
+        .unwrap();
+        ride_measures(&rec, RUN_IN_M / speed, FrontAxle::Rigid).unwrap()
+    };
+    let (fast, fine) = (run(1e-4, 0.03), run(1e-7, 0.005));
+    assert!(
+        (fast.a_wz_m_s2 / fine.a_wz_m_s2 - 1.0).abs() < 0.01,
+        "{fast:?} vs {fine:?}"
+    );
+}
+
+#[test]
+fn the_pulse_gives_a_decaying_yaw_oscillation() {
+    let p = VehicleParams::nominal();
+    let (rec, m) = yaw(&p, &YawSpec::d3(FrontAxle::Rigid), 0).unwrap();
+    assert!(m.omega_z_hz > 2.0 && m.omega_z_hz < 10.0, "{m:?}");
+    assert!(m.damping_ratio > 0.0 && m.damping_ratio < 1.0, "{m:?}");
+    // a positive (right-hand) pulse articulates positively first
+    let first = rec
+        .articulation_rad
+        .iter()
+        .find(|a| a.abs() > 1e-3)
+        .unwrap();
+    assert!(*first > 0.0);
+}
+
+#[test]
+fn spread_and_end_stops_by_hand() {
+    let s = Spread::of(&[1.0, 2.0, 3.0]).unwrap();
+    assert_eq!((s.mean, s.sd, s.n), (2.0, 1.0, 3));
+    assert!(Spread::of(&[]).is_err() && Spread::of(&[f64::NAN]).is_err());
+    assert_eq!(end_stop_force(0.1, 1.0, 0.12), 0.0);
+    assert!((end_stop_force(0.13, 0.0, 0.12) - 2.0e5).abs() < 1e-6);
+    assert!((end_stop_force(-0.13, 0.0, 0.12) + 2.0e5).abs() < 1e-6);
+    // rebounding fast off the stop: the damper may not pull
+    assert_eq!(end_stop_force(0.121, -10.0, 0.12), 0.0);
+}
