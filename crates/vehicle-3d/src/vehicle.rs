@@ -77,9 +77,12 @@ pub struct VehicleOptions {
     pub path_length_m: f64,
     /// Path coordinate of the front unit's cg at the start (m).
     pub start_s_m: f64,
-    /// Grid spacing of the enveloping cache (m).
+    /// Grid spacing of the enveloping cache (m). Default 0.05 m, the terrain's own sample
+    /// spacing: a_wz moves 0.3 % when it is halved and 1 % when it is doubled (D1, three
+    /// seeds, `docs/vehicle-3d.md`).
     pub track_grid_m: f64,
-    /// Profile sampling step of the enveloping (m).
+    /// Profile sampling step of the enveloping (m). Default 0.05 m: 0.02 m changes a_wz by
+    /// 0.1 % at 2.5 times the cache cost.
     pub envelope_sample_m: f64,
     /// Enveloping method: tandem cams (section 6.2.2) by default.
     pub envelope: EnvelopeMethod,
@@ -97,7 +100,7 @@ impl Default for VehicleOptions {
             path_length_m: 150.0,
             start_s_m: 10.0,
             track_grid_m: 0.05,
-            envelope_sample_m: 0.02,
+            envelope_sample_m: 0.05,
             envelope: EnvelopeMethod::TandemCams,
             lock_rear_roll: false,
         }

@@ -1,0 +1,94 @@
+//! Cost of the Chapter 6 design runs (section 6.4); `cargo xtask bench` prints their
+//! real-time factors from the `_sim..s` suffixes.
+//!
+//! - `d1_ride_{rigid,hps}_{loaded,unloaded}_sim21p6s`: D1, 120 m (20 m run-in + 100 m) of
+//!   class E terrain at 20 km/h, seed 1, the terrain and enveloping cache built outside;
+//! - `d3_yaw_pulse_rigid_sim5s`: D3, the 0.2 s pulse at 50 km/h on smooth ground;
+//! - `rhs_{rigid,hps}`: one right-hand-side evaluation;
+//! - `d1_terrain_and_cache`: synthesis of the terrain and the four tandem-cam caches, paid
+//!   once per seed.
+
+use afsv_dynamics::SteerInput;
+use criterion::{criterion_group, criterion_main, Criterion};
+use odeint::OdeSystem;
+use vehicle_3d::scenarios::{RideSpec, OUTPUT_DT_S};
+use vehicle_3d::{simulate, FrontAxle, Load, RunOptions, Vehicle, VehicleOptions, VehicleParams};
+use vehicle_components::FlatTerrain;
+
+fn bench(c: &mut Criterion) {
+    let p = VehicleParams::nominal();
+    let speed = 20.0 / 3.6;
+    let terrain = RideSpec::d1(Load::Loaded, FrontAxle::Rigid)
+        .terrain
+        .build(&p, 200.0, 1)
+        .unwrap();
+    let ride = |load, axle| {
+        let options = VehicleOptions {
+            front_axle: axle,
+            speed_m_s: speed,
+            path_length_m: 125.0,
+            start_s_m: 15.0,
+            ..VehicleOptions::default()
+        };
+        Vehicle::new(&p, load, options, &terrain, 0.5 * p.front_track_m).unwrap()
+    };
+    let run = RunOptions {
+        t_end_s: 120.0 / speed,
+        output_dt_s: OUTPUT_DT_S,
+        ..RunOptions::default()
+    };
+    let mut group = c.benchmark_group("vehicle_3d");
+    group.sample_size(10);
+    for (axle, a) in [(FrontAxle::Rigid, "rigid"), (FrontAxle::Suspended, "hps")] {
+        for (load, l) in [(Load::Loaded, "loaded"), (Load::Unloaded, "unloaded")] {
+            let v = ride(load, axle);
+            group.bench_function(format!("d1_ride_{a}_{l}_sim21p6s"), |b| {
+                b.iter(|| simulate(&v, &run).unwrap().len())
+            });
+        }
+        let v = ride(Load::Loaded, axle);
+        let y = v.initial_state();
+        let mut d = vec![0.0; y.len()];
+        group.bench_function(format!("rhs_{a}"), |b| {
+            b.iter(|| {
+                v.rhs(0.0, &y, &mut d);
+                d[0]
+            })
+        });
+    }
+    let flat = FlatTerrain::new(0.0, vehicle_components::DEFAULT_FRICTION).unwrap();
+    let options = VehicleOptions {
+        speed_m_s: 50.0 / 3.6,
+        steer: SteerInput::pulse_deg(30.0, 0.2, 1.0),
+        path_length_m: 80.0,
+        ..VehicleOptions::default()
+    };
+    let yaw = Vehicle::new(&p, Load::Loaded, options, &flat, 0.5 * p.front_track_m).unwrap();
+    let pulse = RunOptions {
+        t_end_s: 5.0,
+        output_dt_s: OUTPUT_DT_S,
+        ..RunOptions::default()
+    };
+    group.bench_function("d3_yaw_pulse_rigid_sim5s", |b| {
+        b.iter(|| simulate(&yaw, &pulse).unwrap().len())
+    });
+    group.bench_function("d1_terrain_and_cache", |b| {
+        b.iter(|| {
+            let t = RideSpec::d1(Load::Loaded, FrontAxle::Rigid)
+                .terrain
+                .build(&p, 200.0, 1)
+                .unwrap();
+            let options = VehicleOptions {
+                speed_m_s: speed,
+                path_length_m: 125.0,
+                start_s_m: 15.0,
+                ..VehicleOptions::default()
+            };
+            Vehicle::new(&p, Load::Loaded, options, &t, 0.5 * p.front_track_m).unwrap()
+        })
+    });
+    group.finish();
+}
+
+criterion_group!(benches, bench);
+criterion_main!(benches);
