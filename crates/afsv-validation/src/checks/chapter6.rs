@@ -4,9 +4,9 @@
 //! vehicle (common random numbers); with so few seeds they scatter by a few percent.
 
 use super::Ctx;
-use rayon::prelude::*;
 use vehicle_3d::scenarios::{
-    ride_over_seeds, roll, yaw, RideMeasures, RideSpec, RollSpec, Spread, TerrainSpec, YawSpec,
+    ride_over_seeds, roll_over_seeds, yaw, RideMeasures, RideSpec, RollSpec, Spread, TerrainSpec,
+    YawSpec,
 };
 use vehicle_3d::{FrontAxle, Load, VehicleParams};
 
@@ -141,11 +141,7 @@ fn roll_and_yaw_rows(ctx: &mut Ctx, p: &VehicleParams) -> Result<(), String> {
         .into_iter()
         .enumerate()
     {
-        let runs: Vec<_> = seeds()
-            .into_par_iter()
-            .map(|s| roll(p, &RollSpec::d2(axle), s).map(|(_, m)| m))
-            .collect::<Result<_, _>>()
-            .map_err(|e| e.to_string())?;
+        let runs = roll_over_seeds(p, &RollSpec::d2(axle), &seeds()).map_err(|e| e.to_string())?;
         let s = spread(&runs.iter().map(|m| m.sp_drt_m_s2).collect::<Vec<_>>())?;
         sp[j] = s.mean;
         let (_, y) = yaw(p, &YawSpec::d3(axle), 0).map_err(|e| e.to_string())?;

@@ -1,8 +1,12 @@
 //! `afsv evaluate`: the main job on the built-in default vehicle.
 //!
 //! The default vehicle is the 35 t articulated dump truck of the dissertation (Table 3.1
-//! steering and yaw-plane parameters, Table 6.3 front-axle strut) on the nominal off-road
-//! terrain (ISO 8608 class E, piecewise coherence m_c = 0.3 cycles/m, sections 2.2.2 and 6.2.3).
+//! steering and yaw-plane parameters, Table 6.1 3-D vehicle, Table 6.3 front-axle strut) on
+//! the nominal off-road terrain (ISO 8608 class E, piecewise coherence m_c = 0.3 cycles/m,
+//! sections 2.2.2 and 6.2.3). First come the three design measures of Chapter 6 (ride, roll,
+//! yaw of the 3-D vehicle, unsuspended and with the nominal HPS, over `--seeds` terrain
+//! seeds, [`super::design_measures`]), then the yaw-plane steering measures of Chapter 3,
+//! the strut and the terrain.
 //!
 //! On a terminal it prints a readable summary; with `--json`, or when stdout is a pipe or a
 //! file, it prints the same assessment as JSON. The toolkit's own self-checks (ISO 2631-1
@@ -17,9 +21,13 @@ use std::io::IsTerminal;
 /// Options of `afsv evaluate`.
 #[derive(clap::Args)]
 pub struct Args {
-    /// Seed of the default terrain synthesis.
+    /// Seed of the default terrain synthesis, and the first of the 3-D vehicle's terrain
+    /// seeds.
     #[arg(long, default_value_t = 1)]
     pub seed: u64,
+    /// Terrain seeds per rough-terrain measure of the 3-D vehicle (1 to 100).
+    #[arg(long, default_value_t = 10, value_parser = clap::value_parser!(u64).range(1..=super::design_measures::MAX_SEEDS))]
+    pub seeds: u64,
     /// Forward speed for the yaw-plane measures (km/h; section 3.3 uses 50).
     #[arg(long, default_value_t = 50.0, allow_hyphen_values = true, value_parser = super::args::positive_f64)]
     pub speed_kmh: f64,
@@ -30,6 +38,7 @@ pub struct Args {
 
 /// The assessment of the default vehicle.
 struct Assessment {
+    vehicle: super::design_measures::DesignMeasures,
     speed_kmh: f64,
     terrain: terrain_psd::Summary,
     yaw_loaded: YawMeasures,
@@ -43,7 +52,13 @@ pub fn run(args: Args) -> CmdResult {
         return Err(format!("--speed-kmh must be positive, got {}", args.speed_kmh).into());
     }
     let speed = args.speed_kmh / 3.6;
+    let seeds: Vec<u64> = (0..args.seeds).map(|i| args.seed.wrapping_add(i)).collect();
+    let runs = 2 * (1 + 3 * seeds.len());
+    let progress = afsv::progress::Progress::new("afsv evaluate", "vehicle runs", Some(runs));
+    let vehicle = super::design_measures::assess(&seeds, &|detail| progress.step(detail))?;
+    progress.finish();
     let a = Assessment {
+        vehicle,
         speed_kmh: args.speed_kmh,
         terrain: terrain_psd::default_terrain_summary(args.seed),
         yaw_loaded: yaw_measures(Load::Loaded, speed)?,
@@ -63,7 +78,8 @@ pub fn run(args: Args) -> CmdResult {
 fn to_json(a: &Assessment) -> Value {
     let t = &a.terrain;
     json!({
-        "vehicle": "35 t articulated dump truck (Table 3.1, Table 6.3)",
+        "vehicle": "35 t articulated dump truck (Table 3.1, Table 6.1, Table 6.3)",
+        "design_measures_3d": a.vehicle,
         "speed_kmh": a.speed_kmh,
         "terrain": {
             "description": t.description,
@@ -124,8 +140,10 @@ fn yaw_row(
 
 /// The assessment as a terminal summary with units and verdicts.
 fn to_text(a: &Assessment) -> String {
-    let mut s = format!(
-        "afsv evaluate: 35 t articulated dump truck (Tables 3.1, 6.3) at {} km/h\n\n",
+    let mut s = "afsv evaluate: 35 t articulated dump truck (Tables 3.1, 6.1, 6.3)\n\n".to_string();
+    s += &super::design_measures::to_text(&a.vehicle);
+    s += &format!(
+        "Yaw-plane steering measures at {} km/h\n",
         num(a.speed_kmh, 1.0, 1)
     );
     s += "Steering and yaw (Chapter 3 model, energy-consistent Eq 3.13;\n";
@@ -247,6 +265,7 @@ mod tests {
     fn text_summary_names_every_section_with_units() {
         let speed = 50.0 / 3.6;
         let a = Assessment {
+            vehicle: super::super::design_measures::assess(&[1], &|_| {}).unwrap(),
             speed_kmh: 50.0,
             terrain: terrain_psd::default_terrain_summary(1),
             yaw_loaded: yaw_measures(Load::Loaded, speed).unwrap(),
@@ -255,6 +274,11 @@ mod tests {
         };
         let text = to_text(&a);
         for needle in [
+            "a_wz unloaded (D1, 20 km/h)",
+            "SP-DRT (D2, 50 km/h, loaded)",
+            "omega_z (D3, 50 km/h, loaded)",
+            "8 h HGCZ",
+            "m/s²",
             "at 50.0 km/h",
             "yaw damping ratio",
             "Hz",

@@ -3,6 +3,7 @@
 
 pub mod args;
 pub mod check;
+pub mod design_measures;
 pub mod discover;
 pub mod evaluate;
 pub mod hps;

@@ -1,0 +1,237 @@
+//! The three design measures of Chapter 6 for `afsv evaluate`: ride (a_wz, W_k, D1), roll
+//! (SP-DRT of the rear unit, D2) and yaw (omega_z after the pulse, D3) of the 3-D vehicle
+//! (`vehicle-3d`), unsuspended and with the nominal front-axle HPS, each rough-terrain
+//! measure as mean ± SD over common terrain seeds, with the ISO 2631-1 health guidance
+//! caution zone (HGCZ, 8 h) verdict of a_wz.
+
+use perf_measures::iso2631::{health_guidance_zone, HgczRelation, HgczZone};
+use rayon::prelude::*;
+use serde::Serialize;
+use vehicle_3d::scenarios::{ride, roll, yaw, RideSpec, RollSpec, Spread, YawMeasures, YawSpec};
+use vehicle_3d::{FrontAxle, Load, VehicleParams};
+
+/// Largest number of terrain seeds per measure.
+pub const MAX_SEEDS: u64 = 100;
+
+/// Ride measures of one load case over the seeds.
+#[derive(Debug, Clone, Serialize)]
+pub struct RideSummary {
+    /// a_wz at the cab point (m/s²).
+    pub a_wz_m_s2: Spread,
+    /// Peak-to-peak front-strut travel d_s (m), with the HPS only.
+    pub strut_travel_m: Option<Spread>,
+    /// Verdict of the mean a_wz against the 8 h HGCZ (Eq B.1 of ISO 2631-1).
+    pub hgcz_8h: HgczZone,
+}
+
+/// The three measures of one front axle.
+#[derive(Debug, Clone, Serialize)]
+pub struct AxleSummary {
+    /// D1 unloaded.
+    pub ride_unloaded: RideSummary,
+    /// D1 loaded.
+    pub ride_loaded: RideSummary,
+    /// D2 SP-DRT, loaded (m/s²).
+    pub sp_drt_m_s2: Spread,
+    /// D3, loaded, smooth ground.
+    pub yaw: YawMeasures,
+}
+
+/// The assessment: unsuspended and with the nominal HPS.
+#[derive(Debug, Clone, Serialize)]
+pub struct DesignMeasures {
+    /// Terrain seeds used for every rough-terrain measure (the same for both axles).
+    pub seeds: Vec<u64>,
+    /// The 8 h HGCZ band (m/s²).
+    pub hgcz_8h_m_s2: (f64, f64),
+    /// The prototype without suspension.
+    pub unsuspended: AxleSummary,
+    /// With the Table 6.3 front-axle HPS.
+    pub nominal_hps: AxleSummary,
+}
+
+/// One run of the assessment.
+#[derive(Debug, Clone, Copy)]
+enum Job {
+    Ride(FrontAxle, Load, u64),
+    Roll(FrontAxle, u64),
+    Yaw(FrontAxle),
+}
+
+/// What one job measured.
+enum Outcome {
+    Ride(f64, Option<f64>),
+    Roll(f64),
+    Yaw(YawMeasures),
+}
+
+fn run_job(p: &VehicleParams, job: Job) -> Result<Outcome, String> {
+    let e = |e: vehicle_3d::VehicleError| e.to_string();
+    Ok(match job {
+        Job::Ride(axle, load, seed) => {
+            let (_, m) = ride(p, &RideSpec::d1(load, axle), seed).map_err(e)?;
+            Outcome::Ride(m.a_wz_m_s2, m.strut_travel_p2p_m)
+        }
+        Job::Roll(axle, seed) => {
+            let (_, m) = roll(p, &RollSpec::d2(axle), seed).map_err(e)?;
+            Outcome::Roll(m.sp_drt_m_s2)
+        }
+        Job::Yaw(axle) => Outcome::Yaw(yaw(p, &YawSpec::d3(axle), 0).map_err(e)?.1),
+    })
+}
+
+/// Run the assessment over `seeds` (in parallel); `progress` is called once per finished run
+/// with a short description.
+pub fn assess(seeds: &[u64], progress: &(dyn Fn(&str) + Sync)) -> Result<DesignMeasures, String> {
+    if seeds.is_empty() || seeds.len() as u64 > MAX_SEEDS {
+        return Err(format!(
+            "between 1 and {MAX_SEEDS} terrain seeds, got {}",
+            seeds.len()
+        ));
+    }
+    let p = VehicleParams::nominal();
+    let mut jobs = Vec::new();
+    for axle in [FrontAxle::Rigid, FrontAxle::Suspended] {
+        jobs.push(Job::Yaw(axle));
+        for &s in seeds {
+            jobs.push(Job::Roll(axle, s));
+            jobs.push(Job::Ride(axle, Load::Unloaded, s));
+            jobs.push(Job::Ride(axle, Load::Loaded, s));
+        }
+    }
+    let outcomes: Vec<Outcome> = jobs
+        .par_iter()
+        .map(|&j| {
+            let out = run_job(&p, j);
+            progress(&format!("{j:?}"));
+            out
+        })
+        .collect::<Result<_, _>>()?;
+    let zone = health_guidance_zone(8.0, HgczRelation::SqrtTime).map_err(|e| e.to_string())?;
+    let summary = |axle: FrontAxle| -> Result<AxleSummary, String> {
+        let mut awz = [Vec::new(), Vec::new()];
+        let mut ds = [Vec::new(), Vec::new()];
+        let mut sp = Vec::new();
+        let mut wz = None;
+        for (job, out) in jobs.iter().zip(&outcomes) {
+            match (job, out) {
+                (Job::Ride(a, load, _), Outcome::Ride(w, d)) if *a == axle => {
+                    let i = usize::from(*load == Load::Loaded);
+                    awz[i].push(*w);
+                    ds[i].extend(*d);
+                }
+                (Job::Roll(a, _), Outcome::Roll(s)) if *a == axle => sp.push(*s),
+                (Job::Yaw(a), Outcome::Yaw(m)) if *a == axle => wz = Some(*m),
+                _ => {}
+            }
+        }
+        let spread = |v: &[f64]| Spread::of(v).map_err(|e| e.to_string());
+        let ride = |i: usize| -> Result<RideSummary, String> {
+            let a = spread(&awz[i])?;
+            Ok(RideSummary {
+                a_wz_m_s2: a,
+                strut_travel_m: if ds[i].is_empty() {
+                    None
+                } else {
+                    Some(spread(&ds[i])?)
+                },
+                hgcz_8h: zone.classify(a.mean),
+            })
+        };
+        Ok(AxleSummary {
+            ride_unloaded: ride(0)?,
+            ride_loaded: ride(1)?,
+            sp_drt_m_s2: spread(&sp)?,
+            yaw: wz.ok_or("the yaw run is missing")?,
+        })
+    };
+    Ok(DesignMeasures {
+        seeds: seeds.to_vec(),
+        hgcz_8h_m_s2: (zone.lower_m_s2, zone.upper_m_s2),
+        unsuspended: summary(FrontAxle::Rigid)?,
+        nominal_hps: summary(FrontAxle::Suspended)?,
+    })
+}
+
+/// `mean ± sd` with `digits` decimals.
+fn pm(s: &Spread, digits: usize) -> String {
+    format!("{:.digits$} ± {:.digits$}", s.mean, s.sd)
+}
+
+fn zone_text(z: HgczZone) -> &'static str {
+    match z {
+        HgczZone::Below => "below the HGCZ",
+        HgczZone::Within => "within the HGCZ (caution)",
+        HgczZone::Above => "above the HGCZ (health risk likely)",
+    }
+}
+
+/// The assessment as a terminal table with units and verdicts.
+pub fn to_text(d: &DesignMeasures) -> String {
+    let mut s = format!(
+        "3-D vehicle (Chapter 6): design measures, mean ± SD over {} terrain seeds (class E, m_c 0.3)\n",
+        d.seeds.len()
+    );
+    s += &format!(
+        "  {:<36} {:>18} {:>18}  unit\n",
+        "measure", "unsuspended", "nominal HPS"
+    );
+    let (u, h) = (&d.unsuspended, &d.nominal_hps);
+    let row = |name: &str, a: String, b: String, unit: &str| {
+        format!("  {name:<36} {a:>18} {b:>18}  {unit}\n")
+    };
+    s += &row(
+        "a_wz unloaded (D1, 20 km/h)",
+        pm(&u.ride_unloaded.a_wz_m_s2, 3),
+        pm(&h.ride_unloaded.a_wz_m_s2, 3),
+        "m/s²",
+    );
+    s += &row(
+        "a_wz loaded (D1, 20 km/h)",
+        pm(&u.ride_loaded.a_wz_m_s2, 3),
+        pm(&h.ride_loaded.a_wz_m_s2, 3),
+        "m/s²",
+    );
+    let travel = |r: &RideSummary| r.strut_travel_m.as_ref().map_or("-".into(), |t| pm(t, 3));
+    s += &row(
+        "strut travel d_s unloaded / loaded",
+        "-".into(),
+        format!("{} / {}", travel(&h.ride_unloaded), travel(&h.ride_loaded)),
+        "m",
+    );
+    s += &row(
+        "SP-DRT (D2, 50 km/h, loaded)",
+        pm(&u.sp_drt_m_s2, 2),
+        pm(&h.sp_drt_m_s2, 2),
+        "m/s²",
+    );
+    s += &row(
+        "omega_z (D3, 50 km/h, loaded)",
+        format!("{:.2}", u.yaw.omega_z_hz),
+        format!("{:.2}", h.yaw.omega_z_hz),
+        "Hz",
+    );
+    s += &row(
+        "yaw damping ratio",
+        format!("{:.3}", u.yaw.damping_ratio),
+        format!("{:.3}", h.yaw.damping_ratio),
+        "-",
+    );
+    s += &format!(
+        "  ride verdict (8 h HGCZ {:.2}-{:.2} m/s²): unsuspended {} unloaded, {} loaded;\n    nominal HPS {} unloaded, {} loaded\n",
+        d.hgcz_8h_m_s2.0,
+        d.hgcz_8h_m_s2.1,
+        zone_text(u.ride_unloaded.hgcz_8h),
+        zone_text(u.ride_loaded.hgcz_8h),
+        zone_text(h.ride_unloaded.hgcz_8h),
+        zone_text(h.ride_loaded.hgcz_8h),
+    );
+    s += &format!(
+        "  HPS change: a_wz {:+.0} % unloaded, {:+.0} % loaded; SP-DRT {:+.1} %; omega_z {:+.1} %\n\n",
+        100.0 * (h.ride_unloaded.a_wz_m_s2.mean / u.ride_unloaded.a_wz_m_s2.mean - 1.0),
+        100.0 * (h.ride_loaded.a_wz_m_s2.mean / u.ride_loaded.a_wz_m_s2.mean - 1.0),
+        100.0 * (h.sp_drt_m_s2.mean / u.sp_drt_m_s2.mean - 1.0),
+        100.0 * (h.yaw.omega_z_hz / u.yaw.omega_z_hz - 1.0),
+    );
+    s
+}
