@@ -48,6 +48,9 @@ enum Command {
     /// Roll stability of the rigid mining truck (chapter 2): `simulate`, `measures`, `study`, `calibrate`.
     #[command(subcommand)]
     Roll(cmd::roll::Command),
+    /// Design studies on the 3-D vehicle (chapter 6): `hps-sensitivity` (Table 6.4).
+    #[command(subcommand)]
+    Study(cmd::study::Command),
     /// Parameter sets as JSON: `dump` the nominal set, `check` a file.
     #[command(subcommand)]
     Params(cmd::params::Command),
@@ -99,6 +102,7 @@ fn main() -> ExitCode {
         Command::Tire(c) => cmd::tire::run(c),
         Command::Yaw(c) => cmd::yaw::run(c),
         Command::Roll(c) => cmd::roll::run(c),
+        Command::Study(c) => cmd::study::run(c),
         Command::Params(c) => cmd::params::run(c),
         Command::Optimize(c) => cmd::optimize::run(c),
     };

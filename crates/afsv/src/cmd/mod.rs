@@ -11,6 +11,7 @@ pub mod measures;
 pub mod optimize;
 pub mod params;
 pub mod roll;
+pub mod study;
 pub mod terrain;
 pub mod tire;
 pub mod yaw;

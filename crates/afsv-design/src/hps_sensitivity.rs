@@ -1,0 +1,217 @@
+//! The HPS sensitivity study of section 6.5.1 (Table 6.4) on the 3-D vehicle: A_hc, A_v and
+//! A_b one at a time at -30, -15, +15 and +30 % of Table 6.3 ([`HpsDesign::apply`]: gas charge
+//! pressure and rod area held, every column height held), with the ride (a_wz unloaded and
+//! loaded, D1), roll (SP-DRT, D2) and yaw (omega_z, D3) measures of `vehicle-3d`. Every
+//! variant runs on the same terrain seeds (common random numbers), so the differences between
+//! variants are not masked by the terrain's scatter.
+
+use rayon::prelude::*;
+use serde::Serialize;
+use vehicle_3d::scenarios::{ride, roll, yaw, RideSpec, RollSpec, Spread, YawSpec};
+use vehicle_3d::{FrontAxle, Load, VehicleParams};
+
+use crate::error::DesignError;
+use crate::hps_design::HpsDesign;
+
+/// The changes of Table 6.4 (fractions).
+pub const TABLE_6_4_CHANGES: [f64; 4] = [-0.30, -0.15, 0.15, 0.30];
+
+/// Largest number of terrain seeds of one study.
+pub const MAX_SEEDS: usize = 100;
+
+/// One design variable of Eq 6.19.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum HpsVariable {
+    /// A_hc, the piston area.
+    PistonArea,
+    /// A_v, the area of one check valve.
+    CheckValveArea,
+    /// A_b, the area of one bleed orifice.
+    BleedArea,
+}
+
+impl HpsVariable {
+    /// The three, in Table 6.4 order.
+    pub const ALL: [Self; 3] = [Self::PistonArea, Self::CheckValveArea, Self::BleedArea];
+
+    /// The symbol of Table 6.4.
+    pub fn symbol(self) -> &'static str {
+        match self {
+            Self::PistonArea => "A_hc",
+            Self::CheckValveArea => "A_v",
+            Self::BleedArea => "A_b",
+        }
+    }
+
+    /// `d` with this variable scaled by `1 + change`.
+    pub fn scaled(self, d: HpsDesign, change: f64) -> Result<HpsDesign, DesignError> {
+        let f = 1.0 + change;
+        match self {
+            Self::PistonArea => HpsDesign::new(d.a_hc * f, d.a_v, d.a_b),
+            Self::CheckValveArea => HpsDesign::new(d.a_hc, d.a_v * f, d.a_b),
+            Self::BleedArea => HpsDesign::new(d.a_hc, d.a_v, d.a_b * f),
+        }
+    }
+}
+
+/// The four measures of one design.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct HpsMeasures {
+    /// a_wz unloaded (m/s²).
+    pub a_wz_unloaded_m_s2: Spread,
+    /// a_wz loaded (m/s²).
+    pub a_wz_loaded_m_s2: Spread,
+    /// SP-DRT, loaded (m/s²).
+    pub sp_drt_m_s2: Spread,
+    /// omega_z, loaded, smooth ground (Hz).
+    pub omega_z_hz: f64,
+}
+
+/// One cell row of Table 6.4: a variable at a change.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct SensitivityRow {
+    /// The variable changed.
+    pub variable: HpsVariable,
+    /// The change (fraction; 0 for the nominal design).
+    pub change: f64,
+    /// The measures.
+    pub measures: HpsMeasures,
+}
+
+/// Which measures a study runs (the ride measures always).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+pub struct StudyScope {
+    /// Run D2 for SP-DRT.
+    pub roll: bool,
+    /// Run D3 for omega_z.
+    pub yaw: bool,
+}
+
+/// The study: the nominal design and every variant, over the same seeds.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct HpsSensitivity {
+    /// Terrain seeds.
+    pub seeds: Vec<u64>,
+    /// The nominal design's measures.
+    pub nominal: HpsMeasures,
+    /// Every variant, variable by variable in Table 6.4 order, changes ascending.
+    pub rows: Vec<SensitivityRow>,
+}
+
+/// A run of the study.
+#[derive(Debug, Clone, Copy)]
+enum Run {
+    Ride(usize, Load, u64),
+    Roll(usize, u64),
+    Yaw(usize),
+}
+
+/// The study of the module docs for `base` (its `hps` is the nominal design) over `seeds`
+/// and `changes`; `progress` is called once per finished run. NaN marks a measure outside
+/// `scope`.
+pub fn hps_sensitivity(
+    base: &VehicleParams,
+    changes: &[f64],
+    seeds: &[u64],
+    scope: StudyScope,
+    progress: &(dyn Fn(&str) + Sync),
+) -> Result<HpsSensitivity, DesignError> {
+    if seeds.is_empty() || seeds.len() > MAX_SEEDS {
+        return Err(DesignError::Shape {
+            field: "seeds",
+            reason: format!("between 1 and {MAX_SEEDS} seeds, got {}", seeds.len()),
+        });
+    }
+    let nominal = HpsDesign::of(&base.hps);
+    // design 0 is the nominal one, then variable by variable
+    let mut designs = vec![(HpsVariable::PistonArea, 0.0, base.clone())];
+    for v in HpsVariable::ALL {
+        for &c in changes {
+            if !(c.is_finite() && c > -1.0) {
+                return Err(DesignError::Invalid {
+                    field: "changes",
+                    value: c,
+                    reason: "a change must be finite and above -100 %",
+                });
+            }
+            let mut p = base.clone();
+            p.hps = v.scaled(nominal, c)?.apply(&base.hps)?;
+            designs.push((v, c, p));
+        }
+    }
+    let mut runs = Vec::new();
+    for d in 0..designs.len() {
+        for &s in seeds {
+            runs.push(Run::Ride(d, Load::Unloaded, s));
+            runs.push(Run::Ride(d, Load::Loaded, s));
+            if scope.roll {
+                runs.push(Run::Roll(d, s));
+            }
+        }
+        if scope.yaw {
+            runs.push(Run::Yaw(d));
+        }
+    }
+    let sim = |e: vehicle_3d::VehicleError| DesignError::Simulation(e.to_string());
+    let values: Vec<f64> = runs
+        .par_iter()
+        .map(|&r| {
+            let v = match r {
+                Run::Ride(d, load, s) => {
+                    ride(&designs[d].2, &RideSpec::d1(load, FrontAxle::Suspended), s)
+                        .map(|(_, m)| m.a_wz_m_s2)
+                }
+                Run::Roll(d, s) => roll(&designs[d].2, &RollSpec::d2(FrontAxle::Suspended), s)
+                    .map(|(_, m)| m.sp_drt_m_s2),
+                Run::Yaw(d) => yaw(&designs[d].2, &YawSpec::d3(FrontAxle::Suspended), 0)
+                    .map(|(_, m)| m.omega_z_hz),
+            };
+            progress(&format!("{r:?}"));
+            v.map_err(sim)
+        })
+        .collect::<Result<_, _>>()?;
+    let spread = |v: &[f64]| {
+        if v.is_empty() {
+            Ok(Spread {
+                mean: f64::NAN,
+                sd: f64::NAN,
+                n: 0,
+            })
+        } else {
+            Spread::of(v).map_err(sim)
+        }
+    };
+    let measures = |d: usize| -> Result<HpsMeasures, DesignError> {
+        let (mut u, mut l, mut sp, mut wz) = (vec![], vec![], vec![], f64::NAN);
+        for (r, &v) in runs.iter().zip(&values) {
+            match *r {
+                Run::Ride(i, Load::Unloaded, _) if i == d => u.push(v),
+                Run::Ride(i, Load::Loaded, _) if i == d => l.push(v),
+                Run::Roll(i, _) if i == d => sp.push(v),
+                Run::Yaw(i) if i == d => wz = v,
+                _ => {}
+            }
+        }
+        Ok(HpsMeasures {
+            a_wz_unloaded_m_s2: spread(&u)?,
+            a_wz_loaded_m_s2: spread(&l)?,
+            sp_drt_m_s2: spread(&sp)?,
+            omega_z_hz: wz,
+        })
+    };
+    let rows = (1..designs.len())
+        .map(|d| {
+            Ok(SensitivityRow {
+                variable: designs[d].0,
+                change: designs[d].1,
+                measures: measures(d)?,
+            })
+        })
+        .collect::<Result<_, DesignError>>()?;
+    Ok(HpsSensitivity {
+        seeds: seeds.to_vec(),
+        nominal: measures(0)?,
+        rows,
+    })
+}
