@@ -563,6 +563,13 @@ fn other_case(g: &mut Gen<'_>, group: &str) {
         "evaluate" => {
             let v = g.bad();
             g.push_opt("--speed-kmh", &v);
+            // a well-formed speed runs the whole assessment: one terrain seed keeps it short
+            if g.rng.chance(0.5) {
+                g.push_opt("--seeds", "1");
+            } else {
+                let n = g.bad();
+                g.push_opt("--seeds", &n);
+            }
         }
         "check" => {
             let v = g.bad();
