@@ -7,7 +7,11 @@
 
 use rayon::prelude::*;
 use serde::Serialize;
-use vehicle_3d::scenarios::{ride, roll, yaw, RideSpec, RollSpec, Spread, YawSpec};
+use std::sync::Arc;
+use vehicle_3d::scenarios::{
+    ride_on, ride_tracks, roll_on, roll_tracks, yaw, RideSpec, RollSpec, Spread, YawSpec,
+};
+use vehicle_3d::TireTracks;
 use vehicle_3d::{FrontAxle, Load, VehicleParams};
 
 use crate::error::DesignError;
@@ -154,15 +158,39 @@ pub fn hps_sensitivity(
         }
     }
     let sim = |e: vehicle_3d::VehicleError| DesignError::Simulation(e.to_string());
+    // the enveloping caches depend on the terrain and the load, not on the strut design:
+    // built once per seed and load, shared by every design
+    let ride_spec = |load| RideSpec::d1(load, FrontAxle::Suspended);
+    let roll_spec = RollSpec::d2(FrontAxle::Suspended);
+    let mut cases: Vec<(Option<Load>, u64)> = Vec::new();
+    for &s in seeds {
+        cases.push((Some(Load::Unloaded), s));
+        cases.push((Some(Load::Loaded), s));
+        if scope.roll {
+            cases.push((None, s));
+        }
+    }
+    let tracks: Vec<Arc<TireTracks>> = cases
+        .par_iter()
+        .map(|&(load, s)| match load {
+            Some(load) => ride_tracks(base, &ride_spec(load), s),
+            None => roll_tracks(base, &roll_spec, s),
+        })
+        .collect::<Result<_, _>>()
+        .map_err(sim)?;
+    let tracks_of = |load: Option<Load>, s: u64| {
+        let i = cases.iter().position(|c| *c == (load, s)).unwrap_or(0);
+        Arc::clone(&tracks[i])
+    };
     let values: Vec<f64> = runs
         .par_iter()
         .map(|&r| {
             let v = match r {
                 Run::Ride(d, load, s) => {
-                    ride(&designs[d].2, &RideSpec::d1(load, FrontAxle::Suspended), s)
+                    ride_on(&designs[d].2, &ride_spec(load), tracks_of(Some(load), s))
                         .map(|(_, m)| m.a_wz_m_s2)
                 }
-                Run::Roll(d, s) => roll(&designs[d].2, &RollSpec::d2(FrontAxle::Suspended), s)
+                Run::Roll(d, s) => roll_on(&designs[d].2, &roll_spec, tracks_of(None, s))
                     .map(|(_, m)| m.sp_drt_m_s2),
                 Run::Yaw(d) => yaw(&designs[d].2, &YawSpec::d3(FrontAxle::Suspended), 0)
                     .map(|(_, m)| m.omega_z_hz),

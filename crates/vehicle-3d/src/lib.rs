@@ -29,4 +29,5 @@ pub use model::FrontAxle;
 pub use params::{DriveParams, Load, RigidPart, VehicleParams};
 pub use simulate::{simulate, RunOptions, RunRecord};
 pub use statics::Statics;
+pub use tires::TireTracks;
 pub use vehicle::{Vehicle, VehicleOptions};

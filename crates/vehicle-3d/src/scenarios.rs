@@ -31,7 +31,9 @@ use crate::error::{measure, positive, VehicleError};
 use crate::model::FrontAxle;
 use crate::params::{Load, VehicleParams};
 use crate::simulate::{simulate, RunOptions, RunRecord};
+use crate::tires::TireTracks;
 use crate::vehicle::{Vehicle, VehicleOptions};
+use std::sync::Arc;
 
 /// Sample spacing of the synthesized profiles (m).
 pub const TERRAIN_DX_M: f64 = 0.05;
@@ -156,36 +158,69 @@ impl RideSpec {
     }
 }
 
-/// One ride run on terrain `seed`: the record and its measures.
-pub fn ride(
+/// Start of the ride runs' path on the terrain (m).
+const RIDE_START_M: f64 = 15.0;
+
+/// The vehicle options of a ride run.
+fn ride_options(spec: &RideSpec) -> VehicleOptions {
+    VehicleOptions {
+        front_axle: spec.front_axle,
+        speed_m_s: spec.speed_kmh / 3.6,
+        path_length_m: RUN_IN_M + spec.length_m + 5.0,
+        start_s_m: RIDE_START_M,
+        ..VehicleOptions::default()
+    }
+}
+
+/// The enveloping cache of a ride run on terrain `seed`: it depends on the load case, the
+/// tire and the terrain, not on the suspension, so the rigid and the HPS vehicle and every
+/// HPS design share it ([`ride_on`]).
+pub fn ride_tracks(
     p: &VehicleParams,
     spec: &RideSpec,
     seed: u64,
-) -> Result<(RunRecord, RideMeasures), VehicleError> {
+) -> Result<Arc<TireTracks>, VehicleError> {
     positive("speed_kmh", spec.speed_kmh)?;
     positive("length_m", spec.length_m)?;
+    let length = RIDE_START_M + RUN_IN_M + spec.length_m + 30.0;
+    let terrain = spec.terrain.build(p, length, seed)?;
+    Ok(Arc::new(TireTracks::build(
+        p,
+        spec.load,
+        &ride_options(spec),
+        &terrain,
+        0.5 * p.front_track_m,
+    )?))
+}
+
+/// One ride run on `tracks` ([`ride_tracks`]): the record and its measures.
+pub fn ride_on(
+    p: &VehicleParams,
+    spec: &RideSpec,
+    tracks: Arc<TireTracks>,
+) -> Result<(RunRecord, RideMeasures), VehicleError> {
+    positive("speed_kmh", spec.speed_kmh)?;
     let speed = spec.speed_kmh / 3.6;
-    let distance = RUN_IN_M + spec.length_m;
-    let start = 15.0;
-    let terrain = spec.terrain.build(p, start + distance + 30.0, seed)?;
-    let options = VehicleOptions {
-        front_axle: spec.front_axle,
-        speed_m_s: speed,
-        path_length_m: distance + 5.0,
-        start_s_m: start,
-        ..VehicleOptions::default()
-    };
-    let v = Vehicle::new(p, spec.load, options, &terrain, 0.5 * p.front_track_m)?;
+    let v = Vehicle::on_tracks(p, spec.load, ride_options(spec), tracks)?;
     let rec = simulate(
         &v,
         &RunOptions {
-            t_end_s: distance / speed,
+            t_end_s: (RUN_IN_M + spec.length_m) / speed,
             output_dt_s: OUTPUT_DT_S,
             ..RunOptions::default()
         },
     )?;
     let m = ride_measures(&rec, RUN_IN_M / speed, spec.front_axle)?;
     Ok((rec, m))
+}
+
+/// One ride run on terrain `seed`: the record and its measures.
+pub fn ride(
+    p: &VehicleParams,
+    spec: &RideSpec,
+    seed: u64,
+) -> Result<(RunRecord, RideMeasures), VehicleError> {
+    ride_on(p, spec, ride_tracks(p, spec, seed)?)
 }
 
 /// Ride measures of `rec` from `t_start_s` on (module docs).
@@ -436,16 +471,10 @@ impl RollSpec {
     }
 }
 
-/// One roll run to rollover (on terrain `seed` when the spec has a terrain).
-pub fn roll(
-    p: &VehicleParams,
-    spec: &RollSpec,
-    seed: u64,
-) -> Result<(RunRecord, RollMeasures), VehicleError> {
-    positive("speed_kmh", spec.speed_kmh)?;
-    positive("ramp_deg_s", spec.ramp_deg_s)?;
+/// The vehicle options of a roll run.
+fn roll_options(spec: &RollSpec) -> VehicleOptions {
     let speed = spec.speed_kmh / 3.6;
-    let options = VehicleOptions {
+    VehicleOptions {
         front_axle: spec.front_axle,
         speed_m_s: speed,
         steer: SteerInput::Ramp {
@@ -455,32 +484,61 @@ pub fn roll(
         },
         path_length_m: speed * spec.t_end_s + 5.0,
         ..VehicleOptions::default()
-    };
-    let run = RunOptions {
-        t_end_s: spec.t_end_s,
-        output_dt_s: 0.01,
-        stop_at_rollover: true,
-        ..RunOptions::default()
-    };
-    let rec = match &spec.terrain {
+    }
+}
+
+/// The enveloping cache of a roll run on terrain `seed` (smooth ground without a terrain),
+/// shared by every suspension and HPS design of the load case ([`roll_on`]).
+pub fn roll_tracks(
+    p: &VehicleParams,
+    spec: &RollSpec,
+    seed: u64,
+) -> Result<Arc<TireTracks>, VehicleError> {
+    positive("speed_kmh", spec.speed_kmh)?;
+    positive("ramp_deg_s", spec.ramp_deg_s)?;
+    let options = roll_options(spec);
+    let half = 0.5 * p.front_track_m;
+    let tracks = match &spec.terrain {
         None => {
             let flat = FlatTerrain::new(0.0, vehicle_components::DEFAULT_FRICTION)
                 .map_err(|e| measure("terrain", e))?;
-            simulate(
-                &Vehicle::new(p, spec.load, options, &flat, 0.5 * p.front_track_m)?,
-                &run,
-            )?
+            TireTracks::build(p, spec.load, &options, &flat, half)?
         }
         Some(t) => {
             let terrain = t.build(p, options.path_length_m + 50.0, seed)?;
-            simulate(
-                &Vehicle::new(p, spec.load, options, &terrain, 0.5 * p.front_track_m)?,
-                &run,
-            )?
+            TireTracks::build(p, spec.load, &options, &terrain, half)?
         }
     };
+    Ok(Arc::new(tracks))
+}
+
+/// One roll run to rollover on `tracks` ([`roll_tracks`]).
+pub fn roll_on(
+    p: &VehicleParams,
+    spec: &RollSpec,
+    tracks: Arc<TireTracks>,
+) -> Result<(RunRecord, RollMeasures), VehicleError> {
+    let v = Vehicle::on_tracks(p, spec.load, roll_options(spec), tracks)?;
+    let rec = simulate(
+        &v,
+        &RunOptions {
+            t_end_s: spec.t_end_s,
+            output_dt_s: 0.01,
+            stop_at_rollover: true,
+            ..RunOptions::default()
+        },
+    )?;
     let m = roll_measures(&rec)?;
     Ok((rec, m))
+}
+
+/// One roll run to rollover (on terrain `seed` when the spec has a terrain).
+pub fn roll(
+    p: &VehicleParams,
+    spec: &RollSpec,
+    seed: u64,
+) -> Result<(RunRecord, RollMeasures), VehicleError> {
+    roll_on(p, spec, roll_tracks(p, spec, seed)?)
 }
 
 /// Roll measures over `seeds` (in parallel), in seed order.

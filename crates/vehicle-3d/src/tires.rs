@@ -26,7 +26,140 @@
 //!    the spin (`tanh(omega R / 0.1 m/s)`, smooth through standstill).
 
 use nalgebra::{Matrix3, Vector3};
-use tire_fiala::{regularised_speed, Fiala, HandlingModel, TrackContact, VerticalContact};
+use tire_fiala::{
+    regularised_speed, EffectiveTrack, Envelope, EnvelopeMethod, Fiala, HandlingModel, Track,
+    TrackContact, VerticalContact,
+};
+use vehicle_components::Terrain;
+
+use crate::error::{positive, rejected, VehicleError};
+use crate::params::{Load, VehicleParams};
+use crate::statics::Statics;
+use crate::vehicle::VehicleOptions;
+
+/// The four tires' effective tracks (in [`crate::model::TIRE_NAMES`] order), each at its
+/// static deflection, covering the path of a run: the enveloping cache, built once per
+/// terrain, load case and tire and shared by every vehicle built on it
+/// ([`crate::Vehicle::on_tracks`]).
+#[derive(Debug, Clone, PartialEq)]
+pub struct TireTracks {
+    tracks: [EffectiveTrack; 4],
+    reference: [f64; 2],
+    range: (f64, f64),
+    settings: (EnvelopeMethod, f64, f64, f64),
+}
+
+impl TireTracks {
+    /// The tracks of `params`' tire under `load` on `terrain` for a run with `options`, the
+    /// left tires on `y = +half_width`, the right ones on `y = -half_width`.
+    pub fn build<T: Terrain>(
+        params: &VehicleParams,
+        load: Load,
+        options: &VehicleOptions,
+        terrain: &T,
+        half_width: f64,
+    ) -> Result<Self, VehicleError> {
+        params.validate()?;
+        positive("half_width", half_width)?;
+        positive("path_length_m", options.path_length_m)?;
+        positive("track_grid_m", options.track_grid_m)?;
+        positive("envelope_sample_m", options.envelope_sample_m)?;
+        let statics = Statics::of(params, load)?;
+        let radius = params.tire.unloaded_radius_m;
+        let envelope = Envelope::new(options.envelope, radius, options.envelope_sample_m)?;
+        let range = Self::range_of(params, options);
+        let reference = [
+            statics.front_tire_deflection_m,
+            statics.rear_tire_deflection_m,
+        ];
+        let track = |left: bool, front: bool| {
+            let y = if left { half_width } else { -half_width };
+            EffectiveTrack::build(
+                &Track { terrain, y },
+                range,
+                options.track_grid_m,
+                &envelope,
+                reference[usize::from(!front)],
+            )
+        };
+        Ok(Self {
+            tracks: [
+                track(true, true)?,
+                track(false, true)?,
+                track(true, false)?,
+                track(false, false)?,
+            ],
+            reference,
+            range,
+            settings: (
+                options.envelope,
+                options.envelope_sample_m,
+                options.track_grid_m,
+                radius,
+            ),
+        })
+    }
+
+    /// Path range a run with `options` needs: the path plus a vehicle length each side.
+    fn range_of(params: &VehicleParams, options: &VehicleOptions) -> (f64, f64) {
+        let margin = params.wheelbase_m()
+            + params.front_unit.cg_to_joint_m
+            + 2.0 * params.tire.unloaded_radius_m;
+        (
+            options.start_s_m - margin,
+            options.start_s_m + options.path_length_m + margin,
+        )
+    }
+
+    /// Whether these tracks serve a vehicle of `params` with `statics` and `options`: the
+    /// same reference deflections, enveloping settings and tire radius, and a range that
+    /// covers the run.
+    pub fn check(
+        &self,
+        params: &VehicleParams,
+        statics: &Statics,
+        options: &VehicleOptions,
+    ) -> Result<(), VehicleError> {
+        let same = |a: f64, b: f64| (a - b).abs() <= 1e-12 * (1.0 + a.abs());
+        let settings = (
+            options.envelope,
+            options.envelope_sample_m,
+            options.track_grid_m,
+            params.tire.unloaded_radius_m,
+        );
+        if !(same(self.reference[0], statics.front_tire_deflection_m)
+            && same(self.reference[1], statics.rear_tire_deflection_m))
+        {
+            return Err(rejected(
+                "tracks",
+                statics.front_tire_deflection_m,
+                "built for other static tire deflections (another tire or load case)",
+            ));
+        }
+        if self.settings != settings {
+            return Err(rejected(
+                "tracks",
+                options.track_grid_m,
+                "built with other enveloping settings or tire radius",
+            ));
+        }
+        let need = Self::range_of(params, options);
+        if need.0 < self.range.0 || need.1 > self.range.1 {
+            return Err(rejected(
+                "tracks",
+                options.path_length_m,
+                "do not cover the run's path",
+            ));
+        }
+        Ok(())
+    }
+
+    /// Contact of tire `i` with centre height `z_c` at path coordinate `s`.
+    #[inline]
+    pub fn contact(&self, i: usize, s: f64, z_c: f64) -> TrackContact {
+        self.tracks[i].contact(s, z_c)
+    }
+}
 
 /// Speed (m/s) over which the rolling-resistance moment changes sign at standstill.
 pub const ROLLING_SIGN_SPEED_M_S: f64 = 0.1;

@@ -21,16 +21,14 @@
 //! with time and state.
 
 use std::cell::RefCell;
+use std::sync::Arc;
 
 use afs_hydraulics::{AfsSystem, StrutInput};
 use afsv_dynamics::SteerInput;
 use hps_emulsion::{HpsExtensions, HpsStrut};
 use multibody::{Model, Workspace};
 use nalgebra::Vector3;
-use tire_fiala::{
-    EffectiveTrack, Envelope, EnvelopeMethod, Fiala, LoadDeflectionTable, Relaxation, Track,
-    VerticalContact,
-};
+use tire_fiala::{EnvelopeMethod, Fiala, LoadDeflectionTable, Relaxation, VerticalContact};
 use vehicle_components::Terrain;
 
 use crate::error::{finite, positive, rejected, VehicleError};
@@ -38,7 +36,7 @@ use crate::model::{body, build_tree, FrontAxle, Layout, TIRE_MOUNTS};
 use crate::params::{Load, VehicleParams};
 use crate::statics::{strut_static_deflection, Statics};
 use crate::steering::{apply_strut_forces, strut_geometry, StrutGeometry};
-use crate::tires::{tire_forces, TireContact, TireInput};
+use crate::tires::{tire_forces, TireContact, TireInput, TireTracks};
 
 /// Stiffness of the front-strut end stops beyond the Table 6.3 travel of +-120 mm (N/m).
 /// Assumption: 2e7 N/m (a rubber stop about 15 times the gas spring), with
@@ -187,7 +185,7 @@ pub struct Vehicle {
     hps: Option<HpsStrut>,
     hps_static_m: f64,
     /// Effective tracks per tire in [`crate::model::TIRE_NAMES`] order.
-    tracks: [EffectiveTrack; 4],
+    tracks: Arc<TireTracks>,
     vertical: VerticalContact,
     fiala: Fiala,
     relaxation: Relaxation,
@@ -206,6 +204,19 @@ impl Vehicle {
         terrain: &T,
         half_width: f64,
     ) -> Result<Self, VehicleError> {
+        let tracks = TireTracks::build(params, load, &options, terrain, half_width)?;
+        Self::on_tracks(params, load, options, Arc::new(tracks))
+    }
+
+    /// The vehicle on tracks built before ([`TireTracks::build`]) for the same tire, load
+    /// case and path: variants of a design that share the terrain, the tire and the load
+    /// (a sensitivity study, an optimisation) build the enveloping cache once.
+    pub fn on_tracks(
+        params: &VehicleParams,
+        load: Load,
+        options: VehicleOptions,
+        tracks: Arc<TireTracks>,
+    ) -> Result<Self, VehicleError> {
         params.validate()?;
         options.steer.validate()?;
         positive("speed_m_s", options.speed_m_s)?;
@@ -213,8 +224,8 @@ impl Vehicle {
         positive("track_grid_m", options.track_grid_m)?;
         positive("envelope_sample_m", options.envelope_sample_m)?;
         finite("start_s_m", options.start_s_m)?;
-        positive("half_width", half_width)?;
         let statics = Statics::of(params, load)?;
+        tracks.check(params, &statics, &options)?;
         let (model, layout) = build_tree(
             params,
             load,
@@ -265,33 +276,6 @@ impl Vehicle {
         let afs = AfsSystem::new(params.steering.clone())?;
         let l0 = afs.initial_strut_length();
         let radius = params.tire.unloaded_radius_m;
-        let envelope = Envelope::new(options.envelope, radius, options.envelope_sample_m)?;
-        let margin = params.wheelbase_m() + params.front_unit.cg_to_joint_m + 2.0 * radius;
-        let range = (
-            options.start_s_m - margin,
-            options.start_s_m + options.path_length_m + margin,
-        );
-        let track = |left: bool, front: bool| {
-            let y = if left { half_width } else { -half_width };
-            let deflection = if front {
-                statics.front_tire_deflection_m
-            } else {
-                statics.rear_tire_deflection_m
-            };
-            EffectiveTrack::build(
-                &Track { terrain, y },
-                range,
-                options.track_grid_m,
-                &envelope,
-                deflection,
-            )
-        };
-        let tracks = [
-            track(true, true)?,
-            track(false, true)?,
-            track(true, false)?,
-            track(false, false)?,
-        ];
         let vertical = VerticalContact::new(
             LoadDeflectionTable::new(&params.tire.load_deflection)?,
             params.tire.vertical_damping_n_s_per_m,
@@ -489,7 +473,7 @@ impl Vehicle {
                 wheel_angular_velocity: ws.body_rotation(m.wheel)
                     * multibody::spatial::angular(&ws.body_velocity(m.wheel)),
                 path_direction: h,
-                contact: self.tracks[i].contact(s, c.z),
+                contact: self.tracks.contact(i, s, c.z),
                 lag: [y[at], y[at + 1]],
             };
             let out = tire_forces(

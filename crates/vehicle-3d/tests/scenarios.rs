@@ -82,3 +82,17 @@ fn spread_and_end_stops_by_hand() {
     // rebounding fast off the stop: the damper may not pull
     assert_eq!(end_stop_force(0.121, -10.0, 0.12), 0.0);
 }
+
+#[test]
+fn shared_tracks_give_the_same_run_and_refuse_another_load() {
+    use vehicle_3d::scenarios::{ride_on, ride_tracks};
+    let p = VehicleParams::nominal();
+    let spec = RideSpec::d1(Load::Loaded, FrontAxle::Rigid);
+    let tracks = ride_tracks(&p, &spec, 2).unwrap();
+    let (_, shared) = ride_on(&p, &spec, tracks.clone()).unwrap();
+    let (_, own) = ride(&p, &spec, 2).unwrap();
+    assert_eq!(shared, own);
+    let unloaded = RideSpec::d1(Load::Unloaded, FrontAxle::Rigid);
+    let err = ride_on(&p, &unloaded, tracks).unwrap_err().to_string();
+    assert!(err.contains("tracks"), "{err}");
+}

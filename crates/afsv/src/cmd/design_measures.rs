@@ -7,8 +7,12 @@
 use perf_measures::iso2631::{health_guidance_zone, HgczRelation, HgczZone};
 use rayon::prelude::*;
 use serde::Serialize;
-use vehicle_3d::scenarios::{ride, roll, yaw, RideSpec, RollSpec, Spread, YawMeasures, YawSpec};
-use vehicle_3d::{FrontAxle, Load, VehicleParams};
+use std::sync::Arc;
+use vehicle_3d::scenarios::{
+    ride_on, ride_tracks, roll_on, roll_tracks, yaw, RideSpec, RollSpec, Spread, YawMeasures,
+    YawSpec,
+};
+use vehicle_3d::{FrontAxle, Load, TireTracks, VehicleParams};
 
 /// Largest number of terrain seeds per measure.
 pub const MAX_SEEDS: u64 = 100;
@@ -65,15 +69,31 @@ enum Outcome {
     Yaw(YawMeasures),
 }
 
-fn run_job(p: &VehicleParams, job: Job) -> Result<Outcome, String> {
+/// The enveloping caches of one seed: unloaded and loaded ride, roll. They depend on the
+/// terrain and the load, not on the front axle, so both axles share them.
+struct SeedTracks {
+    seed: u64,
+    ride: [Arc<TireTracks>; 2],
+    roll: Arc<TireTracks>,
+}
+
+fn run_job(p: &VehicleParams, job: Job, tracks: &[SeedTracks]) -> Result<Outcome, String> {
     let e = |e: vehicle_3d::VehicleError| e.to_string();
+    let of = |seed: u64| {
+        tracks
+            .iter()
+            .find(|t| t.seed == seed)
+            .ok_or_else(|| format!("no tracks for seed {seed}"))
+    };
     Ok(match job {
         Job::Ride(axle, load, seed) => {
-            let (_, m) = ride(p, &RideSpec::d1(load, axle), seed).map_err(e)?;
+            let t = Arc::clone(&of(seed)?.ride[usize::from(load == Load::Loaded)]);
+            let (_, m) = ride_on(p, &RideSpec::d1(load, axle), t).map_err(e)?;
             Outcome::Ride(m.a_wz_m_s2, m.strut_travel_p2p_m)
         }
         Job::Roll(axle, seed) => {
-            let (_, m) = roll(p, &RollSpec::d2(axle), seed).map_err(e)?;
+            let t = Arc::clone(&of(seed)?.roll);
+            let (_, m) = roll_on(p, &RollSpec::d2(axle), t).map_err(e)?;
             Outcome::Roll(m.sp_drt_m_s2)
         }
         Job::Yaw(axle) => Outcome::Yaw(yaw(p, &YawSpec::d3(axle), 0).map_err(e)?.1),
@@ -99,10 +119,25 @@ pub fn assess(seeds: &[u64], progress: &(dyn Fn(&str) + Sync)) -> Result<DesignM
             jobs.push(Job::Ride(axle, Load::Loaded, s));
         }
     }
+    let e = |e: vehicle_3d::VehicleError| e.to_string();
+    let tracks: Vec<SeedTracks> = seeds
+        .par_iter()
+        .map(|&seed| {
+            let ride = |load| ride_tracks(&p, &RideSpec::d1(load, FrontAxle::Rigid), seed);
+            Ok(SeedTracks {
+                seed,
+                ride: [
+                    ride(Load::Unloaded).map_err(e)?,
+                    ride(Load::Loaded).map_err(e)?,
+                ],
+                roll: roll_tracks(&p, &RollSpec::d2(FrontAxle::Rigid), seed).map_err(e)?,
+            })
+        })
+        .collect::<Result<_, String>>()?;
     let outcomes: Vec<Outcome> = jobs
         .par_iter()
         .map(|&j| {
-            let out = run_job(&p, j);
+            let out = run_job(&p, j, &tracks);
             progress(&format!("{j:?}"));
             out
         })
