@@ -24,6 +24,7 @@ pub mod afs_problem;
 pub mod ahp;
 pub mod error;
 pub mod hps_design;
+pub mod hps_optimum;
 pub mod hps_sensitivity;
 pub mod measures;
 pub mod objective;
@@ -37,6 +38,7 @@ pub use afs_problem::{
 pub use ahp::{AhpHierarchy, AhpLevels, GoalComparison};
 pub use error::DesignError;
 pub use hps_design::HpsDesign;
+pub use hps_optimum::{optimise_hps, HpsGaSettings, HpsOptimum};
 pub use hps_sensitivity::{hps_sensitivity, HpsSensitivity, HpsVariable, StudyScope};
 pub use measures::{DesignMeasures, Measure, MeasureRatios};
 pub use objective::Objective;
