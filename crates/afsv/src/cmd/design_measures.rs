@@ -229,9 +229,15 @@ pub fn to_text(d: &DesignMeasures) -> String {
     );
     let travel = |r: &RideSummary| r.strut_travel_m.as_ref().map_or("-".into(), |t| pm(t, 3));
     s += &row(
-        "strut travel d_s unloaded / loaded",
+        "strut travel d_s unloaded",
         "-".into(),
-        format!("{} / {}", travel(&h.ride_unloaded), travel(&h.ride_loaded)),
+        travel(&h.ride_unloaded),
+        "m",
+    );
+    s += &row(
+        "strut travel d_s loaded",
+        "-".into(),
+        travel(&h.ride_loaded),
         "m",
     );
     s += &row(
@@ -253,7 +259,7 @@ pub fn to_text(d: &DesignMeasures) -> String {
         "-",
     );
     s += &format!(
-        "  ride verdict (8 h HGCZ {:.2}-{:.2} m/s²): unsuspended {} unloaded, {} loaded;\n    nominal HPS {} unloaded, {} loaded\n",
+        "  ride verdict, 8 h HGCZ {:.2}-{:.2} m/s²:\n    unsuspended: {} unloaded, {} loaded\n    nominal HPS: {} unloaded, {} loaded\n",
         d.hgcz_8h_m_s2.0,
         d.hgcz_8h_m_s2.1,
         zone_text(u.ride_unloaded.hgcz_8h),
