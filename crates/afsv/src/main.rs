@@ -48,6 +48,9 @@ enum Command {
     /// Roll stability of the rigid mining truck (chapter 2): `simulate`, `measures`, `study`, `calibrate`.
     #[command(subcommand)]
     Roll(cmd::roll::Command),
+    /// The 3-D articulated vehicle of chapter 6: `ride`, `roll`, `yaw` (design runs over terrain seeds), `simulate`.
+    #[command(subcommand)]
+    Vehicle(cmd::vehicle::Command),
     /// Parameter sets as JSON: `dump` the nominal set, `check` a file.
     #[command(subcommand)]
     Params(cmd::params::Command),
@@ -99,6 +102,7 @@ fn main() -> ExitCode {
         Command::Tire(c) => cmd::tire::run(c),
         Command::Yaw(c) => cmd::yaw::run(c),
         Command::Roll(c) => cmd::roll::run(c),
+        Command::Vehicle(c) => cmd::vehicle::run(c),
         Command::Params(c) => cmd::params::run(c),
         Command::Optimize(c) => cmd::optimize::run(c),
     };

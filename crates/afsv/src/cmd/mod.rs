@@ -12,6 +12,7 @@ pub mod params;
 pub mod roll;
 pub mod terrain;
 pub mod tire;
+pub mod vehicle;
 pub mod yaw;
 
 /// Result of a subcommand: errors are printed as one line by `main`.
