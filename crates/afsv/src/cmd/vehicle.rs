@@ -32,9 +32,13 @@ pub const MAX_SPEED_KMH: f64 = 80.0;
 /// Longest simulated time of one run (s).
 pub const MAX_DURATION_S: f64 = 600.0;
 
-/// Magnitude at which a `--steer ramp` holds when no limit is given (deg of steering
-/// wheel): the roll scenario's hold angle, far beyond the rear unit's rollover.
-const RAMP_HOLD_DEG: f64 = 1000.0;
+/// Largest steering-wheel angle of the options (deg), also where a `--steer ramp` without
+/// a limit holds: the roll scenario's hold angle, far beyond the rear unit's rollover.
+const MAX_STEER_DEG: f64 = 1000.0;
+
+/// Range of steering-wheel ramp rates (deg/s): slower ramps do not reach rollover within
+/// the longest run, faster ones are steps.
+const RAMP_RATE_DEG_S: (f64, f64) = (0.01, 1000.0);
 
 /// Why a rigid front axle has no strut travel.
 const NO_STRUT: &str = "rigid front axle (--hps off): no strut";
@@ -62,6 +66,27 @@ fn seed_count(s: &str) -> Result<usize, String> {
         Ok(n)
     } else {
         Err(format!("must be 1 to {MAX_SEEDS}"))
+    }
+}
+
+/// A steering-wheel ramp rate within [`RAMP_RATE_DEG_S`] (deg/s).
+fn ramp_rate(s: &str) -> Result<f64, String> {
+    let v = args::positive_f64(s)?;
+    let (lo, hi) = RAMP_RATE_DEG_S;
+    if (lo..=hi).contains(&v) {
+        Ok(v)
+    } else {
+        Err(format!("must be {lo} to {hi} deg/s"))
+    }
+}
+
+/// A steering-wheel angle within (0, [`MAX_STEER_DEG`]] (deg).
+fn steer_peak(s: &str) -> Result<f64, String> {
+    let v = args::positive_f64(s)?;
+    if v <= MAX_STEER_DEG {
+        Ok(v)
+    } else {
+        Err(format!("must be at most {MAX_STEER_DEG} deg"))
     }
 }
 
@@ -211,8 +236,8 @@ pub enum Command {
         case: CaseArgs,
         #[command(flatten)]
         study: StudyArgs,
-        /// Steering-wheel rate of the ramp from t = 1 s (deg/s); D2: 5.
-        #[arg(long, default_value_t = 5.0, allow_hyphen_values = true, value_parser = args::positive_f64)]
+        /// Steering-wheel rate of the ramp from t = 1 s (deg/s), 0.01 to 1000; D2: 5.
+        #[arg(long, default_value_t = 5.0, allow_hyphen_values = true, value_parser = ramp_rate)]
         ramp_deg_s: f64,
         /// Longest run if the rear unit does not roll over (s), at most 600.
         #[arg(long, default_value_t = 90.0, allow_hyphen_values = true, value_parser = duration_s)]
@@ -225,8 +250,8 @@ pub enum Command {
         case: CaseArgs,
         #[command(flatten)]
         study: StudyArgs,
-        /// Peak of the steering-wheel pulse (deg); D3 assumption: 30.
-        #[arg(long, default_value_t = 30.0, allow_hyphen_values = true, value_parser = args::positive_f64)]
+        /// Peak of the steering-wheel pulse (deg), at most 1000; D3 assumption: 30.
+        #[arg(long, default_value_t = 30.0, allow_hyphen_values = true, value_parser = steer_peak)]
         pulse_deg: f64,
     },
     /// One run into a record (CSV + JSON sidecar, docs/records.md, sign convention
@@ -924,9 +949,17 @@ fn plot_yaw(path: &Path, rec: &RunRecord, spec: &YawSpec, seed: u64) -> CmdResul
     Ok(())
 }
 
-/// Parse a `--steer` number.
-fn steer_number(what: &str, s: &str) -> Result<f64, String> {
-    args::finite_f64(s).map_err(|e| format!("--steer {what} `{}`: {e}", s.trim()))
+/// Parse a `--steer` number whose magnitude is at most `max`.
+fn steer_number(what: &str, s: &str, max: f64) -> Result<f64, String> {
+    let v = args::finite_f64(s).map_err(|e| format!("--steer {what} `{}`: {e}", s.trim()))?;
+    if v.abs() <= max {
+        Ok(v)
+    } else {
+        Err(format!(
+            "--steer {what} `{}`: must be at most {max} in magnitude",
+            s.trim()
+        ))
+    }
 }
 
 /// Parse `--steer`: `pulse:DEG,DUR_S,START_S`, `ramp:DEG_PER_S,START_S[,LIMIT_DEG]`, `none`.
@@ -944,18 +977,29 @@ fn steer_input(spec: &str) -> Result<SteerInput, String> {
     let parts: Vec<&str> = rest.split(',').collect();
     let input = match (kind, parts.as_slice()) {
         ("pulse", [a, d, t0]) => SteerInput::pulse_deg(
-            steer_number("pulse peak", a)?,
-            steer_number("pulse duration", d)?,
-            steer_number("pulse start", t0)?,
+            steer_number("pulse peak", a, MAX_STEER_DEG)?,
+            steer_number("pulse duration", d, MAX_DURATION_S)?,
+            steer_number("pulse start", t0, MAX_DURATION_S)?,
         ),
-        ("ramp", [r, t0, rest @ ..]) if rest.len() <= 1 => SteerInput::Ramp {
-            rate_rad_s: steer_number("ramp rate", r)?.to_radians(),
-            start_s: steer_number("ramp start", t0)?,
-            limit_rad: match rest {
-                [l] => steer_number("ramp limit", l)?.abs().to_radians(),
-                _ => RAMP_HOLD_DEG.to_radians(),
-            },
-        },
+        ("ramp", [r, t0, rest @ ..]) if rest.len() <= 1 => {
+            let rate = steer_number("ramp rate", r, RAMP_RATE_DEG_S.1)?;
+            if rate.abs() < RAMP_RATE_DEG_S.0 {
+                return Err(format!(
+                    "--steer ramp rate `{r}`: must be at least {} deg/s in magnitude",
+                    RAMP_RATE_DEG_S.0
+                ));
+            }
+            SteerInput::Ramp {
+                rate_rad_s: rate.to_radians(),
+                start_s: steer_number("ramp start", t0, MAX_DURATION_S)?,
+                limit_rad: match rest {
+                    [l] => steer_number("ramp limit", l, MAX_STEER_DEG)?
+                        .abs()
+                        .to_radians(),
+                    _ => MAX_STEER_DEG.to_radians(),
+                },
+            }
+        }
         _ => return Err(usage()),
     };
     input.validate().map_err(|e| format!("--steer: {e}"))?;
@@ -1125,7 +1169,7 @@ mod tests {
             } => {
                 assert!((rate_rad_s - 5f64.to_radians()).abs() < 1e-15);
                 assert_eq!(start_s, 1.0);
-                assert!((limit_rad - RAMP_HOLD_DEG.to_radians()).abs() < 1e-12);
+                assert!((limit_rad - MAX_STEER_DEG.to_radians()).abs() < 1e-12);
             }
             other => panic!("{other:?}"),
         }
@@ -1136,6 +1180,10 @@ mod tests {
             "ramp:5",
             "sine:1",
             "step:3,1",
+            "pulse:1001,0.2,1",
+            "ramp:1e-320,1",
+            "ramp:-2000,1",
+            "ramp:5,1,1e6",
         ] {
             assert!(steer_input(bad).unwrap_err().contains("--steer"), "{bad}");
         }
@@ -1152,5 +1200,9 @@ mod tests {
         assert!(seed_count("1e3").is_err());
         assert!(duration_s("600").is_ok());
         assert!(duration_s("600.5").is_err());
+        assert!(ramp_rate("0.01").is_ok() && ramp_rate("1000").is_ok());
+        assert!(ramp_rate("0.009").is_err() && ramp_rate("1000.1").is_err());
+        assert!(steer_peak("1000").is_ok() && steer_peak("1000.1").is_err());
+        assert!(steer_input("ramp:-5,1").is_ok(), "a left-hand ramp");
     }
 }
