@@ -34,6 +34,8 @@ pub(super) fn simulate_cmd(
     guard.output("-o", output, OutputKind::Record)?;
     let (p, axle) = vehicle_params(case)?;
     let (terrain, seeds) = terrain_and_seeds(case, None, seed, None)?;
+    // one run: the given seed, else the first of the default list (1)
+    let seeds = &seeds[..1];
     let speed_kmh = case.speed_kmh.unwrap_or(20.0);
     let speed = speed_kmh / 3.6;
     let options = VehicleOptions {
@@ -71,7 +73,7 @@ pub(super) fn simulate_cmd(
         "speed_m_s": speed,
         "manoeuvre": steer_label(&input),
         "steer": input,
-        "terrain": terrain_json(&terrain, &seeds),
+        "terrain": terrain_json(&terrain, seeds),
         "axes": "cab_accel_*, front_pitch_accel: the front unit's body axes (x forward, y left, z up), kinematic acceleration without gravity at the a_wz point; front_pitch_accel right-handed about y (nose down positive); rear_lateral_accel left positive; rear_ltr = (F_zL - F_zR)/(F_zL + F_zR) of the rear axle; hps_travel compression positive",
         "params": p,
     });
