@@ -200,16 +200,12 @@ fn declare_inputs(case: &CaseArgs, guard: &mut OutputGuard) -> Result<(), String
 }
 
 /// The vehicle of `--params` (or nominal) with the strut of `--hps`, validated; and its
-/// front axle.
+/// front axle. A strut file replaces the set's strut before the set is checked.
 fn vehicle_params(case: &CaseArgs) -> Result<(VehicleParams, FrontAxle), String> {
     let mut p: VehicleParams = match &case.params {
         Some(path) => super::params::read(path)?,
         None => VehicleParams::nominal(),
     };
-    p.validate().map_err(|e| match &case.params {
-        Some(path) => format!("{}: {e}", path.display()),
-        None => e.to_string(),
-    })?;
     let (axle, file) = front_axle(&case.hps);
     if let Some(file) = file {
         let strut: StrutParams = super::params::read(file)
@@ -219,6 +215,10 @@ fn vehicle_params(case: &CaseArgs) -> Result<(VehicleParams, FrontAxle), String>
             .map_err(|e| format!("--hps {}: {e}", file.display()))?;
         p.hps = strut;
     }
+    p.validate().map_err(|e| match &case.params {
+        Some(path) => format!("{}: {e}", path.display()),
+        None => e.to_string(),
+    })?;
     Ok((p, axle))
 }
 
