@@ -51,6 +51,9 @@ enum Command {
     /// Design studies on the 3-D vehicle (chapter 6): `hps-sensitivity` (Table 6.4).
     #[command(subcommand)]
     Study(cmd::study::Command),
+    /// The 3-D articulated vehicle of chapter 6: `ride`, `roll`, `yaw` (design runs over terrain seeds), `simulate`.
+    #[command(subcommand)]
+    Vehicle(cmd::vehicle::Command),
     /// Parameter sets as JSON: `dump` the nominal set, `check` a file.
     #[command(subcommand)]
     Params(cmd::params::Command),
@@ -103,6 +106,7 @@ fn main() -> ExitCode {
         Command::Yaw(c) => cmd::yaw::run(c),
         Command::Roll(c) => cmd::roll::run(c),
         Command::Study(c) => cmd::study::run(c),
+        Command::Vehicle(c) => cmd::vehicle::run(c),
         Command::Params(c) => cmd::params::run(c),
         Command::Optimize(c) => cmd::optimize::run(c),
     };

@@ -49,7 +49,8 @@ fn a_wz_is_converged_in_the_integrator_tolerance() {
         .unwrap();
         ride_measures(&rec, RUN_IN_M / speed, FrontAxle::Rigid).unwrap()
     };
-    let (fast, fine) = (run(1e-4, 0.03), run(1e-7, 0.005));
+    let d = RunOptions::default();
+    let (fast, fine) = (run(d.rtol, d.max_step_s), run(1e-7, 0.005));
     assert!(
         (fast.a_wz_m_s2 / fine.a_wz_m_s2 - 1.0).abs() < 0.01,
         "{fast:?} vs {fine:?}"

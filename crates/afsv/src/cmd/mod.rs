@@ -14,6 +14,7 @@ pub mod roll;
 pub mod study;
 pub mod terrain;
 pub mod tire;
+pub mod vehicle;
 pub mod yaw;
 
 /// Result of a subcommand: errors are printed as one line by `main`.

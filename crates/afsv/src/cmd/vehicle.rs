@@ -1,0 +1,671 @@
+//! `afsv vehicle`: the integrated 3-D articulated vehicle of Chapter 6 (crate `vehicle-3d`):
+//! the design runs of section 6.4 over terrain seeds with their measures as mean ± SD
+//! (`ride` D1, `roll` D2, `yaw` D3), and one recorded run (`simulate`) in the record format
+//! of docs/records.md. Parses, calls, prints.
+
+mod options;
+mod plots;
+mod simulate;
+
+use super::{args, CmdResult};
+use afsv::output::{OutputGuard, OutputKind};
+use afsv::progress::Progress;
+use hps_emulsion::StrutParams;
+use options::{
+    duration_s, ramp_rate, seed_count, speed_kmh, steer_peak, terrain_arg, TerrainArg,
+    MAX_DURATION_S,
+};
+use perf_measures::iso2631::{health_guidance_zone, HgczRelation};
+use plots::{plot_ride, plot_roll, plot_yaw, ride_psd, RidePsd};
+use rayon::prelude::*;
+use serde_json::{json, Value};
+use simulate::simulate_cmd;
+use std::io::IsTerminal;
+use std::path::{Path, PathBuf};
+use vehicle_3d::scenarios::{
+    self, RideMeasures, RideSpec, RollMeasures, RollSpec, Spread, TerrainSpec, YawMeasures,
+    YawSpec, RUN_IN_M,
+};
+use vehicle_3d::{FrontAxle, Load, RunRecord, VehicleParams};
+
+/// Why a rigid front axle has no strut travel.
+const NO_STRUT: &str = "rigid front axle (--hps off): no strut";
+
+/// Exposure duration of the ISO 2631-1 health guidance caution zone verdict (h).
+const HGCZ_HOURS: f64 = 8.0;
+
+/// The vehicle and where it runs, shared by every subcommand.
+#[derive(clap::Args, Debug)]
+pub struct CaseArgs {
+    /// Load case (Table 6.1): `loaded` (with the payload) or `unloaded`.
+    #[arg(long, default_value = "loaded")]
+    pub load: Load,
+    /// Target speed of the drive (km/h), in (0, 80]. Default: the scenario's (ride 20,
+    /// roll and yaw 50, simulate 20).
+    #[arg(long, allow_hyphen_values = true, value_parser = speed_kmh)]
+    pub speed_kmh: Option<f64>,
+    /// Ground: `smooth` (or `flat`), or the two-track terrain `class:C,mc:0.3[,seed:N]`
+    /// (ISO 8608 class A-H, coherence cut-off m_c in cycles/m, Eqs 6.4-6.5). Default:
+    /// `class:E,mc:0.3` for ride and roll, smooth for yaw and simulate.
+    #[arg(long, allow_hyphen_values = true, value_parser = terrain_arg)]
+    pub terrain: Option<TerrainArg>,
+    /// Front axle: `off` (rigid, the prototype), `nominal` (the Table 6.3 HPS strut of the
+    /// parameter set) or a strut parameter file (JSON, as written by `afsv params dump
+    /// strut`) replacing the set's strut.
+    #[arg(long, default_value = "off")]
+    pub hps: String,
+    /// Vehicle parameter file (JSON, as written by `afsv params dump vehicle-3d`), validated.
+    #[arg(long)]
+    pub params: Option<PathBuf>,
+}
+
+/// Seeds, output format and plot of the scenario subcommands.
+#[derive(clap::Args, Debug)]
+pub struct StudyArgs {
+    /// Run the terrain seeds 1..=N (1 to 1000) and report mean ± SD (default 10 on a
+    /// terrain).
+    #[arg(long, value_parser = seed_count, conflicts_with = "seed")]
+    pub seeds: Option<usize>,
+    /// Run this one terrain seed.
+    #[arg(long)]
+    pub seed: Option<u64>,
+    /// Print JSON even on a terminal (JSON is the default when stdout is not a terminal).
+    #[arg(long)]
+    pub json: bool,
+    /// SVG plot of the run (the first seed's for roll and yaw, the seed-mean PSDs for ride).
+    #[arg(long)]
+    pub plot: Option<PathBuf>,
+    /// Replace an existing plot afsv did not write.
+    #[arg(long)]
+    pub force: bool,
+}
+
+/// `afsv vehicle` subcommands.
+#[derive(clap::Subcommand, Debug)]
+pub enum Command {
+    /// D1 ride: straight run over the terrain after a 20 m run-in; a_wz (W_k, ISO 2631-1)
+    /// and its 8 h health guidance caution zone verdict, unweighted RMS, HPS travel, the
+    /// dominant vertical and pitch frequencies, as mean ± SD over the seeds.
+    Ride {
+        #[command(flatten)]
+        case: CaseArgs,
+        #[command(flatten)]
+        study: StudyArgs,
+        /// Length of the measured window after the run-in (m), 10 to 5000; D1: 100.
+        #[arg(long, default_value_t = 100.0, allow_hyphen_values = true, value_parser = args::positive_f64)]
+        length_m: f64,
+    },
+    /// D2 roll: ramp steer to the rear unit's absolute rollover; SP-DRT (RMS |a_y| over the
+    /// sustained period of |LTR| = 1), the sustained period, rollover time, peak a_y.
+    Roll {
+        #[command(flatten)]
+        case: CaseArgs,
+        #[command(flatten)]
+        study: StudyArgs,
+        /// Steering-wheel rate of the ramp from t = 1 s (deg/s), 0.01 to 1000; D2: 5.
+        #[arg(long, default_value_t = 5.0, allow_hyphen_values = true, value_parser = ramp_rate)]
+        ramp_deg_s: f64,
+        /// Longest run if the rear unit does not roll over (s), at most 600.
+        #[arg(long, default_value_t = 90.0, allow_hyphen_values = true, value_parser = duration_s)]
+        duration: f64,
+    },
+    /// D3 yaw: a 0.2 s half-sine steering-wheel pulse at t = 1 s; omega_z and zeta of the
+    /// single-DOF fit to the articulation's free decay, peak articulation.
+    Yaw {
+        #[command(flatten)]
+        case: CaseArgs,
+        #[command(flatten)]
+        study: StudyArgs,
+        /// Peak of the steering-wheel pulse (deg), at most 1000; D3 assumption: 30.
+        #[arg(long, default_value_t = 30.0, allow_hyphen_values = true, value_parser = steer_peak)]
+        pulse_deg: f64,
+    },
+    /// One run into a record (CSV + JSON sidecar, docs/records.md, sign convention
+    /// afsv-v1): the steering channels of a vehicle steering test plus the ride channels.
+    Simulate {
+        #[command(flatten)]
+        case: CaseArgs,
+        /// Terrain seed (with a terrain; default 1).
+        #[arg(long)]
+        seed: Option<u64>,
+        /// Steering-wheel input: `pulse:DEG,DUR_S,START_S` (half sine),
+        /// `ramp:DEG_PER_S,START_S[,LIMIT_DEG]` (held at LIMIT_DEG, default 1000) or `none`.
+        #[arg(long, default_value = "none")]
+        steer: String,
+        /// Simulated time (s), at most 600.
+        #[arg(long, default_value_t = 10.0, allow_hyphen_values = true, value_parser = duration_s)]
+        duration: f64,
+        /// Output sample interval (s).
+        #[arg(long, default_value_t = 0.005, allow_hyphen_values = true, value_parser = args::positive_f64)]
+        dt: f64,
+        /// Output CSV file (the sidecar goes beside it with extension .json). It must not
+        /// be an input; an existing file afsv did not write needs --force.
+        #[arg(short = 'o', long)]
+        output: PathBuf,
+        /// Replace an existing output file that afsv did not write.
+        #[arg(long)]
+        force: bool,
+    },
+}
+
+/// Run an `afsv vehicle` subcommand.
+pub fn run(cmd: Command) -> CmdResult {
+    match cmd {
+        Command::Ride {
+            case,
+            study,
+            length_m,
+        } => ride_cmd(&case, &study, length_m),
+        Command::Roll {
+            case,
+            study,
+            ramp_deg_s,
+            duration,
+        } => roll_cmd(&case, &study, ramp_deg_s, duration),
+        Command::Yaw {
+            case,
+            study,
+            pulse_deg,
+        } => yaw_cmd(&case, &study, pulse_deg),
+        Command::Simulate {
+            case,
+            seed,
+            steer,
+            duration,
+            dt,
+            output,
+            force,
+        } => simulate_cmd(&case, seed, &steer, duration, dt, &output, force),
+    }
+}
+
+/// The front axle and the strut file of `--hps`, if it names one.
+fn front_axle(hps: &str) -> (FrontAxle, Option<&Path>) {
+    match hps {
+        "off" => (FrontAxle::Rigid, None),
+        "nominal" => (FrontAxle::Suspended, None),
+        file => (FrontAxle::Suspended, Some(Path::new(file))),
+    }
+}
+
+/// Declare the input files of `case` to `guard`.
+fn declare_inputs(case: &CaseArgs, guard: &mut OutputGuard) -> Result<(), String> {
+    if let Some(p) = &case.params {
+        guard.input("--params", p)?;
+    }
+    if let (_, Some(file)) = front_axle(&case.hps) {
+        guard.input("--hps", file)?;
+    }
+    Ok(())
+}
+
+/// The vehicle of `--params` (or nominal) with the strut of `--hps`, validated; and its
+/// front axle. A strut file replaces the set's strut before the set is checked.
+fn vehicle_params(case: &CaseArgs) -> Result<(VehicleParams, FrontAxle), String> {
+    let mut p: VehicleParams = match &case.params {
+        Some(path) => super::params::read(path)?,
+        None => VehicleParams::nominal(),
+    };
+    let (axle, file) = front_axle(&case.hps);
+    if let Some(file) = file {
+        let strut: StrutParams = super::params::read(file)
+            .map_err(|e| format!("--hps: {e} (expected off, nominal or a strut file)"))?;
+        strut
+            .validate()
+            .map_err(|e| format!("--hps {}: {e}", file.display()))?;
+        p.hps = strut;
+    }
+    p.validate().map_err(|e| match &case.params {
+        Some(path) => format!("{}: {e}", path.display()),
+        None => e.to_string(),
+    })?;
+    Ok((p, axle))
+}
+
+/// The terrain of `case` (`default` when `--terrain` is not given) and the seeds to run:
+/// one run on smooth ground (its seed, 0, is not used), else `--seed`, the terrain's
+/// `seed:N`, or 1..=`--seeds` (default 10).
+fn terrain_and_seeds(
+    case: &CaseArgs,
+    seeds: Option<usize>,
+    seed: Option<u64>,
+    default: Option<TerrainSpec>,
+) -> Result<(Option<TerrainSpec>, Vec<u64>), String> {
+    let t = case.terrain.unwrap_or(TerrainArg {
+        spec: default,
+        seed: None,
+    });
+    let Some(spec) = t.spec else {
+        if seeds.is_some() || seed.is_some() {
+            return Err(
+                "--seed/--seeds: smooth ground has no terrain seeds (give --terrain class:...)"
+                    .into(),
+            );
+        }
+        return Ok((None, vec![0]));
+    };
+    let list = match (t.seed, seed, seeds) {
+        (Some(_), Some(_), _) | (Some(_), _, Some(_)) => {
+            return Err("--terrain seed:N and --seed/--seeds both give the seeds; give one".into())
+        }
+        (Some(s), None, None) | (None, Some(s), _) => vec![s],
+        (None, None, n) => (1..=n.unwrap_or(10) as u64).collect(),
+    };
+    Ok((Some(spec), list))
+}
+
+fn terrain_json(spec: &Option<TerrainSpec>, seeds: &[u64]) -> Value {
+    match spec {
+        None => json!({ "kind": "smooth ground" }),
+        Some(t) => json!({
+            "kind": "two-track terrain (Eqs 6.4-6.5)",
+            "class": t.class.to_string(),
+            "m_c_cycles_per_m": t.m_c,
+            "band_cycles_per_m": [t.band.0, t.band.1],
+            "seeds": seeds,
+        }),
+    }
+}
+
+/// The per-seed measures; on smooth ground the seed is null with its reason; a null measure
+/// gets `null_reason`.
+fn per_seed<T: serde::Serialize>(
+    terrain: &Option<TerrainSpec>,
+    seeds: &[u64],
+    measures: &[T],
+    null_reason: &str,
+) -> Value {
+    let rows: Vec<Value> = seeds
+        .iter()
+        .zip(measures)
+        .map(|(s, m)| {
+            let m = afsv::output::explain_nulls(json!(m), null_reason);
+            match terrain {
+                Some(_) => json!({ "seed": s, "measures": m }),
+                None => json!({ "seed": null, "seed_reason": "smooth ground", "measures": m }),
+            }
+        })
+        .collect();
+    Value::Array(rows)
+}
+
+fn axle_name(axle: FrontAxle) -> &'static str {
+    match axle {
+        FrontAxle::Rigid => "rigid (no HPS)",
+        FrontAxle::Suspended => "front-axle HPS",
+    }
+}
+
+/// Run `one` for every seed in parallel, with progress when there are several; the
+/// results in seed order; an error names its seed on a terrain.
+fn over_seeds<T: Send>(
+    what: &str,
+    terrain: &Option<TerrainSpec>,
+    seeds: &[u64],
+    one: impl Fn(usize, u64) -> Result<T, String> + Sync,
+) -> Result<Vec<T>, String> {
+    let progress = (seeds.len() > 1).then(|| Progress::new(what, "runs", Some(seeds.len())));
+    let out = seeds
+        .par_iter()
+        .enumerate()
+        .map(|(i, &s)| {
+            let r = one(i, s).map_err(|e| match terrain {
+                Some(_) => format!("seed {s}: {e}"),
+                None => e,
+            });
+            if let Some(p) = &progress {
+                p.step(&format!("seed {s}"));
+            }
+            r
+        })
+        .collect();
+    if let Some(p) = &progress {
+        p.finish();
+    }
+    out
+}
+
+/// Mean ± SD of `f` over `values`.
+fn spread<T>(values: &[T], f: impl Fn(&T) -> f64) -> Result<Spread, String> {
+    let v: Vec<f64> = values.iter().map(f).collect();
+    Spread::of(&v).map_err(|e| e.to_string())
+}
+
+fn spread_text(label: &str, s: &Spread, unit: &str) -> String {
+    if s.n > 1 {
+        format!("{label:<32} {:>9.3} ± {:<7.3} {unit}\n", s.mean, s.sd)
+    } else {
+        format!("{label:<32} {:>9.3}           {unit}\n", s.mean)
+    }
+}
+
+fn header_text(title: &str, load: Load, axle: FrontAxle, speed: f64, seeds: usize) -> String {
+    let runs = if seeds > 1 {
+        format!(", mean ± SD over {seeds} seeds")
+    } else {
+        String::new()
+    };
+    format!("{title}: {load}, {}, {speed} km/h{runs}\n", axle_name(axle))
+}
+
+fn print_result(json_out: bool, value: &Value, text: &str) -> CmdResult {
+    if json_out || !std::io::stdout().is_terminal() {
+        afsv::output::print_json(value)?;
+    } else {
+        print!("{text}");
+    }
+    Ok(())
+}
+
+/// Common start of the scenario commands: guard the inputs and the plot, read the vehicle.
+fn prepare(case: &CaseArgs, study: &StudyArgs) -> Result<(VehicleParams, FrontAxle), String> {
+    let mut guard = OutputGuard::new(study.force);
+    declare_inputs(case, &mut guard)?;
+    if let Some(plot) = &study.plot {
+        guard.output("--plot", plot, OutputKind::Svg)?;
+    }
+    vehicle_params(case)
+}
+
+fn ride_cmd(case: &CaseArgs, study: &StudyArgs, length_m: f64) -> CmdResult {
+    if !(10.0..=5000.0).contains(&length_m) {
+        return Err(format!("--length-m {}: must be 10 to 5000 m", args::show(length_m)).into());
+    }
+    let (p, axle) = prepare(case, study)?;
+    let (terrain, seeds) =
+        terrain_and_seeds(case, study.seeds, study.seed, Some(TerrainSpec::default()))?;
+    let Some(terrain) = terrain else {
+        return Err("--terrain smooth: the ride run needs a terrain (class:...)".into());
+    };
+    let speed = case.speed_kmh.unwrap_or(20.0);
+    let sim_s = (RUN_IN_M + length_m) / (speed / 3.6);
+    if sim_s > MAX_DURATION_S {
+        return Err(format!(
+            "--length-m {}: the run-in and window take {} s at {speed} km/h, more than {MAX_DURATION_S} s",
+            args::show(length_m),
+            args::show(sim_s)
+        )
+        .into());
+    }
+    let spec = RideSpec {
+        speed_kmh: speed,
+        length_m,
+        terrain,
+        ..RideSpec::d1(case.load, axle)
+    };
+    let t_window = RUN_IN_M / (speed / 3.6);
+    let want_psd = study.plot.is_some();
+    let runs: Vec<(RideMeasures, Option<RidePsd>)> =
+        over_seeds("afsv vehicle ride", &Some(terrain), &seeds, |_, s| {
+            let (rec, m) = scenarios::ride(&p, &spec, s).map_err(|e| e.to_string())?;
+            let psd = if want_psd {
+                Some(ride_psd(&rec, t_window)?)
+            } else {
+                None
+            };
+            Ok((m, psd))
+        })?;
+    let measures: Vec<RideMeasures> = runs.iter().map(|r| r.0).collect();
+    let a_wz = spread(&measures, |m| m.a_wz_m_s2)?;
+    let a_z = spread(&measures, |m| m.a_z_rms_m_s2)?;
+    let vertical = spread(&measures, |m| m.vertical_peak_hz)?;
+    let pitch = spread(&measures, |m| m.pitch_peak_hz)?;
+    let travel = match axle {
+        FrontAxle::Rigid => None,
+        FrontAxle::Suspended => Some(spread(&measures, |m| {
+            m.strut_travel_p2p_m.unwrap_or(f64::NAN)
+        })?),
+    };
+    let zone = health_guidance_zone(HGCZ_HOURS, HgczRelation::SqrtTime)?;
+    let verdict = zone.classify(a_wz.mean);
+    if let Some(path) = &study.plot {
+        let psds: Vec<RidePsd> = runs.into_iter().filter_map(|r| r.1).collect();
+        plot_ride(path, &psds, &spec, &seeds)?;
+    }
+    let mut v = json!({
+        "scenario": "ride (D1, section 6.4)",
+        "load": case.load,
+        "front_axle": axle,
+        "speed_kmh": speed,
+        "run_in_m": RUN_IN_M,
+        "length_m": length_m,
+        "terrain": terrain_json(&Some(terrain), &seeds),
+        "a_wz_m_s2": a_wz,
+        "a_z_rms_m_s2": a_z,
+        "strut_travel_p2p_m": travel,
+        "vertical_peak_hz": vertical,
+        "pitch_peak_hz": pitch,
+        "hgcz": {
+            "duration_h": HGCZ_HOURS,
+            "relation": zone.relation,
+            "lower_m_s2": zone.lower_m_s2,
+            "upper_m_s2": zone.upper_m_s2,
+            "a_wz_mean_zone": verdict,
+        },
+        "per_seed": per_seed(&Some(terrain), &seeds, &measures, NO_STRUT),
+    });
+    if travel.is_none() {
+        v["strut_travel_p2p_m_reason"] = json!(NO_STRUT);
+    }
+    if let Some(plot) = &study.plot {
+        v["plot"] = json!(plot);
+    }
+    let verdict_text = match verdict {
+        perf_measures::iso2631::HgczZone::Below => "below the zone",
+        perf_measures::iso2631::HgczZone::Within => "within the zone (caution)",
+        perf_measures::iso2631::HgczZone::Above => "above the zone (health risk likely)",
+    };
+    let mut text = header_text("ride D1", case.load, axle, speed, seeds.len());
+    text += &format!(
+        "terrain class {}, m_c {} cycles/m, {length_m} m after a {RUN_IN_M} m run-in\n",
+        terrain.class, terrain.m_c
+    );
+    text += &spread_text("a_wz (W_k weighted RMS)", &a_wz, "m/s²");
+    text += &format!(
+        "{:<32} {verdict_text} ({:.2}-{:.2} m/s² at {HGCZ_HOURS} h)\n",
+        "ISO 2631-1 HGCZ verdict", zone.lower_m_s2, zone.upper_m_s2
+    );
+    text += &spread_text("vertical acceleration RMS", &a_z, "m/s²");
+    match &travel {
+        Some(t) => text += &spread_text("HPS travel peak-to-peak d_s", t, "m"),
+        None => {
+            text += &format!(
+                "{:<32} n/a (rigid front axle)\n",
+                "HPS travel peak-to-peak d_s"
+            )
+        }
+    }
+    text += &spread_text("dominant vertical frequency", &vertical, "Hz");
+    text += &spread_text("dominant pitch frequency", &pitch, "Hz");
+    print_result(study.json, &v, &text)
+}
+
+fn roll_cmd(case: &CaseArgs, study: &StudyArgs, ramp_deg_s: f64, duration: f64) -> CmdResult {
+    let (p, axle) = prepare(case, study)?;
+    let (terrain, seeds) =
+        terrain_and_seeds(case, study.seeds, study.seed, Some(TerrainSpec::default()))?;
+    let speed = case.speed_kmh.unwrap_or(50.0);
+    let spec = RollSpec {
+        load: case.load,
+        speed_kmh: speed,
+        ramp_deg_s,
+        t_end_s: duration,
+        terrain,
+        ..RollSpec::d2(axle)
+    };
+    let want_record = study.plot.is_some();
+    let runs: Vec<(RollMeasures, Option<RunRecord>)> =
+        over_seeds("afsv vehicle roll", &terrain, &seeds, |i, s| {
+            let (rec, m) = scenarios::roll(&p, &spec, s).map_err(|e| e.to_string())?;
+            Ok((m, (want_record && i == 0).then_some(rec)))
+        })?;
+    let measures: Vec<RollMeasures> = runs.iter().map(|r| r.0).collect();
+    let sp_drt = spread(&measures, |m| m.sp_drt_m_s2)?;
+    let period = spread(&measures, |m| m.sustained_s.1 - m.sustained_s.0)?;
+    let peak = spread(&measures, |m| m.peak_ay_m_s2)?;
+    let rolled: Vec<f64> = measures.iter().filter_map(|m| m.rollover_s).collect();
+    let rollover = if rolled.is_empty() {
+        None
+    } else {
+        Some(Spread::of(&rolled)?)
+    };
+    if let (Some(path), Some((m, Some(rec)))) = (&study.plot, runs.first()) {
+        plot_roll(path, rec, m, &spec, seeds[0])?;
+    }
+    let mut v = json!({
+        "scenario": "roll (D2, section 6.4)",
+        "load": case.load,
+        "front_axle": axle,
+        "speed_kmh": speed,
+        "ramp_deg_s": ramp_deg_s,
+        "ramp_start_s": spec.ramp_start_s,
+        "terrain": terrain_json(&terrain, &seeds),
+        "sp_drt_m_s2": sp_drt,
+        "sustained_period_s": period,
+        "peak_ay_m_s2": peak,
+        "rollover_s": rollover,
+        "rolled_over": rolled.len(),
+        "per_seed": per_seed(&terrain, &seeds, &measures, "no absolute rollover of the rear unit in this run"),
+    });
+    if rollover.is_none() {
+        v["rollover_s_reason"] = json!("no run reached the rear unit's absolute rollover");
+    }
+    if let Some(plot) = &study.plot {
+        v["plot"] = json!(plot);
+    }
+    let mut text = header_text("roll D2", case.load, axle, speed, seeds.len());
+    text += &format!(
+        "ramp steer {ramp_deg_s} deg/s from t = {} s\n",
+        spec.ramp_start_s
+    );
+    text += &spread_text("SP-DRT of the rear unit", &sp_drt, "m/s²");
+    text += &spread_text("sustained period ΔT", &period, "s");
+    text += &spread_text("peak |a_y| of the rear unit", &peak, "m/s²");
+    match &rollover {
+        Some(r) => {
+            text += &spread_text("absolute rollover at", r, "s");
+            text += &format!(
+                "{:<32} {:>9}\n",
+                "runs that rolled over",
+                format!("{}/{}", rolled.len(), seeds.len())
+            );
+        }
+        None => {
+            text += &format!(
+                "{:<32} n/a (no rollover within {duration} s)\n",
+                "absolute rollover at"
+            )
+        }
+    }
+    print_result(study.json, &v, &text)
+}
+
+fn yaw_cmd(case: &CaseArgs, study: &StudyArgs, pulse_deg: f64) -> CmdResult {
+    let (p, axle) = prepare(case, study)?;
+    let (terrain, seeds) = terrain_and_seeds(case, study.seeds, study.seed, None)?;
+    let speed = case.speed_kmh.unwrap_or(50.0);
+    let spec = YawSpec {
+        load: case.load,
+        speed_kmh: speed,
+        pulse_deg,
+        terrain,
+        ..YawSpec::d3(axle)
+    };
+    let want_record = study.plot.is_some();
+    let runs: Vec<(YawMeasures, Option<RunRecord>)> =
+        over_seeds("afsv vehicle yaw", &terrain, &seeds, |i, s| {
+            let (rec, m) = scenarios::yaw(&p, &spec, s).map_err(|e| e.to_string())?;
+            Ok((m, (want_record && i == 0).then_some(rec)))
+        })?;
+    let measures: Vec<YawMeasures> = runs.iter().map(|r| r.0).collect();
+    let omega = spread(&measures, |m| m.omega_z_hz)?;
+    let damped = spread(&measures, |m| m.damped_frequency_hz)?;
+    let zeta = spread(&measures, |m| m.damping_ratio)?;
+    let peak = spread(&measures, |m| m.peak_articulation_deg)?;
+    if let (Some(path), Some((_, Some(rec)))) = (&study.plot, runs.first()) {
+        plot_yaw(path, rec, &spec, seeds[0])?;
+    }
+    let mut v = json!({
+        "scenario": "yaw (D3, section 6.4)",
+        "load": case.load,
+        "front_axle": axle,
+        "speed_kmh": speed,
+        "pulse_deg": pulse_deg,
+        "pulse_s": spec.pulse_s,
+        "pulse_start_s": spec.pulse_start_s,
+        "fit_window_s": spec.fit_window_s,
+        "terrain": terrain_json(&terrain, &seeds),
+        "omega_z_hz": omega,
+        "damped_frequency_hz": damped,
+        "damping_ratio": zeta,
+        "peak_articulation_deg": peak,
+        "per_seed": per_seed(&terrain, &seeds, &measures, "not computed"),
+    });
+    if let Some(plot) = &study.plot {
+        v["plot"] = json!(plot);
+    }
+    let mut text = header_text("yaw D3", case.load, axle, speed, seeds.len());
+    text += &format!(
+        "steering-wheel pulse {pulse_deg} deg, {} s, at t = {} s\n",
+        spec.pulse_s, spec.pulse_start_s
+    );
+    text += &spread_text("omega_z (natural frequency)", &omega, "Hz");
+    text += &spread_text("damped frequency", &damped, "Hz");
+    text += &spread_text("damping ratio zeta", &zeta, "-");
+    text += &spread_text("peak articulation", &peak, "deg");
+    print_result(study.json, &v, &text)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn case(terrain: Option<&str>) -> CaseArgs {
+        CaseArgs {
+            load: Load::Loaded,
+            speed_kmh: None,
+            terrain: terrain.map(|t| terrain_arg(t).unwrap()),
+            hps: "off".into(),
+            params: None,
+        }
+    }
+
+    #[test]
+    fn seeds_come_from_one_place() {
+        let d = Some(TerrainSpec::default());
+        let seeds = |c: &CaseArgs, n, s, d| terrain_and_seeds(c, n, s, d).map(|r| r.1);
+        assert_eq!(
+            seeds(&case(None), None, None, d).unwrap(),
+            (1..=10).collect::<Vec<_>>()
+        );
+        assert_eq!(seeds(&case(None), Some(3), None, d).unwrap(), vec![1, 2, 3]);
+        assert_eq!(seeds(&case(None), None, Some(7), d).unwrap(), vec![7]);
+        assert_eq!(
+            seeds(&case(Some("class:C,seed:4")), None, None, None).unwrap(),
+            vec![4]
+        );
+        assert!(seeds(&case(Some("class:C,seed:4")), None, Some(4), d).is_err());
+        assert!(seeds(&case(Some("class:C,seed:4")), Some(2), None, d).is_err());
+        // smooth ground: one run, and seed options are refused
+        let (t, s) = terrain_and_seeds(&case(None), None, None, None).unwrap();
+        assert_eq!((t, s.len()), (None, 1));
+        assert!(seeds(&case(Some("smooth")), Some(2), None, d).is_err());
+        assert!(seeds(&case(None), None, Some(1), None).is_err());
+        // an explicit terrain replaces the scenario's default
+        let (t, _) = terrain_and_seeds(&case(Some("class:B")), None, None, d).unwrap();
+        assert_eq!(t.unwrap().class, terrain_psd::IsoClass::B);
+    }
+
+    #[test]
+    fn text_rows_show_the_spread_only_over_several_seeds() {
+        let two = Spread::of(&[1.0, 3.0]).unwrap();
+        let row = spread_text("a_wz", &two, "m/s²");
+        assert!(
+            row.contains("2.000 ± 1.414") && row.ends_with("m/s²\n"),
+            "{row}"
+        );
+        let one = Spread::of(&[1.25]).unwrap();
+        let row = spread_text("a_wz", &one, "m/s²");
+        assert!(row.contains("1.250") && !row.contains('±'), "{row}");
+    }
+}

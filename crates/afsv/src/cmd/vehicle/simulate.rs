@@ -1,0 +1,128 @@
+//! `afsv vehicle simulate`: one run of the vehicle into a record (CSV + JSON sidecar,
+//! docs/records.md) in the afsv-v1 sign convention, through the output guard.
+
+use super::super::args;
+use super::options::{steer_input, steer_label};
+use super::CmdResult;
+use super::{declare_inputs, terrain_and_seeds, terrain_json, vehicle_params, CaseArgs};
+use afsv::output::{OutputGuard, OutputKind};
+use afsv_records::Record;
+use serde_json::json;
+use std::path::Path;
+use vehicle_3d::model::TIRE_NAMES;
+use vehicle_3d::{RunOptions, RunRecord, Vehicle, VehicleOptions};
+use vehicle_components::FlatTerrain;
+
+pub(super) fn simulate_cmd(
+    case: &CaseArgs,
+    seed: Option<u64>,
+    steer: &str,
+    duration: f64,
+    dt: f64,
+    output: &Path,
+    force: bool,
+) -> CmdResult {
+    args::check_samples(
+        &format!("--duration {}", args::show(duration)),
+        &format!("duration/dt with --dt {}", args::show(dt)),
+        duration / dt,
+        vehicle_3d::simulate::MAX_SAMPLES as f64,
+    )?;
+    let input = steer_input(steer)?;
+    let mut guard = OutputGuard::new(force);
+    declare_inputs(case, &mut guard)?;
+    guard.output("-o", output, OutputKind::Record)?;
+    let (p, axle) = vehicle_params(case)?;
+    let (terrain, seeds) = terrain_and_seeds(case, None, seed, None)?;
+    // one run: the given seed, else the first of the default list (1)
+    let seeds = &seeds[..1];
+    let speed_kmh = case.speed_kmh.unwrap_or(20.0);
+    let speed = speed_kmh / 3.6;
+    let options = VehicleOptions {
+        front_axle: axle,
+        speed_m_s: speed,
+        steer: input.clone(),
+        path_length_m: speed * duration + 5.0,
+        ..VehicleOptions::default()
+    };
+    let run = RunOptions {
+        t_end_s: duration,
+        output_dt_s: dt,
+        ..RunOptions::default()
+    };
+    let half = 0.5 * p.front_track_m;
+    let rec = match &terrain {
+        None => {
+            let flat = FlatTerrain::new(0.0, vehicle_components::DEFAULT_FRICTION)?;
+            vehicle_3d::simulate(&Vehicle::new(&p, case.load, options, &flat, half)?, &run)?
+        }
+        Some(t) => {
+            let length = options.start_s_m + options.path_length_m + 50.0;
+            let ground = t.build(&p, length, seeds[0])?;
+            vehicle_3d::simulate(&Vehicle::new(&p, case.load, options, &ground, half)?, &run)?
+        }
+    };
+    let mut out = record(&rec)?;
+    out.meta = json!({
+        "written_by": "afsv vehicle simulate",
+        "sample_rate_hz": 1.0 / dt,
+        "model": "vehicle-3d integrated 3-D articulated dump truck (chapter 6)",
+        "load": case.load,
+        "front_axle": axle,
+        "speed_kmh": speed_kmh,
+        "speed_m_s": speed,
+        "manoeuvre": steer_label(&input),
+        "steer": input,
+        "terrain": terrain_json(&terrain, seeds),
+        "axes": "cab_accel_*, front_pitch_accel: the front unit's body axes (x forward, y left, z up), kinematic acceleration without gravity at the a_wz point; front_pitch_accel right-handed about y (nose down positive); rear_lateral_accel left positive; rear_ltr = (F_zL - F_zR)/(F_zL + F_zR) of the rear axle; hps_travel compression positive",
+        "params": p,
+    });
+    afsv::output::check_finite_record(&out)?;
+    out.write(output)?;
+    afsv::output::print_json(&json!({
+        "output": output,
+        "sidecar": output.with_extension("json"),
+        "samples": rec.len(),
+        "columns": out.names(),
+        "peak_articulation_deg": rec.articulation_rad.iter().fold(0.0f64, |m, v| if v.abs() > m.abs() { *v } else { m }).to_degrees(),
+    }))?;
+    Ok(())
+}
+
+/// The run's channels in the afsv-v1 convention (docs/records.md): the steering channels of
+/// a vehicle steering test, then the ride channels.
+fn record(r: &RunRecord) -> Result<Record, afsv_records::RecordError> {
+    let deg = |v: &[f64], sign: f64| v.iter().map(|x| sign * x.to_degrees()).collect();
+    let mut out = Record::new();
+    out.push_column("time_s", r.t_s.clone())?;
+    out.push_column("steer_wheel_deg", deg(&r.steer_wheel_rad, 1.0))?;
+    out.push_column("speed_m_s", r.speed_m_s.clone())?;
+    out.push_column("articulation_deg", deg(&r.articulation_rad, 1.0))?;
+    out.push_column("strut_left_disp_m", r.strut_disp_m[0].clone())?;
+    out.push_column("strut_right_disp_m", r.strut_disp_m[1].clone())?;
+    out.push_column("p_c_pa", r.pressure_pa[0].clone())?;
+    out.push_column("p_r_pa", r.pressure_pa[1].clone())?;
+    // The model's yaw rate is left-turn positive about +z; afsv-v1 is right-turn positive.
+    out.push_column("yaw_rate_front_deg_s", deg(&r.front_rate_rad_s[2], -1.0))?;
+    for (axis, values) in ["x", "y", "z"].iter().zip(&r.cab_accel_m_s2) {
+        out.push_column(&format!("cab_accel_{axis}_m_s2"), values.clone())?;
+    }
+    out.push_column(
+        "front_pitch_accel_rad_s2",
+        r.front_angular_accel_rad_s2[1].clone(),
+    )?;
+    out.push_column(
+        "front_lateral_accel_m_s2",
+        r.front_lateral_accel_m_s2.clone(),
+    )?;
+    out.push_column("rear_lateral_accel_m_s2", r.rear_lateral_accel_m_s2.clone())?;
+    out.push_column("rear_ltr", r.rear_ltr.clone())?;
+    out.push_column("rear_roll_deg", deg(&r.rear_roll_rad, 1.0))?;
+    out.push_column("hps_travel_left_m", r.hps_travel_m[0].clone())?;
+    out.push_column("hps_travel_right_m", r.hps_travel_m[1].clone())?;
+    for (name, values) in TIRE_NAMES.iter().zip(&r.normal_force_n) {
+        out.push_column(&format!("normal_force_{name}_n"), values.clone())?;
+    }
+    out.push_column("drive_torque_n_m", r.drive_torque_n_m.clone())?;
+    Ok(out)
+}
