@@ -59,6 +59,12 @@ pub struct EvaluateArgs {
     pub json: bool,
 }
 
+/// Whether the point of 0-based `index` belongs to shard `(i, n)` (`i` in 1..=n): round
+/// robin, `index mod n == i - 1`.
+pub fn in_shard(index: usize, (i, n): (usize, usize)) -> bool {
+    index % n == i - 1
+}
+
 fn shard(s: &str) -> Result<(usize, usize), String> {
     let bad = || format!("expected \"I/N\" with 1 <= I <= N <= {MAX_SHARDS}, got {s:?}");
     let (i, n) = s.split_once('/').ok_or_else(bad)?;
@@ -389,7 +395,7 @@ fn evaluate(a: &EvaluateArgs) -> CmdResult {
     let mine: Vec<(usize, &BatchPoint)> = points
         .iter()
         .enumerate()
-        .filter(|(i, _)| i % shard_n == shard_i - 1)
+        .filter(|(i, _)| in_shard(*i, a.shard))
         .collect();
     let xs: Vec<Vec<f64>> = mine
         .iter()
@@ -469,4 +475,95 @@ fn evaluate(a: &EvaluateArgs) -> CmdResult {
         );
     }
     Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use proptest::prelude::*;
+
+    fn file(name: &str, text: &str) -> PathBuf {
+        let dir = std::env::temp_dir().join(format!("afsv-batch-unit-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let p = dir.join(name);
+        std::fs::write(&p, text).unwrap();
+        p
+    }
+
+    fn accept(_: &serde_json::Value) -> Result<(), String> {
+        Ok(())
+    }
+
+    #[test]
+    fn shards_parse_and_are_bounded() {
+        assert_eq!(shard("2/3"), Ok((2, 3)));
+        assert_eq!(shard(" 1 / 1 "), Ok((1, 1)));
+        for bad in [
+            "0/3", "4/3", "1/0", "1/100001", "1", "a/b", "1/2/3", "-1/2", "",
+        ] {
+            assert!(shard(bad).unwrap_err().contains("I/N"), "{bad}");
+        }
+    }
+
+    proptest! {
+        /// The round robin gives every point to exactly one shard, and the shards' sizes
+        /// differ by at most one.
+        #[test]
+        fn every_point_falls_in_exactly_one_shard(points in 0usize..200, n in 1usize..20) {
+            for index in 0..points {
+                let owners = (1..=n).filter(|&i| in_shard(index, (i, n))).count();
+                prop_assert_eq!(owners, 1);
+            }
+            let sizes: Vec<usize> = (1..=n)
+                .map(|i| (0..points).filter(|&k| in_shard(k, (i, n))).count())
+                .collect();
+            let (lo, hi) = (sizes.iter().min().unwrap(), sizes.iter().max().unwrap());
+            prop_assert!(hi - lo <= 1, "{:?}", sizes);
+        }
+    }
+
+    #[test]
+    fn json_lines_errors_name_line_and_column_and_bounds_hold() {
+        let ok = file("ok.jsonl", "{\"h\":1}\n\n[1]\n[2]\n");
+        let (h, recs): (serde_json::Value, Vec<(usize, Vec<u32>)>) =
+            read_jsonl("X", &ok, 2, &accept).unwrap();
+        assert_eq!(h["h"], 1);
+        assert_eq!(recs, vec![(3, vec![1]), (4, vec![2])]);
+        let e = read_jsonl::<serde_json::Value, Vec<u32>>("X", &ok, 1, &accept).unwrap_err();
+        assert!(e.ends_with("ok.jsonl:4: more than 1 records"), "{e}");
+        let bad = file("bad.jsonl", "{}\n[1, x]\n");
+        let e = read_jsonl::<serde_json::Value, Vec<u32>>("X", &bad, 9, &accept).unwrap_err();
+        assert!(e.contains("bad.jsonl:2:5: expected value"), "{e}");
+        let long = file(
+            "long.jsonl",
+            &format!("{{}}\n[{}]\n", "1,".repeat(MAX_LINE_BYTES)),
+        );
+        let e = read_jsonl::<serde_json::Value, Vec<u32>>("X", &long, 9, &accept).unwrap_err();
+        assert!(e.contains("long.jsonl:2: line longer than"), "{e}");
+        let empty = file("empty.jsonl", "\n");
+        let e = read_jsonl::<serde_json::Value, Vec<u32>>("X", &empty, 9, &accept).unwrap_err();
+        assert!(e.ends_with("empty file"), "{e}");
+        let refuse = |_: &serde_json::Value| Err("not this header".to_string());
+        let e = read_jsonl::<serde_json::Value, Vec<u32>>("X", &ok, 9, &refuse).unwrap_err();
+        assert_eq!(e, "not this header");
+    }
+
+    #[test]
+    fn results_round_trip_to_the_same_bits_and_null_reads_as_nan() {
+        let r = PointResult {
+            id: "b0-0".into(),
+            status: "evaluated".into(),
+            f: Some(0.1 + 0.2),
+            constraints: vec![Some(BARRIER), Some(-1e-300), None],
+            reason: None,
+        };
+        let text = serde_json::to_string(&r).unwrap();
+        let back: PointResult = serde_json::from_str(&text).unwrap();
+        assert_eq!(back, r);
+        let e = back.evaluation();
+        assert_eq!(e.f.to_bits(), (0.1f64 + 0.2).to_bits());
+        assert_eq!(e.constraints[0], BARRIER);
+        assert!(e.constraints[2].is_nan());
+        assert!(!text.contains("reason"));
+    }
 }

@@ -88,7 +88,7 @@ pub struct AfsArgs {
     /// Ask/tell state file (JSON): created by the first --ask, advanced by each --tell; give the same options every time.
     #[arg(long)]
     pub state: Option<PathBuf>,
-    /// With --state: write the next batch of design points (JSON Lines) for `afsv batch evaluate`; once the run has finished, print its report instead.
+    /// With --state: write the next batch of design points (JSON Lines) for `afsv batch evaluate`; once the run has finished, write a batch of no point (header "finished": true) and print the report.
     #[arg(long, requires = "state", conflicts_with = "tell")]
     pub ask: Option<PathBuf>,
     /// With --state: the results files of the asked batch (every shard's), to advance the state.
