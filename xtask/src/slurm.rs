@@ -17,18 +17,8 @@ use std::process::{Child, Command, Stdio};
 use std::time::{Duration, Instant};
 
 /// The reduced chapter-4 run (the one of `crates/afsv/tests/cli_cluster.rs`): 20 batches.
-const OPTIONS: [&str; 10] = [
-    "--starts",
-    "0",
-    "--search-points",
-    "5",
-    "--screen-mesh",
-    "0.125",
-    "--min-mesh",
-    "0.0625",
-    "--sqp-calls",
-    "3",
-];
+const OPTIONS: &str =
+    "--starts 0 --search-points 5 --screen-mesh 0.125 --min-mesh 0.0625 --sqp-calls 3";
 
 /// The daemons this task started; stopped (SIGTERM, then SIGKILL) when dropped.
 struct Daemons(Vec<(&'static str, Child)>);
@@ -294,7 +284,7 @@ pub fn slurm_test(root: &Path) -> Result<(), String> {
     );
     let run = dir.join("run");
     let status = Command::new(root.join("scripts/slurm/afs-optimize.sh"))
-        .args(OPTIONS)
+        .args(OPTIONS.split_whitespace())
         .env("SLURM_CONF", &conf)
         .env("AFSV", &afsv)
         .env("SHARDS", cpus.to_string())
@@ -312,7 +302,7 @@ pub fn slurm_test(root: &Path) -> Result<(), String> {
     drop(daemons);
     let in_process = Command::new(&afsv)
         .args(["--quiet", "optimize", "afs", "--json"])
-        .args(OPTIONS)
+        .args(OPTIONS.split_whitespace())
         .output()
         .map_err(|e| format!("cannot run afsv: {e}"))?;
     let report = std::fs::read_to_string(run.join("report.json")).map_err(io)?;

@@ -11,22 +11,12 @@ use std::process::{Command, Stdio};
 /// The smallest chapter-4 run the options allow to be meaningful: the current design as
 /// the only start, a 5-point search step, screening to mesh 1/8, refinement to 1/16, three
 /// SLSQP calls; both configurations (with and without the arm constraint).
-const SMALL: [&str; 10] = [
-    "--starts",
-    "0",
-    "--search-points",
-    "5",
-    "--screen-mesh",
-    "0.125",
-    "--min-mesh",
-    "0.0625",
-    "--sqp-calls",
-    "3",
-];
+const SMALL: &str =
+    "--starts 0 --search-points 5 --screen-mesh 0.125 --min-mesh 0.0625 --sqp-calls 3";
 
 fn optimize(extra: &[&str]) -> std::process::Output {
     let mut args = vec!["optimize", "afs", "--json"];
-    args.extend(SMALL);
+    args.extend(SMALL.split_whitespace());
     args.extend(extra);
     afsv(&args)
 }
