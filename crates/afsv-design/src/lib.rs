@@ -11,6 +11,8 @@
 //!   solvers;
 //! - [`afs_optimum`]: the solver sequence of section 4.3.5 (multi-start pattern search
 //!   with a Latin-hypercube search step, then SQP), resumable;
+//! - [`afs_ask_tell`]: the same sequence split into ask (the next batch of design points)
+//!   and tell (advance by their evaluations), for evaluation elsewhere;
 //! - [`hps_design`]: the chapter-6 design vector [A_hc, A_v, A_b] (Table 6.5) applied to
 //!   a strut parameter set;
 //! - [`sweep`]: the optimum of a one-variable design sweep (parabolic peak).
@@ -18,6 +20,7 @@
 //! Every constructor validates its input and returns a [`DesignError`] naming the field.
 //! `docs/design.md` maps each equation to its code.
 
+pub mod afs_ask_tell;
 pub mod afs_design;
 pub mod afs_optimum;
 pub mod afs_problem;
@@ -30,6 +33,7 @@ pub mod measures;
 pub mod objective;
 pub mod sweep;
 
+pub use afs_ask_tell::{AfsAsk, AfsAskTell, AfsBatch, AfsPhase};
 pub use afs_design::{a0_of_longest_initial_arm, AfsDesign, AfsDesignBounds, AfsVariable};
 pub use afs_optimum::{optimise, AfsOptimisationSettings, AfsOptimum, AfsRunState};
 pub use afs_problem::{

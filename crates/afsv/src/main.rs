@@ -60,6 +60,9 @@ enum Command {
     /// Design optimisation: `afs` (Chapter 4 frame steering, pattern search + SQP).
     #[command(subcommand)]
     Optimize(cmd::optimize::Command),
+    /// Batches of design points from `afsv optimize afs --ask`: `evaluate` one shard of a batch (e.g. one Slurm array task).
+    #[command(subcommand)]
+    Batch(cmd::batch::Command),
 }
 
 fn main() -> ExitCode {
@@ -109,6 +112,7 @@ fn main() -> ExitCode {
         Command::Vehicle(c) => cmd::vehicle::run(c),
         Command::Params(c) => cmd::params::run(c),
         Command::Optimize(c) => cmd::optimize::run(c),
+        Command::Batch(c) => cmd::batch::run(c),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

@@ -18,7 +18,8 @@
 //!    starts with `afsv` ([`is_afsv_json`]). Any other existing JSON is foreign.
 //! 4. **An output onto an existing file afsv did not write needs `--force`.** afsv wrote a
 //!    CSV record when its sidecar is afsv-written (rule 3), an SVG when it carries the
-//!    [`SVG_MARKER`] comment, a JSON per rule 3. Files afsv wrote may be replaced freely
+//!    [`SVG_MARKER`] comment, a JSON per rule 3, a JSON Lines file when its first line is
+//!    such a JSON object. Files afsv wrote may be replaced freely
 //!    (re-running a command is normal).
 
 use serde::Serialize;
@@ -198,6 +199,9 @@ pub enum OutputKind {
     Sidecar,
     /// An SVG plot.
     Svg,
+    /// A JSON Lines file (the batch and results files of the ask/tell commands): afsv
+    /// wrote it when its first line is a JSON object afsv wrote (rule 3).
+    JsonLines,
     /// Any other file (e.g. a parameter JSON): afsv never recognises it as its own.
     Other,
 }
@@ -297,6 +301,7 @@ impl OutputGuard {
                 OutputKind::Svg => {
                     std::fs::read_to_string(&canonical).is_ok_and(|t| t.contains(SVG_MARKER))
                 }
+                OutputKind::JsonLines => first_line(&canonical).is_some_and(|l| is_afsv_json(&l)),
                 OutputKind::Other => false,
             };
             if !ours {
@@ -328,6 +333,17 @@ impl OutputGuard {
         }
         Ok(self)
     }
+}
+
+/// The first line of the file at `path` (read up to 1 MiB), if it can be read.
+fn first_line(path: &Path) -> Option<String> {
+    use std::io::{BufRead, Read};
+    let file = std::fs::File::open(path).ok()?;
+    let mut line = String::new();
+    std::io::BufReader::new(file.take(1 << 20))
+        .read_line(&mut line)
+        .ok()?;
+    Some(line)
 }
 
 /// Put [`SVG_MARKER`] at the top of the SVG file at `path` (after an XML declaration).

@@ -38,6 +38,7 @@ pub(crate) const GROUPS: &[(&str, u32)] = &[
     ("vehicle yaw", 3),
     ("vehicle simulate", 4),
     ("params check vehicle-3d", 2),
+    ("batch evaluate", 3),
 ];
 
 pub(crate) fn make_case(
@@ -79,6 +80,7 @@ pub(crate) fn make_case(
         "tire" => tire_case(&mut g, group),
         "terrain" => terrain_case(&mut g, group),
         "measures" => measures_case(&mut g, group),
+        "batch" => batch_case(&mut g),
         _ => other_case(&mut g, group),
     }
     Case {
@@ -526,6 +528,41 @@ fn measures_case(g: &mut Gen<'_>, group: &str) {
 }
 
 /// The options and files of one `afsv params ...`, `evaluate`, `check`, `synth` and `discover` case.
+/// A batch file of `afsv optimize afs --ask` (header and two points), one line of it
+/// broken or a number replaced by a bad value, and a good or bad `--shard`.
+const BATCH_LINES: [&str; 3] = [
+    r#"{"format":"afsv-batch","version":1,"written_by":"afsv optimize afs --ask","sign_convention":"afsv-v1","batch":0,"finished":false,"points":2,"variables":["a0_rad","l1_m","l2_m","valve_av","bulk_modulus_pa"],"problems":[{"kind":"afs_chapter4","label":"with the steering-arm constraint","relaxed":false,"min_steering_arm_m":0.25,"rtol":1e-8,"form":"energy_consistent","eq_4_9":null}]}"#,
+    r#"{"id":"b0-0","problem":0,"phase":"start_point","screened":true,"x":{"a0_rad":1.335176877775662,"bulk_modulus_pa":1600000000.0,"l1_m":1.96,"l2_m":0.64,"valve_av":8e-10}}"#,
+    r#"{"id":"b0-1","problem":0,"phase":"sqp","screened":false,"x":{"a0_rad":1.0,"bulk_modulus_pa":1700000000.0,"l1_m":2.0,"l2_m":0.9,"valve_av":1.2e-9}}"#,
+];
+
+/// The options and files of one `afsv batch evaluate` case.
+fn batch_case(g: &mut Gen<'_>) {
+    let mut lines: Vec<String> = BATCH_LINES.iter().map(|l| l.to_string()).collect();
+    if g.rng.chance(0.8) {
+        let k = g.rng.below(lines.len());
+        lines[k] = mutate_json(&mut g.rng, &lines[k]).replace('\n', "");
+    }
+    if g.rng.chance(0.1) {
+        lines.push(lines[1].clone());
+    }
+    g.file("batch.jsonl", (lines.join("\n") + "\n").into_bytes());
+    g.arg("batch.jsonl");
+    if g.rng.chance(0.6) {
+        let shard = match g.rng.below(4) {
+            0 => g.bad(),
+            1 => g
+                .rng
+                .pick(&["0/2", "3/2", "1/0", "1/1000000", "2/2/2", "/", "a/b"])
+                .to_string(),
+            _ => g.rng.pick(&["1/2", "2/2", "1/1"]).to_string(),
+        };
+        g.push_opt("--shard", &shard);
+    }
+    let o = g.output("results.jsonl", &["batch.jsonl"]);
+    g.push_opt("-o", &o);
+}
+
 fn other_case(g: &mut Gen<'_>, group: &str) {
     match group {
         "params check" => {

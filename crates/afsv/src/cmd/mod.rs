@@ -2,6 +2,7 @@
 //! `run` function returning [`CmdResult`].
 
 pub mod args;
+pub mod batch;
 pub mod check;
 pub mod design_measures;
 pub mod discover;

@@ -1,18 +1,26 @@
 //! `afsv optimize afs`: the chapter-4 design optimisation of the frame-steering system
 //! (section 4.3; `afsv_design::afs_optimum`). Text on a terminal, JSON with `--json` or
-//! when piped; progress on stderr; resumable through `--checkpoint`.
+//! when piped; progress on stderr; resumable through `--checkpoint`. With `--state` the
+//! same run goes ask/tell: `--ask` writes the next batch of design points (JSON Lines,
+//! evaluated by `afsv batch evaluate`, possibly in shards on a cluster), `--tell` reads the
+//! results and advances the state file; once finished `--ask` prints the report
+//! (`afsv_design::afs_ask_tell`, formats in `super::batch`).
 
+use super::batch::{self, BatchHeader, BatchPoint, PointResult, ResultsHeader};
 use super::CmdResult;
 use afsv::output::{is_afsv_json, OutputGuard, OutputKind};
 use afsv_design::afs_problem::FullLockGeometry;
 use afsv_design::{
-    optimise, AfsDesign, AfsDesignBounds, AfsOptimisationSettings, AfsOptimum, AfsProblem,
-    AfsProblemSpec, AfsRunState, AfsVariable, AhpHierarchy, DesignEvaluation, InterferenceGeometry,
-    Measure, Objective,
+    optimise, AfsAsk, AfsAskTell, AfsDesign, AfsDesignBounds, AfsOptimisationSettings, AfsOptimum,
+    AfsProblem, AfsProblemSpec, AfsRunState, AfsVariable, AhpHierarchy, DesignEvaluation,
+    InterferenceGeometry, Measure, Objective,
 };
 use afsv_dynamics::EquationForm;
+use optimize::Evaluation;
+use serde::de::DeserializeOwned;
 use serde::{Deserialize, Serialize};
 use serde_json::{json, Value};
+use std::collections::HashMap;
 use std::io::IsTerminal;
 use std::path::{Path, PathBuf};
 
@@ -41,6 +49,18 @@ pub struct AfsArgs {
     /// Seed of the starts and search hypercubes.
     #[arg(long, default_value_t = 1)]
     pub seed: u64,
+    /// Points of each start's Latin-hypercube search step (0: none).
+    #[arg(long, default_value_t = 75, value_parser = clap::value_parser!(u64).range(0..=100_000))]
+    pub search_points: u64,
+    /// Mesh (unit-cube coordinates) at which each start's screening search stops; in [--min-mesh, 0.25).
+    #[arg(long, default_value_t = 1.0 / 32.0, value_parser = super::args::positive_f64)]
+    pub screen_mesh: f64,
+    /// Final mesh of the best start's pattern search; in (0, --screen-mesh].
+    #[arg(long, default_value_t = 1.0 / 512.0, value_parser = super::args::positive_f64)]
+    pub min_mesh: f64,
+    /// Largest number of SLSQP calls of the SQP refinement.
+    #[arg(long, default_value_t = 40, value_parser = clap::value_parser!(u64).range(1..=10_000))]
+    pub sqp_calls: u64,
     /// Relative tolerance of the simulations (the noise of F grows above 1e-8).
     #[arg(long, default_value_t = 1e-8, value_parser = super::args::positive_f64)]
     pub rtol: f64,
@@ -63,8 +83,17 @@ pub struct AfsArgs {
     #[arg(long)]
     pub plot_pulse: Option<PathBuf>,
     /// Checkpoint file: written after every iteration; an existing one is resumed.
-    #[arg(long)]
+    #[arg(long, conflicts_with = "state")]
     pub checkpoint: Option<PathBuf>,
+    /// Ask/tell state file (JSON): created by the first --ask, advanced by each --tell; give the same options every time.
+    #[arg(long)]
+    pub state: Option<PathBuf>,
+    /// With --state: write the next batch of design points (JSON Lines) for `afsv batch evaluate`; once the run has finished, write a batch of no point (header "finished": true) and print the report.
+    #[arg(long, requires = "state", conflicts_with = "tell")]
+    pub ask: Option<PathBuf>,
+    /// With --state: the results files of the asked batch (every shard's), to advance the state.
+    #[arg(long, requires = "state", num_args = 1..)]
+    pub tell: Vec<PathBuf>,
     /// Replace existing output files afsv did not write.
     #[arg(long)]
     pub force: bool,
@@ -114,32 +143,123 @@ struct Checkpoint {
 
 /// One configuration's result.
 struct RunOutcome {
-    label: &'static str,
+    label: String,
     min_arm_m: Option<f64>,
     optimum: AfsOptimum,
     seconds: f64,
 }
 
-fn spec_of(a: &AfsArgs, min_arm: Option<f64>) -> Result<AfsProblemSpec, String> {
+/// What a shard needs to rebuild one configuration's problem: the command-line settings
+/// that define it (written into every batch and results header).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct ProblemDesc {
+    /// `afs_chapter4`.
+    pub kind: String,
+    /// The configuration, e.g. "with the steering-arm constraint".
+    pub label: String,
+    /// The relaxed B_eff bound of Table 4.4.
+    pub relaxed: bool,
+    /// Minimum full-lock steering arm (m); `null`: no arm constraint.
+    pub min_steering_arm_m: Option<f64>,
+    /// Relative tolerance of the simulations.
+    pub rtol: f64,
+    /// `energy_consistent` or `paper_eq_3_13`.
+    pub form: String,
+    /// The Eq 4.9 geometry, if given.
+    pub eq_4_9: Option<Eq49Desc>,
+}
+
+/// The Eq 4.9 options as given on the command line.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Eq49Desc {
+    /// `--front-mount-dir-deg`.
+    pub front_mount_dir_deg: f64,
+    /// `--tire-point`.
+    pub tire_point: [f64; 2],
+    /// `--engine-point`.
+    pub engine_point: [f64; 2],
+}
+
+/// The `kind` of the chapter-4 problem.
+const AFS_KIND: &str = "afs_chapter4";
+
+fn form_name(f: FormArg) -> &'static str {
+    match f {
+        FormArg::EnergyConsistent => "energy_consistent",
+        FormArg::PaperEq313 => "paper_eq_3_13",
+    }
+}
+
+fn desc_of(a: &AfsArgs, label: &str, min_arm: Option<f64>) -> ProblemDesc {
+    let eq_4_9 = match (a.front_mount_dir_deg, a.tire_point, a.engine_point) {
+        (Some(dir), Some(t), Some(e)) => Some(Eq49Desc {
+            front_mount_dir_deg: dir,
+            tire_point: t,
+            engine_point: e,
+        }),
+        _ => None,
+    };
+    ProblemDesc {
+        kind: AFS_KIND.into(),
+        label: label.into(),
+        relaxed: a.relaxed,
+        min_steering_arm_m: min_arm,
+        rtol: a.rtol,
+        form: form_name(a.form).into(),
+        eq_4_9,
+    }
+}
+
+fn spec_of(d: &ProblemDesc) -> Result<AfsProblemSpec, String> {
+    if d.kind != AFS_KIND {
+        return Err(format!(
+            "unknown problem kind {:?} (this afsv knows {AFS_KIND:?})",
+            d.kind
+        ));
+    }
+    if !(d.rtol.is_finite() && d.rtol > 0.0) {
+        return Err(format!("rtol {}: must be finite and > 0", d.rtol));
+    }
     let mut spec = AfsProblemSpec {
-        bounds: if a.relaxed {
+        bounds: if d.relaxed {
             AfsDesignBounds::table_4_2_relaxed()
         } else {
             AfsDesignBounds::table_4_2()
         },
-        min_steering_arm_m: min_arm,
+        min_steering_arm_m: d.min_steering_arm_m,
         ..AfsProblemSpec::default()
     };
-    spec.measure.options.rtol = a.rtol;
-    spec.measure.options.form = match a.form {
-        FormArg::EnergyConsistent => EquationForm::EnergyConsistent,
-        FormArg::PaperEq313 => EquationForm::PaperEq313,
+    spec.measure.options.rtol = d.rtol;
+    spec.measure.options.form = match d.form.as_str() {
+        "energy_consistent" => EquationForm::EnergyConsistent,
+        "paper_eq_3_13" => EquationForm::PaperEq313,
+        other => return Err(format!("unknown equation form {other:?}")),
     };
-    if let (Some(dir), Some(t), Some(e)) = (a.front_mount_dir_deg, a.tire_point, a.engine_point) {
-        spec.interference =
-            Some(InterferenceGeometry::new(dir.to_radians(), t, e).map_err(|e| e.to_string())?);
+    if let Some(g) = &d.eq_4_9 {
+        spec.interference = Some(
+            InterferenceGeometry::new(
+                g.front_mount_dir_deg.to_radians(),
+                g.tire_point,
+                g.engine_point,
+            )
+            .map_err(|e| e.to_string())?,
+        );
     }
     Ok(spec)
+}
+
+fn objective() -> Result<Objective, Box<dyn std::error::Error>> {
+    Ok(Objective::new(
+        AhpHierarchy::chapter4().weights()?.composite,
+    )?)
+}
+
+/// The problem a description defines (simulates its current design once).
+pub fn problem_of(d: &ProblemDesc) -> Result<AfsProblem, String> {
+    let objective = objective().map_err(|e| e.to_string())?;
+    AfsProblem::new(spec_of(d)?, objective).map_err(|e| e.to_string())
 }
 
 fn run_afs(a: &AfsArgs) -> CmdResult {
@@ -150,7 +270,29 @@ fn run_afs(a: &AfsArgs) -> CmdResult {
         )
         .into());
     }
+    if !(a.min_mesh <= a.screen_mesh && a.screen_mesh < 0.25) {
+        return Err(format!(
+            "--screen-mesh {} and --min-mesh {}: need --min-mesh <= --screen-mesh < 0.25 (the initial mesh)",
+            a.screen_mesh, a.min_mesh
+        )
+        .into());
+    }
+    if a.state.is_some() && a.ask.is_none() && a.tell.is_empty() {
+        return Err("--state: give --ask FILE or --tell RESULTS...".into());
+    }
+    if a.tell.len() > batch::MAX_SHARDS {
+        return Err(format!("--tell: more than {} results files", batch::MAX_SHARDS).into());
+    }
     let mut guard = OutputGuard::new(a.force);
+    let mut told = Vec::with_capacity(a.tell.len());
+    for f in &a.tell {
+        let c = afsv::output::canonical_path(f)?;
+        if told.contains(&c) {
+            return Err(format!("--tell {}: given twice", f.display()).into());
+        }
+        told.push(c);
+        guard.input("--tell", f)?;
+    }
     for (label, p) in [
         ("--plot-step", &a.plot_step),
         ("--plot-pulse", &a.plot_pulse),
@@ -162,12 +304,22 @@ fn run_afs(a: &AfsArgs) -> CmdResult {
     if let Some(p) = &a.checkpoint {
         guard.output("--checkpoint", p, OutputKind::Sidecar)?;
     }
-    let settings = AfsOptimisationSettings {
+    if let Some(p) = &a.state {
+        guard.output("--state", p, OutputKind::Sidecar)?;
+    }
+    if let Some(p) = &a.ask {
+        guard.output("--ask", p, OutputKind::JsonLines)?;
+    }
+    let mut settings = AfsOptimisationSettings {
         extra_starts: a.starts,
         seed: a.seed,
+        screen_min_mesh: a.screen_mesh,
         ..AfsOptimisationSettings::default()
     };
-    let objective = Objective::new(AhpHierarchy::chapter4().weights()?.composite)?;
+    settings.pattern.search_points = a.search_points as usize;
+    settings.pattern.min_mesh = a.min_mesh;
+    settings.sqp.max_calls = a.sqp_calls as usize;
+    let objective = objective()?;
     let mut configs: Vec<(&'static str, Option<f64>)> =
         vec![("with the steering-arm constraint", Some(a.min_arm_m))];
     if !a.no_arm_comparison {
@@ -176,12 +328,31 @@ fn run_afs(a: &AfsArgs) -> CmdResult {
     let settings_json = json!({
         "relaxed": a.relaxed, "min_arm_m": a.min_arm_m, "arm_comparison": !a.no_arm_comparison,
         "starts": a.starts, "seed": a.seed, "rtol": a.rtol,
-        "form": match a.form { FormArg::EnergyConsistent => "energy_consistent", FormArg::PaperEq313 => "paper_eq_3_13" },
+        "form": form_name(a.form),
         "eq_4_9": {"front_mount_dir_deg": a.front_mount_dir_deg, "tire_point": a.tire_point, "engine_point": a.engine_point},
         "solver": settings,
     });
+    let descs: Vec<ProblemDesc> = configs
+        .iter()
+        .map(|(label, arm)| desc_of(a, label, *arm))
+        .collect();
+    if let Some(state) = &a.state {
+        let problems: Vec<AfsProblem> = descs.iter().map(problem_of).collect::<Result<_, _>>()?;
+        let job = AskTell {
+            args: a,
+            state_path: state,
+            settings,
+            settings_json,
+            descs,
+            problems: &problems,
+            objective,
+        };
+        return job.run();
+    }
     let mut ck = match &a.checkpoint {
-        Some(p) => load_checkpoint(p, &settings_json)?,
+        Some(p) => load_afsv_json::<Checkpoint>("--checkpoint", p)?
+            .map(|ck| same_settings("--checkpoint", p, &ck.settings, &settings_json).map(|()| ck))
+            .transpose()?,
         None => None,
     }
     .unwrap_or(Checkpoint {
@@ -193,9 +364,9 @@ fn run_afs(a: &AfsArgs) -> CmdResult {
     let progress = Bar::new()?;
     let mut outcomes = Vec::new();
     let mut problems = Vec::new();
-    for (i, (label, arm)) in configs.iter().enumerate() {
+    for (i, ((label, arm), desc)) in configs.iter().zip(&descs).enumerate() {
         let t = std::time::Instant::now();
-        let problem = AfsProblem::new(spec_of(a, *arm)?, objective)?;
+        let problem = AfsProblem::new(spec_of(desc)?, objective)?;
         let resume = ck.runs.get(i).cloned().unwrap_or_default();
         let optimum = optimise(&problem, &settings, resume, &progress, &mut |st| {
             let Some(path) = &a.checkpoint else {
@@ -203,11 +374,11 @@ fn run_afs(a: &AfsArgs) -> CmdResult {
             };
             ck.runs.truncate(i);
             ck.runs.push(st.clone());
-            write_checkpoint(path, &ck)
+            write_json(path, &ck)
         })?;
         progress.done(label, &optimum, t.elapsed().as_secs_f64());
         outcomes.push(RunOutcome {
-            label,
+            label: label.to_string(),
             min_arm_m: *arm,
             optimum,
             seconds: t.elapsed().as_secs_f64(),
@@ -215,47 +386,389 @@ fn run_afs(a: &AfsArgs) -> CmdResult {
         problems.push(problem);
     }
     progress.finish();
-    let main = &outcomes[0];
-    write_plots(a, &problems[0], &main.optimum.ps_sqp.design)?;
+    report(a, &objective, &problems, &outcomes)
+}
+
+/// Plots, then the report on stdout (JSON or text), of finished runs.
+fn report(
+    a: &AfsArgs,
+    objective: &Objective,
+    problems: &[AfsProblem],
+    outcomes: &[RunOutcome],
+) -> CmdResult {
+    write_plots(a, &problems[0], &outcomes[0].optimum.ps_sqp.design)?;
     let current = problems[0].evaluate_design(&problems[0].current_design())?;
     if a.json || !std::io::stdout().is_terminal() {
-        afsv::output::print_json(&to_json(a, &objective, &current, &outcomes))?;
+        afsv::output::print_json(&to_json(a, objective, &current, outcomes))?;
     } else {
-        print!("{}", to_text(a, &current, &outcomes));
+        print!("{}", to_text(a, &current, outcomes));
     }
     Ok(())
 }
 
-fn load_checkpoint(path: &Path, settings: &Value) -> Result<Option<Checkpoint>, String> {
+/// The ask/tell state file: one run state per configuration, the settings it belongs to,
+/// and the number of batches told.
+#[derive(Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct AskTellState {
+    written_by: String,
+    sign_convention: String,
+    format: String,
+    version: u32,
+    /// The settings of the command line the state belongs to.
+    settings: Value,
+    /// Batches told so far: the number of the next batch.
+    batch: usize,
+    /// One run per configuration (with, then without the arm constraint).
+    runs: Vec<AfsRunState>,
+}
+
+/// `format` of the state file.
+const STATE_FORMAT: &str = "afsv-ask-tell-state";
+
+/// One `--ask` or `--tell` of an ask/tell run.
+struct AskTell<'a> {
+    args: &'a AfsArgs,
+    state_path: &'a Path,
+    settings: AfsOptimisationSettings,
+    settings_json: Value,
+    descs: Vec<ProblemDesc>,
+    problems: &'a [AfsProblem],
+    objective: Objective,
+}
+
+/// A batch as asked: its points and, per configuration, how many of them it holds.
+struct Asked {
+    points: Vec<BatchPoint>,
+    per_run: Vec<usize>,
+    phases: Vec<Value>,
+}
+
+impl AskTell<'_> {
+    fn run(&self) -> CmdResult {
+        let stored = load_afsv_json::<AskTellState>("--state", self.state_path)?;
+        let drivers: Vec<AfsAskTell> = self
+            .problems
+            .iter()
+            .map(|p| AfsAskTell::new(p, self.settings))
+            .collect::<Result<_, _>>()?;
+        let created = stored.is_none();
+        let state = match stored {
+            Some(st) => {
+                same_settings(
+                    "--state",
+                    self.state_path,
+                    &st.settings,
+                    &self.settings_json,
+                )?;
+                if st.format != STATE_FORMAT
+                    || st.version != batch::FORMAT_VERSION
+                    || st.runs.len() != self.problems.len()
+                {
+                    return Err(format!(
+                        "--state {}: not an ask/tell state of version {} with {} runs",
+                        self.state_path.display(),
+                        batch::FORMAT_VERSION,
+                        self.problems.len()
+                    )
+                    .into());
+                }
+                st
+            }
+            None if self.args.ask.is_none() => {
+                return Err(format!(
+                    "--state {}: does not exist; start the run with --ask",
+                    self.state_path.display()
+                )
+                .into())
+            }
+            None => AskTellState {
+                written_by: "afsv optimize afs".into(),
+                sign_convention: afsv_records::SIGN_CONVENTION.into(),
+                format: STATE_FORMAT.into(),
+                version: batch::FORMAT_VERSION,
+                settings: self.settings_json.clone(),
+                batch: 0,
+                runs: vec![AfsRunState::default(); self.problems.len()],
+            },
+        };
+        match &self.args.ask {
+            Some(path) => self.ask(&drivers, &state, created, path),
+            None => self.tell(&drivers, state),
+        }
+    }
+
+    /// The batch the state asks for (`None`: every run has finished).
+    fn asked(&self, drivers: &[AfsAskTell], state: &AskTellState) -> Result<Option<Asked>, String> {
+        let mut asked = Asked {
+            points: Vec::new(),
+            per_run: Vec::new(),
+            phases: Vec::new(),
+        };
+        let mut finished = true;
+        for (k, (d, run)) in drivers.iter().zip(&state.runs).enumerate() {
+            let AfsAsk::Evaluate(b) = d.ask(run).map_err(|e| e.to_string())? else {
+                asked.per_run.push(0);
+                continue;
+            };
+            finished = false;
+            if asked.points.len() + b.points.len() > batch::MAX_BATCH_POINTS {
+                return Err(format!(
+                    "a batch of more than {} points",
+                    batch::MAX_BATCH_POINTS
+                ));
+            }
+            asked.per_run.push(b.points.len());
+            let start = match b.phase {
+                afsv_design::AfsPhase::StartPoint { start }
+                | afsv_design::AfsPhase::Screening { start } => Some(start),
+                _ => None,
+            };
+            asked.phases.push(json!({"run": self.descs[k].label, "phase": b.phase.name(), "start": start, "points": b.points.len()}));
+            for x in &b.points {
+                let index = asked.points.len();
+                asked.points.push(BatchPoint {
+                    id: batch::point_id(state.batch, index),
+                    problem: k,
+                    phase: b.phase.name().into(),
+                    screened: b.phase.screened(),
+                    x: AfsVariable::ALL
+                        .iter()
+                        .zip(x)
+                        .map(|(v, x)| (v.name().to_string(), *x))
+                        .collect(),
+                });
+            }
+        }
+        Ok((!finished).then_some(asked))
+    }
+
+    fn ask(
+        &self,
+        drivers: &[AfsAskTell],
+        state: &AskTellState,
+        created: bool,
+        path: &Path,
+    ) -> CmdResult {
+        let asked = self.asked(drivers, state)?;
+        let points = asked.as_ref().map_or(&[][..], |a| &a.points[..]);
+        let header = BatchHeader {
+            format: batch::BATCH_FORMAT.into(),
+            version: batch::FORMAT_VERSION,
+            written_by: "afsv optimize afs --ask".into(),
+            sign_convention: afsv_records::SIGN_CONVENTION.into(),
+            batch: state.batch,
+            finished: asked.is_none(),
+            points: points.len(),
+            variables: batch::variable_names(),
+            problems: self.descs.clone(),
+        };
+        batch::write_jsonl(path, &header, points)?;
+        if created {
+            write_json(self.state_path, state)?;
+        }
+        let Some(asked) = asked else {
+            eprintln!(
+                "afsv optimize afs: the run has finished after {} batches; {} holds no point; the report follows",
+                state.batch,
+                path.display()
+            );
+            let outcomes = drivers
+                .iter()
+                .zip(&state.runs)
+                .zip(&self.descs)
+                .map(|((d, run), desc)| {
+                    let t = std::time::Instant::now();
+                    let optimum = d.finish(run)?;
+                    Ok(RunOutcome {
+                        label: desc.label.clone(),
+                        min_arm_m: desc.min_steering_arm_m,
+                        optimum,
+                        seconds: t.elapsed().as_secs_f64(),
+                    })
+                })
+                .collect::<Result<Vec<_>, afsv_design::DesignError>>()?;
+            return report(self.args, &self.objective, self.problems, &outcomes);
+        };
+        let status = json!({
+            "batch": state.batch, "finished": false, "points": asked.points.len(),
+            "batch_file": path.display().to_string(), "phases": asked.phases,
+        });
+        if self.args.json || !std::io::stdout().is_terminal() {
+            afsv::output::print_json(&status)?;
+        } else {
+            println!(
+                "batch {}: {} points written to {} ({})",
+                state.batch,
+                asked.points.len(),
+                path.display(),
+                asked
+                    .phases
+                    .iter()
+                    .map(|p| format!(
+                        "{} {}: {}",
+                        p["run"].as_str().unwrap_or(""),
+                        p["phase"].as_str().unwrap_or(""),
+                        p["points"]
+                    ))
+                    .collect::<Vec<_>>()
+                    .join("; ")
+            );
+        }
+        Ok(())
+    }
+
+    /// Reads every results file and returns the evaluations in the batch's order, checking
+    /// that every asked id comes exactly once, no other id comes, and every file belongs to
+    /// this batch and these problems.
+    fn results(&self, state: &AskTellState, asked: &Asked) -> Result<Vec<Evaluation>, String> {
+        let index: HashMap<&str, usize> = asked
+            .points
+            .iter()
+            .enumerate()
+            .map(|(i, p)| (p.id.as_str(), i))
+            .collect();
+        let mut found: Vec<Option<(Evaluation, String)>> = vec![None; asked.points.len()];
+        for path in &self.args.tell {
+            let file = path.display();
+            let check = |h: &ResultsHeader| {
+                if h.format != batch::RESULTS_FORMAT || h.version != batch::FORMAT_VERSION {
+                    return Err(format!(
+                        "--tell {file}: not a results file of version {} (format {:?}, version {})",
+                        batch::FORMAT_VERSION,
+                        h.format,
+                        h.version
+                    ));
+                }
+                if h.problems != self.descs {
+                    return Err(format!("--tell {file}: results of another problem or other settings than this state's"));
+                }
+                if h.batch != state.batch {
+                    return Err(format!(
+                        "--tell {file}: results of batch {}, the state asked batch {}",
+                        h.batch, state.batch
+                    ));
+                }
+                Ok(())
+            };
+            let (_, lines): (ResultsHeader, Vec<(usize, PointResult)>) =
+                batch::read_jsonl("--tell", path, asked.points.len(), &check)?;
+            for (line, r) in lines {
+                let Some(&i) = index.get(r.id.as_str()) else {
+                    return Err(format!(
+                        "--tell {file}:{line}: id {:?} was not asked in batch {}",
+                        r.id, state.batch
+                    ));
+                };
+                let nc = self.problems[asked.points[i].problem].constraints().len();
+                if r.constraints.len() != nc {
+                    return Err(format!(
+                        "--tell {file}:{line}: id {:?}: {} constraint values, the problem has {nc}",
+                        r.id,
+                        r.constraints.len()
+                    ));
+                }
+                if let Some((_, first)) = &found[i] {
+                    return Err(format!(
+                        "--tell {file}:{line}: id {:?} already came in {first}",
+                        r.id
+                    ));
+                }
+                found[i] = Some((r.evaluation(), format!("{file}:{line}")));
+            }
+        }
+        let missing: Vec<&str> = asked
+            .points
+            .iter()
+            .zip(&found)
+            .filter(|(_, f)| f.is_none())
+            .map(|(p, _)| p.id.as_str())
+            .collect();
+        if let Some(first) = missing.first() {
+            return Err(format!(
+                "--tell: {} of the {} asked points of batch {} have no result (first: {first}); give every shard's results file",
+                missing.len(),
+                asked.points.len(),
+                state.batch
+            ));
+        }
+        Ok(found.into_iter().flatten().map(|(e, _)| e).collect())
+    }
+
+    fn tell(&self, drivers: &[AfsAskTell], mut state: AskTellState) -> CmdResult {
+        let asked = self.asked(drivers, &state)?.ok_or_else(|| {
+            format!(
+                "--state {}: the run has finished; --ask prints its report",
+                self.state_path.display()
+            )
+        })?;
+        let mut evals = self.results(&state, &asked)?.into_iter();
+        for ((d, run), n) in drivers
+            .iter()
+            .zip(state.runs.iter_mut())
+            .zip(&asked.per_run)
+        {
+            let mine: Vec<Evaluation> = evals.by_ref().take(*n).collect();
+            if *n > 0 {
+                d.tell(run, mine)?;
+            }
+        }
+        state.batch += 1;
+        write_json(self.state_path, &state)?;
+        let finished = self.asked(drivers, &state)?.is_none();
+        let status = json!({"told": state.batch - 1, "points": asked.points.len(), "next_batch": state.batch, "finished": finished});
+        if self.args.json || !std::io::stdout().is_terminal() {
+            afsv::output::print_json(&status)?;
+        } else {
+            println!(
+                "batch {} told ({} points); {}",
+                state.batch - 1,
+                asked.points.len(),
+                if finished {
+                    "the run has finished: --ask prints the report"
+                } else {
+                    "next: --ask"
+                }
+            );
+        }
+        Ok(())
+    }
+}
+
+/// An afsv-written JSON file (`None` if it does not exist).
+fn load_afsv_json<T: DeserializeOwned>(flag: &str, path: &Path) -> Result<Option<T>, String> {
     let Ok(text) = std::fs::read_to_string(path) else {
         return Ok(None);
     };
     if !is_afsv_json(&text) {
         return Err(format!(
-            "--checkpoint {}: exists and was not written by afsv",
+            "{flag} {}: exists and was not written by afsv",
             path.display()
         ));
     }
-    let ck: Checkpoint = serde_json::from_str(&text).map_err(|e| {
+    serde_json::from_str(&text).map(Some).map_err(|e| {
         format!(
-            "--checkpoint {}: line {} column {}: {e}",
+            "{flag} {}: line {} column {}: {e}",
             path.display(),
             e.line(),
             e.column()
         )
-    })?;
-    if &ck.settings != settings {
-        return Err(format!(
-            "--checkpoint {}: written for other settings ({}); remove it or use the same options",
-            path.display(),
-            ck.settings
-        ));
-    }
-    Ok(Some(ck))
+    })
 }
 
-fn write_checkpoint(path: &Path, ck: &Checkpoint) -> Result<(), String> {
-    let text = serde_json::to_string(ck).map_err(|e| e.to_string())?;
+fn same_settings(flag: &str, path: &Path, stored: &Value, now: &Value) -> Result<(), String> {
+    if stored == now {
+        Ok(())
+    } else {
+        Err(format!(
+            "{flag} {}: written for other settings ({stored}); remove it or use the same options",
+            path.display()
+        ))
+    }
+}
+
+fn write_json<T: Serialize>(path: &Path, value: &T) -> Result<(), String> {
+    let text = serde_json::to_string(value).map_err(|e| e.to_string())?;
     let tmp = path.with_extension("partial");
     std::fs::write(&tmp, text).map_err(|e| format!("{}: {e}", tmp.display()))?;
     std::fs::rename(&tmp, path).map_err(|e| format!("{}: {e}", path.display()))
