@@ -15,7 +15,7 @@
 //! Cost: our own records are sampled at 120 Hz (15 samples per cycle of the fastest,
 //! 8 Hz test; the matrix keeps 360 Hz) and the independent records keep every second sample
 //! (25, 250 and 500 Hz): each claim above is about the workflow, not the sample rate, and
-//! the binary's CPU time fell from 302 s to 167 s (docs/discovery.md, "The CI tests and
+//! the binary's CPU time fell from 302 s to 152-167 s (docs/discovery.md, "The CI tests and
 //! what they cost").
 
 mod common;
