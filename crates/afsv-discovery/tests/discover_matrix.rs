@@ -156,7 +156,7 @@ fn strut_matrix() {
         "outside catalogue: load-cell lag 8 ms",
         Expect::OutsideCatalogue,
         || {
-            let (m, recs) = hps_outside_catalogue(199);
+            let (m, recs) = hps_outside_catalogue(199, 360.0);
             run_on(&m, recs)
         },
     ));

@@ -1,4 +1,19 @@
 //! `afsv synth` and `afsv discover` from the command line.
+//!
+//! What each test proves, and where else the same is proved:
+//!
+//! | test | proves | also proved by |
+//! |---|---|---|
+//! | `synth_then_discover_...` | the two commands chained as a user runs them: synth's folder layout and truth.json, discover's JSON on stdout, report.md / report.json / SVG overlays, the inputs untouched, synth refusing a non-empty folder | the naming itself: `discover_hps` (library, full catalogue) |
+//! | `bad_input_gives_one_line_errors` | unknown effect, missing folders, unknown model: one-line errors | the fuzz suite (`cargo xtask fuzz`) |
+//! | `overlapping_sets_...` | overlapping training / held-out sets (spelled differently), a report folder among the inputs, `-o` onto a file: refused before any fit | - |
+//! | `list_effects_prints_the_catalogue` | the vehicle catalogue holds only mechanisms the paper's model lacks; the calibrated parameters are listed | - |
+//! | `records_written_elsewhere_...` | another tool's layout (column order, extra column, BOM, CRLF, 100 Hz, clock offset, no sidecar) is read; an unknown load is refused naming the field, then `--load` / `--params-for` apply per record; the effect is still named with a shrink > 0.7 | naming on independent vehicle records: `discover_yaw` |
+//! | `sign_conventions_...` | a convention stated in words is refused naming both ways forward; `--assume-convention` reads it and a per-channel statement is honoured: both name the hidden effect | naming on strut records: `discover_hps`, `synth_then_discover_...`; the conversion: `afsv-records` unit tests |
+//! | `synth_replaces_only_...` | synth replaces only its own folder and only with `--force`; a foreign file or folder is never replaced; piped discover prints one progress line per fit | - |
+//!
+//! Cost: the sign-convention records are written at every third sample (120 Hz): what the
+//! test proves is the reading, and the two discoveries it runs then cost a third.
 
 mod cli_support;
 use cli_support::{afsv, scratch};
@@ -318,9 +333,10 @@ fn records_written_elsewhere_are_read_and_the_effect_is_named() {
     }
 }
 
-/// Strut records whose sidecars state the convention in words are refused, with both ways
-/// forward named; `--assume-convention afsv-v1` reads them, and a per-channel statement is
-/// honoured (a force written tension-positive is flipped back).
+/// Strut records (every third sample of synth's, 120 Hz) whose sidecars state the convention
+/// in words are refused, with both ways forward named; `--assume-convention afsv-v1` reads
+/// them, and a per-channel statement is honoured (a force written tension-positive is
+/// flipped back).
 #[test]
 fn sign_conventions_in_words_are_refused_and_both_ways_forward_work() {
     let data = tmp("conv-synth");
@@ -338,31 +354,18 @@ fn sign_conventions_in_words_are_refused_and_both_ways_forward_work() {
             }
             let name = path.file_name().unwrap();
             let rec = afsv_records::Record::read(&path).unwrap();
-            std::fs::copy(&path, words.join(set).join(name)).unwrap();
             let mut meta = rec.meta.clone();
+            meta["sample_rate_hz"] = (rec.meta["sample_rate_hz"].as_f64().unwrap() / 3.0).into();
             meta["sign_convention"] =
                 "z_s > 0 = compression (piston into the gas chamber), force > 0 = compressive"
                     .into();
+            std::fs::write(words.join(set).join(name), every_third_row(&rec, 1.0)).unwrap();
             std::fs::write(
                 words.join(set).join(name).with_extension("json"),
                 meta.to_string(),
             )
             .unwrap();
-            let mut text = rec.names().join(",") + "\n";
-            let force = rec.names().iter().position(|n| n == "force_n").unwrap();
-            for i in 0..rec.len() {
-                let row: Vec<String> = rec
-                    .names()
-                    .iter()
-                    .enumerate()
-                    .map(|(j, n)| {
-                        let v = rec.column(n).unwrap()[i];
-                        format!("{}", if j == force { -v } else { v })
-                    })
-                    .collect();
-                text += &(row.join(",") + "\n");
-            }
-            std::fs::write(flipped.join(set).join(name), text).unwrap();
+            std::fs::write(flipped.join(set).join(name), every_third_row(&rec, -1.0)).unwrap();
             meta["sign_convention"] = serde_json::json!({"displacement_m": "compression_positive", "force_n": "tension_positive"});
             std::fs::write(
                 flipped.join(set).join(name).with_extension("json"),
@@ -418,7 +421,24 @@ fn sign_conventions_in_words_are_refused_and_both_ways_forward_work() {
     }
 }
 
-/// `afsv synth --model MODEL --effects EFFECTS --seed SEED -o DIR`, which must succeed.
+/// CSV text of every third row of a strut record (synth's 360 Hz become 120 Hz), the force
+/// multiplied by `force_sign`; values printed to round-trip exactly.
+fn every_third_row(rec: &afsv_records::Record, force_sign: f64) -> String {
+    let mut text = rec.names().join(",") + "\n";
+    for i in (0..rec.len()).step_by(3) {
+        let row: Vec<String> = rec
+            .names()
+            .iter()
+            .map(|n| {
+                let v = rec.column(n).unwrap()[i];
+                format!("{}", if n == "force_n" { force_sign * v } else { v })
+            })
+            .collect();
+        text += &(row.join(",") + "\n");
+    }
+    text
+}
+
 #[test]
 fn synth_replaces_only_its_own_folder_and_only_with_force() {
     let data = tmp("rerun");
@@ -513,6 +533,7 @@ fn synth_replaces_only_its_own_folder_and_only_with_force() {
     std::fs::remove_dir_all(&report).unwrap();
 }
 
+/// `afsv synth --model MODEL --effects EFFECTS --seed SEED -o DIR`, which must succeed.
 fn synth(model: &str, effects: &str, seed: &str, dir: &std::path::Path) {
     let out = afsv(&[
         "synth",

@@ -89,14 +89,15 @@ pub fn summary(d: &Discovery) -> String {
     s
 }
 
-/// Strut records whose truth differs outside the catalogue: the load cell lags by 8 ms
-/// (signal conditioning), with default noise.
-pub fn hps_outside_catalogue(seed: u64) -> (HpsStrutModel, Vec<SynthRecord>) {
+/// Strut records sampled at `rate_hz` whose truth differs outside the catalogue: the load
+/// cell lags by 8 ms (signal conditioning; rounded to whole samples, 8.3 ms at 120 and
+/// 360 Hz), with default noise.
+pub fn hps_outside_catalogue(seed: u64, rate_hz: f64) -> (HpsStrutModel, Vec<SynthRecord>) {
     let model = HpsStrutModel::nominal();
-    let mut recs = hps_records(&model, &[], HpsNoise::default_levels(), seed, 360.0).unwrap();
+    let mut recs = hps_records(&model, &[], HpsNoise::default_levels(), seed, rate_hz).unwrap();
+    let lag = (0.008 * rate_hz).round().max(1.0) as usize;
     map_columns(&mut recs, |name, v| {
         if name == "force_n" {
-            let lag = 3;
             let first = v[0];
             v.rotate_right(lag);
             v[..lag].fill(first);
@@ -117,6 +118,27 @@ pub fn yaw_outside_catalogue(seed: u64) -> (YawPlaneModel, Vec<SynthRecord>) {
         }
     });
     (model, recs)
+}
+
+/// Keep every `k`-th sample of every column (a record sampled `k` times slower), with the
+/// sidecar's `sample_rate_hz` divided by `k`.
+pub fn decimate(rec: &Record, k: usize) -> Record {
+    let mut out = Record::new();
+    for name in rec.names() {
+        let v = rec
+            .column(name)
+            .unwrap()
+            .iter()
+            .step_by(k)
+            .copied()
+            .collect();
+        out.push_column(name, v).unwrap();
+    }
+    out.meta = rec.meta.clone();
+    if let Some(rate) = rec.meta.get("sample_rate_hz").and_then(|r| r.as_f64()) {
+        out.meta["sample_rate_hz"] = (rate / k as f64).into();
+    }
+    out
 }
 
 /// Records of `dir/train` and `dir/holdout` (as written by `afsv synth` or
@@ -145,7 +167,19 @@ pub fn read_set(dir: &std::path::Path) -> (Vec<Record>, Vec<Record>, Vec<String>
 
 /// The whole workflow with default options on the record set in `dir`.
 pub fn run_dir<M: DiscoveryModel>(model: &M, dir: &std::path::Path) -> Discovery {
+    run_dir_decimated(model, dir, 1)
+}
+
+/// [`run_dir`] on the records of `dir` with every `k`-th sample kept ([`decimate`]).
+pub fn run_dir_decimated<M: DiscoveryModel>(
+    model: &M,
+    dir: &std::path::Path,
+    k: usize,
+) -> Discovery {
     let (train, hold, tn, hn) = read_set(dir);
+    let every =
+        |recs: Vec<Record>| -> Vec<Record> { recs.iter().map(|r| decimate(r, k)).collect() };
+    let (train, hold) = (every(train), every(hold));
     discover(
         model,
         &train,

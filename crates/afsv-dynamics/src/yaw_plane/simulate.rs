@@ -123,6 +123,27 @@ pub struct SimOptions {
     /// When off, both channels are empty and left out of [`YawRecord::columns`].
     #[serde(default = "record_energy_default")]
     pub record_energy: bool,
+    /// Which channels the run records ([`Recording::Full`] by default).
+    #[serde(default)]
+    pub recording: Recording,
+}
+
+/// Which channels a run records. The integration, its output grid and its divergence
+/// checks are the same in every mode: a channel recorded in two modes has the same values.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Recording {
+    /// Every channel of [`YawRecord`] and every state.
+    #[default]
+    Full,
+    /// Only the channels the section 3.3 measures read (the decay fit of the pulse run, the
+    /// step metrics and the Eq 4.7 efficiency of the step run): `time_s`,
+    /// `articulation_deg`, `articulation_rate_deg_s`, `steering_torque_nm`,
+    /// `q_supply_m3_s` and `supply_pressure_pa`, on the full output grid. Each sample
+    /// evaluates the actuator alone (no tire forces, no accelerations); every other
+    /// channel, the energy channels (whatever [`SimOptions::record_energy`] says) and
+    /// [`YawRecord::states`] stay empty.
+    Measures,
 }
 
 fn record_energy_default() -> bool {
@@ -141,6 +162,7 @@ impl Default for SimOptions {
             max_articulation_deg: 60.0,
             initial_articulation_rad: 0.0,
             record_energy: true,
+            recording: Recording::Full,
         }
     }
 }
@@ -190,6 +212,7 @@ pub struct SolverStats {
 
 /// Time histories of one run. The first eight columns are the record channels of
 /// docs/records.md (sign convention: positive = right-hand turn); the rest are internal.
+/// A channel the run's [`Recording`] mode leaves out is empty.
 #[derive(Debug, Clone, PartialEq, Default, Serialize, Deserialize)]
 pub struct YawRecord {
     /// Time (s).
@@ -250,8 +273,9 @@ pub struct YawRecord {
 }
 
 impl YawRecord {
-    /// All scalar channels in record order, `(column name, values)`; internal states
-    /// follow with a `state_` prefix.
+    /// All recorded scalar channels in record order, `(column name, values)`; internal
+    /// states follow with a `state_` prefix. Channels the run did not record (empty) are
+    /// left out.
     pub fn columns(&self) -> Vec<(String, &[f64])> {
         let mut c: Vec<(String, &[f64])> = vec![
             ("time_s".into(), &self.time_s),
@@ -289,15 +313,54 @@ impl YawRecord {
             ("supply_power_w".into(), &self.supply_power_w),
             ("supply_pressure_pa".into(), &self.supply_pressure_pa),
             ("traction_force_n".into(), &self.traction_force_n),
+            ("kinetic_energy_j".into(), &self.kinetic_energy_j),
+            ("actuator_energy_j".into(), &self.actuator_energy_j),
         ];
-        if !self.kinetic_energy_j.is_empty() {
-            c.push(("kinetic_energy_j".into(), &self.kinetic_energy_j));
-            c.push(("actuator_energy_j".into(), &self.actuator_energy_j));
-        }
         for (name, v) in &self.states {
             c.push((format!("state_{name}"), v.as_slice()));
         }
+        c.retain(|(_, v)| !v.is_empty());
         c
+    }
+
+    /// The channels `recording` fills, each with room for `n` samples, so that a run
+    /// allocates nothing per output sample.
+    fn reserve(&mut self, recording: Recording, record_energy: bool, n: usize) {
+        let measures = [
+            &mut self.time_s,
+            &mut self.articulation_deg,
+            &mut self.articulation_rate_deg_s,
+            &mut self.steering_torque_nm,
+            &mut self.q_supply_m3_s,
+            &mut self.supply_pressure_pa,
+        ];
+        measures.into_iter().for_each(|v| v.reserve_exact(n));
+        if recording == Recording::Measures {
+            return;
+        }
+        let rest = [
+            &mut self.steer_wheel_deg,
+            &mut self.speed_m_s,
+            &mut self.strut_left_disp_m,
+            &mut self.p_c_pa,
+            &mut self.p_r_pa,
+            &mut self.yaw_rate_front_deg_s,
+            &mut self.yaw_rate_rear_deg_s,
+            &mut self.lateral_velocity_front_m_s,
+            &mut self.lateral_accel_front_m_s2,
+            &mut self.lateral_accel_rear_m_s2,
+            &mut self.x_m,
+            &mut self.y_m,
+            &mut self.heading_front_deg,
+            &mut self.slip_front_deg,
+            &mut self.slip_rear_deg,
+            &mut self.traction_force_n,
+        ];
+        rest.into_iter().for_each(|v| v.reserve_exact(n));
+        if record_energy {
+            self.kinetic_energy_j.reserve_exact(n);
+            self.actuator_energy_j.reserve_exact(n);
+        }
     }
 
     /// Articulation angle in rad.
@@ -378,19 +441,10 @@ pub fn simulate<A: SteeringActuator>(
 
     let mut rec = YawRecord::default();
     let n_out = grid.len();
-    for v in [
-        &mut rec.time_s,
-        &mut rec.steer_wheel_deg,
-        &mut rec.speed_m_s,
-        &mut rec.articulation_deg,
-        &mut rec.strut_left_disp_m,
-        &mut rec.p_c_pa,
-        &mut rec.p_r_pa,
-        &mut rec.yaw_rate_front_deg_s,
-    ] {
-        v.reserve(n_out);
-    }
-    let mut states: Vec<Vec<f64>> = vec![Vec::with_capacity(n_out); layout.dim];
+    let full = options.recording == Recording::Full;
+    rec.reserve(options.recording, options.record_energy, n_out);
+    let n_states = if full { layout.dim } else { 0 };
+    let mut states: Vec<Vec<f64>> = vec![Vec::with_capacity(n_out); n_states];
     let mut scratch = vec![0.0; layout.dim];
     let max_theta = options.max_articulation_deg.to_radians();
 
@@ -409,6 +463,10 @@ pub fn simulate<A: SteeringActuator>(
                 state: describe_state(&names, y),
             });
             return Control::Stop;
+        }
+        if !full {
+            record_measures(&mut rec, &model, t, y, &mut scratch);
+            return Control::Continue;
         }
         let e = model.evaluate(t, y, &mut scratch);
         let m = Motion {
@@ -476,8 +534,38 @@ pub fn simulate<A: SteeringActuator>(
         Err(e) => return Err(map_ode_error(e, &names)),
     };
     rec.stats = stats;
-    rec.states = names.into_iter().zip(states).collect();
+    if full {
+        rec.states = names.into_iter().zip(states).collect();
+    }
     Ok(rec)
+}
+
+/// One output sample of [`Recording::Measures`]: the articulation and, from the actuator
+/// alone, the Eq 4.7 channels. The actuator sees the same (theta, theta_dot, steering-wheel
+/// angle, actuator states) as in [`YawPlaneModel::evaluate`], so its outputs are those of
+/// a full record.
+fn record_measures<A: SteeringActuator>(
+    rec: &mut YawRecord,
+    model: &YawPlaneModel<'_, A>,
+    t: f64,
+    y: &[f64],
+    scratch: &mut [f64],
+) {
+    let theta_dot = y[2] - y[3];
+    let act = model.actuator_range();
+    let out = model.actuator.evaluate(
+        y[0],
+        theta_dot,
+        model.steer_wheel(t, y),
+        &y[act.clone()],
+        &mut scratch[act],
+    );
+    rec.time_s.push(t);
+    rec.articulation_deg.push(y[0].to_degrees());
+    rec.articulation_rate_deg_s.push(theta_dot.to_degrees());
+    rec.steering_torque_nm.push(out.torque);
+    rec.q_supply_m3_s.push(out.q_supply);
+    rec.supply_pressure_pa.push(out.supply_pressure);
 }
 
 fn map_ode_error(e: OdeError, names: &[String]) -> DynError {
@@ -499,5 +587,130 @@ fn map_ode_error(e: OdeError, names: &[String]) -> DynError {
             state: describe_state(names, &state),
         },
         OdeError::InvalidInput(m) => DynError::InvalidInput(m),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::yaw_plane::analysis::{measures_for, MeasureSpec};
+    use crate::yaw_plane::driver::{Course, PathDriver};
+    use crate::yaw_plane::params::{Load, YawPlaneParams};
+    use proptest::prelude::*;
+
+    /// Run `man` in both modes; the measures-only record must hold exactly the full
+    /// record's values in its six channels and nothing else.
+    fn assert_same_channels(p: &YawPlaneParams, man: &Manoeuvre, form: EquationForm) {
+        let sys = p.afs_system().unwrap();
+        let full_opts = SimOptions {
+            form,
+            ..SimOptions::default()
+        };
+        let only_opts = SimOptions {
+            recording: Recording::Measures,
+            ..full_opts
+        };
+        let full = simulate(&p.vehicle, &sys, man, &full_opts).unwrap();
+        let only = simulate(&p.vehicle, &sys, man, &only_opts).unwrap();
+        assert_eq!(only.stats, full.stats);
+        let kept = [
+            "time_s",
+            "articulation_deg",
+            "articulation_rate_deg_s",
+            "steering_torque_nm",
+            "q_supply_m3_s",
+            "supply_pressure_pa",
+        ];
+        let got = only.columns();
+        let names: Vec<&str> = got.iter().map(|(n, _)| n.as_str()).collect();
+        assert_eq!(names, kept);
+        assert!(only.states.is_empty() && only.kinetic_energy_j.is_empty());
+        let all = full.columns();
+        for (name, values) in got {
+            let (_, want) = all.iter().find(|(n, _)| *n == name).unwrap();
+            assert_eq!(values, *want, "{name}");
+        }
+        // The whole output grid, not a truncated run.
+        assert!(only.time_s.len() as f64 >= man.duration_s / full_opts.output_dt_s);
+    }
+
+    #[test]
+    fn measures_only_channels_equal_the_full_record_open_loop_and_with_the_driver() {
+        let loaded = YawPlaneParams::nominal(Load::Loaded);
+        let unloaded = YawPlaneParams::nominal(Load::Unloaded);
+        let form = EquationForm::EnergyConsistent;
+        assert_same_channels(&loaded, &Manoeuvre::pulse(50.0 / 3.6, 30.0), form);
+        assert_same_channels(&unloaded, &Manoeuvre::step(30.0 / 3.6, -20.0), form);
+        assert_same_channels(
+            &loaded,
+            &Manoeuvre::step(50.0 / 3.6, 30.0),
+            EquationForm::PaperEq313,
+        );
+        // Closed loop: the steering-wheel angle is a state of the driver.
+        let driver = PathDriver::new(Course::steady_turn_fig_3_6());
+        let turn = Manoeuvre::course(15.0 / 3.6, 8.0, driver, "steady_turn");
+        assert_same_channels(&loaded, &turn, form);
+    }
+
+    /// Every number of two measure sets agrees to `rel` relative.
+    fn assert_close(a: &serde_json::Value, b: &serde_json::Value, rel: f64) {
+        let (a, b) = (a.as_object().unwrap(), b.as_object().unwrap());
+        assert_eq!(a.len(), b.len());
+        for (k, va) in a {
+            match (va.as_f64(), b[k].as_f64()) {
+                (Some(x), Some(y)) => {
+                    assert!(x.is_finite(), "{k} = {x}");
+                    assert!(
+                        (x - y).abs() <= rel * x.abs().max(y.abs()),
+                        "{k}: {x} vs {y}"
+                    );
+                }
+                _ => assert_eq!(va, &b[k], "{k}"),
+            }
+        }
+    }
+
+    #[test]
+    fn measures_from_the_measures_only_record_equal_those_of_the_full_record() {
+        for load in Load::ALL {
+            let p = YawPlaneParams::nominal(load);
+            let mut spec = MeasureSpec::default();
+            let full = measures_for(&p.vehicle, &p.afs, Some(load), 40.0 / 3.6, &spec).unwrap();
+            spec.options.recording = Recording::Measures;
+            let only = measures_for(&p.vehicle, &p.afs, Some(load), 40.0 / 3.6, &spec).unwrap();
+            let (full, only) = (
+                serde_json::to_value(full).unwrap(),
+                serde_json::to_value(only).unwrap(),
+            );
+            assert_close(&full, &only, 1e-12);
+        }
+    }
+
+    #[test]
+    fn recording_defaults_to_full_in_option_files() {
+        let mut v = serde_json::to_value(SimOptions::default()).unwrap();
+        assert_eq!(v["recording"], "full");
+        v.as_object_mut().unwrap().remove("recording");
+        let back: SimOptions = serde_json::from_value(v).unwrap();
+        assert_eq!(back.recording, Recording::Full);
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(12))]
+        #[test]
+        fn measures_only_channels_equal_the_full_record_for_any_pulse(
+            speed_kmh in 5.0f64..60.0,
+            peak_deg in -60.0f64..60.0,
+            start_s in 0.0f64..2.0,
+        ) {
+            let man = Manoeuvre::open_loop(
+                speed_kmh / 3.6,
+                4.0,
+                SteerInput::pulse_deg(peak_deg, 0.2, start_s),
+                "pulse",
+            );
+            let p = YawPlaneParams::nominal(Load::Loaded);
+            assert_same_channels(&p, &man, EquationForm::EnergyConsistent);
+        }
     }
 }

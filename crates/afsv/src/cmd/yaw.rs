@@ -9,6 +9,7 @@ use afsv_dynamics::yaw_plane::analysis::{
     gain_efficiency_correlation, measures_for, sensitivity_with_progress, steady_turn_decay,
     MeasureSpec,
 };
+use afsv_dynamics::yaw_plane::simulate::Recording;
 use afsv_dynamics::{
     simulate, Course, EquationForm, Load, Manoeuvre, PathDriver, SimOptions, Solver, SteerInput,
     YawPlaneParams,
@@ -302,6 +303,15 @@ fn selected_columns<'a>(
         .collect())
 }
 
+/// The section 3.3 test definition in `form`, recording only the channels the measures
+/// read (the same numbers as a full record, without the per-sample cost of the others).
+fn measures_spec(form: FormChoice) -> MeasureSpec {
+    let mut spec = MeasureSpec::default();
+    spec.options.form = form.into();
+    spec.options.recording = Recording::Measures;
+    spec
+}
+
 /// Run an `afsv yaw` subcommand.
 pub fn run(cmd: Command) -> CmdResult {
     match cmd {
@@ -382,8 +392,7 @@ pub fn run(cmd: Command) -> CmdResult {
         Command::Measures { vehicle } => {
             let p = load_params(&vehicle)?;
             let speed = kmh(vehicle.speed_kmh)?;
-            let mut spec = MeasureSpec::default();
-            spec.options.form = vehicle.form.into();
+            let spec = measures_spec(vehicle.form);
             let m = measures_for(&p.vehicle, &p.afs, p.load, speed, &spec)?;
             afsv::output::print_json(&m)?;
         }
@@ -392,8 +401,7 @@ pub fn run(cmd: Command) -> CmdResult {
             form,
             table,
         } => {
-            let mut spec = MeasureSpec::default();
-            spec.options.form = form.into();
+            let spec = measures_spec(form);
             let progress = Progress::new("afsv yaw sensitivity", "configurations", Some(34));
             let t = sensitivity_with_progress(kmh(speed_kmh)?, &spec, &|_, _| progress.step(""));
             progress.finish();
