@@ -29,6 +29,8 @@ use std::path::{Path, PathBuf};
 pub enum Command {
     /// Chapter 4: optimise the frame-steering design [A_0, l_1, l_2, a_v, B_eff] (Eq 4.8 with the AHP weights of Eq 4.17, Eq 4.10 and a minimum full-lock steering arm as constraints) by multi-start pattern search and SQP.
     Afs(AfsArgs),
+    /// Chapter 6: optimise the front-axle HPS [A_hc, A_v, A_b] (Eq 6.19 with a_wz <= 0.85 m/s², Eq 6.20) on the 3-D vehicle by a genetic algorithm, then re-evaluate over terrain seeds.
+    Hps(super::optimize_hps::HpsArgs),
 }
 
 /// Options of `afsv optimize afs`.
@@ -128,6 +130,7 @@ fn point(s: &str) -> Result<[f64; 2], String> {
 pub fn run(cmd: Command) -> CmdResult {
     match cmd {
         Command::Afs(a) => run_afs(&a),
+        Command::Hps(a) => super::optimize_hps::run(&a),
     }
 }
 

@@ -1,0 +1,159 @@
+//! `afsv optimize hps`: the chapter-6 HPS design optimisation (Eqs 6.19-6.20) on the 3-D
+//! vehicle by a genetic algorithm (`afsv_design::hps_optimum`), then the optimum and the
+//! nominal design re-evaluated over terrain seeds with SP-DRT and omega_z.
+
+use super::CmdResult;
+use afsv_design::hps_optimum::{optimise_hps, HpsGaSettings, HpsOptimum};
+use std::io::IsTerminal;
+
+/// Options of `afsv optimize hps`.
+#[derive(clap::Args)]
+pub struct HpsArgs {
+    /// GA population (even, 4 to 1000).
+    #[arg(long, default_value_t = 20)]
+    pub population: usize,
+    /// GA generations (1 to 1000); each costs `population` vehicle runs.
+    #[arg(long, default_value_t = 10)]
+    pub generations: usize,
+    /// Seed of the GA.
+    #[arg(long, default_value_t = 1)]
+    pub seed: u64,
+    /// The fixed terrain seed of the search (the first of the re-evaluation seeds).
+    #[arg(long, default_value_t = 1)]
+    pub terrain_seed: u64,
+    /// Terrain seeds of the re-evaluation of the optimum and the nominal design (1 to 100).
+    #[arg(long, default_value_t = 10)]
+    pub reevaluation_seeds: usize,
+    /// Skip the SP-DRT re-evaluation (D2, the costliest runs).
+    #[arg(long)]
+    pub no_roll: bool,
+    /// Print JSON even on a terminal.
+    #[arg(long)]
+    pub json: bool,
+}
+
+/// GA progress: one step per generation.
+struct Generations(afsv::progress::Progress);
+
+impl optimize::Progress for Generations {
+    fn report(&self, _phase: &str, done: usize, _total: usize, best: f64) {
+        self.0.step(&format!("generation {done}, best F {best:.4}"));
+    }
+}
+
+/// Run the optimisation and print the result.
+pub fn run(a: &HpsArgs) -> CmdResult {
+    if !(4..=1000).contains(&a.population) || a.population % 2 == 1 {
+        return Err(format!("--population {}: must be even, 4 to 1000", a.population).into());
+    }
+    if !(1..=1000).contains(&a.generations) {
+        return Err(format!("--generations {}: must be 1 to 1000", a.generations).into());
+    }
+    if !(1..=100).contains(&a.reevaluation_seeds) {
+        return Err(format!(
+            "--reevaluation-seeds {}: must be 1 to 100",
+            a.reevaluation_seeds
+        )
+        .into());
+    }
+    let settings = HpsGaSettings {
+        population: a.population,
+        generations: a.generations,
+        ga_seed: a.seed,
+        terrain_seed: a.terrain_seed,
+        reevaluation_seeds: a.reevaluation_seeds,
+        reevaluate_roll: !a.no_roll,
+        ..HpsGaSettings::default()
+    };
+    let progress = Generations(afsv::progress::Progress::new(
+        "afsv optimize hps",
+        "generations",
+        Some(a.generations),
+    ));
+    let r = optimise_hps(&vehicle_3d::VehicleParams::nominal(), &settings, &progress)?;
+    progress.0.finish();
+    if a.json || !std::io::stdout().is_terminal() {
+        afsv::output::print_json(&serde_json::to_value(&r)?)?;
+    } else {
+        print!("{}", text(&r));
+    }
+    Ok(())
+}
+
+/// A value or "n/a".
+fn v(x: f64, digits: usize) -> String {
+    if x.is_finite() {
+        format!("{x:.digits$}")
+    } else {
+        "n/a".into()
+    }
+}
+
+fn text(r: &HpsOptimum) -> String {
+    let (n, o) = (&r.nominal_design, &r.design);
+    let mut s = format!(
+        "HPS design (Eq 6.19: F = a_wz/a_wzn + d_s/d_sn, a_wz <= {} m/s²), unloaded, 20 km/h, class E, terrain seed {}\n",
+        r.settings.a_wz_limit_m_s2, r.settings.terrain_seed
+    );
+    s += &format!("  {:<26} {:>12} {:>12}\n", "", "nominal", "optimum");
+    s += &format!("  {:<26} {:>12.4} {:>12.4}\n", "A_hc (m²)", n.a_hc, o.a_hc);
+    s += &format!(
+        "  {:<26} {:>12.2} {:>12.2}\n",
+        "A_v (mm²)",
+        n.a_v * 1e6,
+        o.a_v * 1e6
+    );
+    s += &format!(
+        "  {:<26} {:>12.2} {:>12.2}\n",
+        "A_b (mm²)",
+        n.a_b * 1e6,
+        o.a_b * 1e6
+    );
+    s += &format!(
+        "  {:<26} {:>12} {:>12}\n",
+        "a_wz, search seed (m/s²)",
+        v(r.nominal_ride.a_wz_m_s2, 3),
+        v(r.optimum_ride.a_wz_m_s2, 3)
+    );
+    s += &format!(
+        "  {:<26} {:>12} {:>12}\n",
+        "d_s, search seed (m)",
+        v(r.nominal_ride.d_s_m, 4),
+        v(r.optimum_ride.d_s_m, 4)
+    );
+    s += &format!(
+        "  {:<26} {:>12} {:>12}\n",
+        "F (Eq 6.19)",
+        "2.000",
+        v(r.objective, 3)
+    );
+    let (an, ao) = (&r.nominal_over_seeds, &r.optimum_over_seeds);
+    s += &format!(
+        "  {:<26} {:>12} {:>12}\n",
+        format!("a_wz, {} seeds (m/s²)", an.a_wz_m_s2.n),
+        v(an.a_wz_m_s2.mean, 3),
+        v(ao.a_wz_m_s2.mean, 3)
+    );
+    s += &format!(
+        "  {:<26} {:>12} {:>12}\n",
+        "SP-DRT loaded (m/s²)",
+        v(an.sp_drt_m_s2.mean, 2),
+        v(ao.sp_drt_m_s2.mean, 2)
+    );
+    s += &format!(
+        "  {:<26} {:>12} {:>12}\n",
+        "omega_z loaded (Hz)",
+        v(an.omega_z_hz, 2),
+        v(ao.omega_z_hz, 2)
+    );
+    s += &format!(
+        "  {} vehicle runs in the search; the optimum is {}\n",
+        r.evaluations,
+        if r.feasible {
+            "feasible"
+        } else {
+            "NOT feasible (a_wz above the limit)"
+        }
+    );
+    s
+}
