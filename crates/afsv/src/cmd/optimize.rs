@@ -26,6 +26,8 @@ use std::path::{Path, PathBuf};
 
 /// `afsv optimize` subcommands.
 #[derive(clap::Subcommand)]
+// One value per process, parsed once: the size difference between the variants is harmless.
+#[allow(clippy::large_enum_variant)]
 pub enum Command {
     /// Chapter 4: optimise the frame-steering design [A_0, l_1, l_2, a_v, B_eff] (Eq 4.8 with the AHP weights of Eq 4.17, Eq 4.10 and a minimum full-lock steering arm as constraints) by multi-start pattern search and SQP.
     Afs(AfsArgs),
