@@ -122,6 +122,12 @@ impl SteerInput {
                         "steering input: ramp limit must be finite and >= 0, got {limit_rad}"
                     )));
                 }
+                // the ramp's end (a breakpoint) must be a finite time
+                if *rate_rad_s != 0.0 && !(start_s + limit_rad / rate_rad_s.abs()).is_finite() {
+                    return Err(DynError::InvalidInput(format!(
+                        "steering input: ramp rate {rate_rad_s} rad/s is too slow to reach its limit {limit_rad} rad in finite time"
+                    )));
+                }
                 Ok(())
             }
             SteerInput::Table { time_s, angle_rad } => {
@@ -294,5 +300,23 @@ mod tests {
             angle_rad: vec![0.0, 1.0],
         };
         assert!(t.validate().is_err());
+        // a ramp so slow that its end (a breakpoint) is not a finite time
+        let slow = SteerInput::Ramp {
+            rate_rad_s: 1e-320,
+            start_s: 1.0,
+            limit_rad: 1.0,
+        };
+        assert!(slow
+            .validate()
+            .unwrap_err()
+            .to_string()
+            .contains("too slow"));
+        let fine = SteerInput::Ramp {
+            rate_rad_s: 0.1,
+            start_s: 1.0,
+            limit_rad: 1.0,
+        };
+        assert!(fine.validate().is_ok());
+        assert!(fine.breakpoints().iter().all(|t| t.is_finite()));
     }
 }
