@@ -10,7 +10,6 @@ pub mod evaluate;
 pub mod hps;
 pub mod measures;
 pub mod optimize;
-pub mod optimize_hps;
 pub mod params;
 pub mod roll;
 pub mod study;

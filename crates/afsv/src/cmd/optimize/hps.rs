@@ -2,7 +2,7 @@
 //! vehicle by a genetic algorithm (`afsv_design::hps_optimum`), then the optimum and the
 //! nominal design re-evaluated over terrain seeds with SP-DRT and omega_z.
 
-use super::CmdResult;
+use crate::cmd::CmdResult;
 use afsv_design::hps_optimum::{optimise_hps, HpsGaSettings, HpsOptimum};
 use std::io::IsTerminal;
 
@@ -91,61 +91,52 @@ fn v(x: f64, digits: usize) -> String {
 
 fn text(r: &HpsOptimum) -> String {
     let (n, o) = (&r.nominal_design, &r.design);
+    let (an, ao) = (&r.nominal_over_seeds, &r.optimum_over_seeds);
+    // (row, nominal, optimum, decimals)
+    let rows = [
+        ("A_hc (m²)".to_string(), n.a_hc, o.a_hc, 4),
+        ("A_v (mm²)".into(), n.a_v * 1e6, o.a_v * 1e6, 2),
+        ("A_b (mm²)".into(), n.a_b * 1e6, o.a_b * 1e6, 2),
+        (
+            "a_wz, search seed (m/s²)".into(),
+            r.nominal_ride.a_wz_m_s2,
+            r.optimum_ride.a_wz_m_s2,
+            3,
+        ),
+        (
+            "d_s, search seed (m)".into(),
+            r.nominal_ride.d_s_m,
+            r.optimum_ride.d_s_m,
+            4,
+        ),
+        ("F (Eq 6.19)".into(), 2.0, r.objective, 3),
+        (
+            format!("a_wz, {} seeds (m/s²)", an.a_wz_m_s2.n),
+            an.a_wz_m_s2.mean,
+            ao.a_wz_m_s2.mean,
+            3,
+        ),
+        (
+            "SP-DRT loaded (m/s²)".into(),
+            an.sp_drt_m_s2.mean,
+            ao.sp_drt_m_s2.mean,
+            2,
+        ),
+        (
+            "omega_z loaded (Hz)".into(),
+            an.omega_z_hz,
+            ao.omega_z_hz,
+            2,
+        ),
+    ];
     let mut s = format!(
         "HPS design (Eq 6.19: F = a_wz/a_wzn + d_s/d_sn, a_wz <= {} m/s²), unloaded, 20 km/h, class E, terrain seed {}\n",
         r.settings.a_wz_limit_m_s2, r.settings.terrain_seed
     );
     s += &format!("  {:<26} {:>12} {:>12}\n", "", "nominal", "optimum");
-    s += &format!("  {:<26} {:>12.4} {:>12.4}\n", "A_hc (m²)", n.a_hc, o.a_hc);
-    s += &format!(
-        "  {:<26} {:>12.2} {:>12.2}\n",
-        "A_v (mm²)",
-        n.a_v * 1e6,
-        o.a_v * 1e6
-    );
-    s += &format!(
-        "  {:<26} {:>12.2} {:>12.2}\n",
-        "A_b (mm²)",
-        n.a_b * 1e6,
-        o.a_b * 1e6
-    );
-    s += &format!(
-        "  {:<26} {:>12} {:>12}\n",
-        "a_wz, search seed (m/s²)",
-        v(r.nominal_ride.a_wz_m_s2, 3),
-        v(r.optimum_ride.a_wz_m_s2, 3)
-    );
-    s += &format!(
-        "  {:<26} {:>12} {:>12}\n",
-        "d_s, search seed (m)",
-        v(r.nominal_ride.d_s_m, 4),
-        v(r.optimum_ride.d_s_m, 4)
-    );
-    s += &format!(
-        "  {:<26} {:>12} {:>12}\n",
-        "F (Eq 6.19)",
-        "2.000",
-        v(r.objective, 3)
-    );
-    let (an, ao) = (&r.nominal_over_seeds, &r.optimum_over_seeds);
-    s += &format!(
-        "  {:<26} {:>12} {:>12}\n",
-        format!("a_wz, {} seeds (m/s²)", an.a_wz_m_s2.n),
-        v(an.a_wz_m_s2.mean, 3),
-        v(ao.a_wz_m_s2.mean, 3)
-    );
-    s += &format!(
-        "  {:<26} {:>12} {:>12}\n",
-        "SP-DRT loaded (m/s²)",
-        v(an.sp_drt_m_s2.mean, 2),
-        v(ao.sp_drt_m_s2.mean, 2)
-    );
-    s += &format!(
-        "  {:<26} {:>12} {:>12}\n",
-        "omega_z loaded (Hz)",
-        v(an.omega_z_hz, 2),
-        v(ao.omega_z_hz, 2)
-    );
+    for (name, a, b, digits) in rows {
+        s += &format!("  {name:<26} {:>12} {:>12}\n", v(a, digits), v(b, digits));
+    }
     s += &format!(
         "  {} vehicle runs in the search; the optimum is {}\n",
         r.evaluations,
