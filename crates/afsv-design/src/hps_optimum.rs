@@ -165,17 +165,7 @@ fn assess(p: &VehicleParams, seeds: &[u64], roll: bool) -> Result<HpsAssessment,
         Vec::new()
     };
     let (_, y) = yaw(p, &YawSpec::d3(FrontAxle::Suspended), 0).map_err(sim)?;
-    let spread = |v: Vec<f64>| {
-        if v.is_empty() {
-            Ok(Spread {
-                mean: f64::NAN,
-                sd: f64::NAN,
-                n: 0,
-            })
-        } else {
-            Spread::of(&v).map_err(sim)
-        }
-    };
+    let spread = |v: Vec<f64>| Spread::of_measured(&v).map_err(sim);
     Ok(HpsAssessment {
         a_wz_m_s2: spread(ride.iter().map(|m| m.a_wz_m_s2).collect())?,
         sp_drt_m_s2: spread(roll.iter().map(|m| m.sp_drt_m_s2).collect())?,

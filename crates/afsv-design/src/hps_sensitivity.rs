@@ -103,11 +103,12 @@ pub struct HpsSensitivity {
     pub rows: Vec<SensitivityRow>,
 }
 
-/// A run of the study.
+/// A run of the study: a design index and, for the rough-terrain runs, the index of its
+/// terrain case (load and seed, with the enveloping cache).
 #[derive(Debug, Clone, Copy)]
 enum Run {
-    Ride(usize, Load, u64),
-    Roll(usize, u64),
+    Ride(usize, usize, Load),
+    Roll(usize, usize),
     Yaw(usize),
 }
 
@@ -144,22 +145,10 @@ pub fn hps_sensitivity(
             designs.push((v, c, p));
         }
     }
-    let mut runs = Vec::new();
-    for d in 0..designs.len() {
-        for &s in seeds {
-            runs.push(Run::Ride(d, Load::Unloaded, s));
-            runs.push(Run::Ride(d, Load::Loaded, s));
-            if scope.roll {
-                runs.push(Run::Roll(d, s));
-            }
-        }
-        if scope.yaw {
-            runs.push(Run::Yaw(d));
-        }
-    }
     let sim = |e: vehicle_3d::VehicleError| DesignError::Simulation(e.to_string());
-    // the enveloping caches depend on the terrain and the load, not on the strut design:
-    // built once per seed and load, shared by every design
+    // the terrain cases: per seed the unloaded and loaded ride and the roll run (None). Their
+    // enveloping caches depend on the terrain and the load, not on the strut design: built
+    // once per case, shared by every design
     let ride_spec = |load| RideSpec::d1(load, FrontAxle::Suspended);
     let roll_spec = RollSpec::d2(FrontAxle::Suspended);
     let mut cases: Vec<(Option<Load>, u64)> = Vec::new();
@@ -178,19 +167,27 @@ pub fn hps_sensitivity(
         })
         .collect::<Result<_, _>>()
         .map_err(sim)?;
-    let tracks_of = |load: Option<Load>, s: u64| {
-        let i = cases.iter().position(|c| *c == (load, s)).unwrap_or(0);
-        Arc::clone(&tracks[i])
-    };
+    let mut runs = Vec::new();
+    for d in 0..designs.len() {
+        for (c, case) in cases.iter().enumerate() {
+            runs.push(match case.0 {
+                Some(load) => Run::Ride(d, c, load),
+                None => Run::Roll(d, c),
+            });
+        }
+        if scope.yaw {
+            runs.push(Run::Yaw(d));
+        }
+    }
     let values: Vec<f64> = runs
         .par_iter()
         .map(|&r| {
             let v = match r {
-                Run::Ride(d, load, s) => {
-                    ride_on(&designs[d].2, &ride_spec(load), tracks_of(Some(load), s))
+                Run::Ride(d, c, load) => {
+                    ride_on(&designs[d].2, &ride_spec(load), Arc::clone(&tracks[c]))
                         .map(|(_, m)| m.a_wz_m_s2)
                 }
-                Run::Roll(d, s) => roll_on(&designs[d].2, &roll_spec, tracks_of(None, s))
+                Run::Roll(d, c) => roll_on(&designs[d].2, &roll_spec, Arc::clone(&tracks[c]))
                     .map(|(_, m)| m.sp_drt_m_s2),
                 Run::Yaw(d) => yaw(&designs[d].2, &YawSpec::d3(FrontAxle::Suspended), 0)
                     .map(|(_, m)| m.omega_z_hz),
@@ -199,23 +196,13 @@ pub fn hps_sensitivity(
             v.map_err(sim)
         })
         .collect::<Result<_, _>>()?;
-    let spread = |v: &[f64]| {
-        if v.is_empty() {
-            Ok(Spread {
-                mean: f64::NAN,
-                sd: f64::NAN,
-                n: 0,
-            })
-        } else {
-            Spread::of(v).map_err(sim)
-        }
-    };
+    let spread = |v: &[f64]| Spread::of_measured(v).map_err(sim);
     let measures = |d: usize| -> Result<HpsMeasures, DesignError> {
         let (mut u, mut l, mut sp, mut wz) = (vec![], vec![], vec![], f64::NAN);
         for (r, &v) in runs.iter().zip(&values) {
             match *r {
-                Run::Ride(i, Load::Unloaded, _) if i == d => u.push(v),
-                Run::Ride(i, Load::Loaded, _) if i == d => l.push(v),
+                Run::Ride(i, _, Load::Unloaded) if i == d => u.push(v),
+                Run::Ride(i, _, Load::Loaded) if i == d => l.push(v),
                 Run::Roll(i, _) if i == d => sp.push(v),
                 Run::Yaw(i) if i == d => wz = v,
                 _ => {}

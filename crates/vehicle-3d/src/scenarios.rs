@@ -113,6 +113,20 @@ impl Spread {
         };
         Ok(Self { mean, sd, n })
     }
+
+    /// The spread of `values`, or NaN mean and SD with `n = 0` when nothing was measured
+    /// (a measure a study left out: JSON prints it as null with a reason).
+    pub fn of_measured(values: &[f64]) -> Result<Self, VehicleError> {
+        if values.is_empty() {
+            Ok(Self {
+                mean: f64::NAN,
+                sd: f64::NAN,
+                n: 0,
+            })
+        } else {
+            Self::of(values)
+        }
+    }
 }
 
 /// Measures of one D1 ride run.
@@ -239,10 +253,8 @@ pub fn ride_measures(
     let fs = 1.0 / (rec.t_s[1] - rec.t_s[0]);
     let az = &rec.cab_accel_m_s2[2][i0..];
     let weighted = weight_fft(Weighting::Wk, az, fs).map_err(|e| measure("a_wz", e))?;
-    let rms = |x: &[f64]| {
-        let mean = x.iter().sum::<f64>() / x.len() as f64;
-        (x.iter().map(|v| (v - mean).powi(2)).sum::<f64>() / x.len() as f64).sqrt()
-    };
+    // ISO 2631-1: a_w is the plain RMS of the weighted signal (weight_fft removed the mean)
+    let rms = |x: &[f64]| perf_measures::signal::rms(x).map_err(|e| measure("a_wz", e));
     let travel = match front_axle {
         FrontAxle::Rigid => None,
         FrontAxle::Suspended => Some(
@@ -258,8 +270,8 @@ pub fn ride_measures(
         ),
     };
     Ok(RideMeasures {
-        a_wz_m_s2: rms(&weighted),
-        a_z_rms_m_s2: rms(az),
+        a_wz_m_s2: rms(&weighted)?,
+        a_z_rms_m_s2: rms(az)?,
         strut_travel_p2p_m: travel,
         vertical_peak_hz: psd_peak(az, fs)?,
         pitch_peak_hz: psd_peak(&rec.front_angular_accel_rad_s2[1][i0..], fs)?,

@@ -77,6 +77,12 @@ fn spread_and_end_stops_by_hand() {
     let s = Spread::of(&[1.0, 2.0, 3.0]).unwrap();
     assert_eq!((s.mean, s.sd, s.n), (2.0, 1.0, 3));
     assert!(Spread::of(&[]).is_err() && Spread::of(&[f64::NAN]).is_err());
+    let none = Spread::of_measured(&[]).unwrap();
+    assert!(none.mean.is_nan() && none.sd.is_nan() && none.n == 0);
+    assert_eq!(
+        Spread::of_measured(&[1.0, 3.0]).unwrap(),
+        Spread::of(&[1.0, 3.0]).unwrap()
+    );
     assert_eq!(end_stop_force(0.1, 1.0, 0.12), 0.0);
     assert!((end_stop_force(0.13, 0.0, 0.12) - 2.0e5).abs() < 1e-6);
     assert!((end_stop_force(-0.13, 0.0, 0.12) + 2.0e5).abs() < 1e-6);

@@ -36,6 +36,14 @@ fn note(s: &Spread, what: &str) -> String {
     )
 }
 
+/// The vertical and pitch PSD peaks (mean over the seeds of `m`), with their keys.
+fn peaks(m: &[RideMeasures]) -> Result<[(&'static str, Spread); 2], String> {
+    Ok([
+        ("vertical", mean_of(m, |m| m.vertical_peak_hz)?),
+        ("pitch", mean_of(m, |m| m.pitch_peak_hz)?),
+    ])
+}
+
 /// The chapter-6 rows (module docs).
 pub(super) fn check_chapter6(ctx: &mut Ctx) -> Result<(), String> {
     let p = VehicleParams::nominal();
@@ -61,14 +69,7 @@ pub(super) fn check_chapter6(ctx: &mut Ctx) -> Result<(), String> {
                     ),
                 );
             } else {
-                for (key, f) in [
-                    (
-                        "vertical",
-                        (|m: &RideMeasures| m.vertical_peak_hz) as fn(&RideMeasures) -> f64,
-                    ),
-                    ("pitch", |m: &RideMeasures| m.pitch_peak_hz),
-                ] {
-                    let s = mean_of(&m, f)?;
+                for (key, s) in peaks(&m)? {
                     ctx.compare(
                         "s6_hps_dominant_frequencies",
                         Some(key),
@@ -110,14 +111,7 @@ pub(super) fn check_chapter6(ctx: &mut Ctx) -> Result<(), String> {
             ..RideSpec::d1(load, FrontAxle::Rigid)
         };
         let m = ride(&p, &spec)?;
-        for (key, f) in [
-            (
-                "vertical",
-                (|m: &RideMeasures| m.vertical_peak_hz) as fn(&RideMeasures) -> f64,
-            ),
-            ("pitch", |m: &RideMeasures| m.pitch_peak_hz),
-        ] {
-            let s = mean_of(&m, f)?;
+        for (key, s) in peaks(&m)? {
             ctx.compare(
                 "s6_dominant_ride_frequencies_unsuspended",
                 Some(&format!("{prefix}_{key}")),
