@@ -50,7 +50,7 @@ fn main() -> ExitCode {
     }
 }
 
-const HELP: &str = "usage: cargo xtask <task>\n\ntasks:\n  bench [--summary] [--commands] [--runs N] [ARGS...]  run the criterion benches (ARGS go to the bench harness) and print mean times and real-time factors, then time whole afsv commands (median of N runs, default 20); --commands: only those\n  validate [--fixtures DIR] [--out DIR]  compare the models with fixtures/reported/ and write target/validation/report.md\n  fuzz [--cases N] [--seed S] [--jobs J] [--timeout SECS] [--mem-mib MIB] [--bin PATH] [--only GROUPS] [--skip GROUPS] [--keep]  run afsv on N generated bad inputs (default 10000); fail on panics, hangs, aborts, non-finite output or modified inputs\n  discover-matrix  run the discovery workflow on every catalogue effect of both models and print the detection table (minutes)\n  slurm-test  as root: install slurm-wlm and munge, start a single-node Slurm, run scripts/slurm/afs-optimize.sh end to end and compare with the in-process optimum (skipped without root, apt-get or network)";
+const HELP: &str = "usage: cargo xtask <task>\n\ntasks:\n  bench [--summary] [--commands] [--runs N] [ARGS...]  run the criterion benches (ARGS go to the bench harness) and print mean times and real-time factors, then time whole afsv commands (median of N runs, default 20); --commands: only those\n  validate [--fixtures DIR] [--out DIR] [--quick]  compare the models with fixtures/reported/ and write target/validation/report.md; --quick skips the chapter-6 design studies (Table 6.4, the GA of Table 6.5, the D4 sweep: about two minutes)\n  fuzz [--cases N] [--seed S] [--jobs J] [--timeout SECS] [--mem-mib MIB] [--bin PATH] [--only GROUPS] [--skip GROUPS] [--keep]  run afsv on N generated bad inputs (default 10000); fail on panics, hangs, aborts, non-finite output or modified inputs\n  discover-matrix  run the discovery workflow on every catalogue effect of both models and print the detection table (minutes)\n  slurm-test  as root: install slurm-wlm and munge, start a single-node Slurm, run scripts/slurm/afs-optimize.sh end to end and compare with the in-process optimum (skipped without root, apt-get or network)";
 
 /// The full detection matrix of the discovery workflow (the slow tests of
 /// `crates/afsv-discovery/tests/discover_matrix.rs`).
@@ -90,6 +90,7 @@ fn validate(args: &[String]) -> Result<(), String> {
     let root = workspace_root();
     let mut fixtures = root.join("fixtures").join("reported");
     let mut out = root.join("target").join("validation");
+    let mut quick = false;
     let mut it = args.iter();
     while let Some(a) = it.next() {
         let mut value = || {
@@ -100,10 +101,16 @@ fn validate(args: &[String]) -> Result<(), String> {
         match a.as_str() {
             "--fixtures" => fixtures = value()?,
             "--out" => out = value()?,
+            "--quick" => quick = true,
             other => return Err(format!("validate: unknown argument `{other}`")),
         }
     }
-    let report = afsv_validation::run(&fixtures).map_err(|e| e.to_string())?;
+    let skip = if quick {
+        afsv_validation::STUDY_CHECKS
+    } else {
+        &[]
+    };
+    let report = afsv_validation::run_skipping(&fixtures, skip).map_err(|e| e.to_string())?;
     print!("{}", report.table_text());
     afsv_validation::write_outputs(&report, &out).map_err(|e| e.to_string())?;
     println!("report: {}", out.join("report.md").display());

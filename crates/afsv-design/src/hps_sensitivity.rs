@@ -73,14 +73,16 @@ pub struct HpsMeasures {
 }
 
 /// One cell row of Table 6.4: a variable at a change.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct SensitivityRow {
     /// The variable changed.
     pub variable: HpsVariable,
     /// The change (fraction; 0 for the nominal design).
     pub change: f64,
-    /// The measures.
+    /// The measures; a measure with a failed run is n/a (NaN, n = 0).
     pub measures: HpsMeasures,
+    /// The runs of this design that failed, each with its error.
+    pub failures: Vec<String>,
 }
 
 /// Which measures a study runs (the ride measures always).
@@ -110,6 +112,24 @@ enum Run {
     Ride(usize, usize, Load),
     Roll(usize, usize),
     Yaw(usize),
+}
+
+impl Run {
+    /// The design index of the run.
+    fn design(self) -> usize {
+        match self {
+            Run::Ride(d, _, _) | Run::Roll(d, _) | Run::Yaw(d) => d,
+        }
+    }
+
+    /// The run in words, with the terrain seed from `cases`.
+    fn describe(self, cases: &[(Option<Load>, u64)]) -> String {
+        match self {
+            Run::Ride(_, c, load) => format!("D1 {load} seed {}", cases[c].1),
+            Run::Roll(_, c) => format!("D2 seed {}", cases[c].1),
+            Run::Yaw(_) => "D3".into(),
+        }
+    }
 }
 
 /// The study of the module docs for `base` (its `hps` is the nominal design) over `seeds`
@@ -179,7 +199,10 @@ pub fn hps_sensitivity(
             runs.push(Run::Yaw(d));
         }
     }
-    let values: Vec<f64> = runs
+    // a run that fails (a design the integrator cannot carry through, e.g. a strut driven
+    // into a stiff state) does not stop the study: its measure becomes n/a (NaN, n = 0) and
+    // the failure is reported with the design
+    let values: Vec<Result<f64, String>> = runs
         .par_iter()
         .map(|&r| {
             let v = match r {
@@ -193,40 +216,67 @@ pub fn hps_sensitivity(
                     .map(|(_, m)| m.omega_z_hz),
             };
             progress(&format!("{r:?}"));
-            v.map_err(sim)
+            v.map_err(|e| e.to_string())
         })
-        .collect::<Result<_, _>>()?;
-    let spread = |v: &[f64]| Spread::of_measured(v).map_err(sim);
-    let measures = |d: usize| -> Result<HpsMeasures, DesignError> {
+        .collect();
+    // the spread of one measure, n/a when any of its runs failed
+    let spread = |v: &[Option<f64>]| {
+        let ok: Option<Vec<f64>> = v.iter().copied().collect();
+        Spread::of_measured(&ok.unwrap_or_default()).map_err(sim)
+    };
+    let measures = |d: usize| -> Result<(HpsMeasures, Vec<String>), DesignError> {
         let (mut u, mut l, mut sp, mut wz) = (vec![], vec![], vec![], f64::NAN);
-        for (r, &v) in runs.iter().zip(&values) {
+        let mut failures = Vec::new();
+        for (r, v) in runs.iter().zip(&values) {
+            let x = match v {
+                Ok(x) => Some(*x),
+                Err(e) => {
+                    if r.design() == d {
+                        failures.push(format!("{}: {e}", r.describe(&cases)));
+                    }
+                    None
+                }
+            };
             match *r {
-                Run::Ride(i, _, Load::Unloaded) if i == d => u.push(v),
-                Run::Ride(i, _, Load::Loaded) if i == d => l.push(v),
-                Run::Roll(i, _) if i == d => sp.push(v),
-                Run::Yaw(i) if i == d => wz = v,
+                Run::Ride(i, _, Load::Unloaded) if i == d => u.push(x),
+                Run::Ride(i, _, Load::Loaded) if i == d => l.push(x),
+                Run::Roll(i, _) if i == d => sp.push(x),
+                Run::Yaw(i) if i == d => wz = x.unwrap_or(f64::NAN),
                 _ => {}
             }
         }
-        Ok(HpsMeasures {
-            a_wz_unloaded_m_s2: spread(&u)?,
-            a_wz_loaded_m_s2: spread(&l)?,
-            sp_drt_m_s2: spread(&sp)?,
-            omega_z_hz: wz,
-        })
+        Ok((
+            HpsMeasures {
+                a_wz_unloaded_m_s2: spread(&u)?,
+                a_wz_loaded_m_s2: spread(&l)?,
+                sp_drt_m_s2: spread(&sp)?,
+                omega_z_hz: wz,
+            },
+            failures,
+        ))
     };
     let rows = (1..designs.len())
         .map(|d| {
+            let (measures, failures) = measures(d)?;
             Ok(SensitivityRow {
                 variable: designs[d].0,
                 change: designs[d].1,
-                measures: measures(d)?,
+                measures,
+                failures,
             })
         })
         .collect::<Result<_, DesignError>>()?;
+    let (nominal, nominal_failures) = measures(0)?;
+    if !nominal_failures.is_empty() {
+        // without the nominal design there is no table to compare against
+        return Err(DesignError::Simulation(format!(
+            "the nominal design failed: {}",
+            nominal_failures.join("; ")
+        )));
+    }
     Ok(HpsSensitivity {
         seeds: seeds.to_vec(),
-        nominal: measures(0)?,
+        nominal,
         rows,
     })
 }

@@ -62,3 +62,64 @@ fn hps_sensitivity_reports_every_variable_and_plots() {
         "user data"
     );
 }
+
+/// `afsv study speed-sweep` on two speeds and one seed: both loads at each speed, the
+/// caution-zone bound of ISO 2631-1 Eq B.1, a_wz rising with speed, the plot written.
+#[test]
+fn speed_sweep_reports_both_loads_and_the_caution_zone() {
+    let dir = scratch("study", "sweep");
+    std::fs::create_dir_all(&dir).unwrap();
+    let svg = dir.join("sweep.svg");
+    let out = afsv(&[
+        "study",
+        "speed-sweep",
+        "--speeds",
+        "15,30",
+        "--seeds",
+        "1",
+        "--plot",
+        svg.to_str().unwrap(),
+    ]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let v = json(&out);
+    let upper = v["hgcz_upper_m_s2"].as_f64().unwrap();
+    assert!((upper - 6.0 / 48f64.sqrt()).abs() < 1e-12, "{upper}");
+    let points = v["points"].as_array().unwrap();
+    assert_eq!(points.len(), 4);
+    for load in ["unloaded", "loaded"] {
+        let a: Vec<f64> = points
+            .iter()
+            .filter(|p| p["load"] == load)
+            .map(|p| p["a_wz_m_s2"]["mean"].as_f64().unwrap())
+            .collect();
+        assert!(a[1] > a[0], "{load}: a_wz must rise with speed, {a:?}");
+        assert!(points
+            .iter()
+            .all(|p| p["d_s_m"]["mean"].as_f64().unwrap() > 0.0));
+    }
+    assert_eq!(v["crossings"].as_array().unwrap().len(), 2);
+    assert!(std::fs::read_to_string(&svg).unwrap().contains("<svg"));
+}
+
+#[test]
+fn speed_sweep_refuses_bad_requests_by_name() {
+    for (args, needle) in [
+        (&["--speeds", "20,10"][..], "ascending"),
+        (&["--speeds", "20,x"], "item 2"),
+        (&["--design", "0.038,8"], "three values"),
+        (&["--design", "0.038,-8,11"], "--design"),
+        (&["--seeds", "0"], "--seeds"),
+        (&["--hps", "/nonexistent/strut.json"], "strut.json"),
+    ] {
+        let mut a = vec!["study", "speed-sweep"];
+        a.extend_from_slice(args);
+        let out = afsv(&a);
+        assert!(!out.status.success(), "{args:?} accepted");
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert!(err.contains(needle), "{args:?}: {err}");
+    }
+}

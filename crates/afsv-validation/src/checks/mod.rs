@@ -7,6 +7,7 @@ mod chapter2;
 mod chapter4;
 mod chapter6;
 mod hps;
+mod hps_design;
 mod sensitivity;
 mod terrain;
 mod tire;
@@ -120,6 +121,41 @@ pub const CHECKS: &[(&str, &[&str], CheckFn)] = &[
             "s6_hps_stability_reduction",
         ],
         chapter6::check_chapter6,
+    ),
+    (
+        "table_6_4_hps_sensitivity",
+        &[
+            "t6_4_awz_unloaded_a_hc",
+            "t6_4_awz_unloaded_a_v",
+            "t6_4_awz_unloaded_a_b",
+            "t6_4_awz_loaded_a_hc",
+            "t6_4_awz_loaded_a_v",
+            "t6_4_awz_loaded_a_b",
+            "t6_4_sp_drt_loaded_a_hc",
+            "t6_4_sp_drt_loaded_a_v",
+            "t6_4_sp_drt_loaded_a_b",
+            "t6_4_omega_z_loaded_a_hc",
+            "t6_4_omega_z_loaded_a_v",
+            "t6_4_omega_z_loaded_a_b",
+            "s6_hps_a_hc_sensitivity_awz",
+            "s6_hps_directional_sensitivity_bound",
+            "s6_hps_a_b_trend",
+        ],
+        hps_design::check_table_6_4,
+    ),
+    (
+        "table_6_5_hps_optimum",
+        &[
+            "t6_5_awz",
+            "t6_5_sp_drt",
+            "t6_5_omega_z",
+            "t6_5_d_s",
+            "t6_5_objective_f",
+            "s6_hps_opt_outcome",
+            "s6_hps_opt_hcgz_speed",
+            "s6_hps_opt_speed_trends",
+        ],
+        hps_design::check_hps_optimum,
     ),
     ("not_reproducible", &[], unmodelled::list_not_reproducible),
 ];

@@ -1,7 +1,9 @@
 //! `afsv study`: design studies on the 3-D vehicle. `hps-sensitivity` is Table 6.4 (section
 //! 6.5.1): A_hc, A_v and A_b of the front-axle HPS one at a time, with a_wz unloaded and
 //! loaded (D1), SP-DRT (D2) and omega_z (D3) over common terrain seeds
-//! (`afsv_design::hps_sensitivity`).
+//! (`afsv_design::hps_sensitivity`). `speed-sweep` is D4 (section 6.5.2, Fig 6.16): the
+//! ride of one HPS design from 10 to 30 km/h against the 8 h health guidance caution zone
+//! (`afsv_design::hps_speed_sweep`).
 
 use super::CmdResult;
 use afsv::output::{OutputGuard, OutputKind};
@@ -16,6 +18,39 @@ use std::path::PathBuf;
 pub enum Command {
     /// Table 6.4: sensitivity of the ride, roll and yaw measures to A_hc, A_v and A_b.
     HpsSensitivity(HpsArgs),
+    /// D4 (Fig 6.16): a_wz, unweighted RMS and HPS travel of one HPS design over forward
+    /// speeds, both loads, and the speed at which a_wz crosses the 8 h caution zone.
+    SpeedSweep(SweepArgs),
+}
+
+/// Options of `afsv study speed-sweep`.
+#[derive(clap::Args)]
+pub struct SweepArgs {
+    /// The strut: `nominal` (Table 6.3) or a strut parameter file (`afsv params dump hps`).
+    #[arg(long, default_value = "nominal")]
+    pub hps: String,
+    /// The Eq 6.19 design variables replacing the strut's: `A_HC,A_V,A_B` with A_hc in m²
+    /// and A_v, A_b in mm² (as `afsv optimize hps` prints them), e.g. `0.0494,6.28,16.0`.
+    #[arg(long)]
+    pub design: Option<String>,
+    /// Speeds (km/h), comma separated, strictly ascending, 1 to 100; D4: 10 to 30.
+    #[arg(long, default_value = "10,15,20,25,30")]
+    pub speeds: String,
+    /// Terrain seeds per point, 1 to 100 (every point runs on the same seeds).
+    #[arg(long, default_value_t = 10)]
+    pub seeds: usize,
+    /// First terrain seed.
+    #[arg(long, default_value_t = 1)]
+    pub seed: u64,
+    /// Write an SVG of a_wz against the speed, one line per load, with the caution-zone bound.
+    #[arg(long)]
+    pub plot: Option<PathBuf>,
+    /// Replace an existing plot file that afsv did not write.
+    #[arg(long)]
+    pub force: bool,
+    /// Print JSON even on a terminal.
+    #[arg(long)]
+    pub json: bool,
 }
 
 /// Options of `afsv study hps-sensitivity`.
@@ -52,6 +87,7 @@ pub struct HpsArgs {
 pub fn run(c: Command) -> CmdResult {
     match c {
         Command::HpsSensitivity(a) => hps(a),
+        Command::SpeedSweep(a) => speed_sweep(a),
     }
 }
 
@@ -74,6 +110,173 @@ fn parse_changes(text: &str) -> Result<Vec<f64>, String> {
         return Err(format!("--changes: at most 20 changes, got {}", out.len()));
     }
     Ok(out)
+}
+
+/// Comma-separated finite numbers of option `name`, at most `max` of them.
+fn parse_list(name: &str, text: &str, max: usize) -> Result<Vec<f64>, String> {
+    let out = text
+        .split(',')
+        .enumerate()
+        .map(|(i, item)| match item.trim().parse::<f64>() {
+            Ok(v) if v.is_finite() => Ok(v),
+            _ => Err(format!(
+                "{name}: item {} `{item}` is not a finite number",
+                i + 1
+            )),
+        })
+        .collect::<Result<Vec<f64>, String>>()?;
+    if out.len() > max {
+        return Err(format!("{name}: at most {max} values, got {}", out.len()));
+    }
+    Ok(out)
+}
+
+/// The vehicle of `--hps` and `--design`: the nominal vehicle with the strut file's or the
+/// nominal strut, its Eq 6.19 areas replaced by `--design`.
+fn sweep_vehicle(
+    a: &SweepArgs,
+    guard: &mut OutputGuard,
+) -> Result<vehicle_3d::VehicleParams, String> {
+    let mut p = vehicle_3d::VehicleParams::nominal();
+    if a.hps != "nominal" {
+        let file = std::path::Path::new(&a.hps);
+        guard.input("--hps", file)?;
+        let strut: hps_emulsion::StrutParams = super::params::read(file)
+            .map_err(|e| format!("--hps: {e} (expected nominal or a strut file)"))?;
+        strut
+            .validate()
+            .map_err(|e| format!("--hps {}: {e}", file.display()))?;
+        p.hps = strut;
+    }
+    if let Some(text) = &a.design {
+        let v = parse_list("--design", text, 3)?;
+        let [a_hc, a_v, a_b] = v[..] else {
+            return Err(format!(
+                "--design: three values A_HC,A_V,A_B, got {}",
+                v.len()
+            ));
+        };
+        let d = afsv_design::HpsDesign::new(a_hc, a_v * 1e-6, a_b * 1e-6)
+            .map_err(|e| format!("--design: {e}"))?;
+        p.hps = d.apply(&p.hps).map_err(|e| format!("--design: {e}"))?;
+    }
+    p.validate().map_err(|e| e.to_string())?;
+    Ok(p)
+}
+
+fn speed_sweep(a: SweepArgs) -> CmdResult {
+    use afsv_design::hps_speed_sweep::{hps_speed_sweep, MAX_SEEDS, MAX_SPEEDS};
+    if a.seeds == 0 || a.seeds > MAX_SEEDS {
+        return Err(format!("--seeds {}: must be 1 to {MAX_SEEDS}", a.seeds).into());
+    }
+    let speeds = parse_list("--speeds", &a.speeds, MAX_SPEEDS)?;
+    let mut guard = OutputGuard::new(a.force);
+    let p = sweep_vehicle(&a, &mut guard)?;
+    if let Some(path) = &a.plot {
+        guard.output("--plot", path, OutputKind::Svg)?;
+    }
+    let seeds: Vec<u64> = (0..a.seeds as u64)
+        .map(|i| a.seed.wrapping_add(i))
+        .collect();
+    let runs = 2 * speeds.len() * seeds.len();
+    let progress = afsv::progress::Progress::new("afsv study speed-sweep", "runs", Some(runs));
+    let s = hps_speed_sweep(&p, &speeds, &seeds, &|d| progress.step(d))?;
+    progress.finish();
+    if let Some(path) = &a.plot {
+        sweep_plot(path, &s)?;
+    }
+    emit(a.json, &s, || sweep_text(&s))
+}
+
+/// JSON of `value` with `--json` or when piped, else `text()` on the terminal.
+fn emit<T: serde::Serialize>(json: bool, value: &T, text: impl Fn() -> String) -> CmdResult {
+    if json || !std::io::stdout().is_terminal() {
+        afsv::output::print_json(&serde_json::to_value(value)?)?;
+    } else {
+        print!("{}", text());
+    }
+    Ok(())
+}
+
+/// An SVG line plot of `columns` (label, x, y) at `path`, marked as afsv's.
+fn line_svg(
+    path: &std::path::Path,
+    title: &str,
+    x_label: &str,
+    y_label: &str,
+    columns: &[(String, Vec<f64>, Vec<f64>)],
+) -> CmdResult {
+    let series: Vec<afsv_plot::Series> = columns
+        .iter()
+        .map(|(label, x, y)| afsv_plot::Series { label, x, y })
+        .collect();
+    afsv_plot::line_plot(path, title, x_label, y_label, &series)?;
+    afsv::output::mark_svg(path)?;
+    Ok(())
+}
+
+/// The sweep as text: one row per speed and load, then the crossing speeds.
+fn sweep_text(s: &afsv_design::SpeedSweep) -> String {
+    let mut out = format!(
+        "HPS speed sweep (D4), class E, m_c 0.3, 100 m per run, mean ± SD over {} terrain seeds\n\n  {:<9} {:>6} {:>16} {:>16} {:>16}\n",
+        s.seeds.len(),
+        "load",
+        "km/h",
+        "a_wz (m/s²)",
+        "a_z RMS (m/s²)",
+        "d_s (m)"
+    );
+    let pm = |x: &vehicle_3d::scenarios::Spread, d: usize| format!("{:.d$} ± {:.d$}", x.mean, x.sd);
+    for p in &s.points {
+        out += &format!(
+            "  {:<9} {:>6.1} {:>16} {:>16} {:>16}\n",
+            p.load.to_string(),
+            p.speed_kmh,
+            pm(&p.a_wz_m_s2, 3),
+            pm(&p.a_z_rms_m_s2, 3),
+            pm(&p.d_s_m, 4)
+        );
+    }
+    out += &format!(
+        "\n8 h health guidance caution zone, upper bound {:.3} m/s² (ISO 2631-1 Eq B.1)\n",
+        s.hgcz_upper_m_s2
+    );
+    for c in &s.crossings {
+        let what = match (c.speed_kmh, c.above_at_lowest) {
+            (Some(v), _) => format!("a_wz crosses it at {v:.1} km/h"),
+            (None, true) => "a_wz is above it at every swept speed".into(),
+            (None, false) => "a_wz stays below it over the sweep".into(),
+        };
+        out += &format!("  {:<9} {what}\n", c.load.to_string());
+    }
+    out
+}
+
+fn sweep_plot(path: &std::path::Path, s: &afsv_design::SpeedSweep) -> CmdResult {
+    use vehicle_3d::Load;
+    let mut columns: Vec<(String, Vec<f64>, Vec<f64>)> = [Load::Unloaded, Load::Loaded]
+        .iter()
+        .map(|&load| {
+            (
+                format!("a_wz {load}"),
+                s.of_load(load).map(|p| p.speed_kmh).collect(),
+                s.of_load(load).map(|p| p.a_wz_m_s2.mean).collect(),
+            )
+        })
+        .collect();
+    let xs: Vec<f64> = s.of_load(Load::Unloaded).map(|p| p.speed_kmh).collect();
+    let bound = vec![s.hgcz_upper_m_s2; xs.len()];
+    columns.push(("8 h HGCZ upper bound".into(), xs, bound));
+    line_svg(
+        path,
+        &format!(
+            "D4 speed sweep of a_wz (class E, HPS), {} seeds",
+            s.seeds.len()
+        ),
+        "forward speed (km/h)",
+        "a_wz (m/s²)",
+        &columns,
+    )
 }
 
 fn hps(a: HpsArgs) -> CmdResult {
@@ -101,12 +304,7 @@ fn hps(a: HpsArgs) -> CmdResult {
     if let Some(path) = &a.plot {
         plot(path, &s)?;
     }
-    if a.json || !std::io::stdout().is_terminal() {
-        afsv::output::print_json(&serde_json::to_value(&s)?)?;
-    } else {
-        print!("{}", text(&s));
-    }
-    Ok(())
+    emit(a.json, &s, || text(&s))
 }
 
 /// A measure's mean with 3 decimals, or "n/a" when it was not run.
@@ -160,6 +358,15 @@ fn text(s: &HpsSensitivity) -> String {
             );
         }
     }
+    let failed: Vec<&SensitivityRow> = s.rows.iter().filter(|r| !r.failures.is_empty()).collect();
+    if !failed.is_empty() {
+        out += "\nfailed runs (their cells are n/a):\n";
+        for r in failed {
+            for f in &r.failures {
+                out += &format!("  {} {:+.0}%: {f}\n", r.variable.symbol(), 100.0 * r.change);
+            }
+        }
+    }
     out
 }
 
@@ -189,11 +396,7 @@ fn plot(path: &std::path::Path, s: &HpsSensitivity) -> CmdResult {
             ));
         }
     }
-    let series: Vec<afsv_plot::Series> = columns
-        .iter()
-        .map(|(label, x, y)| afsv_plot::Series { label, x, y })
-        .collect();
-    afsv_plot::line_plot(
+    line_svg(
         path,
         &format!(
             "HPS sensitivity of a_wz (D1, class E, 20 km/h), {} seeds",
@@ -201,10 +404,8 @@ fn plot(path: &std::path::Path, s: &HpsSensitivity) -> CmdResult {
         ),
         "change of the area (%)",
         "a_wz (m/s²)",
-        &series,
-    )?;
-    afsv::output::mark_svg(path)?;
-    Ok(())
+        &columns,
+    )
 }
 
 #[cfg(test)]
@@ -219,5 +420,20 @@ mod tests {
         assert!(parse_changes("nan").is_err());
         let many = vec!["1"; 21].join(",");
         assert!(parse_changes(&many).unwrap_err().contains("at most 20"));
+    }
+
+    #[test]
+    fn lists_parse_and_bad_items_are_named() {
+        assert_eq!(
+            parse_list("--speeds", "10, 20", 5).unwrap(),
+            vec![10.0, 20.0]
+        );
+        assert!(parse_list("--speeds", "10,x", 5)
+            .unwrap_err()
+            .contains("item 2"));
+        assert!(parse_list("--speeds", "inf", 5).is_err());
+        assert!(parse_list("--design", "1,2,3,4", 3)
+            .unwrap_err()
+            .contains("at most 3"));
     }
 }
