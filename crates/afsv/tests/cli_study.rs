@@ -123,3 +123,65 @@ fn speed_sweep_refuses_bad_requests_by_name() {
         assert!(err.contains(needle), "{args:?}: {err}");
     }
 }
+
+/// `afsv optimize hps` on its smallest request writes the optimum's strut file (which
+/// `afsv params check strut` accepts and `study speed-sweep --hps` reads) and, with
+/// `--speed-sweep`, the D4 sweep of the optimum; a foreign `--strut-out` file is kept.
+#[test]
+fn hps_optimum_writes_its_strut_and_sweeps_it() {
+    let dir = scratch("study", "optimum");
+    std::fs::create_dir_all(&dir).unwrap();
+    let strut = dir.join("optimum.json");
+    let out = afsv(&[
+        "optimize",
+        "hps",
+        "--population",
+        "4",
+        "--generations",
+        "1",
+        "--reevaluation-seeds",
+        "1",
+        "--no-roll",
+        "--speed-sweep",
+        "--strut-out",
+        strut.to_str().unwrap(),
+    ]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let v = json(&out);
+    assert_eq!(v["speed_sweep"]["points"].as_array().unwrap().len(), 10);
+    let check = afsv(&["params", "check", "strut", strut.to_str().unwrap()]);
+    assert!(check.status.success());
+    let a_hc = json(&check)["parameters"]["a_hc"].as_f64().unwrap();
+    assert!((a_hc - v["design"]["a_hc"].as_f64().unwrap()).abs() < 1e-15);
+    let sweep = afsv(&[
+        "study",
+        "speed-sweep",
+        "--hps",
+        strut.to_str().unwrap(),
+        "--speeds",
+        "20",
+        "--seeds",
+        "1",
+    ]);
+    assert!(sweep.status.success());
+    std::fs::write(dir.join("mine.json"), "user data").unwrap();
+    let refused = afsv(&[
+        "optimize",
+        "hps",
+        "--population",
+        "4",
+        "--generations",
+        "1",
+        "--strut-out",
+        dir.join("mine.json").to_str().unwrap(),
+    ]);
+    assert!(!refused.status.success());
+    assert_eq!(
+        std::fs::read_to_string(dir.join("mine.json")).unwrap(),
+        "user data"
+    );
+}

@@ -216,7 +216,7 @@ fn line_svg(
 }
 
 /// The sweep as text: one row per speed and load, then the crossing speeds.
-fn sweep_text(s: &afsv_design::SpeedSweep) -> String {
+pub(crate) fn sweep_text(s: &afsv_design::SpeedSweep) -> String {
     let mut out = format!(
         "HPS speed sweep (D4), class E, m_c 0.3, 100 m per run, mean ± SD over {} terrain seeds\n\n  {:<9} {:>6} {:>16} {:>16} {:>16}\n",
         s.seeds.len(),

@@ -4,6 +4,7 @@
 
 use crate::cmd::CmdResult;
 use afsv_design::hps_optimum::{optimise_hps, HpsGaSettings, HpsOptimum};
+use afsv_design::hps_speed_sweep::hps_speed_sweep;
 use std::io::IsTerminal;
 
 /// Options of `afsv optimize hps`.
@@ -27,10 +28,24 @@ pub struct HpsArgs {
     /// Skip the SP-DRT re-evaluation (D2, the costliest runs).
     #[arg(long)]
     pub no_roll: bool,
+    /// Write the optimum's strut parameters to FILE (the `--hps FILE` of `afsv vehicle` and
+    /// `afsv study speed-sweep`). An existing file afsv did not write needs --force.
+    #[arg(long)]
+    pub strut_out: Option<std::path::PathBuf>,
+    /// Replace an existing --strut-out file.
+    #[arg(long)]
+    pub force: bool,
+    /// Then run D4 on the optimum (Fig 6.16): both loads at 10, 15, 20, 25 and 30 km/h on the
+    /// re-evaluation seeds, with the speed at which a_wz crosses the 8 h caution zone.
+    #[arg(long)]
+    pub speed_sweep: bool,
     /// Print JSON even on a terminal.
     #[arg(long)]
     pub json: bool,
 }
+
+/// The D4 speeds of section 6.5.2 (km/h).
+const D4_SPEEDS_KMH: [f64; 5] = [10.0, 15.0, 20.0, 25.0, 30.0];
 
 /// GA progress: one step per generation.
 struct Generations(afsv::progress::Progress);
@@ -70,12 +85,45 @@ pub fn run(a: &HpsArgs) -> CmdResult {
         "generations",
         Some(a.generations),
     ));
-    let r = optimise_hps(&vehicle_3d::VehicleParams::nominal(), &settings, &progress)?;
+    if let Some(path) = &a.strut_out {
+        afsv::output::OutputGuard::new(a.force).output(
+            "--strut-out",
+            path,
+            afsv::output::OutputKind::Other,
+        )?;
+    }
+    let base = vehicle_3d::VehicleParams::nominal();
+    let r = optimise_hps(&base, &settings, &progress)?;
     progress.0.finish();
+    let mut best = base.clone();
+    best.hps = r.design.apply(&base.hps)?;
+    if let Some(path) = &a.strut_out {
+        let text = serde_json::to_string_pretty(&best.hps)? + "\n";
+        std::fs::write(path, text).map_err(|e| format!("{}: {e}", path.display()))?;
+    }
+    let sweep = if a.speed_sweep {
+        let seeds: Vec<u64> = (0..a.reevaluation_seeds as u64)
+            .map(|i| a.terrain_seed.wrapping_add(i))
+            .collect();
+        let runs = 2 * D4_SPEEDS_KMH.len() * seeds.len();
+        let p = afsv::progress::Progress::new("afsv optimize hps: D4", "runs", Some(runs));
+        let s = hps_speed_sweep(&best, &D4_SPEEDS_KMH, &seeds, &|d| p.step(d))?;
+        p.finish();
+        Some(s)
+    } else {
+        None
+    };
     if a.json || !std::io::stdout().is_terminal() {
-        afsv::output::print_json(&serde_json::to_value(&r)?)?;
+        let mut v = serde_json::to_value(&r)?;
+        if let Some(s) = &sweep {
+            v["speed_sweep"] = serde_json::to_value(s)?;
+        }
+        afsv::output::print_json(&v)?;
     } else {
         print!("{}", text(&r));
+        if let Some(s) = &sweep {
+            print!("\n{}", crate::cmd::study::sweep_text(s));
+        }
     }
     Ok(())
 }
