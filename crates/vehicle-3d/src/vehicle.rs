@@ -39,9 +39,12 @@ use crate::steering::{apply_strut_forces, strut_geometry, StrutGeometry};
 use crate::tires::{tire_forces, TireContact, TireInput, TireTracks};
 
 /// Stiffness of the front-strut end stops beyond the Table 6.3 travel of +-120 mm (N/m).
-/// Assumption: 2e7 N/m (a rubber stop about 15 times the gas spring), with
-/// [`END_STOP_DAMPING_N_S_M`]; the dissertation gives no end stops.
-pub const END_STOP_STIFFNESS_N_M: f64 = 2.0e7;
+/// Assumption: 2e8 N/m, with [`END_STOP_DAMPING_N_S_M`]; the dissertation gives no end
+/// stops. The stop must hold the rod within the 10 mm oil margin of the rod-side chamber
+/// (`StrutParams::front_axle`): a softer 2e7 N/m stop let a top-out of the -30 % A_hc strut
+/// of Table 6.4 run 9 mm past the travel, leaving 1 mm of oil, a state so stiff that the D2
+/// runs reached the integrator's step limit. 2e8 N/m stops it within 3 mm.
+pub const END_STOP_STIFFNESS_N_M: f64 = 2.0e8;
 
 /// Damping of the front-strut end stops while engaged (N s/m).
 pub const END_STOP_DAMPING_N_S_M: f64 = 2.0e4;
