@@ -19,6 +19,10 @@ use vehicle_3d::{FrontAxle, Load, VehicleParams};
 pub const MAX_SPEEDS: usize = 50;
 /// Largest number of terrain seeds of one sweep.
 pub const MAX_SEEDS: usize = 100;
+/// Lowest speed of a sweep (km/h): one run covers 120 m, so a slower one simulates minutes.
+pub const MIN_SPEED_KMH: f64 = 5.0;
+/// Highest speed of a sweep (km/h).
+pub const MAX_SPEED_KMH: f64 = 100.0;
 /// Exposure duration of the caution-zone bound (h), the 8 h of section 6.5.2.
 pub const HGCZ_HOURS: f64 = 8.0;
 
@@ -80,7 +84,7 @@ pub fn first_upward_crossing(speeds: &[f64], values: &[f64], limit: f64) -> Opti
 }
 
 /// The sweep of the module docs for the suspended vehicle `p` (its `hps` is the design) over
-/// `speeds_kmh` (strictly ascending, 1 to 100 km/h) and `seeds`; `progress` is called once
+/// `speeds_kmh` (strictly ascending, [`MIN_SPEED_KMH`] to [`MAX_SPEED_KMH`]) and `seeds`; `progress` is called once
 /// per finished run.
 pub fn hps_speed_sweep(
     p: &VehicleParams,
@@ -104,11 +108,11 @@ pub fn hps_speed_sweep(
         });
     }
     for (i, &v) in speeds_kmh.iter().enumerate() {
-        if !(v.is_finite() && (1.0..=100.0).contains(&v)) {
+        if !(v.is_finite() && (MIN_SPEED_KMH..=MAX_SPEED_KMH).contains(&v)) {
             return Err(DesignError::Invalid {
                 field: "speeds_kmh",
                 value: v,
-                reason: "a speed must lie within 1-100 km/h",
+                reason: "a speed must lie within 5-100 km/h",
             });
         }
         if i > 0 && v <= speeds_kmh[i - 1] {
@@ -210,7 +214,14 @@ mod tests {
     fn bad_sweeps_are_refused_before_any_run() {
         let p = VehicleParams::nominal();
         let none = |_: &str| panic!("no run may start");
-        for speeds in [&[][..], &[20.0, 10.0], &[0.5], &[f64::NAN], &[20.0, 20.0]] {
+        for speeds in [
+            &[][..],
+            &[20.0, 10.0],
+            &[2.0],
+            &[101.0],
+            &[f64::NAN],
+            &[20.0, 20.0],
+        ] {
             assert!(
                 hps_speed_sweep(&p, speeds, &[1], &none).is_err(),
                 "{speeds:?}"

@@ -5,7 +5,7 @@ use super::gen::*;
 
 mod vehicles;
 
-use vehicles::{roll_case, vehicle_case};
+use vehicles::{roll_case, sweep_case, vehicle_case};
 
 /// The groups and their relative weights (slow successes weigh less).
 pub(crate) const GROUPS: &[(&str, u32)] = &[
@@ -43,6 +43,7 @@ pub(crate) const GROUPS: &[(&str, u32)] = &[
     ("vehicle simulate", 4),
     ("params check vehicle-3d", 2),
     ("batch evaluate", 3),
+    ("study speed-sweep", 2),
 ];
 
 pub(crate) fn make_case(
@@ -85,6 +86,7 @@ pub(crate) fn make_case(
         "terrain" => terrain_case(&mut g, group),
         "measures" => measures_case(&mut g, group),
         "batch" => batch_case(&mut g),
+        "study" => sweep_case(&mut g),
         _ => other_case(&mut g, group),
     }
     Case {

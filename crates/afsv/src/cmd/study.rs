@@ -33,7 +33,7 @@ pub struct SweepArgs {
     /// and A_v, A_b in mm² (as `afsv optimize hps` prints them), e.g. `0.0494,6.28,16.0`.
     #[arg(long)]
     pub design: Option<String>,
-    /// Speeds (km/h), comma separated, strictly ascending, 1 to 100; D4: 10 to 30.
+    /// Speeds (km/h), comma separated, strictly ascending, 5 to 100; D4: 10 to 30.
     #[arg(long, default_value = "10,15,20,25,30")]
     pub speeds: String,
     /// Terrain seeds per point, 1 to 100 (every point runs on the same seeds).

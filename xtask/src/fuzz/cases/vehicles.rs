@@ -135,15 +135,10 @@ pub(super) fn vehicle_case(g: &mut Gen<'_>, group: &str) {
     }
     g.num("--speed-kmh", "20", 0.2);
     if g.rng.chance(0.25) {
-        // A ramp to rollover with the front-axle HPS goes stiff once a front wheel lifts
-        // (vehicle-3d: Dopri5 runs into its 1e6-step limit after about a minute), so the
-        // roll group leaves `nominal` out until the library handles it.
-        let hps: &[&str] = if group == "vehicle roll" {
-            &["off", "s.json", "missing.json", "p.json", ""]
-        } else {
-            &["off", "nominal", "s.json", "missing.json", "p.json", ""]
-        };
-        let h = g.rng.pick(hps).to_string();
+        let h = g
+            .rng
+            .pick(&["off", "nominal", "s.json", "missing.json", "p.json", ""])
+            .to_string();
         if h == "s.json" {
             let t = g
                 .rng
@@ -247,5 +242,61 @@ pub(super) fn vehicle_case(g: &mut Gen<'_>, group: &str) {
             g.push_opt("-o", &o);
         }
         _ => unreachable!("group {group}"),
+    }
+}
+
+/// The options of one `afsv study speed-sweep` case: short sweeps (one or two speeds, one
+/// seed) with bad lists, designs and strut files mixed in.
+pub(super) fn sweep_case(g: &mut Gen<'_>) {
+    let bad = g.bad();
+    let speeds = match g.rng.below(6) {
+        0 => bad.to_string(),
+        1 => format!("20,{bad}"),
+        2 => g
+            .rng
+            .pick(&[
+                "30,20", "20,20", "", "0.5", "1,2", "1e400", "20;30", "10,20,30",
+            ])
+            .to_string(),
+        _ => g.rng.pick(&["30", "20,30"]).to_string(),
+    };
+    g.push_opt("--speeds", &speeds);
+    if g.rng.chance(0.3 * g.scale) {
+        let v = g.bad();
+        g.push_opt("--seeds", &v);
+    } else {
+        g.push_opt("--seeds", "1");
+    }
+    if g.rng.chance(0.3) {
+        let d = match g.rng.below(3) {
+            0 => format!("0.038,{bad},11"),
+            1 => g
+                .rng
+                .pick(&["0.0494,6.28,16.0", "0.038,8", "1,2,3", "0,0,0", "", "a,b,c"])
+                .to_string(),
+            _ => "0.045,6,14".to_string(),
+        };
+        g.push_opt("--design", &d);
+    }
+    if g.rng.chance(0.25) {
+        let h = g
+            .rng
+            .pick(&["nominal", "s.json", "missing.json", ""])
+            .to_string();
+        if h == "s.json" {
+            let t = g
+                .rng
+                .pick(&["", "{}", "[1]", "{\"a_hc\": -1}", "{\"bogus\": 1}"])
+                .to_string();
+            g.file("s.json", t.into_bytes());
+        }
+        g.push_opt("--hps", &h);
+    }
+    if g.rng.chance(0.3) {
+        g.arg("--json");
+    }
+    if g.rng.chance(0.2) {
+        let o = g.output("plot.svg", &["s.json"]);
+        g.push_opt("--plot", &o);
     }
 }
