@@ -14,11 +14,25 @@ fn run(spec: &PathChangeSpec) -> (vehicle_3d::RunRecord, PathChangeMeasures) {
 /// Peaks of the yaw-plane model's path change (Chapter 3) at the speed and load of `spec`:
 /// articulation (deg), left strut (min, max, m), front yaw rate (deg/s), front lateral
 /// acceleration (m/s²), all signed as the 3-D measures.
-fn yaw_plane_peaks(spec: &PathChangeSpec) -> (f64, (f64, f64), f64, f64) {
+/// With `tires_of_3d`, the yaw-plane model gets the 3-D model's tire data: the Table 6.2
+/// cornering stiffness of its static axle loads (docs/tire-fiala.md) and the 1.2 m
+/// relaxation length.
+fn yaw_plane_peaks(spec: &PathChangeSpec, tires_of_3d: bool) -> (f64, (f64, f64), f64, f64) {
     let load = match spec.load {
         Load::Loaded => afsv_dynamics::Load::Loaded,
         Load::Unloaded => afsv_dynamics::Load::Unloaded,
     };
+    let mut vehicle = afsv_dynamics::VehicleParams::nominal(load);
+    if tires_of_3d {
+        let per_deg = 180.0 / std::f64::consts::PI;
+        let (front, rear) = match spec.load {
+            Load::Loaded => (6.8e3, 7.5e3),
+            Load::Unloaded => (6.1e3, 3.7e3),
+        };
+        vehicle.c_alpha_f_n_per_rad = front * per_deg;
+        vehicle.c_alpha_r_n_per_rad = rear * per_deg;
+        vehicle.relaxation_length_m = 1.2;
+    }
     let sys = AfsSystem::new(AfsParams::nominal()).unwrap();
     let man = Manoeuvre::course(
         spec.speed_kmh / 3.6,
@@ -26,13 +40,7 @@ fn yaw_plane_peaks(spec: &PathChangeSpec) -> (f64, (f64, f64), f64, f64) {
         PathDriver::new(spec.course()),
         "path_change",
     );
-    let r = afsv_dynamics::simulate(
-        &afsv_dynamics::VehicleParams::nominal(load),
-        &sys,
-        &man,
-        &SimOptions::default(),
-    )
-    .unwrap();
+    let r = afsv_dynamics::simulate(&vehicle, &sys, &man, &SimOptions::default()).unwrap();
     let peak = |x: &[f64]| {
         x.iter()
             .fold(0.0f64, |m, v| if v.abs() > m.abs() { *v } else { m })
@@ -59,7 +67,7 @@ fn path_change_follows_the_course_and_matches_the_yaw_plane_model() {
     for load in [Load::Loaded, Load::Unloaded] {
         let spec = PathChangeSpec::v3(load, FrontAxle::Rigid);
         let (rec, m) = run(&spec);
-        let (theta, strut, r, ay) = yaw_plane_peaks(&spec);
+        let (theta, strut, r, ay) = yaw_plane_peaks(&spec, false);
         eprintln!(
             "{load:?} 3-D {m:?}\n    yaw plane {:?}",
             (theta, strut, r, ay)
@@ -96,6 +104,26 @@ fn path_change_follows_the_course_and_matches_the_yaw_plane_model() {
             ("lateral acceleration", m.peak_lateral_accel_m_s2, ay, 0.12),
         ] {
             assert!(a * b > 0.0, "{load:?} {what}: signs differ, {a} vs {b}");
+            assert!(rel(a, b) < tol, "{load:?} {what}: 3-D {a} vs yaw plane {b}");
+        }
+        // The articulation gap is the tire data: given the 3-D model's cornering stiffness
+        // and relaxation length, the yaw-plane model's loaded peaks agree within 4 %
+        // (measured 0.3 % articulation, 0.7 % yaw rate, 4 % lateral acceleration): 6 %
+        // allowed. Unloaded the 3-D truck still turns harder (measured +6 % articulation,
+        // +10 % yaw rate, +11 % lateral acceleration; not traced: lateral load transfer,
+        // rear-unit roll and Fiala saturation on the light unloaded rear axle are not in the
+        // yaw-plane model): 15 % allowed.
+        let (theta, _, r, ay) = yaw_plane_peaks(&spec, true);
+        let tol = match load {
+            Load::Loaded => 0.06,
+            Load::Unloaded => 0.15,
+        };
+        for (what, a, b) in [
+            ("articulation", m.peak_articulation_deg, theta),
+            ("yaw rate", m.peak_yaw_rate_deg_s, r),
+            ("lateral acceleration", m.peak_lateral_accel_m_s2, ay),
+        ] {
+            eprintln!("{load:?} {what}, same tire data: 3-D {a:.3}, yaw plane {b:.3}");
             assert!(rel(a, b) < tol, "{load:?} {what}: 3-D {a} vs yaw plane {b}");
         }
     }
