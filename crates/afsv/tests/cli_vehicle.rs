@@ -349,6 +349,37 @@ fn bad_input_is_a_one_line_error() {
             "--duration",
         ),
         (vec!["params", "list", "vehicle-3d"], "dump vehicle-3d"),
+        (
+            vec!["vehicle", "path-change", "--offset-m", "21"],
+            "--offset-m",
+        ),
+        (
+            vec!["vehicle", "path-change", "--offset-m", "nan"],
+            "--offset-m",
+        ),
+        (
+            vec!["vehicle", "path-change", "--duration", "0"],
+            "--duration",
+        ),
+        (
+            vec!["vehicle", "path-change", "--seed", "2"],
+            "smooth ground",
+        ),
+        (
+            vec!["vehicle", "path-change", "--speed-kmh", "90"],
+            "--speed-kmh",
+        ),
+        (vec!["vehicle", "measures", "--seeds", "101"], "--seeds"),
+        (vec!["vehicle", "measures", "--seeds", "0"], "--seeds"),
+        (
+            vec!["vehicle", "measures", "--seeds", "2", "--seed", "1"],
+            "--seed",
+        ),
+        (vec!["vehicle", "measures", "--load", "heavy"], "heavy"),
+        (
+            vec!["vehicle", "measures", "--hps", "no-such-strut.json"],
+            "--hps",
+        ),
     ] {
         let out = afsv(&args);
         let err = String::from_utf8_lossy(&out.stderr);
@@ -356,4 +387,78 @@ fn bad_input_is_a_one_line_error() {
         assert_eq!(err.trim_end().lines().count(), 1, "{args:?}: {err}");
         assert!(err.contains(needle), "{args:?}: {err}");
     }
+}
+
+#[test]
+fn path_change_follows_the_course_mirrors_and_writes_record_and_plot() {
+    let out = scratch("vehicle", "path_change.csv");
+    let plot = scratch("vehicle", "path_change.svg");
+    let (o, p) = (out.to_str().unwrap(), plot.to_str().unwrap());
+    let right = json(&afsv(&["vehicle", "path-change", "-o", o, "--plot", p]));
+    assert_eq!(num(&right["speed_kmh"]), 15.3, "the Table 3.2 loaded speed");
+    let m = &right["measures"];
+    assert!(num(&m["max_deviation_m"]) < 1.0, "{m}");
+    assert!((num(&m["final_offset_m"]) - 4.5).abs() < 0.1, "{m}");
+    let theta = num(&m["peak_articulation_deg"]);
+    assert!(theta.abs() > 5.0 && theta.abs() < 30.0, "{theta}");
+    // the record: afsv-v1 signs, the driver steers right first (positive wheel angle)
+    let rec = afsv_records::Record::read(&out).unwrap();
+    let sw = rec.require("steer_wheel_deg", &out).unwrap();
+    let first = sw.iter().find(|a| a.abs() > 1.0).copied().unwrap();
+    assert!(first > 0.0, "first wheel motion {first}");
+    let art = rec.require("articulation_deg", &out).unwrap();
+    let peak = art
+        .iter()
+        .fold(0.0f64, |a, v| if v.abs() > a.abs() { *v } else { a });
+    assert!((peak - theta).abs() < 1e-6, "{peak} vs {theta}");
+    let svg = std::fs::read_to_string(&plot).unwrap();
+    for caption in [
+        "articulation angle",
+        "left-strut displacement",
+        "yaw rate",
+        "lateral acceleration",
+    ] {
+        assert!(svg.contains(caption), "{caption}");
+    }
+    // a left offset mirrors the peaks
+    let left = json(&afsv(&["vehicle", "path-change", "--offset-m", "-4.5"]));
+    let l = &left["measures"];
+    for key in [
+        "peak_articulation_deg",
+        "peak_yaw_rate_deg_s",
+        "peak_lateral_accel_m_s2",
+        "final_offset_m",
+    ] {
+        let (a, b) = (num(&m[key]), num(&l[key]));
+        assert!((a + b).abs() < 1e-6 * a.abs(), "{key}: {a} vs {b}");
+    }
+    // unloaded: its own default speed
+    let u = json(&afsv(&["vehicle", "path-change", "--load", "unloaded"]));
+    assert_eq!(num(&u["speed_kmh"]), 19.2);
+}
+
+#[test]
+fn measures_of_one_configuration_agree_with_the_scenario_commands() {
+    let v = json(&afsv(&["vehicle", "measures", "--seed", "1"]));
+    assert_eq!(v["seeds"], serde_json::json!([1]));
+    assert!(v["d1_ride"]["strut_travel_p2p_m"].is_null());
+    let ride = json(&afsv(&["vehicle", "ride", "--seed", "1"]));
+    let (a, b) = (
+        num(&v["d1_ride"]["a_wz_m_s2"]["mean"]),
+        num(&ride["a_wz_m_s2"]["mean"]),
+    );
+    assert!((a - b).abs() < 1e-12 * b, "a_wz {a} vs ride {b}");
+    let yaw = json(&afsv(&["vehicle", "yaw"]));
+    let (a, b) = (
+        num(&v["d3_yaw"]["omega_z_hz"]),
+        num(&yaw["omega_z_hz"]["mean"]),
+    );
+    assert!((a - b).abs() < 1e-12 * b, "omega_z {a} vs yaw {b}");
+    assert!(num(&v["d2_roll"]["sp_drt_m_s2"]["mean"]) > 1.0);
+    // with the HPS and the unloaded ride: the strut travel is reported
+    let h = json(&afsv(&[
+        "vehicle", "measures", "--seed", "1", "--hps", "nominal", "--load", "unloaded",
+    ]));
+    assert_eq!(h["ride_load"], "unloaded");
+    assert!(num(&h["d1_ride"]["strut_travel_p2p_m"]["mean"]) > 0.0);
 }

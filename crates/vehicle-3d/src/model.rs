@@ -192,7 +192,7 @@ pub fn build_tree(
 
     // front unit: Table 6.1 part at the origin, less its two wheel ends
     let z_fw = r - statics.front_tire_deflection_m - h_f;
-    let x_fw = p.front_axle_to_joint_m - d_f;
+    let x_fw = p.front_axle_x_m();
     let half_f = 0.5 * p.front_track_m;
     let front_wheels = [
         Vector3::new(x_fw, half_f, z_fw),

@@ -185,6 +185,13 @@ impl VehicleParams {
         self.front_axle_to_joint_m + self.rear_axle_to_joint_m
     }
 
+    /// Longitudinal position of the front axle ahead of the front unit's cg (m): the joint
+    /// lies `front_unit.cg_to_joint_m` behind the cg, the axle `front_axle_to_joint_m` ahead
+    /// of the joint (Table 6.1; the wheel centres of [`crate::model`]).
+    pub fn front_axle_x_m(&self) -> f64 {
+        self.front_axle_to_joint_m - self.front_unit.cg_to_joint_m
+    }
+
     /// The rear-unit parts of a load case: the rear unit, and the payload when loaded.
     pub fn rear_parts(&self, load: Load) -> Vec<RigidPart> {
         match load {

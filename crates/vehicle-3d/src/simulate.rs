@@ -109,6 +109,11 @@ pub struct RunRecord {
     pub drive_torque_n_m: Vec<f64>,
     /// Position of the front unit's cg, x and y (m).
     pub position_m: [Vec<f64>; 2],
+    /// Position of the front-axle centre (the mid-point of the front wheel centres), x and
+    /// y (m): the point the path-following driver steers.
+    pub front_axle_m: [Vec<f64>; 2],
+    /// Heading of the front unit (rad, from x towards y, wrapped to ±π).
+    pub heading_rad: Vec<f64>,
     /// Time of the rear unit's absolute rollover (s), if reached.
     pub rollover_s: Option<f64>,
 }
@@ -181,7 +186,11 @@ fn push_sample(vehicle: &Vehicle, t: f64, y: &[f64], rec: &mut RunRecord) {
         rec.pressure_pa[k].push(snap.pressure_pa[k]);
         rec.hps_travel_m[k].push(snap.hps_travel_m[k]);
         rec.position_m[k].push(ws.body_position(body::FRONT)[k]);
+        rec.front_axle_m[k].push(
+            0.5 * (ws.body_position(body::WHEEL_FL)[k] + ws.body_position(body::WHEEL_FR)[k]),
+        );
     }
+    rec.heading_rad.push(snap.heading_rad);
     for (ch, f) in rec.normal_force_n.iter_mut().zip(fz) {
         ch.push(f);
     }

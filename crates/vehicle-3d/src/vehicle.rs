@@ -3,7 +3,8 @@
 //! relaxation on cached tandem-cam tracks (Eqs 6.1-6.3, Table 6.2), and the PI drive.
 //!
 //! State `y = [q, v, AFS (P_c, P_r, theta_h), tire lags (kappa, alpha) x 4, HPS states x 2
-//! (HPS only), speed-error integral, path coordinate]`; [`Offsets`] gives the blocks.
+//! (HPS only), speed-error integral, path coordinate, steering-wheel angle (driver only)]`;
+//! [`Offsets`] gives the blocks.
 //!
 //! One right-hand-side evaluation, allocation free:
 //! 1. kinematics of the tree;
@@ -15,7 +16,11 @@
 //!    damping (Eq 2.1 form with the nonlinear load curve), the slips and their lags, the
 //!    Fiala forces and moments, applied at the contact point;
 //! 5. one drive torque for all four wheels from the PI law ([`crate::params::DriveParams`]);
-//! 6. forward dynamics (CRBA + RNEA + Cholesky), `qdot` from `v`.
+//! 6. with the path-following driver ([`VehicleOptions::driver`], section 3.4.1), the
+//!    steering-wheel rate `PathDriver::wheel_rate(theta_d, theta)` from the front-axle
+//!    centre (the mid-point of the front wheel centres) and the front unit's heading,
+//!    mapped into the course frame ([`course_frame`]);
+//! 7. forward dynamics (CRBA + RNEA + Cholesky), `qdot` from `v`.
 //!
 //! A dynamics failure writes NaN derivatives, which the integrator reports as a divergence
 //! with time and state.
@@ -24,7 +29,7 @@ use std::cell::RefCell;
 use std::sync::Arc;
 
 use afs_hydraulics::{AfsSystem, StrutInput};
-use afsv_dynamics::SteerInput;
+use afsv_dynamics::{Course, PathDriver, SteerInput};
 use hps_emulsion::{HpsExtensions, HpsStrut};
 use multibody::{Model, Workspace};
 use nalgebra::Vector3;
@@ -62,6 +67,23 @@ pub fn end_stop_force(z: f64, zdot: f64, travel: f64) -> f64 {
     sign * f.max(0.0)
 }
 
+/// The pose of the front-axle centre in the frame of `course` (the yaw-plane driver's:
+/// x along the approach, y to the right, heading from x towards y, front axle starting at
+/// `course.start()`), from the world position `(x, y)` (y left), the front-axle centre's
+/// world x at the start `axle_x0` (its start y is 0) and the front unit's world heading
+/// (from x towards the left). Returns `(x_c, y_c, psi_c)`.
+#[inline]
+pub fn course_frame(
+    course: &Course,
+    axle_x0: f64,
+    x: f64,
+    y: f64,
+    heading: f64,
+) -> (f64, f64, f64) {
+    let (x_s, y_s) = course.start();
+    (x - axle_x0 + x_s, y_s - y, -heading)
+}
+
 /// Largest state dimension (the HPS model with every strut extension on stays below it).
 pub const MAX_DIM: usize = 64;
 
@@ -90,6 +112,13 @@ pub struct VehicleOptions {
     /// Lock the rear-unit roll joint (for the yaw-mode analysis): its roll follows the
     /// front unit's.
     pub lock_rear_roll: bool,
+    /// Path-following driver of the steering wheel (pure pursuit, section 3.4.1, the
+    /// yaw-plane model's `PathDriver`): the steering-wheel angle becomes a state with
+    /// `d(theta_sw)/dt = PathDriver::wheel_rate(theta_d, theta)`, starting at 0 with the
+    /// front-axle centre at the course start. Needs `steer = SteerInput::None`; the path
+    /// change course only (the steady turn's lap bookkeeping needs an unwrapped heading,
+    /// which the floating base does not carry).
+    pub driver: Option<PathDriver>,
 }
 
 impl Default for VehicleOptions {
@@ -104,6 +133,7 @@ impl Default for VehicleOptions {
             envelope_sample_m: 0.05,
             envelope: EnvelopeMethod::TandemCams,
             lock_rear_roll: false,
+            driver: None,
         }
     }
 }
@@ -127,6 +157,8 @@ pub struct Offsets {
     pub pi: usize,
     /// Path coordinate of the front unit's cg (m).
     pub path: usize,
+    /// Steering-wheel angle of the path-following driver (rad; None without a driver).
+    pub driver: Option<usize>,
     /// State dimension.
     pub dim: usize,
 }
@@ -227,6 +259,23 @@ impl Vehicle {
         positive("track_grid_m", options.track_grid_m)?;
         positive("envelope_sample_m", options.envelope_sample_m)?;
         finite("start_s_m", options.start_s_m)?;
+        if let Some(d) = &options.driver {
+            d.validate()?;
+            if let Course::SteadyTurn { radius_m, .. } = d.course {
+                return Err(rejected(
+                    "driver",
+                    radius_m,
+                    "the 3-D vehicle's driver follows the path change course only",
+                ));
+            }
+            if options.steer != SteerInput::None {
+                return Err(rejected(
+                    "steer",
+                    f64::NAN,
+                    "must be SteerInput::None when the driver steers",
+                ));
+            }
+        }
         let statics = Statics::of(params, load)?;
         tracks.check(params, &statics, &options)?;
         let (model, layout) = build_tree(
@@ -271,7 +320,8 @@ impl Vehicle {
             hps_states,
             pi,
             path: pi + 1,
-            dim: pi + 2,
+            driver: options.driver.map(|_| pi + 2),
+            dim: pi + 2 + usize::from(options.driver.is_some()),
         };
         if offsets.dim > MAX_DIM {
             return Err(rejected("hps", offsets.dim as f64, "too many states"));
@@ -424,7 +474,10 @@ impl Vehicle {
 
         // steering struts (Eqs 6.6-6.8)
         let g: StrutGeometry = strut_geometry(ws, &self.layout);
-        let steer = self.options.steer.angle(t);
+        let steer = match o.driver {
+            Some(i) => y[i],
+            None => self.options.steer.angle(t),
+        };
         let input = StrutInput {
             disp_left: g.length[0] - self.l0,
             disp_right: g.length[1] - self.l0,
@@ -508,6 +561,21 @@ impl Vehicle {
         dydt[o.pi] = error;
         let path_rate = ws.point_velocity(body::FRONT, &Vector3::zeros()).dot(&h);
         dydt[o.path] = path_rate;
+        if let (Some(driver), Some(i)) = (&self.options.driver, o.driver) {
+            let axle = 0.5 * (ws.body_position(body::WHEEL_FL) + ws.body_position(body::WHEEL_FR));
+            let p = &self.params;
+            let (x, y_c, psi) =
+                course_frame(&driver.course, p.front_axle_x_m(), axle.x, axle.y, heading);
+            let desired = driver.desired_articulation(
+                x,
+                y_c,
+                psi,
+                speed,
+                p.front_axle_to_joint_m,
+                p.rear_axle_to_joint_m,
+            );
+            dydt[i] = driver.wheel_rate(desired, y[self.joints.articulation.0]);
+        }
         snap.speed_m_s = speed;
         snap.drive_torque_n_m = torque;
         snap.path_rate_m_s = path_rate;

@@ -2,7 +2,9 @@
 //! (SP-DRT of the rear unit, D2) and yaw (omega_z after the pulse, D3) of the 3-D vehicle
 //! (`vehicle-3d`), unsuspended and with the nominal front-axle HPS, each rough-terrain
 //! measure as mean ± SD over common terrain seeds, with the ISO 2631-1 health guidance
-//! caution zone (HGCZ, 8 h) verdict of a_wz.
+//! caution zone (HGCZ, 8 h) verdict of a_wz. [`measure`] runs them for any parameter set,
+//! front axles and ride load cases; `afsv evaluate` ([`assess`]) and `afsv vehicle measures`
+//! share it.
 
 use perf_measures::iso2631::{health_guidance_zone, HgczRelation, HgczZone};
 use rayon::prelude::*;
@@ -54,6 +56,27 @@ pub struct DesignMeasures {
     pub nominal_hps: AxleSummary,
 }
 
+/// The three measures of one front axle of one parameter set over common seeds: the D1
+/// ride of each load case asked for, the D2 SP-DRT and the D3 yaw (both loaded).
+#[derive(Debug, Clone, Serialize)]
+pub struct ConfigMeasures {
+    /// The front axle.
+    pub front_axle: FrontAxle,
+    /// D1 per load case, in the order asked for.
+    pub ride: Vec<(Load, RideSummary)>,
+    /// D2 SP-DRT, loaded (m/s²).
+    pub sp_drt_m_s2: Spread,
+    /// D3, loaded, smooth ground.
+    pub yaw: YawMeasures,
+}
+
+impl ConfigMeasures {
+    /// The ride of `load`, if it was measured.
+    pub fn ride_of(&self, load: Load) -> Option<&RideSummary> {
+        self.ride.iter().find(|(l, _)| *l == load).map(|(_, r)| r)
+    }
+}
+
 /// One run of the assessment.
 #[derive(Debug, Clone, Copy)]
 enum Job {
@@ -69,11 +92,11 @@ enum Outcome {
     Yaw(YawMeasures),
 }
 
-/// The enveloping caches of one seed: unloaded and loaded ride, roll. They depend on the
-/// terrain and the load, not on the front axle, so both axles share them.
+/// The enveloping caches of one seed: the ride of each load case, the roll. They depend on
+/// the terrain and the load, not on the front axle, so both axles share them.
 struct SeedTracks {
     seed: u64,
-    ride: [Arc<TireTracks>; 2],
+    ride: Vec<(Load, Arc<TireTracks>)>,
     roll: Arc<TireTracks>,
 }
 
@@ -87,7 +110,12 @@ fn run_job(p: &VehicleParams, job: Job, tracks: &[SeedTracks]) -> Result<Outcome
     };
     Ok(match job {
         Job::Ride(axle, load, seed) => {
-            let t = Arc::clone(&of(seed)?.ride[usize::from(load == Load::Loaded)]);
+            let t = of(seed)?
+                .ride
+                .iter()
+                .find(|(l, _)| *l == load)
+                .map(|(_, t)| Arc::clone(t))
+                .ok_or_else(|| format!("no {load} ride tracks for seed {seed}"))?;
             let (_, m) = ride_on(p, &RideSpec::d1(load, axle), t).map_err(e)?;
             Outcome::Ride(m.a_wz_m_s2, m.strut_travel_p2p_m)
         }
@@ -100,60 +128,76 @@ fn run_job(p: &VehicleParams, job: Job, tracks: &[SeedTracks]) -> Result<Outcome
     })
 }
 
-/// Run the assessment over `seeds` (in parallel); `progress` is called once per finished run
-/// with a short description.
-pub fn assess(seeds: &[u64], progress: &(dyn Fn(&str) + Sync)) -> Result<DesignMeasures, String> {
+/// The design measures D1 (a_wz and d_s for each of `ride_loads`), D2 (SP-DRT) and D3
+/// (omega_z, zeta) of the vehicle `p` with each of `axles`, over common terrain `seeds`
+/// (section 6.4), all runs in parallel; `progress` is called once per finished run with a
+/// short description. One entry per axle, in order.
+pub fn measure(
+    p: &VehicleParams,
+    axles: &[FrontAxle],
+    ride_loads: &[Load],
+    seeds: &[u64],
+    progress: &(dyn Fn(&str) + Sync),
+) -> Result<Vec<ConfigMeasures>, String> {
     if seeds.is_empty() || seeds.len() as u64 > MAX_SEEDS {
         return Err(format!(
             "between 1 and {MAX_SEEDS} terrain seeds, got {}",
             seeds.len()
         ));
     }
-    let p = VehicleParams::nominal();
+    if axles.is_empty() || ride_loads.is_empty() {
+        return Err("at least one front axle and one ride load case".into());
+    }
     let mut jobs = Vec::new();
-    for axle in [FrontAxle::Rigid, FrontAxle::Suspended] {
+    for &axle in axles {
         jobs.push(Job::Yaw(axle));
         for &s in seeds {
             jobs.push(Job::Roll(axle, s));
-            jobs.push(Job::Ride(axle, Load::Unloaded, s));
-            jobs.push(Job::Ride(axle, Load::Loaded, s));
+            for &load in ride_loads {
+                jobs.push(Job::Ride(axle, load, s));
+            }
         }
     }
     let e = |e: vehicle_3d::VehicleError| e.to_string();
     let tracks: Vec<SeedTracks> = seeds
         .par_iter()
         .map(|&seed| {
-            let ride = |load| ride_tracks(&p, &RideSpec::d1(load, FrontAxle::Rigid), seed);
+            let ride = ride_loads
+                .iter()
+                .map(|&load| {
+                    ride_tracks(p, &RideSpec::d1(load, FrontAxle::Rigid), seed)
+                        .map(|t| (load, t))
+                        .map_err(e)
+                })
+                .collect::<Result<_, String>>()?;
             Ok(SeedTracks {
                 seed,
-                ride: [
-                    ride(Load::Unloaded).map_err(e)?,
-                    ride(Load::Loaded).map_err(e)?,
-                ],
-                roll: roll_tracks(&p, &RollSpec::d2(FrontAxle::Rigid), seed).map_err(e)?,
+                ride,
+                roll: roll_tracks(p, &RollSpec::d2(FrontAxle::Rigid), seed).map_err(e)?,
             })
         })
         .collect::<Result<_, String>>()?;
     let outcomes: Vec<Outcome> = jobs
         .par_iter()
         .map(|&j| {
-            let out = run_job(&p, j, &tracks);
+            let out = run_job(p, j, &tracks);
             progress(&format!("{j:?}"));
             out
         })
         .collect::<Result<_, _>>()?;
     let zone = health_guidance_zone(8.0, HgczRelation::SqrtTime).map_err(|e| e.to_string())?;
-    let summary = |axle: FrontAxle| -> Result<AxleSummary, String> {
-        let mut awz = [Vec::new(), Vec::new()];
-        let mut ds = [Vec::new(), Vec::new()];
+    let summary = |axle: FrontAxle| -> Result<ConfigMeasures, String> {
+        let mut awz = vec![Vec::new(); ride_loads.len()];
+        let mut ds = vec![Vec::new(); ride_loads.len()];
         let mut sp = Vec::new();
         let mut wz = None;
         for (job, out) in jobs.iter().zip(&outcomes) {
             match (job, out) {
                 (Job::Ride(a, load, _), Outcome::Ride(w, d)) if *a == axle => {
-                    let i = usize::from(*load == Load::Loaded);
-                    awz[i].push(*w);
-                    ds[i].extend(*d);
+                    if let Some(i) = ride_loads.iter().position(|l| l == load) {
+                        awz[i].push(*w);
+                        ds[i].extend(*d);
+                    }
                 }
                 (Job::Roll(a, _), Outcome::Roll(s)) if *a == axle => sp.push(*s),
                 (Job::Yaw(a), Outcome::Yaw(m)) if *a == axle => wz = Some(*m),
@@ -161,30 +205,71 @@ pub fn assess(seeds: &[u64], progress: &(dyn Fn(&str) + Sync)) -> Result<DesignM
             }
         }
         let spread = |v: &[f64]| Spread::of(v).map_err(|e| e.to_string());
-        let ride = |i: usize| -> Result<RideSummary, String> {
-            let a = spread(&awz[i])?;
-            Ok(RideSummary {
-                a_wz_m_s2: a,
-                strut_travel_m: if ds[i].is_empty() {
-                    None
-                } else {
-                    Some(spread(&ds[i])?)
-                },
-                hgcz_8h: zone.classify(a.mean),
+        let ride = ride_loads
+            .iter()
+            .enumerate()
+            .map(|(i, &load)| -> Result<(Load, RideSummary), String> {
+                let a = spread(&awz[i])?;
+                Ok((
+                    load,
+                    RideSummary {
+                        a_wz_m_s2: a,
+                        strut_travel_m: if ds[i].is_empty() {
+                            None
+                        } else {
+                            Some(spread(&ds[i])?)
+                        },
+                        hgcz_8h: zone.classify(a.mean),
+                    },
+                ))
             })
-        };
-        Ok(AxleSummary {
-            ride_unloaded: ride(0)?,
-            ride_loaded: ride(1)?,
+            .collect::<Result<_, _>>()?;
+        Ok(ConfigMeasures {
+            front_axle: axle,
+            ride,
             sp_drt_m_s2: spread(&sp)?,
             yaw: wz.ok_or("the yaw run is missing")?,
         })
     };
+    axles.iter().map(|&a| summary(a)).collect()
+}
+
+/// The 8 h HGCZ band of ISO 2631-1 (Eq B.1, m/s²).
+pub fn hgcz_8h_band() -> Result<(f64, f64), String> {
+    let zone = health_guidance_zone(8.0, HgczRelation::SqrtTime).map_err(|e| e.to_string())?;
+    Ok((zone.lower_m_s2, zone.upper_m_s2))
+}
+
+/// Run the assessment of the nominal vehicle over `seeds` (in parallel): [`measure`] for
+/// both front axles and both load cases; `progress` is called once per finished run with a
+/// short description.
+pub fn assess(seeds: &[u64], progress: &(dyn Fn(&str) + Sync)) -> Result<DesignMeasures, String> {
+    let p = VehicleParams::nominal();
+    let configs = measure(
+        &p,
+        &[FrontAxle::Rigid, FrontAxle::Suspended],
+        &[Load::Unloaded, Load::Loaded],
+        seeds,
+        progress,
+    )?;
+    let axle = |c: &ConfigMeasures| -> Result<AxleSummary, String> {
+        let ride = |load| {
+            c.ride_of(load)
+                .cloned()
+                .ok_or_else(|| format!("the {load} ride is missing"))
+        };
+        Ok(AxleSummary {
+            ride_unloaded: ride(Load::Unloaded)?,
+            ride_loaded: ride(Load::Loaded)?,
+            sp_drt_m_s2: c.sp_drt_m_s2,
+            yaw: c.yaw,
+        })
+    };
     Ok(DesignMeasures {
         seeds: seeds.to_vec(),
-        hgcz_8h_m_s2: (zone.lower_m_s2, zone.upper_m_s2),
-        unsuspended: summary(FrontAxle::Rigid)?,
-        nominal_hps: summary(FrontAxle::Suspended)?,
+        hgcz_8h_m_s2: hgcz_8h_band()?,
+        unsuspended: axle(&configs[0])?,
+        nominal_hps: axle(&configs[1])?,
     })
 }
 

@@ -1,9 +1,12 @@
 //! `afsv vehicle`: the integrated 3-D articulated vehicle of Chapter 6 (crate `vehicle-3d`):
 //! the design runs of section 6.4 over terrain seeds with their measures as mean ± SD
-//! (`ride` D1, `roll` D2, `yaw` D3), and one recorded run (`simulate`) in the record format
-//! of docs/records.md. Parses, calls, prints.
+//! (`ride` D1, `roll` D2, `yaw` D3), the three measures of one configuration (`measures`),
+//! the V3 path change with the path-following driver (`path-change`), and one recorded run
+//! (`simulate`) in the record format of docs/records.md. Parses, calls, prints.
 
+mod measures;
 mod options;
+mod path_change;
 mod plots;
 mod simulate;
 
@@ -11,10 +14,12 @@ use super::{args, CmdResult};
 use afsv::output::{OutputGuard, OutputKind};
 use afsv::progress::Progress;
 use hps_emulsion::StrutParams;
+use measures::measures_cmd;
 use options::{
     duration_s, ramp_rate, seed_count, speed_kmh, steer_peak, terrain_arg, TerrainArg,
     MAX_DURATION_S,
 };
+use path_change::{offset_m, path_change_cmd, PathChangeFiles};
 use perf_measures::iso2631::{health_guidance_zone, HgczRelation};
 use plots::{plot_ride, plot_roll, plot_yaw, ride_psd, RidePsd};
 use rayon::prelude::*;
@@ -120,6 +125,52 @@ pub enum Command {
         #[arg(long, default_value_t = 30.0, allow_hyphen_values = true, value_parser = steer_peak)]
         pulse_deg: f64,
     },
+    /// V3 path change (section 6.3, Fig 3.6(b)): the pure-pursuit driver of the yaw-plane
+    /// model steers the front axle through a lateral offset over an 18 m gate after a 20 m
+    /// approach; peaks of articulation, left-strut displacement, front-unit yaw rate and
+    /// lateral acceleration, and the largest deviation from the course. Default speed: the
+    /// Table 3.2 mean, 15.3 km/h loaded, 19.2 km/h unloaded; default ground smooth
+    /// (`--terrain class:C` for the paved field course).
+    PathChange {
+        #[command(flatten)]
+        case: CaseArgs,
+        /// Terrain seed (with a terrain; default 1).
+        #[arg(long)]
+        seed: Option<u64>,
+        /// Lateral offset of the course (m), positive to the right, at most 20 in magnitude.
+        #[arg(long, default_value_t = 4.5, allow_hyphen_values = true, value_parser = offset_m)]
+        offset_m: f64,
+        /// Simulated time (s), at most 600.
+        #[arg(long, default_value_t = 20.0, allow_hyphen_values = true, value_parser = duration_s)]
+        duration: f64,
+        #[command(flatten)]
+        files: PathChangeFiles,
+    },
+    /// The three design measures of section 6.4 for one configuration (the code of `afsv
+    /// evaluate`): D1 a_wz (W_k) with the 8 h HGCZ verdict and the strut travel d_s for
+    /// `--load` at 20 km/h on class E, D2 SP-DRT and D3 omega_z / zeta (both loaded, 50
+    /// km/h) with the front axle of `--hps` and the set of `--params`.
+    Measures {
+        /// Load case of the D1 ride (D2 and D3 are loaded by definition).
+        #[arg(long, default_value = "loaded")]
+        load: Load,
+        /// Front axle: `off`, `nominal` or a strut parameter file (as for the other
+        /// subcommands).
+        #[arg(long, default_value = "off")]
+        hps: String,
+        /// Vehicle parameter file (JSON, as written by `afsv params dump vehicle-3d`).
+        #[arg(long)]
+        params: Option<PathBuf>,
+        /// Run the terrain seeds 1..=N (1 to 100; default 10).
+        #[arg(long, conflicts_with = "seed")]
+        seeds: Option<usize>,
+        /// Run this one terrain seed.
+        #[arg(long)]
+        seed: Option<u64>,
+        /// Print JSON even on a terminal (JSON is the default when stdout is not a terminal).
+        #[arg(long)]
+        json: bool,
+    },
     /// One run into a record (CSV + JSON sidecar, docs/records.md, sign convention
     /// afsv-v1): the steering channels of a vehicle steering test plus the ride channels.
     Simulate {
@@ -176,6 +227,30 @@ pub fn run(cmd: Command) -> CmdResult {
             output,
             force,
         } => simulate_cmd(&case, seed, &steer, duration, dt, &output, force),
+        Command::PathChange {
+            case,
+            seed,
+            offset_m,
+            duration,
+            files,
+        } => path_change_cmd(&case, seed, offset_m, duration, &files),
+        Command::Measures {
+            load,
+            hps,
+            params,
+            seeds,
+            seed,
+            json,
+        } => {
+            let case = CaseArgs {
+                load,
+                speed_kmh: None,
+                terrain: None,
+                hps,
+                params,
+            };
+            measures_cmd(&case, seeds, seed, json)
+        }
     }
 }
 

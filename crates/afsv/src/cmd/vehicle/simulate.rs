@@ -13,6 +13,9 @@ use vehicle_3d::model::TIRE_NAMES;
 use vehicle_3d::{RunOptions, RunRecord, Vehicle, VehicleOptions};
 use vehicle_components::FlatTerrain;
 
+/// The axes and signs of the record's ride channels (the sidecar's `axes`).
+pub(super) const AXES: &str = "cab_accel_*, front_pitch_accel: the front unit's body axes (x forward, y left, z up), kinematic acceleration without gravity at the a_wz point; front_pitch_accel right-handed about y (nose down positive); front_lateral_accel and rear_lateral_accel left positive; rear_ltr = (F_zL - F_zR)/(F_zL + F_zR) of the rear axle; hps_travel compression positive";
+
 pub(super) fn simulate_cmd(
     case: &CaseArgs,
     seed: Option<u64>,
@@ -74,7 +77,7 @@ pub(super) fn simulate_cmd(
         "manoeuvre": steer_label(&input),
         "steer": input,
         "terrain": terrain_json(&terrain, seeds),
-        "axes": "cab_accel_*, front_pitch_accel: the front unit's body axes (x forward, y left, z up), kinematic acceleration without gravity at the a_wz point; front_pitch_accel right-handed about y (nose down positive); rear_lateral_accel left positive; rear_ltr = (F_zL - F_zR)/(F_zL + F_zR) of the rear axle; hps_travel compression positive",
+        "axes": AXES,
         "params": p,
     });
     afsv::output::check_finite_record(&out)?;
@@ -91,7 +94,7 @@ pub(super) fn simulate_cmd(
 
 /// The run's channels in the afsv-v1 convention (docs/records.md): the steering channels of
 /// a vehicle steering test, then the ride channels.
-fn record(r: &RunRecord) -> Result<Record, afsv_records::RecordError> {
+pub(super) fn record(r: &RunRecord) -> Result<Record, afsv_records::RecordError> {
     let deg = |v: &[f64], sign: f64| v.iter().map(|x| sign * x.to_degrees()).collect();
     let mut out = Record::new();
     out.push_column("time_s", r.t_s.clone())?;

@@ -1,0 +1,203 @@
+//! `afsv vehicle path-change`: the V3 path change of section 6.3 (Fig 3.6(b), 4.5 m offset
+//! over an 18 m gate) steered by the pure-pursuit driver of the yaw-plane model: the
+//! peaks of the Fig 6.12 channels and the course deviation, optionally the record (CSV +
+//! JSON sidecar, afsv-v1) and a four-panel SVG of the channels.
+
+use super::super::args;
+use super::simulate::{record, AXES};
+use super::{axle_name, declare_inputs, print_result, terrain_and_seeds, terrain_json};
+use super::{vehicle_params, CaseArgs, CmdResult};
+use afsv::output::{OutputGuard, OutputKind};
+use serde_json::json;
+use std::path::{Path, PathBuf};
+use vehicle_3d::scenarios::{path_change, PathChangeMeasures, PathChangeSpec};
+use vehicle_3d::RunRecord;
+
+/// Largest lateral offset of the course (m): a lane change of a few truck widths.
+const MAX_OFFSET_M: f64 = 20.0;
+
+/// A signed course offset within ±[`MAX_OFFSET_M`] (m).
+pub(super) fn offset_m(s: &str) -> Result<f64, String> {
+    let v = args::finite_f64(s)?;
+    if v.abs() <= MAX_OFFSET_M {
+        Ok(v)
+    } else {
+        Err(format!("must be at most {MAX_OFFSET_M} m in magnitude"))
+    }
+}
+
+pub(super) fn path_change_cmd(
+    case: &CaseArgs,
+    seed: Option<u64>,
+    offset: f64,
+    duration: f64,
+    out: &PathChangeFiles,
+) -> CmdResult {
+    let mut guard = OutputGuard::new(out.force);
+    declare_inputs(case, &mut guard)?;
+    if let Some(o) = out.output.as_deref() {
+        guard.output("-o", o, OutputKind::Record)?;
+    }
+    if let Some(p) = out.plot.as_deref() {
+        guard.output("--plot", p, OutputKind::Svg)?;
+    }
+    let (p, axle) = vehicle_params(case)?;
+    let (terrain, seeds) = terrain_and_seeds(case, None, seed, None)?;
+    let seeds = &seeds[..1];
+    let v3 = PathChangeSpec::v3(case.load, axle);
+    let spec = PathChangeSpec {
+        speed_kmh: case.speed_kmh.unwrap_or(v3.speed_kmh),
+        offset_m: offset,
+        t_end_s: duration,
+        terrain,
+        ..v3
+    };
+    let (rec, m) = path_change(&p, &spec, seeds[0])?;
+    if let Some(path) = out.output.as_deref() {
+        let mut r = record(&rec)?;
+        r.meta = json!({
+            "written_by": "afsv vehicle path-change",
+            "sample_rate_hz": 1.0 / (rec.t_s[1] - rec.t_s[0]),
+            "model": "vehicle-3d integrated 3-D articulated dump truck (chapter 6)",
+            "manoeuvre": "path_change",
+            "spec": spec,
+            "terrain": terrain_json(&terrain, seeds),
+            "measures": m,
+            "axes": AXES,
+            "params": p,
+        });
+        afsv::output::check_finite_record(&r)?;
+        r.write(path)?;
+    }
+    if let Some(path) = out.plot.as_deref() {
+        plot(path, &rec, &spec, &m)?;
+    }
+    let mut v = json!({
+        "scenario": "path change (V3, section 6.3, Fig 3.6(b))",
+        "load": case.load,
+        "front_axle": axle,
+        "speed_kmh": spec.speed_kmh,
+        "course": {
+            "offset_m": spec.offset_m,
+            "gate_m": spec.gate_m,
+            "approach_m": spec.approach_m,
+        },
+        "duration_s": spec.t_end_s,
+        "terrain": terrain_json(&terrain, seeds),
+        "sign_convention": "afsv-v1: positive in a right-hand turn; offset positive to the right",
+        "measures": m,
+    });
+    if let Some(o) = out.output.as_deref() {
+        v["output"] = json!(o);
+        v["sidecar"] = json!(o.with_extension("json"));
+    }
+    if let Some(plot) = out.plot.as_deref() {
+        v["plot"] = json!(plot);
+    }
+    let ground = match &terrain {
+        None => "smooth ground".to_string(),
+        Some(t) => format!("class {}, m_c {}, seed {}", t.class, t.m_c, seeds[0]),
+    };
+    let mut text = format!(
+        "path change V3: {}, {}, {} km/h, {} m offset over an {} m gate, {ground}\n",
+        case.load,
+        axle_name(axle),
+        spec.speed_kmh,
+        spec.offset_m,
+        spec.gate_m
+    );
+    let row = |label: &str, value: String, unit: &str| format!("{label:<36} {value:>16} {unit}\n");
+    text += &row(
+        "peak articulation",
+        format!("{:.2}", m.peak_articulation_deg),
+        "deg",
+    );
+    text += &row(
+        "left-strut displacement min / max",
+        format!(
+            "{:.3} / {:.3}",
+            m.strut_left_range_m.0, m.strut_left_range_m.1
+        ),
+        "m",
+    );
+    text += &row(
+        "peak front-unit yaw rate",
+        format!("{:.2}", m.peak_yaw_rate_deg_s),
+        "deg/s",
+    );
+    text += &row(
+        "peak front-unit lateral acceleration",
+        format!("{:.3}", m.peak_lateral_accel_m_s2),
+        "m/s²",
+    );
+    text += &row(
+        "largest deviation from the course",
+        format!("{:.3}", m.max_deviation_m),
+        "m",
+    );
+    text += &row(
+        "final lateral position",
+        format!("{:.3}", m.final_offset_m),
+        "m",
+    );
+    text += "signs: positive in a right-hand turn (afsv-v1)\n";
+    print_result(out.json, &v, &text)
+}
+
+/// The four Fig 6.12 channels in a 2 × 2 grid, afsv-v1 signs.
+fn plot(path: &Path, rec: &RunRecord, spec: &PathChangeSpec, m: &PathChangeMeasures) -> CmdResult {
+    let deg =
+        |v: &[f64], sign: f64| -> Vec<f64> { v.iter().map(|x| sign * x.to_degrees()).collect() };
+    let theta = deg(&rec.articulation_rad, 1.0);
+    let yaw_rate = deg(&rec.front_rate_rad_s[2], -1.0);
+    let lateral: Vec<f64> = rec.front_lateral_accel_m_s2.iter().map(|a| -a).collect();
+    let t = &rec.t_s;
+    let time = || afsv_plot::Axis::new("time", "s");
+    let panel = |caption, label, unit, y| afsv_plot::Panel {
+        caption,
+        x: time(),
+        y: afsv_plot::Axis::new(label, unit),
+        series: vec![afsv_plot::Series { label, x: t, y }],
+    };
+    let conditions = format!(
+        "{}, {}, {} km/h, {} m offset, {} m gate; max deviation {:.2} m",
+        spec.load,
+        axle_name(spec.front_axle),
+        spec.speed_kmh,
+        spec.offset_m,
+        spec.gate_m,
+        m.max_deviation_m
+    );
+    afsv_plot::panels(
+        path,
+        "path change (V3): the Fig 6.12 channels, positive in a right-hand turn",
+        &conditions,
+        2,
+        &[
+            panel("articulation angle", "articulation", "deg", &theta),
+            panel("left-strut displacement", "d_L", "m", &rec.strut_disp_m[0]),
+            panel("front-unit yaw rate", "yaw rate", "deg/s", &yaw_rate),
+            panel("front-unit lateral acceleration", "a_y", "m/s²", &lateral),
+        ],
+    )?;
+    afsv::output::mark_svg(path)?;
+    Ok(())
+}
+
+/// Output options of `afsv vehicle path-change`.
+#[derive(clap::Args, Debug)]
+pub struct PathChangeFiles {
+    /// Record CSV of the run (the sidecar goes beside it with extension .json); an
+    /// existing file afsv did not write needs --force.
+    #[arg(short = 'o', long)]
+    pub output: Option<PathBuf>,
+    /// SVG plot of articulation, left-strut displacement, yaw rate and lateral acceleration.
+    #[arg(long)]
+    pub plot: Option<PathBuf>,
+    /// Replace existing output files afsv did not write.
+    #[arg(long)]
+    pub force: bool,
+    /// Print JSON even on a terminal (JSON is the default when stdout is not a terminal).
+    #[arg(long)]
+    pub json: bool,
+}
