@@ -41,6 +41,8 @@ pub(crate) const GROUPS: &[(&str, u32)] = &[
     ("vehicle roll", 2),
     ("vehicle yaw", 3),
     ("vehicle simulate", 4),
+    ("vehicle path-change", 2),
+    ("vehicle measures", 1),
     ("params check vehicle-3d", 2),
     ("batch evaluate", 3),
     ("study speed-sweep", 2),

@@ -133,7 +133,11 @@ pub(super) fn vehicle_case(g: &mut Gen<'_>, group: &str) {
         let l = g.rng.pick(&["loaded", "unloaded", "heavy", ""]).to_string();
         g.push_opt("--load", &l);
     }
-    g.num("--speed-kmh", "20", 0.2);
+    // `vehicle measures` runs the fixed D1-D3 scenarios: no speed, terrain or plot
+    let measures = group == "vehicle measures";
+    if !measures {
+        g.num("--speed-kmh", "20", 0.2);
+    }
     if g.rng.chance(0.25) {
         let h = g
             .rng
@@ -149,7 +153,8 @@ pub(super) fn vehicle_case(g: &mut Gen<'_>, group: &str) {
         g.push_opt("--hps", &h);
     }
     let simulate = group == "vehicle simulate";
-    let terrain = g.rng.chance(0.4);
+    let single_run = simulate || group == "vehicle path-change";
+    let terrain = !measures && g.rng.chance(0.4);
     if terrain {
         let bad = g.bad();
         let t = g
@@ -176,7 +181,11 @@ pub(super) fn vehicle_case(g: &mut Gen<'_>, group: &str) {
         };
         g.push_opt("--terrain", &t);
     }
-    if !simulate {
+    if single_run {
+        if g.rng.chance(0.2) {
+            g.push_opt("--seed", "2");
+        }
+    } else {
         if g.rng.chance(0.3 * g.scale) {
             let v = g.bad();
             g.push_opt("--seeds", &v);
@@ -191,12 +200,33 @@ pub(super) fn vehicle_case(g: &mut Gen<'_>, group: &str) {
         if g.rng.chance(0.3) {
             g.arg("--json");
         }
-        if g.rng.chance(0.2) {
+        if !measures && g.rng.chance(0.2) {
             let o = g.output("plot.svg", &["p.json", "s.json"]);
             g.push_opt("--plot", &o);
         }
     }
     match group {
+        "vehicle measures" => {}
+        "vehicle path-change" => {
+            g.num("--offset-m", "4.5", 0.3);
+            if g.rng.chance(0.3 * g.scale) {
+                let v = g.bad();
+                g.push_opt("--duration", &v);
+            } else {
+                g.push_opt("--duration", "8");
+            }
+            if g.rng.chance(0.3) {
+                g.arg("--json");
+            }
+            if g.rng.chance(0.2) {
+                let o = g.output("plot.svg", &["p.json", "s.json"]);
+                g.push_opt("--plot", &o);
+            }
+            if g.rng.chance(0.3) {
+                let o = g.output("run.csv", &["p.json", "s.json", "run.json"]);
+                g.push_opt("-o", &o);
+            }
+        }
         "vehicle ride" => {
             if g.rng.chance(0.3 * g.scale) {
                 let v = g.bad();
@@ -228,9 +258,6 @@ pub(super) fn vehicle_case(g: &mut Gen<'_>, group: &str) {
                 _ => "pulse:30,0.2,0.3".to_string(),
             };
             g.push_opt("--steer", &steer);
-            if g.rng.chance(0.2) {
-                g.push_opt("--seed", "2");
-            }
             if g.rng.chance(0.3 * g.scale) {
                 let v = g.bad();
                 g.push_opt("--duration", &v);
