@@ -204,7 +204,10 @@ impl SteerInput {
                 if t >= time_s[n - 1] {
                     return angle_rad[n - 1];
                 }
-                let i = time_s.partition_point(|&x| x <= t); // time_s[i-1] <= t < time_s[i]
+                // time_s[i-1] <= t < time_s[i]; a NaN t (a diverging solver) finds no
+                // interval, and the clamp keeps it in the table so the NaN reaches the
+                // solver's divergence check instead of an index panic
+                let i = time_s.partition_point(|&x| x <= t).clamp(1, n - 1);
                 let (t0, t1) = (time_s[i - 1], time_s[i]);
                 let h = t1 - t0;
                 let w = (t - t0) / h;
@@ -283,6 +286,8 @@ mod tests {
         assert!((t.angle(2.0) - 1.0 / 6.0).abs() < 1e-12);
         assert!((t.angle(1.0) - 1.0).abs() < 1e-12);
         assert_eq!(t.angle(9.0), -1.0);
+        // a diverging solver's NaN time gives NaN, not an index panic
+        assert!(t.angle(f64::NAN).is_nan());
         // A uniformly sampled ramp is reproduced exactly between the samples.
         let ramp = SteerInput::Table {
             time_s: (0..10).map(|k| 0.01 * k as f64).collect(),
