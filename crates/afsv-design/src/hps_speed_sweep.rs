@@ -12,7 +12,9 @@ use crate::error::DesignError;
 use perf_measures::iso2631::{health_guidance_zone, HgczRelation};
 use rayon::prelude::*;
 use serde::Serialize;
-use vehicle_3d::scenarios::{ride, RideSpec, Spread};
+use std::sync::Arc;
+use vehicle_3d::scenarios::{ride_on, ride_tracks, RideSpec, Spread};
+use vehicle_3d::TireTracks;
 use vehicle_3d::{FrontAxle, Load, VehicleParams};
 
 /// Largest number of speeds of one sweep.
@@ -129,25 +131,37 @@ pub fn hps_speed_sweep(
         speed_kmh,
         ..RideSpec::d1(load, FrontAxle::Suspended)
     };
+    // the enveloping cache depends on the load, the tire and the terrain, not on the speed:
+    // built once per load and seed, shared by every speed
+    let cases: Vec<(Load, u64)> = loads
+        .iter()
+        .flat_map(|&load| seeds.iter().map(move |&s| (load, s)))
+        .collect();
+    let tracks: Vec<Arc<TireTracks>> = cases
+        .par_iter()
+        .map(|&(load, s)| ride_tracks(p, &spec(load, speeds_kmh[0]), s))
+        .collect::<Result<_, _>>()
+        .map_err(sim)?;
+    // runs load by load, speed by speed, seed by seed (the chunks below rely on it)
     let mut runs = Vec::new();
-    for load in loads {
+    for (li, &load) in loads.iter().enumerate() {
         for &v in speeds_kmh {
-            for &s in seeds {
-                runs.push((load, v, s));
+            for (si, &s) in seeds.iter().enumerate() {
+                runs.push((load, v, s, li * seeds.len() + si));
             }
         }
     }
     let measures: Vec<_> = runs
         .par_iter()
-        .map(|&(load, v, s)| {
-            let m = ride(p, &spec(load, v), s).map(|(_, m)| m);
+        .map(|&(load, v, s, c)| {
+            let m = ride_on(p, &spec(load, v), Arc::clone(&tracks[c])).map(|(_, m)| m);
             progress(&format!("{load} {v} km/h seed {s}"));
             m.map_err(sim)
         })
         .collect::<Result<_, _>>()?;
     let spread = |v: &[f64]| Spread::of_measured(v).map_err(sim);
     let mut points = Vec::new();
-    for (chunk, &(load, v, _)) in measures
+    for (chunk, &(load, v, _, _)) in measures
         .chunks(seeds.len())
         .zip(runs.iter().step_by(seeds.len()))
     {

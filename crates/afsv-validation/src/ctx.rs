@@ -24,6 +24,8 @@ pub(super) struct Cache {
     pub(super) sens: Option<[SensitivityTable; 2]>,
     /// Composite AHP weights of Eq 4.17.
     pub(super) ahp_w: Option<Vec<f64>>,
+    /// D1 a_wz of the unsuspended unloaded 3-D vehicle, mean over the validation seeds.
+    pub(super) rigid_awz_unloaded: Option<f64>,
 }
 
 impl<'a> Ctx<'a> {

@@ -57,6 +57,9 @@ pub(super) fn check_chapter6(ctx: &mut Ctx) -> Result<(), String> {
             let m = ride(&p, &RideSpec::d1(load, axle))?;
             let a = mean_of(&m, |m| m.a_wz_m_s2)?;
             awz[i][j] = a.mean;
+            if load == Load::Unloaded && axle == FrontAxle::Rigid {
+                ctx.cache.rigid_awz_unloaded = Some(a.mean);
+            }
             if axle == FrontAxle::Rigid {
                 ctx.compare(
                     "s6_awz_unsuspended",

@@ -141,12 +141,7 @@ fn sweep_vehicle(
     if a.hps != "nominal" {
         let file = std::path::Path::new(&a.hps);
         guard.input("--hps", file)?;
-        let strut: hps_emulsion::StrutParams = super::params::read(file)
-            .map_err(|e| format!("--hps: {e} (expected nominal or a strut file)"))?;
-        strut
-            .validate()
-            .map_err(|e| format!("--hps {}: {e}", file.display()))?;
-        p.hps = strut;
+        p.hps = super::vehicle::read_strut(file, "nominal or a strut file")?;
     }
     if let Some(text) = &a.design {
         let v = parse_list("--design", text, 3)?;

@@ -283,18 +283,24 @@ fn vehicle_params(case: &CaseArgs) -> Result<(VehicleParams, FrontAxle), String>
     };
     let (axle, file) = front_axle(&case.hps);
     if let Some(file) = file {
-        let strut: StrutParams = super::params::read(file)
-            .map_err(|e| format!("--hps: {e} (expected off, nominal or a strut file)"))?;
-        strut
-            .validate()
-            .map_err(|e| format!("--hps {}: {e}", file.display()))?;
-        p.hps = strut;
+        p.hps = read_strut(file, "off, nominal or a strut file")?;
     }
     p.validate().map_err(|e| match &case.params {
         Some(path) => format!("{}: {e}", path.display()),
         None => e.to_string(),
     })?;
     Ok((p, axle))
+}
+
+/// The strut parameter file of `--hps`, validated; `expected` names the accepted values in
+/// the error of an unreadable file.
+pub(crate) fn read_strut(file: &Path, expected: &str) -> Result<StrutParams, String> {
+    let strut: StrutParams =
+        super::params::read(file).map_err(|e| format!("--hps: {e} (expected {expected})"))?;
+    strut
+        .validate()
+        .map_err(|e| format!("--hps {}: {e}", file.display()))?;
+    Ok(strut)
 }
 
 /// The terrain of `case` (`default` when `--terrain` is not given) and the seeds to run:

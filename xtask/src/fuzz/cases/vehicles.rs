@@ -138,20 +138,10 @@ pub(super) fn vehicle_case(g: &mut Gen<'_>, group: &str) {
     if !measures {
         g.num("--speed-kmh", "20", 0.2);
     }
-    if g.rng.chance(0.25) {
-        let h = g
-            .rng
-            .pick(&["off", "nominal", "s.json", "missing.json", "p.json", ""])
-            .to_string();
-        if h == "s.json" {
-            let t = g
-                .rng
-                .pick(&["", "{}", "[1]", "{\"a_hc\": -1}", "{\"bogus\": 1}"])
-                .to_string();
-            g.file("s.json", t.into_bytes());
-        }
-        g.push_opt("--hps", &h);
-    }
+    hps_opt(
+        g,
+        &["off", "nominal", "s.json", "missing.json", "p.json", ""],
+    );
     let simulate = group == "vehicle simulate";
     let single_run = simulate || group == "vehicle path-change";
     let terrain = !measures && g.rng.chance(0.4);
@@ -305,11 +295,21 @@ pub(super) fn sweep_case(g: &mut Gen<'_>) {
         };
         g.push_opt("--design", &d);
     }
+    hps_opt(g, &["nominal", "s.json", "missing.json", ""]);
+    if g.rng.chance(0.3) {
+        g.arg("--json");
+    }
+    if g.rng.chance(0.2) {
+        let o = g.output("plot.svg", &["s.json"]);
+        g.push_opt("--plot", &o);
+    }
+}
+
+/// With probability 1/4, `--hps` with one of `choices`; `s.json` is written as a broken
+/// strut file.
+fn hps_opt(g: &mut Gen<'_>, choices: &[&str]) {
     if g.rng.chance(0.25) {
-        let h = g
-            .rng
-            .pick(&["nominal", "s.json", "missing.json", ""])
-            .to_string();
+        let h = g.rng.pick(choices).to_string();
         if h == "s.json" {
             let t = g
                 .rng
@@ -318,12 +318,5 @@ pub(super) fn sweep_case(g: &mut Gen<'_>) {
             g.file("s.json", t.into_bytes());
         }
         g.push_opt("--hps", &h);
-    }
-    if g.rng.chance(0.3) {
-        g.arg("--json");
-    }
-    if g.rng.chance(0.2) {
-        let o = g.output("plot.svg", &["s.json"]);
-        g.push_opt("--plot", &o);
     }
 }
