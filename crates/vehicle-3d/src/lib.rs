@@ -4,8 +4,8 @@
 //! tandem-cam enveloping on two-track terrain (Eqs 6.1-6.5, Table 6.2), on the multibody
 //! core in minimal coordinates.
 //!
-//! - [`params`]: Table 6.1 and every documented assumption; [`statics`]: the hand tire
-//!   loads; [`model`]: the tree (14 DOF, 16 with the HPS);
+//! - [`params`]: Table 6.1 and every documented assumption, [`registry`]: the same by name;
+//!   [`statics`]: the hand tire loads; [`model`]: the tree (14 DOF, 16 with the HPS);
 //! - [`steering`]: the struts between their 3-D mounts; [`tires`]: one tire on its cached
 //!   track; [`vehicle`]: the ODE system; [`simulate`](mod@simulate): a recorded run;
 //! - [`scenarios`]: the design runs D1 (ride), D2 (roll), D3 (yaw) and their measures, and
@@ -17,6 +17,7 @@
 pub mod error;
 pub mod model;
 pub mod params;
+pub mod registry;
 pub mod scenarios;
 pub mod simulate;
 pub mod statics;

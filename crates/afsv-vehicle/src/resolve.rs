@@ -1,0 +1,482 @@
+//! From a description to the models' parameters, checked: every scalar against the range of
+//! its parameter registry (`vehicle_3d::registry`, `tire_fiala`, `afs_hydraulics`,
+//! `hps_emulsion`, `roll_truck`), then each model's own validation (relations between
+//! fields), then what the models can run (one axle per unit, one tire set, a rigid rear
+//! axle). Every error names the description's field path.
+
+use std::path::{Path, PathBuf};
+
+use afs_hydraulics::AfsParams;
+use afsv_dynamics::VehicleParams as YawParams;
+use hps_emulsion::StrutParams;
+use roll_truck::TruckParams;
+use tire_fiala::{Fiala, TireParams};
+use vehicle_3d::{Load, Statics, VehicleParams};
+use vehicle_components::ParamSet;
+
+use crate::error::DescriptionError;
+use crate::read::{at_path, quoted_key};
+use crate::schema::{
+    Articulated, Axle, RigidTruck, StrutSource, Suspension, UnitName, VehicleDescription,
+    YawPlaneCases,
+};
+
+/// Largest strut file read (bytes).
+const MAX_STRUT_BYTES: u64 = 1 << 20;
+
+/// An articulated vehicle ready for the models.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ArticulatedVehicle {
+    /// Its name.
+    pub name: String,
+    /// The 3-D vehicle's parameters; `hps` is the front strut when one is given (the
+    /// Table 6.3 strut otherwise, never used then).
+    pub params: VehicleParams,
+    /// How the front axle is described.
+    pub front_suspension: Suspension,
+    /// The front axle's strut: its suspension, or the candidate of a rigid axle.
+    pub front_strut: Option<StrutParams>,
+    /// Where the strut came from: a built-in name, a file, or `inline`.
+    pub front_strut_source: Option<String>,
+    /// The yaw-plane model's data per load case.
+    pub yaw_plane: YawPlaneCases,
+    /// Whether `yaw_plane` was derived from the 3-D data (no `[yaw_plane]` tables).
+    pub yaw_plane_derived: bool,
+}
+
+impl ArticulatedVehicle {
+    /// The yaw-plane data of `load`.
+    pub fn yaw_plane(&self, load: Load) -> &YawParams {
+        match load {
+            Load::Loaded => &self.yaw_plane.loaded,
+            Load::Unloaded => &self.yaw_plane.unloaded,
+        }
+    }
+
+    /// The steering system (the same in both models).
+    pub fn steering(&self) -> &AfsParams {
+        &self.params.steering
+    }
+}
+
+/// A rigid truck ready for the model.
+#[derive(Debug, Clone, PartialEq)]
+pub struct TruckVehicle {
+    /// Its name.
+    pub name: String,
+    /// The truck model's parameters.
+    pub params: TruckParams,
+}
+
+/// A described vehicle, checked and converted (made once per process, so the size
+/// difference of the variants does not matter).
+#[allow(clippy::large_enum_variant)]
+#[derive(Debug, Clone, PartialEq)]
+pub enum Vehicle {
+    /// Articulated.
+    Articulated(ArticulatedVehicle),
+    /// Rigid truck.
+    RigidTruck(TruckVehicle),
+}
+
+impl Vehicle {
+    /// The vehicle's name.
+    pub fn name(&self) -> &str {
+        match self {
+            Self::Articulated(a) => &a.name,
+            Self::RigidTruck(t) => &t.name,
+        }
+    }
+}
+
+/// Where a description came from, for messages and relative strut paths.
+pub(crate) struct Origin<'a> {
+    /// The file name in messages.
+    pub name: &'a str,
+    /// The text, to locate fields (none for a built-in description).
+    pub text: Option<&'a str>,
+    /// The folder relative strut paths start from.
+    pub dir: &'a Path,
+}
+
+impl Origin<'_> {
+    fn err(&self, path: &str, message: impl Into<String>) -> DescriptionError {
+        match self.text {
+            Some(text) => at_path(text, self.name, path, message.into()),
+            None => DescriptionError::Field {
+                origin: self.name.to_string(),
+                line: 1,
+                column: 1,
+                path: path.to_string(),
+                message: message.into(),
+            },
+        }
+    }
+}
+
+/// Check and convert a description.
+pub(crate) fn resolve(
+    d: &VehicleDescription,
+    origin: &Origin<'_>,
+) -> Result<Vehicle, DescriptionError> {
+    match d {
+        VehicleDescription::Articulated(a) => articulated(a, origin).map(Vehicle::Articulated),
+        VehicleDescription::RigidTruck(t) => truck(t, origin).map(Vehicle::RigidTruck),
+    }
+}
+
+/// Every scalar of `set` within its registry range; `path(name)` is its description path.
+fn in_ranges(
+    set: &dyn ParamSet,
+    origin: &Origin<'_>,
+    path: impl Fn(&str) -> String,
+) -> Result<(), DescriptionError> {
+    for (i, spec) in set.specs().iter().enumerate() {
+        let v = set.value(i);
+        if spec.admit(v).is_err() {
+            return Err(origin.err(
+                &path(spec.name),
+                format!(
+                    "{v} {unit} is outside the plausible range [{lo}, {hi}] {unit}",
+                    unit = spec.unit,
+                    lo = spec.lower,
+                    hi = spec.upper
+                ),
+            ));
+        }
+    }
+    Ok(())
+}
+
+/// The description path of a `vehicle_3d::registry` name.
+fn articulated_path(name: &str) -> String {
+    let mapped = match name {
+        "front_axle_to_joint_m" => "axle[0].distance_from_joint_m",
+        "rear_axle_to_joint_m" => "axle[1].distance_from_joint_m",
+        "front_track_m" => "axle[0].track_m",
+        "rear_track_m" => "axle[1].track_m",
+        "joint_height_m" => "joint.height_m",
+        "wheel_mass_kg" => "wheel_end.mass_kg",
+        "wheel_spin_inertia_kg_m2" => "wheel_end.spin_inertia_kg_m2",
+        "wheel_tilt_inertia_kg_m2" => "wheel_end.tilt_inertia_kg_m2",
+        other => return other.replace("cab_point_m", "cab.point_m"),
+    };
+    mapped.to_string()
+}
+
+fn articulated(a: &Articulated, o: &Origin<'_>) -> Result<ArticulatedVehicle, DescriptionError> {
+    let [front, rear] = axles(a, o)?;
+    let tire = tire_of(a, o)?;
+    let (front_strut, front_strut_source) = match &front.strut {
+        Some(s) => {
+            let (p, src) = strut(s, "axle[0].strut", o)?;
+            (Some(p), Some(src))
+        }
+        None => (None, None),
+    };
+    if front.suspension == Suspension::Hps && front_strut.is_none() {
+        return Err(o.err(
+            "axle[0].strut",
+            "an `hps` axle needs its strut: a built-in name (front-axle, lab-1orifice, lab-2orifice), a strut file or an inline table",
+        ));
+    }
+    let params = VehicleParams {
+        gravity_m_s2: a.gravity_m_s2,
+        front_axle_to_joint_m: front.distance_from_joint_m,
+        rear_axle_to_joint_m: rear.distance_from_joint_m,
+        front_track_m: front.track_m,
+        rear_track_m: rear.track_m,
+        front_unit: part(&a.front_unit),
+        rear_unit: part(&a.rear_unit),
+        payload: part(&a.payload),
+        joint_height_m: a.joint.height_m,
+        wheel_mass_kg: a.wheel_end.mass_kg,
+        wheel_spin_inertia_kg_m2: a.wheel_end.spin_inertia_kg_m2,
+        wheel_tilt_inertia_kg_m2: a.wheel_end.tilt_inertia_kg_m2,
+        cab_point_m: a.cab.point_m,
+        tire: tire.clone(),
+        steering: a.steering.clone(),
+        hps: front_strut.unwrap_or_else(StrutParams::front_axle),
+        drive: a.drive,
+    };
+    in_ranges(&params, o, articulated_path)?;
+    let tire_path = format!("tire.{}", quoted_key(&front.tire));
+    in_ranges(&params.tire, o, |n| format!("{tire_path}.{n}"))?;
+    params
+        .tire
+        .validate()
+        .map_err(|e| o.err(&tire_path, e.to_string()))?;
+    in_ranges(&params.steering, o, |n| format!("steering.{n}"))?;
+    params
+        .steering
+        .validate()
+        .map_err(|e| o.err("steering", e.to_string()))?;
+    if let Some(s) = &front_strut {
+        let where_ = strut_path(front.strut.as_ref(), "axle[0].strut");
+        in_ranges(s, o, |n| format!("{where_}.{n}"))?;
+    }
+    params.validate().map_err(|e| {
+        let msg = e.to_string();
+        match &e {
+            vehicle_3d::VehicleError::InvalidParameter { field, .. } => {
+                o.err(&articulated_path(field), msg)
+            }
+            _ => o.err("", msg),
+        }
+    })?;
+    for load in [Load::Unloaded, Load::Loaded] {
+        Statics::of(&params, load).map_err(|e| {
+            o.err(
+                &tire_path,
+                format!(
+                    "no static equilibrium {load}: {e} (extend the tire's load_deflection table)"
+                ),
+            )
+        })?;
+    }
+    let (yaw_plane, yaw_plane_derived) = match &a.yaw_plane {
+        Some(y) => {
+            for (case, p) in [("loaded", &y.loaded), ("unloaded", &y.unloaded)] {
+                p.validate()
+                    .map_err(|e| o.err(&format!("yaw_plane.{case}"), e.to_string()))?;
+            }
+            (y.clone(), false)
+        }
+        None => (
+            YawPlaneCases {
+                loaded: derived_yaw_plane(&params, Load::Loaded)
+                    .map_err(|e| o.err("", format!("deriving the yaw-plane data: {e}")))?,
+                unloaded: derived_yaw_plane(&params, Load::Unloaded)
+                    .map_err(|e| o.err("", format!("deriving the yaw-plane data: {e}")))?,
+            },
+            true,
+        ),
+    };
+    Ok(ArticulatedVehicle {
+        name: a.name.clone(),
+        params,
+        front_suspension: front.suspension,
+        front_strut,
+        front_strut_source,
+        yaw_plane,
+        yaw_plane_derived,
+    })
+}
+
+/// The two axles: front on the front unit, rear on the rear unit, the rear rigid.
+fn axles<'a>(a: &'a Articulated, o: &Origin<'_>) -> Result<[&'a Axle; 2], DescriptionError> {
+    let [front, rear] = a.axle.as_slice() else {
+        return Err(o.err(
+            "axle",
+            format!(
+                "{} axles given; the articulated model has two: [[axle]] front (unit = \"front\"), then rear (unit = \"rear\")",
+                a.axle.len()
+            ),
+        ));
+    };
+    if front.unit != UnitName::Front {
+        return Err(o.err("axle[0].unit", "the first axle must hang on the front unit"));
+    }
+    if rear.unit != UnitName::Rear {
+        return Err(o.err("axle[1].unit", "the second axle must hang on the rear unit"));
+    }
+    if rear.suspension != Suspension::Rigid {
+        return Err(o.err(
+            "axle[1].suspension",
+            "the 3-D model's rear axle is rigid; a suspended rear axle is not modelled yet",
+        ));
+    }
+    if rear.strut.is_some() {
+        return Err(o.err(
+            "axle[1].strut",
+            "a strut on the rigid rear axle is never used; remove it",
+        ));
+    }
+    Ok([front, rear])
+}
+
+/// The tire set both axles use.
+fn tire_of<'a>(a: &'a Articulated, o: &Origin<'_>) -> Result<&'a TireParams, DescriptionError> {
+    for (i, axle) in a.axle.iter().enumerate() {
+        if !a.tire.contains_key(&axle.tire) {
+            let known: Vec<&str> = a.tire.keys().map(String::as_str).collect();
+            return Err(o.err(
+                &format!("axle[{i}].tire"),
+                format!(
+                    "no tire `{}` in the [tire] tables (given: {})",
+                    axle.tire,
+                    if known.is_empty() {
+                        "none".to_string()
+                    } else {
+                        known.join(", ")
+                    }
+                ),
+            ));
+        }
+    }
+    if a.axle[0].tire != a.axle[1].tire {
+        return Err(o.err(
+            "axle[1].tire",
+            "the 3-D model runs one tire set on every axle; name the same tire on both axles",
+        ));
+    }
+    Ok(&a.tire[&a.axle[0].tire])
+}
+
+/// Where a strut's fields stand in messages: the inline table, or the file.
+fn strut_path(s: Option<&StrutSource>, path: &str) -> String {
+    match s {
+        Some(StrutSource::Named(n)) => format!("{path} ({n})"),
+        _ => path.to_string(),
+    }
+}
+
+/// A strut from its source, validated; and the source's name.
+pub(crate) fn strut(
+    s: &StrutSource,
+    path: &str,
+    o: &Origin<'_>,
+) -> Result<(StrutParams, String), DescriptionError> {
+    let (p, name) = match s {
+        StrutSource::Inline(p) => (**p, "inline".to_string()),
+        StrutSource::Named(n) => match builtin_strut(n) {
+            Some(p) => (p, n.clone()),
+            None => {
+                let file = o.dir.join(n);
+                (
+                    read_strut_file(&file).map_err(|e| o.err(path, e))?,
+                    file.display().to_string(),
+                )
+            }
+        },
+    };
+    p.validate().map_err(|e| o.err(path, e.to_string()))?;
+    Ok((p, name))
+}
+
+/// The built-in struts by name: `front-axle` (Table 6.3), `lab-1orifice` and
+/// `lab-2orifice` (the laboratory strut of section 5.3).
+pub fn builtin_strut(name: &str) -> Option<StrutParams> {
+    use hps_emulsion::LabConfig;
+    match name {
+        "front-axle" => Some(StrutParams::front_axle()),
+        "lab-1orifice" => Some(StrutParams::lab(LabConfig::OneOrifice)),
+        "lab-2orifice" => Some(StrutParams::lab(LabConfig::TwoOrifices)),
+        _ => None,
+    }
+}
+
+/// Names of [`builtin_strut`].
+pub const BUILTIN_STRUTS: [&str; 3] = ["front-axle", "lab-1orifice", "lab-2orifice"];
+
+/// A strut parameter file (JSON, `afsv params dump strut`), with line and column on error.
+pub fn read_strut_file(file: &Path) -> Result<StrutParams, String> {
+    let shown = file.display();
+    let meta = std::fs::metadata(file).map_err(|e| {
+        format!(
+            "`{shown}` is neither a built-in strut ({}) nor a readable file: {e}",
+            BUILTIN_STRUTS.join(", ")
+        )
+    })?;
+    if meta.len() > MAX_STRUT_BYTES {
+        return Err(format!(
+            "{shown}: {} bytes, too large for a strut file",
+            meta.len()
+        ));
+    }
+    let text = std::fs::read_to_string(file).map_err(|e| format!("{shown}: {e}"))?;
+    let mut de = serde_json::Deserializer::from_str(&text);
+    serde_path_to_error::deserialize::<_, StrutParams>(&mut de).map_err(|e| {
+        let inner = e.inner();
+        format!(
+            "{shown}:{}:{}: `{}`: {inner}",
+            inner.line(),
+            inner.column(),
+            e.path()
+        )
+    })
+}
+
+fn part(p: &crate::schema::Part) -> vehicle_3d::RigidPart {
+    vehicle_3d::RigidPart {
+        mass_kg: p.mass_kg,
+        cg_height_m: p.cg_height_m,
+        cg_to_joint_m: p.cg_to_joint_m,
+        roll_inertia_kg_m2: p.roll_inertia_kg_m2,
+        pitch_inertia_kg_m2: p.pitch_inertia_kg_m2,
+        yaw_inertia_kg_m2: p.yaw_inertia_kg_m2,
+    }
+}
+
+/// Small slip angle of the aligning-moment slope (rad).
+const SLOPE_SLIP_RAD: f64 = 1e-4;
+
+/// The yaw-plane data of `load` derived from the 3-D data (Fig 3.5, Eqs 3.13-3.17):
+/// - front unit as given; the rear unit loaded is rear unit plus payload, with the
+///   combined cg and the yaw inertia about it (parallel axes);
+/// - `l_f1`, `l_r1`: axle distance from the joint minus the cg's;
+/// - per-tire cornering stiffness of the tire set at its static load (`Statics`), the
+///   aligning coefficient the small-slip slope of the same Fiala tire, the relaxation
+///   length the tire's lateral one;
+/// - half-track: the mean of both tracks over two.
+pub fn derived_yaw_plane(p: &VehicleParams, load: Load) -> Result<YawParams, String> {
+    let statics = Statics::of(p, load).map_err(|e| e.to_string())?;
+    let fiala = Fiala::new(&p.tire).map_err(|e| e.to_string())?;
+    let parts = p.rear_parts(load);
+    let m_r: f64 = parts.iter().map(|q| q.mass_kg).sum();
+    let x_r = parts
+        .iter()
+        .map(|q| q.mass_kg * q.cg_to_joint_m)
+        .sum::<f64>()
+        / m_r;
+    let i_r: f64 = parts
+        .iter()
+        .map(|q| q.yaw_inertia_kg_m2 + q.mass_kg * (q.cg_to_joint_m - x_r).powi(2))
+        .sum();
+    let k_mz = |fz: f64| {
+        let m = fiala.forces_on_surface(fz, 0.0, SLOPE_SLIP_RAD, 1.0);
+        m.mz.abs() / SLOPE_SLIP_RAD
+    };
+    let y = YawParams {
+        m_f_kg: p.front_unit.mass_kg,
+        m_r_kg: m_r,
+        i_f_kg_m2: p.front_unit.yaw_inertia_kg_m2,
+        i_r_kg_m2: i_r,
+        l_f1_m: p.front_axle_to_joint_m - p.front_unit.cg_to_joint_m,
+        l_f2_m: p.front_unit.cg_to_joint_m,
+        l_r1_m: p.rear_axle_to_joint_m - x_r,
+        l_r2_m: x_r,
+        c_alpha_f_n_per_rad: fiala.cornering_stiffness(statics.front_tire_load_n),
+        c_alpha_r_n_per_rad: fiala.cornering_stiffness(statics.rear_tire_load_n),
+        k_mz_f_nm_per_rad: k_mz(statics.front_tire_load_n),
+        k_mz_r_nm_per_rad: k_mz(statics.rear_tire_load_n),
+        relaxation_length_m: p.tire.lateral_relaxation_length_m,
+        half_track_m: 0.25 * (p.front_track_m + p.rear_track_m),
+    };
+    y.validate().map_err(|e| e.to_string())?;
+    Ok(y)
+}
+
+fn truck(t: &RigidTruck, o: &Origin<'_>) -> Result<TruckVehicle, DescriptionError> {
+    in_ranges(&t.truck, o, |n| format!("truck.{n}"))?;
+    t.truck.validate().map_err(|e| {
+        let msg = e.to_string();
+        match &e {
+            roll_truck::TruckError::InvalidParameter { field, .. } => {
+                o.err(&format!("truck.{field}"), msg)
+            }
+            _ => o.err("truck", msg),
+        }
+    })?;
+    Ok(TruckVehicle {
+        name: t.name.clone(),
+        params: t.truck,
+    })
+}
+
+/// The folder of a description file, for relative strut paths.
+pub(crate) fn folder_of(file: &Path) -> PathBuf {
+    file.parent()
+        .filter(|p| !p.as_os_str().is_empty())
+        .map_or_else(|| PathBuf::from("."), Path::to_path_buf)
+}
