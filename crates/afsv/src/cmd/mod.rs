@@ -4,6 +4,7 @@
 pub mod args;
 pub mod batch;
 pub mod check;
+pub mod described;
 pub mod design_measures;
 pub mod discover;
 pub mod evaluate;

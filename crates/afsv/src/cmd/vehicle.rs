@@ -54,12 +54,16 @@ pub struct CaseArgs {
     /// `class:E,mc:0.3` for ride and roll, smooth for yaw and simulate.
     #[arg(long, allow_hyphen_values = true, value_parser = terrain_arg)]
     pub terrain: Option<TerrainArg>,
-    /// Front axle: `off` (rigid, the prototype), `nominal` (the Table 6.3 HPS strut of the
-    /// parameter set) or a strut parameter file (JSON, as written by `afsv params dump
-    /// strut`) replacing the set's strut.
-    #[arg(long, default_value = "off")]
-    pub hps: String,
-    /// Vehicle parameter file (JSON, as written by `afsv params dump vehicle-3d`), validated.
+    /// Front axle: `off` (rigid), `nominal` (the strut the vehicle description gives the
+    /// front axle: Table 6.3 for the prototype) or a strut parameter file (JSON, as written
+    /// by `afsv params dump strut`). Default: as the description says (the prototype:
+    /// rigid).
+    #[arg(long)]
+    pub hps: Option<String>,
+    #[arg(long, help = super::described::HELP, conflicts_with = "params")]
+    pub vehicle: Option<PathBuf>,
+    /// The 3-D model's raw parameter set (JSON, `afsv params dump vehicle-3d`) instead of a
+    /// description; its front axle is rigid unless `--hps` says otherwise.
     #[arg(long)]
     pub params: Option<PathBuf>,
 }
@@ -155,10 +159,12 @@ pub enum Command {
         #[arg(long, default_value = "loaded")]
         load: Load,
         /// Front axle: `off`, `nominal` or a strut parameter file (as for the other
-        /// subcommands).
-        #[arg(long, default_value = "off")]
-        hps: String,
-        /// Vehicle parameter file (JSON, as written by `afsv params dump vehicle-3d`).
+        /// subcommands); default: as the description says.
+        #[arg(long)]
+        hps: Option<String>,
+        #[arg(long, help = super::described::HELP, conflicts_with = "params")]
+        vehicle: Option<PathBuf>,
+        /// The 3-D model's raw parameter set (JSON, `afsv params dump vehicle-3d`).
         #[arg(long)]
         params: Option<PathBuf>,
         /// Run the terrain seeds 1..=N (1 to 100; default 10).
@@ -237,6 +243,7 @@ pub fn run(cmd: Command) -> CmdResult {
         Command::Measures {
             load,
             hps,
+            vehicle,
             params,
             seeds,
             seed,
@@ -247,6 +254,7 @@ pub fn run(cmd: Command) -> CmdResult {
                 speed_kmh: None,
                 terrain: None,
                 hps,
+                vehicle,
                 params,
             };
             measures_cmd(&case, seeds, seed, json)
@@ -254,12 +262,11 @@ pub fn run(cmd: Command) -> CmdResult {
     }
 }
 
-/// The front axle and the strut file of `--hps`, if it names one.
-fn front_axle(hps: &str) -> (FrontAxle, Option<&Path>) {
+/// The strut file `--hps` names, if it names one.
+fn hps_file(hps: Option<&str>) -> Option<&Path> {
     match hps {
-        "off" => (FrontAxle::Rigid, None),
-        "nominal" => (FrontAxle::Suspended, None),
-        file => (FrontAxle::Suspended, Some(Path::new(file))),
+        None | Some("off" | "nominal") => None,
+        Some(file) => Some(Path::new(file)),
     }
 }
 
@@ -268,23 +275,43 @@ fn declare_inputs(case: &CaseArgs, guard: &mut OutputGuard) -> Result<(), String
     if let Some(p) = &case.params {
         guard.input("--params", p)?;
     }
-    if let (_, Some(file)) = front_axle(&case.hps) {
+    if let Some(v) = case.vehicle.as_deref().filter(|v| super::described::is_file(v)) {
+        guard.input("--vehicle", v)?;
+    }
+    if let Some(file) = hps_file(case.hps.as_deref()) {
         guard.input("--hps", file)?;
     }
     Ok(())
 }
 
-/// The vehicle of `--params` (or nominal) with the strut of `--hps`, validated; and its
-/// front axle. A strut file replaces the set's strut before the set is checked.
+/// The vehicle of `--vehicle` (the prototype by default) or of `--params`, with the front
+/// axle of `--hps` (default: as the description says; rigid for a raw `--params` set),
+/// validated; and its front axle. A strut file replaces the set's strut before the set is
+/// checked.
 fn vehicle_params(case: &CaseArgs) -> Result<(VehicleParams, FrontAxle), String> {
-    let mut p: VehicleParams = match &case.params {
-        Some(path) => super::params::read(path)?,
-        None => VehicleParams::nominal(),
+    let (mut p, described, has_strut) = match &case.params {
+        Some(path) => (super::params::read(path)?, FrontAxle::Rigid, true),
+        None => {
+            let v = super::described::articulated(case.vehicle.as_deref())?;
+            let axle = match v.front_suspension {
+                afsv_vehicle::schema::Suspension::Hps => FrontAxle::Suspended,
+                afsv_vehicle::schema::Suspension::Rigid => FrontAxle::Rigid,
+            };
+            (v.params, axle, v.front_strut.is_some())
+        }
     };
-    let (axle, file) = front_axle(&case.hps);
-    if let Some(file) = file {
-        p.hps = read_strut(file, "off, nominal or a strut file")?;
-    }
+    let axle = match case.hps.as_deref() {
+        None => described,
+        Some("off") => FrontAxle::Rigid,
+        Some("nominal") if !has_strut => {
+            return Err("--hps nominal: the vehicle description gives the front axle no strut (add `strut` to its [[axle]], or give --hps FILE)".into())
+        }
+        Some("nominal") => FrontAxle::Suspended,
+        Some(file) => {
+            p.hps = read_strut(Path::new(file), "off, nominal or a strut file")?;
+            FrontAxle::Suspended
+        }
+    };
     p.validate().map_err(|e| match &case.params {
         Some(path) => format!("{}: {e}", path.display()),
         None => e.to_string(),
@@ -706,7 +733,8 @@ mod tests {
             load: Load::Loaded,
             speed_kmh: None,
             terrain: terrain.map(|t| terrain_arg(t).unwrap()),
-            hps: "off".into(),
+            hps: Some("off".into()),
+            vehicle: None,
             params: None,
         }
     }

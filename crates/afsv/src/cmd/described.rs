@@ -1,0 +1,37 @@
+//! `--vehicle`: which vehicle a command runs. A vehicle description file (TOML,
+//! `docs/vehicles.md`) or the name of a built-in one (`prototype`, the default, and
+//! `chapter2-truck`); a file of that name wins over the built-in.
+
+use afsv_vehicle::{load_builtin, load_file, ArticulatedVehicle, Described, Vehicle};
+use std::path::Path;
+
+/// The help line of every `--vehicle` option.
+pub const HELP: &str = "Vehicle description (TOML, docs/vehicles.md; `afsv params dump vehicle` writes one to start from) or a built-in name (prototype, chapter2-truck)";
+
+/// The description `arg` names, read and checked (the built-in prototype when `None`).
+pub fn load(arg: Option<&Path>) -> Result<Described, String> {
+    let Some(path) = arg else {
+        return load_builtin("prototype").map_err(|e| e.to_string());
+    };
+    let name = path.to_string_lossy();
+    if !path.exists() && afsv_vehicle::builtin(&name).is_some() {
+        return load_builtin(&name).map_err(|e| e.to_string());
+    }
+    load_file(path).map_err(|e| e.to_string())
+}
+
+/// The articulated vehicle `arg` names (the prototype when `None`).
+pub fn articulated(arg: Option<&Path>) -> Result<ArticulatedVehicle, String> {
+    match load(arg)?.vehicle {
+        Vehicle::Articulated(a) => Ok(a),
+        Vehicle::RigidTruck(t) => Err(format!(
+            "--vehicle: `{}` is a rigid truck; this command runs an articulated vehicle (the rigid truck runs with `afsv roll`)",
+            t.name
+        )),
+    }
+}
+
+/// Whether `arg` is a file the command reads (not a built-in name).
+pub fn is_file(arg: &Path) -> bool {
+    arg.exists() || afsv_vehicle::builtin(&arg.to_string_lossy()).is_none()
+}
