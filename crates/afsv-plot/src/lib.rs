@@ -117,14 +117,17 @@ fn render(
 ) -> Result<(), String> {
     let err = |e: &dyn std::fmt::Display| format!("{}: {e}", path.display());
     let ranges = ranges(series).ok_or_else(|| format!("nothing to plot in {}", path.display()))?;
-    let root = SVGBackend::new(path, (WIDTH, HEIGHT)).into_drawing_area();
-    root.fill(&WHITE).map_err(|e| err(&e))?;
-    let area = titled(&root, title, conditions).map_err(|e| err(&e))?;
-    let (plot, legend) = area.split_horizontally(WIDTH - legend_width(series));
-    draw_labelled(&plot, None, x_label, y_label, ranges, series).map_err(|e| err(&e))?;
-    draw_legend(&legend, series).map_err(|e| err(&e))?;
-    root.present().map_err(|e| err(&e))?;
-    Ok(())
+    let mut svg = String::new();
+    {
+        let root = SVGBackend::with_string(&mut svg, (WIDTH, HEIGHT)).into_drawing_area();
+        root.fill(&WHITE).map_err(|e| err(&e))?;
+        let area = titled(&root, title, conditions).map_err(|e| err(&e))?;
+        let (plot, legend) = area.split_horizontally(WIDTH - legend_width(series));
+        draw_labelled(&plot, None, x_label, y_label, ranges, series).map_err(|e| err(&e))?;
+        draw_legend(&legend, series).map_err(|e| err(&e))?;
+        root.present().map_err(|e| err(&e))?;
+    }
+    afsv_records::atomic::write(path, svg).map_err(|e| err(&e))
 }
 
 /// `area` below a title line and, when not empty, a conditions line.
@@ -172,24 +175,28 @@ pub fn panels(
     }
     let rows = panels.len().div_ceil(columns);
     let (w, h) = (600 * columns as u32, 450 * rows as u32 + 60);
-    let root = SVGBackend::new(path, (w, h)).into_drawing_area();
-    root.fill(&WHITE).map_err(|e| err(&e))?;
-    let area = titled(&root, title, conditions).map_err(|e| err(&e))?;
-    for (cell, p) in area.split_evenly((rows, columns)).iter().zip(panels) {
-        let ranges = ranges(&p.series).ok_or_else(|| {
-            format!(
-                "nothing to plot in panel `{}` of {}",
-                p.caption,
-                path.display()
-            )
-        })?;
-        let (cw, _) = cell.dim_in_pixel();
-        let (plot, legend) = cell.split_horizontally(cw.saturating_sub(legend_width(&p.series)));
-        draw_panel(&plot, Some(p.caption), p.x, p.y, ranges, &p.series).map_err(|e| err(&e))?;
-        draw_legend(&legend, &p.series).map_err(|e| err(&e))?;
+    let mut svg = String::new();
+    {
+        let root = SVGBackend::with_string(&mut svg, (w, h)).into_drawing_area();
+        root.fill(&WHITE).map_err(|e| err(&e))?;
+        let area = titled(&root, title, conditions).map_err(|e| err(&e))?;
+        for (cell, p) in area.split_evenly((rows, columns)).iter().zip(panels) {
+            let ranges = ranges(&p.series).ok_or_else(|| {
+                format!(
+                    "nothing to plot in panel `{}` of {}",
+                    p.caption,
+                    path.display()
+                )
+            })?;
+            let (cw, _) = cell.dim_in_pixel();
+            let (plot, legend) =
+                cell.split_horizontally(cw.saturating_sub(legend_width(&p.series)));
+            draw_panel(&plot, Some(p.caption), p.x, p.y, ranges, &p.series).map_err(|e| err(&e))?;
+            draw_legend(&legend, &p.series).map_err(|e| err(&e))?;
+        }
+        root.present().map_err(|e| err(&e))?;
     }
-    root.present().map_err(|e| err(&e))?;
-    Ok(())
+    afsv_records::atomic::write(path, svg).map_err(|e| err(&e))
 }
 
 /// Draw `series` into an SVG at `path` with the axis labels given as text (the caller

@@ -23,6 +23,7 @@
 //! assert!(err.to_string().starts_with("bad.csv:2:2:"), "{err}");
 //! ```
 
+pub mod atomic;
 pub mod convention;
 pub mod units;
 
@@ -350,7 +351,7 @@ impl Record {
             path: path.to_path_buf(),
             source,
         };
-        std::fs::write(path, self.to_csv_string()).map_err(io)?;
+        atomic::write(path, self.to_csv_string()).map_err(io)?;
         if !self.meta.is_null() {
             let mut meta = self.meta.clone();
             if let Some(obj) = meta.as_object_mut() {
@@ -359,7 +360,7 @@ impl Record {
             }
             let side = path.with_extension("json");
             let text = serde_json::to_string_pretty(&meta).expect("JSON value serialises");
-            std::fs::write(&side, text + "\n").map_err(|source| RecordError::Io {
+            atomic::write(&side, text + "\n").map_err(|source| RecordError::Io {
                 path: side.clone(),
                 source,
             })?;

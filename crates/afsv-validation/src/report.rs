@@ -261,10 +261,11 @@ pub fn write_outputs(report: &Report, out_dir: &Path) -> Result<(), ValidateErro
         .map_err(err)?;
     }
     let md = out_dir.join("report.md");
-    std::fs::write(&md, report.markdown()).map_err(|e| err(format!("{}: {e}", md.display())))?;
+    afsv_records::atomic::write(&md, report.markdown())
+        .map_err(|e| err(format!("{}: {e}", md.display())))?;
     let js = out_dir.join("report.json");
     let text = serde_json::to_string_pretty(report).map_err(|e| err(e.to_string()))?;
-    std::fs::write(&js, text).map_err(|e| err(format!("{}: {e}", js.display())))?;
+    afsv_records::atomic::write(&js, text).map_err(|e| err(format!("{}: {e}", js.display())))?;
     Ok(())
 }
 #[cfg(test)]

@@ -360,7 +360,7 @@ pub fn mark_svg(path: &Path) -> Result<(), String> {
         },
         None => format!("{SVG_MARKER}\n{text}"),
     };
-    std::fs::write(path, marked).map_err(err)
+    afsv_records::atomic::write(path, marked).map_err(err)
 }
 
 /// Refuse to write a record with a non-finite value: the error names the first such

@@ -348,7 +348,25 @@ fn bad_input_is_a_one_line_error() {
             vec!["vehicle", "simulate", "--dt", "1e-9", "-o", "x.csv"],
             "--duration",
         ),
-        (vec!["params", "list", "vehicle-3d"], "dump vehicle-3d"),
+        (
+            vec!["vehicle", "ride", "--vehicle", "chapter2-truck"],
+            "rigid truck",
+        ),
+        (
+            vec!["vehicle", "ride", "--vehicle", "no-such-truck.toml"],
+            "no-such-truck.toml",
+        ),
+        (
+            vec![
+                "vehicle",
+                "ride",
+                "--vehicle",
+                "prototype",
+                "--params",
+                "p.json",
+            ],
+            "--params",
+        ),
         (
             vec!["vehicle", "path-change", "--offset-m", "21"],
             "--offset-m",

@@ -17,7 +17,7 @@ use optimize::{Bounds, ConstrainedProblem, Evaluation, BARRIER};
 use serde::de::DeserializeOwned;
 use serde::{Deserialize, Serialize};
 use std::collections::BTreeMap;
-use std::io::{BufRead, IsTerminal, Read, Write};
+use std::io::{BufRead, IsTerminal, Read};
 use std::path::{Path, PathBuf};
 
 /// Version of the batch, results and state formats.
@@ -309,25 +309,19 @@ pub fn point_id(batch: usize, index: usize) -> String {
     format!("b{batch}-{index}")
 }
 
-/// Writes `header` and `lines` as JSON Lines to `path` (through a `.partial` file renamed
-/// into place, so a reader never sees half a file).
+/// Writes `header` and `lines` as JSON Lines to `path` (through a unique temporary file
+/// renamed into place, so a reader never sees half a file).
 pub fn write_jsonl<H: Serialize, T: Serialize>(
     path: &Path,
     header: &H,
     lines: &[T],
 ) -> Result<(), String> {
-    let tmp = path.with_extension("partial");
-    let err = |e: std::io::Error| format!("{}: {e}", tmp.display());
-    let file = std::fs::File::create(&tmp).map_err(err)?;
-    let mut w = std::io::BufWriter::new(file);
-    let mut put = |v: String| writeln!(w, "{v}").map_err(err);
-    put(serde_json::to_string(header).map_err(|e| e.to_string())?)?;
+    let mut text = serde_json::to_string(header).map_err(|e| e.to_string())? + "\n";
     for l in lines {
-        put(serde_json::to_string(l).map_err(|e| e.to_string())?)?;
+        text += &serde_json::to_string(l).map_err(|e| e.to_string())?;
+        text.push('\n');
     }
-    w.flush().map_err(err)?;
-    drop(w);
-    std::fs::rename(&tmp, path).map_err(|e| format!("{}: {e}", path.display()))
+    afsv_records::atomic::write(path, text).map_err(|e| format!("{}: {e}", path.display()))
 }
 
 /// Run `afsv batch`.

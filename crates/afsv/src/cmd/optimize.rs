@@ -448,7 +448,5 @@ fn same_settings(flag: &str, path: &Path, stored: &Value, now: &Value) -> Result
 
 fn write_json<T: Serialize>(path: &Path, value: &T) -> Result<(), String> {
     let text = serde_json::to_string(value).map_err(|e| e.to_string())?;
-    let tmp = path.with_extension("partial");
-    std::fs::write(&tmp, text).map_err(|e| format!("{}: {e}", tmp.display()))?;
-    std::fs::rename(&tmp, path).map_err(|e| format!("{}: {e}", path.display()))
+    afsv_records::atomic::write(path, text).map_err(|e| format!("{}: {e}", path.display()))
 }

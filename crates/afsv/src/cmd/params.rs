@@ -34,6 +34,9 @@ pub enum ParamSet {
     /// strut, drive, and the documented assumptions; missing fields take the nominal value).
     #[value(name = "vehicle-3d")]
     Vehicle3d,
+    /// A whole vehicle description (TOML, docs/vehicles.md): units, joint, axles with
+    /// tires and suspensions, steering, drive; the file every `--vehicle` option reads.
+    Vehicle,
 }
 
 /// `afsv params` subcommands.
@@ -50,6 +53,9 @@ pub enum Command {
         /// Which built-in strut (strut).
         #[arg(long, value_enum, default_value = "front-axle")]
         strut: StrutChoice,
+        /// Which built-in vehicle (vehicle): prototype or chapter2-truck.
+        #[arg(long, default_value = "prototype")]
+        builtin: String,
         /// Write to this file instead of standard output; an existing file needs --force
         /// (a parameter file carries no afsv marker, so it may be the user's edited set).
         #[arg(short = 'o', long)]
@@ -64,11 +70,12 @@ pub enum Command {
         /// Which set.
         #[arg(value_enum)]
         set: ParamSet,
-        /// The JSON file.
+        /// The JSON file (TOML for a vehicle description).
         file: PathBuf,
     },
     /// List the named parameters of a set: name, unit, bounds, typical size and nominal
-    /// value (the names that fits, sensitivity studies and designs use).
+    /// value (the names that fits, sensitivity studies and designs use); for `vehicle`,
+    /// the built-in vehicle descriptions.
     List {
         /// Which set.
         #[arg(value_enum)]
@@ -83,6 +90,7 @@ pub fn run(cmd: Command) -> CmdResult {
             set,
             load,
             strut,
+            builtin,
             output,
             force,
         } => {
@@ -93,6 +101,9 @@ pub fn run(cmd: Command) -> CmdResult {
                     afsv::output::OutputKind::Other,
                 )?;
             }
+            if let ParamSet::Vehicle = set {
+                return dump_vehicle(&builtin, output.as_deref());
+            }
             let value = match set {
                 ParamSet::YawPlane => serde_json::to_value(YawPlaneParams::nominal(load.into()))?,
                 ParamSet::Strut => serde_json::to_value(strut.params())?,
@@ -101,11 +112,13 @@ pub fn run(cmd: Command) -> CmdResult {
                 ParamSet::Surface => serde_json::to_value(SurfaceParams::default())?,
                 ParamSet::Truck => serde_json::to_value(TruckParams::nominal())?,
                 ParamSet::Vehicle3d => serde_json::to_value(VehicleParams::nominal())?,
+                ParamSet::Vehicle => unreachable!("dumped as TOML above"),
             };
             match output {
                 Some(path) => {
                     let text = serde_json::to_string_pretty(&value)? + "\n";
-                    std::fs::write(&path, text).map_err(|e| format!("{}: {e}", path.display()))?;
+                    afsv_records::atomic::write(&path, text)
+                        .map_err(|e| format!("{}: {e}", path.display()))?;
                     afsv::output::print_json(&json!({ "written": path }))?;
                 }
                 None => afsv::output::print_json(&value)?,
@@ -128,6 +141,7 @@ pub fn run(cmd: Command) -> CmdResult {
                         .map_err(|e| format!("{}: {e}", file.display()))?;
                     json!({ "parameters": p })
                 }
+                ParamSet::Vehicle => check_vehicle(&file)?,
             };
             report["valid"] = json!(true);
             report["file"] = json!(file);
@@ -141,14 +155,61 @@ pub fn run(cmd: Command) -> CmdResult {
                 ParamSet::Terrain => specs(&TwoTrackSpec::paper_nominal()),
                 ParamSet::Surface => specs(&SurfaceParams::default()),
                 ParamSet::Truck => specs(&TruckParams::nominal()),
-                ParamSet::Vehicle3d => {
-                    return Err("vehicle-3d has no named-parameter registry yet; `afsv params dump vehicle-3d` shows every field".into())
+                ParamSet::Vehicle3d => specs(&VehicleParams::nominal()),
+                ParamSet::Vehicle => {
+                    let rows: Vec<Value> = afsv_vehicle::BUILTIN
+                        .iter()
+                        .map(|(name, about)| json!({ "name": name, "description": about }))
+                        .collect();
+                    json!({ "set": "vehicle", "builtin": rows })
                 }
             };
             afsv::output::print_json(&list)?;
         }
     }
     Ok(())
+}
+
+/// `afsv params dump vehicle`: the built-in description `name` as commented TOML, to
+/// standard output or (through a temporary file) to `output`.
+fn dump_vehicle(name: &str, output: Option<&Path>) -> CmdResult {
+    let d = afsv_vehicle::builtin(name).ok_or_else(|| {
+        let names: Vec<&str> = afsv_vehicle::BUILTIN.iter().map(|b| b.0).collect();
+        format!(
+            "--builtin {name}: no such built-in vehicle (one of: {})",
+            names.join(", ")
+        )
+    })?;
+    let text = afsv_vehicle::to_commented_toml(&d)?;
+    match output {
+        Some(path) => {
+            afsv_records::atomic::write(path, text)
+                .map_err(|e| format!("{}: {e}", path.display()))?;
+            afsv::output::print_json(&json!({ "written": path }))?;
+        }
+        None => print!("{text}"),
+    }
+    Ok(())
+}
+
+/// `afsv params check vehicle FILE`: the description read and resolved; what it builds.
+fn check_vehicle(file: &Path) -> Result<Value, String> {
+    let d = afsv_vehicle::load_file(file).map_err(|e| e.to_string())?;
+    Ok(match d.vehicle {
+        afsv_vehicle::Vehicle::Articulated(a) => json!({
+            "name": a.name,
+            "kind": "articulated",
+            "front_suspension": a.front_suspension,
+            "front_strut": a.front_strut_source,
+            "yaw_plane": if a.yaw_plane_derived { "derived from the units and tire" } else { "as given" },
+            "parameters": named(&a.params),
+        }),
+        afsv_vehicle::Vehicle::RigidTruck(t) => json!({
+            "name": t.name,
+            "kind": "rigid-truck",
+            "parameters": named(&t.params),
+        }),
+    })
 }
 
 /// A parameter file as `T`, refusing unknown fields; errors name the file, line and column.

@@ -275,7 +275,11 @@ fn declare_inputs(case: &CaseArgs, guard: &mut OutputGuard) -> Result<(), String
     if let Some(p) = &case.params {
         guard.input("--params", p)?;
     }
-    if let Some(v) = case.vehicle.as_deref().filter(|v| super::described::is_file(v)) {
+    if let Some(v) = case
+        .vehicle
+        .as_deref()
+        .filter(|v| super::described::is_file(v))
+    {
         guard.input("--vehicle", v)?;
     }
     if let Some(file) = hps_file(case.hps.as_deref()) {

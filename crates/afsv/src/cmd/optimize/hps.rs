@@ -99,7 +99,7 @@ pub fn run(a: &HpsArgs) -> CmdResult {
     best.hps = r.design.apply(&base.hps)?;
     if let Some(path) = &a.strut_out {
         let text = serde_json::to_string_pretty(&best.hps)? + "\n";
-        std::fs::write(path, text).map_err(|e| format!("{}: {e}", path.display()))?;
+        afsv_records::atomic::write(path, text).map_err(|e| format!("{}: {e}", path.display()))?;
     }
     let sweep = if a.speed_sweep {
         let seeds: Vec<u64> = (0..a.reevaluation_seeds as u64)
