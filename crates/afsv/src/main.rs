@@ -116,6 +116,10 @@ fn main() -> ExitCode {
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,
+        Err(e) if e.is::<afsv::output::NotEarned>() => {
+            eprintln!("afsv: not earned: {}", one_line(&e.to_string()));
+            ExitCode::from(afsv::output::EXIT_NOT_EARNED)
+        }
         Err(e) => {
             eprintln!("afsv: error: {}", one_line(&e.to_string()));
             ExitCode::FAILURE

@@ -398,6 +398,24 @@ pub fn unit_conversions(rec: &afsv_records::Record) -> Value {
     )
 }
 
+/// Exit status of a command that printed its result but did not earn it: a fit that ended
+/// on a bound, did not converge or ended worse than its start (`afsv` exits with it; 1 is
+/// an error with nothing printed, 2 a usage error).
+pub const EXIT_NOT_EARNED: u8 = 3;
+
+/// The error of a command whose result is printed but not earned ([`EXIT_NOT_EARNED`]);
+/// the message says why, in one line.
+#[derive(Debug)]
+pub struct NotEarned(pub String);
+
+impl std::fmt::Display for NotEarned {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(&self.0)
+    }
+}
+
+impl std::error::Error for NotEarned {}
+
 #[cfg(test)]
 mod tests {
     use super::*;

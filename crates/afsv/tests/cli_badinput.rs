@@ -418,12 +418,19 @@ fn identify_honours_the_sidecar_strut_and_reports_a_fit_on_a_bound() {
         &["--strut", "front-axle"],
     );
 
-    // Without the sidecar, the lab strut is fitted to front-axle data: it ends on bounds
-    // and worse in force, and says so.
+    // Without the sidecar the record does not say which strut it is: no guess.
     let bare = tmp("bare.csv");
     std::fs::copy(&rec, &bare).unwrap();
-    let v = json(&afsv(&["hps", "identify", "-i", s(&bare)]));
-    assert_eq!(v["strut_source"], "default");
+    fails(
+        &["hps", "identify", "-i", s(&bare)],
+        &["--strut", "bare.csv"],
+    );
+    // The lab strut fitted to front-axle data ends on bounds and worse in force: the
+    // result is printed, says so, and the exit status (3) says it was not earned.
+    let out = afsv(&["hps", "identify", "-i", s(&bare), "--strut", "lab-1orifice"]);
+    assert_eq!(out.status.code(), Some(3), "{out:?}");
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert_eq!(v["strut_source"], "--strut");
     assert_eq!(v["converged"], false, "{v}");
     let problems = v["problems"].to_string();
     assert!(problems.contains("bound"), "{problems}");
@@ -431,7 +438,27 @@ fn identify_honours_the_sidecar_strut_and_reports_a_fit_on_a_bound() {
         .as_array()
         .unwrap()
         .iter()
-        .any(|f| !f["at_bound"].is_null()));
+        .any(|f| f["at_bound"] != "no"));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("afsv: not earned: hps identify"));
+    // A strut file is accepted wherever a built-in strut is.
+    let strut = tmp("my-strut.json");
+    json(&afsv(&[
+        "params",
+        "dump",
+        "strut",
+        "-o",
+        s(&strut),
+        "--force",
+    ]));
+    let v = json(&afsv(&[
+        "hps",
+        "identify",
+        "-i",
+        s(&bare),
+        "--strut",
+        s(&strut),
+    ]));
+    assert_eq!(v["converged"], true, "{v}");
 }
 
 #[test]

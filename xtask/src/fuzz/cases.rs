@@ -3,6 +3,7 @@
 
 use super::gen::*;
 
+mod described;
 mod vehicles;
 
 use vehicles::{roll_case, sweep_case, vehicle_case};
@@ -44,6 +45,7 @@ pub(crate) const GROUPS: &[(&str, u32)] = &[
     ("vehicle path-change", 2),
     ("vehicle measures", 1),
     ("params check vehicle-3d", 2),
+    ("params check vehicle", 3),
     ("batch evaluate", 3),
     ("study speed-sweep", 2),
 ];
@@ -80,6 +82,7 @@ pub(crate) fn make_case(
     match group.split(' ').next().unwrap_or(group) {
         _ if group == "params check truck" => roll_case(&mut g, group),
         _ if group == "params check vehicle-3d" => vehicle_case(&mut g, group),
+        _ if group == "params check vehicle" => described::check_case(&mut g),
         "vehicle" => vehicle_case(&mut g, group),
         "roll" => roll_case(&mut g, group),
         "yaw" => yaw_case(&mut g, group),

@@ -35,3 +35,23 @@ pub fn articulated(arg: Option<&Path>) -> Result<ArticulatedVehicle, String> {
 pub fn is_file(arg: &Path) -> bool {
     arg.exists() || afsv_vehicle::builtin(&arg.to_string_lossy()).is_none()
 }
+
+/// The 3-D parameters of the articulated vehicle `arg` names, with its front-axle strut as
+/// `hps`, for a command (`what`) that designs or varies that strut; an error when the
+/// description gives the front axle no strut.
+pub fn with_front_strut(
+    arg: Option<&Path>,
+    what: &str,
+) -> Result<vehicle_3d::VehicleParams, String> {
+    let v = articulated(arg)?;
+    let strut = v.front_strut.ok_or_else(|| {
+        format!(
+            "{what}: the vehicle description `{}` gives the front axle no strut (add `strut = \"front-axle\"` or a strut file to its front [[axle]])",
+            v.name
+        )
+    })?;
+    Ok(vehicle_3d::VehicleParams {
+        hps: strut,
+        ..v.params
+    })
+}

@@ -43,17 +43,18 @@ pub struct AxleSummary {
     pub yaw: YawMeasures,
 }
 
-/// The assessment: unsuspended and with the nominal HPS.
+/// The assessment: with a rigid front axle and with the vehicle's front-axle HPS.
 #[derive(Debug, Clone, Serialize)]
 pub struct DesignMeasures {
     /// Terrain seeds used for every rough-terrain measure (the same for both axles).
     pub seeds: Vec<u64>,
     /// The 8 h HGCZ band (m/s²).
     pub hgcz_8h_m_s2: (f64, f64),
-    /// The prototype without suspension.
+    /// The vehicle with a rigid front axle.
     pub unsuspended: AxleSummary,
-    /// With the Table 6.3 front-axle HPS.
-    pub nominal_hps: AxleSummary,
+    /// With the vehicle's front-axle strut (Table 6.3 for the prototype); `None` when its
+    /// description gives the front axle no strut.
+    pub nominal_hps: Option<AxleSummary>,
 }
 
 /// The three measures of one front axle of one parameter set over common seeds: the D1
@@ -83,6 +84,19 @@ enum Job {
     Ride(FrontAxle, Load, u64),
     Roll(FrontAxle, u64),
     Yaw(FrontAxle),
+}
+
+/// A job in words for the progress line, e.g. `D1 ride, HPS, unloaded, seed 3`.
+fn job_text(j: Job) -> String {
+    let axle = |a: FrontAxle| match a {
+        FrontAxle::Rigid => "rigid front axle",
+        FrontAxle::Suspended => "HPS",
+    };
+    match j {
+        Job::Ride(a, load, seed) => format!("D1 ride, {}, {load}, seed {seed}", axle(a)),
+        Job::Roll(a, seed) => format!("D2 roll, {}, seed {seed}", axle(a)),
+        Job::Yaw(a) => format!("D3 yaw, {}", axle(a)),
+    }
 }
 
 /// What one job measured.
@@ -181,7 +195,7 @@ pub fn measure(
         .par_iter()
         .map(|&j| {
             let out = run_job(p, j, &tracks);
-            progress(&format!("{j:?}"));
+            progress(&job_text(j));
             out
         })
         .collect::<Result<_, _>>()?;
@@ -240,18 +254,21 @@ pub fn hgcz_8h_band() -> Result<(f64, f64), String> {
     Ok((zone.lower_m_s2, zone.upper_m_s2))
 }
 
-/// Run the assessment of the nominal vehicle over `seeds` (in parallel): [`measure`] for
-/// both front axles and both load cases; `progress` is called once per finished run with a
-/// short description.
-pub fn assess(seeds: &[u64], progress: &(dyn Fn(&str) + Sync)) -> Result<DesignMeasures, String> {
-    let p = VehicleParams::nominal();
-    let configs = measure(
-        &p,
-        &[FrontAxle::Rigid, FrontAxle::Suspended],
-        &[Load::Unloaded, Load::Loaded],
-        seeds,
-        progress,
-    )?;
+/// Run the assessment of the vehicle `p` over `seeds` (in parallel): [`measure`] with a
+/// rigid front axle and, when `with_hps`, with its front-axle strut `p.hps`, both load
+/// cases; `progress` is called once per finished run with a short description.
+pub fn assess(
+    p: &VehicleParams,
+    with_hps: bool,
+    seeds: &[u64],
+    progress: &(dyn Fn(&str) + Sync),
+) -> Result<DesignMeasures, String> {
+    let axles: &[FrontAxle] = if with_hps {
+        &[FrontAxle::Rigid, FrontAxle::Suspended]
+    } else {
+        &[FrontAxle::Rigid]
+    };
+    let configs = measure(p, axles, &[Load::Unloaded, Load::Loaded], seeds, progress)?;
     let axle = |c: &ConfigMeasures| -> Result<AxleSummary, String> {
         let ride = |load| {
             c.ride_of(load)
@@ -269,8 +286,13 @@ pub fn assess(seeds: &[u64], progress: &(dyn Fn(&str) + Sync)) -> Result<DesignM
         seeds: seeds.to_vec(),
         hgcz_8h_m_s2: hgcz_8h_band()?,
         unsuspended: axle(&configs[0])?,
-        nominal_hps: axle(&configs[1])?,
+        nominal_hps: configs.get(1).map(axle).transpose()?,
     })
+}
+
+/// Runs per [`assess`]: one yaw and, per seed, two rides and a roll, for each axle.
+pub fn assess_runs(with_hps: bool, seeds: usize) -> usize {
+    (1 + usize::from(with_hps)) * (1 + 3 * seeds)
 }
 
 /// `mean ± sd` with `digits` decimals.
@@ -286,78 +308,78 @@ fn zone_text(z: HgczZone) -> &'static str {
     }
 }
 
-/// The assessment as a terminal table with units and verdicts.
+/// The assessment as a terminal table with units and verdicts: one column per front axle.
 pub fn to_text(d: &DesignMeasures) -> String {
     let mut s = format!(
         "3-D vehicle (Chapter 6): design measures, mean ± SD over {} terrain seeds (class E, m_c 0.3)\n",
         d.seeds.len()
     );
-    s += &format!(
-        "  {:<36} {:>18} {:>18}  unit\n",
-        "measure", "unsuspended", "nominal HPS"
-    );
-    let (u, h) = (&d.unsuspended, &d.nominal_hps);
-    let row = |name: &str, a: String, b: String, unit: &str| {
-        format!("  {name:<36} {a:>18} {b:>18}  {unit}\n")
+    let mut cols = vec![("rigid front axle", &d.unsuspended)];
+    if let Some(h) = &d.nominal_hps {
+        cols.push(("front-axle HPS", h));
+    }
+    let row = |name: &str, f: &dyn Fn(&AxleSummary) -> String, unit: &str| {
+        let cells: String = cols.iter().map(|(_, a)| format!(" {:>18}", f(a))).collect();
+        format!("  {name:<36}{cells}  {unit}\n")
     };
+    let heads: String = cols.iter().map(|(h, _)| format!(" {h:>18}")).collect();
+    s += &format!("  {:<36}{heads}  unit\n", "measure");
     s += &row(
         "a_wz unloaded (D1, 20 km/h)",
-        pm(&u.ride_unloaded.a_wz_m_s2, 3),
-        pm(&h.ride_unloaded.a_wz_m_s2, 3),
+        &|a| pm(&a.ride_unloaded.a_wz_m_s2, 3),
         "m/s²",
     );
     s += &row(
         "a_wz loaded (D1, 20 km/h)",
-        pm(&u.ride_loaded.a_wz_m_s2, 3),
-        pm(&h.ride_loaded.a_wz_m_s2, 3),
+        &|a| pm(&a.ride_loaded.a_wz_m_s2, 3),
         "m/s²",
     );
     let travel = |r: &RideSummary| r.strut_travel_m.as_ref().map_or("-".into(), |t| pm(t, 3));
-    s += &row(
-        "strut travel d_s unloaded",
-        "-".into(),
-        travel(&h.ride_unloaded),
-        "m",
-    );
-    s += &row(
-        "strut travel d_s loaded",
-        "-".into(),
-        travel(&h.ride_loaded),
-        "m",
-    );
+    if d.nominal_hps.is_some() {
+        s += &row(
+            "strut travel d_s unloaded",
+            &|a| travel(&a.ride_unloaded),
+            "m",
+        );
+        s += &row("strut travel d_s loaded", &|a| travel(&a.ride_loaded), "m");
+    }
     s += &row(
         "SP-DRT (D2, 50 km/h, loaded)",
-        pm(&u.sp_drt_m_s2, 2),
-        pm(&h.sp_drt_m_s2, 2),
+        &|a| pm(&a.sp_drt_m_s2, 2),
         "m/s²",
     );
     s += &row(
         "omega_z (D3, 50 km/h, loaded)",
-        format!("{:.2}", u.yaw.omega_z_hz),
-        format!("{:.2}", h.yaw.omega_z_hz),
+        &|a| format!("{:.2}", a.yaw.omega_z_hz),
         "Hz",
     );
     s += &row(
         "yaw damping ratio",
-        format!("{:.3}", u.yaw.damping_ratio),
-        format!("{:.3}", h.yaw.damping_ratio),
+        &|a| format!("{:.3}", a.yaw.damping_ratio),
         "-",
     );
     s += &format!(
-        "  ride verdict, 8 h HGCZ {:.2}-{:.2} m/s²:\n    unsuspended: {} unloaded, {} loaded\n    nominal HPS: {} unloaded, {} loaded\n",
-        d.hgcz_8h_m_s2.0,
-        d.hgcz_8h_m_s2.1,
-        zone_text(u.ride_unloaded.hgcz_8h),
-        zone_text(u.ride_loaded.hgcz_8h),
-        zone_text(h.ride_unloaded.hgcz_8h),
-        zone_text(h.ride_loaded.hgcz_8h),
+        "  ride verdict, 8 h HGCZ {:.2}-{:.2} m/s²:\n",
+        d.hgcz_8h_m_s2.0, d.hgcz_8h_m_s2.1
     );
-    s += &format!(
-        "  HPS change: a_wz {:+.0} % unloaded, {:+.0} % loaded; SP-DRT {:+.1} %; omega_z {:+.1} %\n\n",
-        100.0 * (h.ride_unloaded.a_wz_m_s2.mean / u.ride_unloaded.a_wz_m_s2.mean - 1.0),
-        100.0 * (h.ride_loaded.a_wz_m_s2.mean / u.ride_loaded.a_wz_m_s2.mean - 1.0),
-        100.0 * (h.sp_drt_m_s2.mean / u.sp_drt_m_s2.mean - 1.0),
-        100.0 * (h.yaw.omega_z_hz / u.yaw.omega_z_hz - 1.0),
-    );
-    s
+    for (name, a) in &cols {
+        s += &format!(
+            "    {name}: {} unloaded, {} loaded\n",
+            zone_text(a.ride_unloaded.hgcz_8h),
+            zone_text(a.ride_loaded.hgcz_8h),
+        );
+    }
+    if let Some(h) = &d.nominal_hps {
+        let u = &d.unsuspended;
+        s += &format!(
+            "  HPS change: a_wz {:+.0} % unloaded, {:+.0} % loaded; SP-DRT {:+.1} %; omega_z {:+.1} %\n",
+            100.0 * (h.ride_unloaded.a_wz_m_s2.mean / u.ride_unloaded.a_wz_m_s2.mean - 1.0),
+            100.0 * (h.ride_loaded.a_wz_m_s2.mean / u.ride_loaded.a_wz_m_s2.mean - 1.0),
+            100.0 * (h.sp_drt_m_s2.mean / u.sp_drt_m_s2.mean - 1.0),
+            100.0 * (h.yaw.omega_z_hz / u.yaw.omega_z_hz - 1.0),
+        );
+    } else {
+        s += "  (the description gives the front axle no strut: no HPS column)\n";
+    }
+    s + "\n"
 }

@@ -1,22 +1,26 @@
-//! `afsv evaluate`: the main job on the built-in default vehicle.
+//! `afsv evaluate`: the main job, on the built-in default vehicle or on a vehicle
+//! description (`--vehicle`, docs/vehicles.md).
 //!
 //! The default vehicle is the 35 t articulated dump truck of the dissertation (Table 3.1
 //! steering and yaw-plane parameters, Table 6.1 3-D vehicle, Table 6.3 front-axle strut) on
 //! the nominal off-road terrain (ISO 8608 class E, piecewise coherence m_c = 0.3 cycles/m,
 //! sections 2.2.2 and 6.2.3). First come the three design measures of Chapter 6 (ride, roll,
-//! yaw of the 3-D vehicle, unsuspended and with the nominal HPS, over `--seeds` terrain
-//! seeds, [`super::design_measures`]), then the yaw-plane steering measures of Chapter 3,
-//! the strut and the terrain.
+//! yaw of the 3-D vehicle with a rigid front axle and with the description's front-axle
+//! strut, over `--seeds` terrain seeds, [`super::design_measures`]), then the yaw-plane
+//! steering measures of Chapter 3 (the description's yaw-plane data and steering), the
+//! strut and the terrain.
 //!
 //! On a terminal it prints a readable summary; with `--json`, or when stdout is a pipe or a
 //! file, it prints the same assessment as JSON. The toolkit's own self-checks (ISO 2631-1
 //! weighting table, terrain synthesis fidelity) are `afsv check`.
 
 use super::CmdResult;
-use afsv_dynamics::{yaw_measures, Load, YawMeasures};
+use afsv_dynamics::{measures_for, Load, MeasureSpec, YawMeasures};
+use afsv_vehicle::ArticulatedVehicle;
 use hps_emulsion::StrutSummary;
 use serde_json::{json, Value};
 use std::io::IsTerminal;
+use std::path::PathBuf;
 
 /// Options of `afsv evaluate`.
 #[derive(clap::Args)]
@@ -31,40 +35,89 @@ pub struct Args {
     /// Forward speed for the yaw-plane measures (km/h; section 3.3 uses 50).
     #[arg(long, default_value_t = 50.0, allow_hyphen_values = true, value_parser = super::args::positive_f64)]
     pub speed_kmh: f64,
+    #[arg(long, help = super::described::HELP)]
+    pub vehicle: Option<PathBuf>,
     /// Print JSON even on a terminal (JSON is the default when stdout is not a terminal).
     #[arg(long)]
     pub json: bool,
 }
 
-/// The assessment of the default vehicle.
+/// The assessment of one vehicle.
 struct Assessment {
+    /// The vehicle's name and where its front strut comes from.
+    name: String,
+    strut_source: Option<String>,
     vehicle: super::design_measures::DesignMeasures,
     speed_kmh: f64,
     terrain: terrain_psd::Summary,
     yaw_loaded: YawMeasures,
     yaw_unloaded: YawMeasures,
-    strut: StrutSummary,
+    strut: Option<StrutSummary>,
 }
 
-/// Run the default assessment and print it (text on a terminal, JSON otherwise).
-pub fn run(args: Args) -> CmdResult {
-    if !(args.speed_kmh.is_finite() && args.speed_kmh > 0.0) {
-        return Err(format!("--speed-kmh must be positive, got {}", args.speed_kmh).into());
-    }
-    let speed = args.speed_kmh / 3.6;
-    let seeds: Vec<u64> = (0..args.seeds).map(|i| args.seed.wrapping_add(i)).collect();
-    let runs = 2 * (1 + 3 * seeds.len());
-    let progress = afsv::progress::Progress::new("afsv evaluate", "vehicle runs", Some(runs));
-    let vehicle = super::design_measures::assess(&seeds, &|detail| progress.step(detail))?;
-    progress.finish();
-    let a = Assessment {
-        vehicle,
-        speed_kmh: args.speed_kmh,
-        terrain: terrain_psd::default_terrain_summary(args.seed),
-        yaw_loaded: yaw_measures(Load::Loaded, speed)?,
-        yaw_unloaded: yaw_measures(Load::Unloaded, speed)?,
-        strut: hps_emulsion::front_axle_summary()?,
+/// The yaw-plane measures of `v` at `load` and `speed` (m/s).
+fn yaw_of(v: &ArticulatedVehicle, load: Load, speed: f64) -> Result<YawMeasures, String> {
+    let case = match load {
+        Load::Loaded => vehicle_3d::Load::Loaded,
+        Load::Unloaded => vehicle_3d::Load::Unloaded,
     };
+    measures_for(
+        v.yaw_plane(case),
+        v.steering(),
+        Some(load),
+        speed,
+        &MeasureSpec::default(),
+    )
+    .map_err(|e| format!("yaw-plane measures, {load:?} case: {e}").to_lowercase())
+}
+
+/// Everything `afsv evaluate` measures on the vehicle `v`.
+fn assess(
+    v: &ArticulatedVehicle,
+    speed_kmh: f64,
+    seed: u64,
+    seeds: &[u64],
+    progress: &(dyn Fn(&str) + Sync),
+) -> Result<Assessment, String> {
+    let speed = speed_kmh / 3.6;
+    let mut p = v.params.clone();
+    if let Some(s) = &v.front_strut {
+        p.hps = *s;
+    }
+    let vehicle = super::design_measures::assess(&p, v.front_strut.is_some(), seeds, progress)?;
+    let strut = match &v.front_strut {
+        Some(s) => Some(hps_emulsion::characterize::summary(s, 0.025).map_err(|e| e.to_string())?),
+        None => None,
+    };
+    Ok(Assessment {
+        name: v.name.clone(),
+        strut_source: v.front_strut_source.clone(),
+        vehicle,
+        speed_kmh,
+        terrain: terrain_psd::default_terrain_summary(seed),
+        yaw_loaded: yaw_of(v, Load::Loaded, speed)?,
+        yaw_unloaded: yaw_of(v, Load::Unloaded, speed)?,
+        strut,
+    })
+}
+
+/// Run the assessment and print it (text on a terminal, JSON otherwise).
+pub fn run(args: Args) -> CmdResult {
+    if !(args.speed_kmh.is_finite() && args.speed_kmh >= MIN_SPEED_KMH) {
+        return Err(format!(
+            "--speed-kmh must be at least {MIN_SPEED_KMH} km/h (the yaw-plane measures need forward speed), got {}",
+            args.speed_kmh
+        )
+        .into());
+    }
+    let v = super::described::articulated(args.vehicle.as_deref())?;
+    let seeds: Vec<u64> = (0..args.seeds).map(|i| args.seed.wrapping_add(i)).collect();
+    let runs = super::design_measures::assess_runs(v.front_strut.is_some(), seeds.len());
+    let progress = afsv::progress::Progress::new("afsv evaluate", "vehicle runs", Some(runs));
+    let a = assess(&v, args.speed_kmh, args.seed, &seeds, &|detail| {
+        progress.step(detail)
+    })?;
+    progress.finish();
     if args.json || !std::io::stdout().is_terminal() {
         afsv::output::print_json(&to_json(&a))?;
     } else {
@@ -73,13 +126,22 @@ pub fn run(args: Args) -> CmdResult {
     Ok(())
 }
 
+/// Lowest forward speed of the yaw-plane measures (km/h): below it the tire slip angles of
+/// Eq 3.13 lose meaning.
+const MIN_SPEED_KMH: f64 = 1.0;
+
 /// The assessment as JSON: the vehicle, the terrain it runs on, the yaw-plane measures per
 /// load, the front-axle strut.
 fn to_json(a: &Assessment) -> Value {
     let t = &a.terrain;
-    json!({
-        "vehicle": "35 t articulated dump truck (Table 3.1, Table 6.1, Table 6.3)",
-        "design_measures_3d": a.vehicle,
+    const NO_STRUT: &str = "the vehicle description gives the front axle no strut";
+    let mut measures = json!(a.vehicle);
+    if a.vehicle.nominal_hps.is_none() {
+        measures["nominal_hps_reason"] = NO_STRUT.into();
+    }
+    let mut v = json!({
+        "vehicle": a.name,
+        "design_measures_3d": measures,
         "speed_kmh": a.speed_kmh,
         "terrain": {
             "description": t.description,
@@ -99,12 +161,17 @@ fn to_json(a: &Assessment) -> Value {
             "unloaded": a.yaw_unloaded,
             "stable": yaw_stable(&a.yaw_loaded) && yaw_stable(&a.yaw_unloaded),
         },
-        "front_axle_strut": {
-            "static_force_n": a.strut.static_force_n,
-            "static_stiffness_n_m": a.strut.static_stiffness_n_m,
-            "at_1hz": a.strut.at_1hz,
-        },
-    })
+        "front_axle_strut": a.strut.as_ref().map(|s| json!({
+            "source": a.strut_source,
+            "static_force_n": s.static_force_n,
+            "static_stiffness_n_m": s.static_stiffness_n_m,
+            "at_1hz": s.at_1hz,
+        })),
+    });
+    if a.strut.is_none() {
+        v["front_axle_strut_reason"] = NO_STRUT.into();
+    }
+    v
 }
 
 /// A yaw mode is stable when its free oscillation decays: a positive fitted damping ratio.
@@ -140,7 +207,7 @@ fn yaw_row(
 
 /// The assessment as a terminal summary with units and verdicts.
 fn to_text(a: &Assessment) -> String {
-    let mut s = "afsv evaluate: 35 t articulated dump truck (Tables 3.1, 6.1, 6.3)\n\n".to_string();
+    let mut s = format!("afsv evaluate: {}\n\n", a.name);
     s += &super::design_measures::to_text(&a.vehicle);
     s += &format!(
         "Yaw-plane steering measures at {} km/h\n",
@@ -215,9 +282,32 @@ fn to_text(a: &Assessment) -> String {
         verdict(&a.yaw_unloaded)
     );
 
-    let st = &a.strut;
+    if let Some(st) = &a.strut {
+        s += &strut_text(st, a.strut_source.as_deref().unwrap_or("inline"));
+    }
+
+    let t = &a.terrain;
+    s += &format!(
+        "Terrain (ISO 8608 class E, coherence m_c = 0.3 cycles/m; {} m synthesised, seed {})\n",
+        num(t.length_m, 1.0, 0),
+        t.seed
+    );
+    s += &format!(
+        "  rms height left / right {} / {} mm (target {} mm); cross-slope rms {} deg\n\n",
+        num(t.rms_left_m, 1e3, 1),
+        num(t.rms_right_m, 1e3, 1),
+        num(t.rms_target_m, 1e3, 1),
+        num(t.cross_slope_rms_rad, 180.0 / std::f64::consts::PI, 2)
+    );
+    s += "JSON: `afsv evaluate --json`. Self-checks of the toolkit: `afsv check`.\n";
+    s
+}
+
+/// The front-axle strut's summary: statics and the 1 Hz harmonic test.
+fn strut_text(st: &StrutSummary, source: &str) -> String {
+    let mut s = String::new();
     let h = &st.at_1hz;
-    s += "Front-axle strut (Table 6.3, gas-oil emulsion)\n";
+    s += &format!("Front-axle strut ({source}, gas-oil emulsion)\n");
     s += &format!(
         "  static force                        {} kN\n",
         num(st.static_force_n, 1e-3, 1)
@@ -239,21 +329,6 @@ fn to_text(a: &Assessment) -> String {
         num(h.p_piston_min_pa, 1e-6, 2),
         num(h.p_piston_max_pa, 1e-6, 2)
     );
-
-    let t = &a.terrain;
-    s += &format!(
-        "Terrain (ISO 8608 class E, coherence m_c = 0.3 cycles/m; {} m synthesised, seed {})\n",
-        num(t.length_m, 1.0, 0),
-        t.seed
-    );
-    s += &format!(
-        "  rms height left / right {} / {} mm (target {} mm); cross-slope rms {} deg\n\n",
-        num(t.rms_left_m, 1e3, 1),
-        num(t.rms_right_m, 1e3, 1),
-        num(t.rms_target_m, 1e3, 1),
-        num(t.cross_slope_rms_rad, 180.0 / std::f64::consts::PI, 2)
-    );
-    s += "JSON: `afsv evaluate --json`. Self-checks of the toolkit: `afsv check`.\n";
     s
 }
 
@@ -263,15 +338,8 @@ mod tests {
 
     #[test]
     fn text_summary_names_every_section_with_units() {
-        let speed = 50.0 / 3.6;
-        let a = Assessment {
-            vehicle: super::super::design_measures::assess(&[1], &|_| {}).unwrap(),
-            speed_kmh: 50.0,
-            terrain: terrain_psd::default_terrain_summary(1),
-            yaw_loaded: yaw_measures(Load::Loaded, speed).unwrap(),
-            yaw_unloaded: yaw_measures(Load::Unloaded, speed).unwrap(),
-            strut: hps_emulsion::front_axle_summary().unwrap(),
-        };
+        let v = super::super::described::articulated(None).unwrap();
+        let a = assess(&v, 50.0, 1, &[1], &|_| {}).unwrap();
         let text = to_text(&a);
         for needle in [
             "a_wz unloaded (D1, 20 km/h)",
@@ -283,7 +351,7 @@ mod tests {
             "yaw damping ratio",
             "Hz",
             "verdict: yaw mode stable loaded, stable unloaded",
-            "Front-axle strut",
+            "Front-axle strut (front-axle",
             "kN/m",
             "Terrain",
             "afsv check",

@@ -101,10 +101,8 @@ pub fn run(cmd: Command) -> CmdResult {
                     afsv::output::OutputKind::Other,
                 )?;
             }
-            if let ParamSet::Vehicle = set {
-                return dump_vehicle(&builtin, output.as_deref());
-            }
             let value = match set {
+                ParamSet::Vehicle => return dump_vehicle(&builtin, output.as_deref()),
                 ParamSet::YawPlane => serde_json::to_value(YawPlaneParams::nominal(load.into()))?,
                 ParamSet::Strut => serde_json::to_value(strut.params())?,
                 ParamSet::Tire => serde_json::to_value(TireParams::nominal())?,
@@ -112,7 +110,6 @@ pub fn run(cmd: Command) -> CmdResult {
                 ParamSet::Surface => serde_json::to_value(SurfaceParams::default())?,
                 ParamSet::Truck => serde_json::to_value(TruckParams::nominal())?,
                 ParamSet::Vehicle3d => serde_json::to_value(VehicleParams::nominal())?,
-                ParamSet::Vehicle => unreachable!("dumped as TOML above"),
             };
             match output {
                 Some(path) => {

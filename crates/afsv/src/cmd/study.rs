@@ -26,9 +26,12 @@ pub enum Command {
 /// Options of `afsv study speed-sweep`.
 #[derive(clap::Args)]
 pub struct SweepArgs {
-    /// The strut: `nominal` (Table 6.3) or a strut parameter file (`afsv params dump hps`).
+    /// The strut: `nominal` (the description's front-axle strut; Table 6.3 for the
+    /// prototype) or a strut parameter file (`afsv params dump strut`).
     #[arg(long, default_value = "nominal")]
     pub hps: String,
+    #[arg(long, help = super::described::HELP)]
+    pub vehicle: Option<PathBuf>,
     /// The Eq 6.19 design variables replacing the strut's: `A_HC,A_V,A_B` with A_hc in m²
     /// and A_v, A_b in mm² (as `afsv optimize hps` prints them), e.g. `0.0494,6.28,16.0`.
     #[arg(long)]
@@ -63,6 +66,8 @@ pub struct HpsArgs {
     /// First terrain seed.
     #[arg(long, default_value_t = 1)]
     pub seed: u64,
+    #[arg(long, help = super::described::HELP)]
+    pub vehicle: Option<PathBuf>,
     /// Changes in percent, comma separated (Table 6.4: -30,-15,15,30).
     #[arg(long, default_value = "-30,-15,15,30", allow_hyphen_values = true)]
     pub changes: String,
@@ -131,18 +136,29 @@ fn parse_list(name: &str, text: &str, max: usize) -> Result<Vec<f64>, String> {
     Ok(out)
 }
 
-/// The vehicle of `--hps` and `--design`: the nominal vehicle with the strut file's or the
-/// nominal strut, its Eq 6.19 areas replaced by `--design`.
+/// The vehicle of `--vehicle`, `--hps` and `--design`: the described vehicle (the
+/// prototype by default) with the strut file's or its own front-axle strut, the strut's
+/// Eq 6.19 areas replaced by `--design`.
 fn sweep_vehicle(
     a: &SweepArgs,
     guard: &mut OutputGuard,
 ) -> Result<vehicle_3d::VehicleParams, String> {
-    let mut p = vehicle_3d::VehicleParams::nominal();
-    if a.hps != "nominal" {
+    if let Some(v) = a
+        .vehicle
+        .as_deref()
+        .filter(|v| super::described::is_file(v))
+    {
+        guard.input("--vehicle", v)?;
+    }
+    let mut p = if a.hps == "nominal" {
+        super::described::with_front_strut(a.vehicle.as_deref(), "--hps nominal")?
+    } else {
         let file = std::path::Path::new(&a.hps);
         guard.input("--hps", file)?;
+        let mut p = super::described::articulated(a.vehicle.as_deref())?.params;
         p.hps = super::vehicle::read_strut(file, "nominal or a strut file")?;
-    }
+        p
+    };
     if let Some(text) = &a.design {
         let v = parse_list("--design", text, 3)?;
         let [a_hc, a_v, a_b] = v[..] else {
@@ -280,9 +296,17 @@ fn hps(a: HpsArgs) -> CmdResult {
     }
     let changes = parse_changes(&a.changes)?;
     let mut guard = OutputGuard::new(a.force);
+    if let Some(v) = a
+        .vehicle
+        .as_deref()
+        .filter(|v| super::described::is_file(v))
+    {
+        guard.input("--vehicle", v)?;
+    }
     if let Some(p) = &a.plot {
         guard.output("--plot", p, OutputKind::Svg)?;
     }
+    let p = super::described::with_front_strut(a.vehicle.as_deref(), "study hps-sensitivity")?;
     let seeds: Vec<u64> = (0..a.seeds as u64)
         .map(|i| a.seed.wrapping_add(i))
         .collect();
@@ -293,7 +317,6 @@ fn hps(a: HpsArgs) -> CmdResult {
     let designs = 1 + 3 * changes.len();
     let runs = designs * (seeds.len() * (2 + usize::from(scope.roll)) + usize::from(scope.yaw));
     let progress = afsv::progress::Progress::new("afsv study hps-sensitivity", "runs", Some(runs));
-    let p = vehicle_3d::VehicleParams::nominal();
     let s = afsv_design::hps_sensitivity(&p, &changes, &seeds, scope, &|d| progress.step(d))?;
     progress.finish();
     if let Some(path) = &a.plot {

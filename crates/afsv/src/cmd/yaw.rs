@@ -69,15 +69,19 @@ pub enum SolverChoice {
 /// Options shared by the subcommands that build a vehicle.
 #[derive(clap::Args, Debug)]
 pub struct VehicleArgs {
-    /// Load condition (Table 3.1); ignored when --params is given.
+    /// Load condition (Table 3.1, or the description's `[yaw_plane]` case); ignored when
+    /// --params is given.
     #[arg(long, value_enum, default_value = "loaded")]
     pub load: LoadChoice,
     /// Constant forward speed (km/h).
     #[arg(long, default_value_t = 50.0, allow_hyphen_values = true, value_parser = args::nonneg_f64)]
     pub speed_kmh: f64,
-    /// Parameter file (JSON, as written by `afsv params dump yaw-plane`), validated.
+    /// The yaw-plane model's own parameter file (JSON, as written by `afsv params dump
+    /// yaw-plane`), validated, instead of a vehicle description.
     #[arg(long)]
     pub params: Option<PathBuf>,
+    #[arg(long, help = super::described::HELP, conflicts_with = "params")]
+    pub vehicle: Option<PathBuf>,
     /// Form of the yaw equations.
     #[arg(long, value_enum, default_value = "energy-consistent")]
     pub form: FormChoice,
@@ -161,12 +165,24 @@ fn kmh(v: f64) -> Result<f64, String> {
     }
 }
 
-/// Parameter set from `--params` or the nominal one for `--load`.
+/// Parameter set from `--params`, or the `--load` case of the `--vehicle` description (the
+/// prototype's Table 3.1 columns by default).
 fn load_params(v: &VehicleArgs) -> Result<YawPlaneParams, Box<dyn std::error::Error>> {
-    match &v.params {
-        None => Ok(YawPlaneParams::nominal(v.load.into())),
-        Some(path) => read_params(path),
+    if let Some(path) = &v.params {
+        return read_params(path);
     }
+    let d = super::described::articulated(v.vehicle.as_deref())?;
+    let (load, case) = match v.load {
+        LoadChoice::Loaded => (Load::Loaded, vehicle_3d::Load::Loaded),
+        LoadChoice::Unloaded => (Load::Unloaded, vehicle_3d::Load::Unloaded),
+    };
+    let p = YawPlaneParams {
+        load: Some(load),
+        vehicle: d.yaw_plane(case).clone(),
+        afs: d.steering().clone(),
+    };
+    p.validate()?;
+    Ok(p)
 }
 
 /// Read and validate a yaw-plane parameter file.
@@ -336,6 +352,13 @@ pub fn run(cmd: Command) -> CmdResult {
             let mut guard = OutputGuard::new(force);
             if let Some(p) = &vehicle.params {
                 guard.input("--params", p)?;
+            }
+            if let Some(v) = vehicle
+                .vehicle
+                .as_deref()
+                .filter(|v| super::described::is_file(v))
+            {
+                guard.input("--vehicle", v)?;
             }
             if let Some(file) = csv_input_file(&input) {
                 guard.record_input("--input", Path::new(file))?;

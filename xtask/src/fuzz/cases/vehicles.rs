@@ -128,6 +128,19 @@ pub(super) fn vehicle_case(g: &mut Gen<'_>, group: &str) {
         let text = mutate_json(&mut g.rng, VEHICLE_PARAMS);
         g.file("p.json", text.into_bytes());
         g.push_opt("--params", "p.json");
+    } else if g.rng.chance(0.3) {
+        super::described::description_file(g);
+        let v = g
+            .rng
+            .pick(&[
+                "v.toml",
+                "v.toml",
+                "prototype",
+                "chapter2-truck",
+                "missing.toml",
+            ])
+            .to_string();
+        g.push_opt("--vehicle", &v);
     }
     if g.rng.chance(0.3) {
         let l = g.rng.pick(&["loaded", "unloaded", "heavy", ""]).to_string();

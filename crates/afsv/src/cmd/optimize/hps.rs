@@ -39,6 +39,8 @@ pub struct HpsArgs {
     /// re-evaluation seeds, with the speed at which a_wz crosses the 8 h caution zone.
     #[arg(long)]
     pub speed_sweep: bool,
+    #[arg(long, help = crate::cmd::described::HELP)]
+    pub vehicle: Option<std::path::PathBuf>,
     /// Print JSON even on a terminal.
     #[arg(long)]
     pub json: bool,
@@ -85,14 +87,18 @@ pub fn run(a: &HpsArgs) -> CmdResult {
         "generations",
         Some(a.generations),
     ));
-    if let Some(path) = &a.strut_out {
-        afsv::output::OutputGuard::new(a.force).output(
-            "--strut-out",
-            path,
-            afsv::output::OutputKind::Other,
-        )?;
+    let mut guard = afsv::output::OutputGuard::new(a.force);
+    if let Some(v) = a
+        .vehicle
+        .as_deref()
+        .filter(|v| crate::cmd::described::is_file(v))
+    {
+        guard.input("--vehicle", v)?;
     }
-    let base = vehicle_3d::VehicleParams::nominal();
+    if let Some(path) = &a.strut_out {
+        guard.output("--strut-out", path, afsv::output::OutputKind::Other)?;
+    }
+    let base = crate::cmd::described::with_front_strut(a.vehicle.as_deref(), "optimize hps")?;
     let r = optimise_hps(&base, &settings, &progress)?;
     progress.0.finish();
     let mut best = base.clone();
@@ -125,7 +131,15 @@ pub fn run(a: &HpsArgs) -> CmdResult {
             print!("\n{}", crate::cmd::study::sweep_text(s));
         }
     }
-    Ok(())
+    if r.feasible {
+        Ok(())
+    } else {
+        Err(afsv::output::NotEarned(format!(
+            "optimize hps: no design met the a_wz limit of Eq 6.20 on the search seed (best a_wz {} m/s²); the best found is printed, not an optimum (more generations or another vehicle)",
+            v(r.optimum_ride.a_wz_m_s2, 3)
+        ))
+        .into())
+    }
 }
 
 /// A value or "n/a".

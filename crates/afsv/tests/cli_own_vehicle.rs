@@ -1,0 +1,146 @@
+//! A user's own vehicle through the commands: the example description
+//! `samples/vehicles/adt-28t.toml` (a 28 t articulated dump truck with a suspended front axle
+//! and its own strut file, yaw-plane data derived from its units) runs through `params check`,
+//! `evaluate`, `vehicle ride`, `yaw measures`, `study speed-sweep` and `hps characterize`
+//! and gives numbers of its own; the prototype dumped to a file and read back gives the
+//! built-in's numbers bit for bit; and a description without a strut is refused where a strut
+//! is designed.
+
+mod cli_support;
+use cli_support::{afsv, json, repo_root, scratch};
+
+fn adt() -> String {
+    repo_root()
+        .join("samples/vehicles/adt-28t.toml")
+        .to_string_lossy()
+        .into_owned()
+}
+
+#[test]
+fn an_own_truck_runs_through_the_commands_with_numbers_of_its_own() {
+    let f = adt();
+    let check = json(&afsv(&["params", "check", "vehicle", &f]));
+    assert_eq!(check["kind"], "articulated");
+    assert_eq!(check["front_suspension"], "hps");
+    assert_eq!(check["yaw_plane"], "derived from the units and tire");
+    assert_eq!(
+        check["parameters"]["front_unit.mass_kg"], 13500.0,
+        "{check}"
+    );
+
+    // The main job: both front axles, the strut from the description's file.
+    let e = json(&afsv(&["evaluate", "--vehicle", &f, "--seeds", "1"]));
+    assert!(e["vehicle"].as_str().unwrap().contains("28 t"), "{e}");
+    let src = e["front_axle_strut"]["source"].as_str().unwrap();
+    assert!(src.ends_with("adt-28t-front-strut.json"), "{src}");
+    let d = &e["design_measures_3d"];
+    let rigid = d["unsuspended"]["ride_loaded"]["a_wz_m_s2"]["mean"]
+        .as_f64()
+        .unwrap();
+    let hps = d["nominal_hps"]["ride_loaded"]["a_wz_m_s2"]["mean"]
+        .as_f64()
+        .unwrap();
+    assert!(hps < rigid, "the strut lowers a_wz: {hps} vs {rigid}");
+
+    // `vehicle ride` (loaded by default) takes the described front axle (HPS) unless told
+    // otherwise.
+    let ride = |extra: &[&str]| {
+        let mut args = vec!["vehicle", "ride", "--vehicle", &f, "--seeds", "1", "--json"];
+        args.extend_from_slice(extra);
+        json(&afsv(&args))
+    };
+    let suspended = ride(&[]);
+    let off = ride(&["--hps", "off"]);
+    assert_eq!(
+        suspended["a_wz_m_s2"]["mean"].as_f64().unwrap(),
+        hps,
+        "evaluate and vehicle ride run the same D1 case: {suspended}"
+    );
+    assert_eq!(off["a_wz_m_s2"]["mean"].as_f64().unwrap(), rigid);
+
+    // The yaw-plane model takes the derived data: another vehicle, another yaw mode.
+    let own = json(&afsv(&["yaw", "measures", "--vehicle", &f]));
+    let proto = json(&afsv(&["yaw", "measures"]));
+    let (fo, fp) = (
+        own["natural_frequency_hz"].as_f64().unwrap(),
+        proto["natural_frequency_hz"].as_f64().unwrap(),
+    );
+    assert!(fo.is_finite() && (fo - fp).abs() > 0.1, "{fo} vs {fp}");
+
+    // The design studies take it, with its strut as the nominal design.
+    let sweep = json(&afsv(&[
+        "study",
+        "speed-sweep",
+        "--vehicle",
+        &f,
+        "--speeds",
+        "20",
+        "--seeds",
+        "1",
+        "--json",
+    ]));
+    let points = sweep["points"].as_array().unwrap();
+    assert_eq!(points.len(), 2, "{sweep}");
+
+    // The strut file works wherever a built-in strut does.
+    let strut = repo_root().join("samples/vehicles/adt-28t-front-strut.json");
+    let c = json(&afsv(&[
+        "hps",
+        "characterize",
+        "--strut",
+        strut.to_str().unwrap(),
+    ]));
+    assert_eq!(c["tests"].as_array().unwrap().len(), 43);
+}
+
+#[test]
+fn the_dumped_prototype_reads_back_to_the_built_in_numbers_bit_for_bit() {
+    let file = scratch("own", "prototype.toml");
+    json(&afsv(&[
+        "params",
+        "dump",
+        "vehicle",
+        "-o",
+        file.to_str().unwrap(),
+    ]));
+    let f = file.to_str().unwrap();
+    for args in [
+        vec!["vehicle", "ride", "--seeds", "1", "--json"],
+        vec!["vehicle", "yaw", "--json"],
+        vec!["yaw", "measures"],
+    ] {
+        let builtin = json(&afsv(&args));
+        let mut with_file = args.clone();
+        with_file.extend(["--vehicle", f]);
+        assert_eq!(json(&afsv(&with_file)), builtin, "{args:?}");
+    }
+}
+
+#[test]
+fn a_vehicle_without_a_strut_is_refused_where_a_strut_is_designed() {
+    let text = std::fs::read_to_string(adt()).unwrap();
+    let no_strut = text
+        .replace("suspension = \"hps\"", "suspension = \"rigid\"")
+        .replace("strut = \"adt-28t-front-strut.json\"\n", "");
+    let file = scratch("own", "no-strut.toml");
+    std::fs::write(&file, no_strut).unwrap();
+    let f = file.to_str().unwrap();
+    for args in [
+        vec!["optimize", "hps", "--vehicle", f],
+        vec!["study", "hps-sensitivity", "--vehicle", f],
+        vec!["vehicle", "ride", "--vehicle", f, "--hps", "nominal"],
+    ] {
+        let out = afsv(&args);
+        assert!(!out.status.success(), "{args:?}");
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert!(err.contains("no strut"), "{args:?}: {err}");
+        assert_eq!(err.lines().count(), 1, "{err}");
+    }
+    // The rigid vehicle itself runs: no HPS column, and the JSON says why.
+    let e = json(&afsv(&["evaluate", "--vehicle", f, "--seeds", "1"]));
+    assert!(e["design_measures_3d"]["nominal_hps"].is_null());
+    assert!(e["front_axle_strut_reason"]
+        .as_str()
+        .unwrap()
+        .contains("no strut"));
+}
