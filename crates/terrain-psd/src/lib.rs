@@ -48,4 +48,4 @@ pub use summary::{
     default_terrain_summary, terrain_summary, Criterion, Fidelity, Summary, SummaryConfig,
 };
 pub use surface::{SurfaceParams, TwoTrackTerrain};
-pub use synth::{synthesize, synthesize_track, TwoTrackProfile, TwoTrackSpec};
+pub use synth::{synthesize, synthesize_track, uniform_spacing, TwoTrackProfile, TwoTrackSpec};

@@ -120,7 +120,52 @@ pub struct TwoTrackProfile {
     pub right_m: Vec<f64>,
 }
 
+/// The uniform spacing of the longitudinal coordinates `x` (m): at least 2, increasing, each
+/// step within 1e-6 of the mean step. A bad step names its row counted from 1 (the file
+/// row is one more when a header precedes the data).
+pub fn uniform_spacing(x: &[f64]) -> Result<f64> {
+    if x.len() < 2 {
+        return Err(TerrainError::Signal(format!(
+            "a profile needs at least 2 samples, has {}",
+            x.len()
+        )));
+    }
+    let dx = (x[x.len() - 1] - x[0]) / (x.len() - 1) as f64;
+    if !(dx.is_finite() && dx > 0.0) {
+        return Err(TerrainError::Signal("x must increase".into()));
+    }
+    for (i, w) in x.windows(2).enumerate() {
+        let step = w[1] - w[0];
+        let uniform = (step - dx).abs() <= 1e-6 * dx;
+        if !uniform {
+            return Err(TerrainError::Signal(format!(
+                "x is not uniformly spaced (sample {}: step {step} m, mean step {dx} m)",
+                i + 2
+            )));
+        }
+    }
+    Ok(dx)
+}
+
 impl TwoTrackProfile {
+    /// A measured profile: elevations `left` and `right` (m) at the uniformly spaced `x`
+    /// (m; [`uniform_spacing`]), laid out from its first sample (`x_0` becomes 0).
+    pub fn from_samples(x: &[f64], left: &[f64], right: &[f64]) -> Result<Self> {
+        if left.len() != x.len() || right.len() != x.len() {
+            return Err(TerrainError::Signal(format!(
+                "x has {} samples, left {}, right {}",
+                x.len(),
+                left.len(),
+                right.len()
+            )));
+        }
+        Ok(Self {
+            dx_m: uniform_spacing(x)?,
+            left_m: left.to_vec(),
+            right_m: right.to_vec(),
+        })
+    }
+
     /// Number of samples per track.
     pub fn len(&self) -> usize {
         self.left_m.len()
@@ -398,6 +443,17 @@ pub fn synthesize_track(
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_measured_profile_needs_uniform_increasing_x() {
+        let p = TwoTrackProfile::from_samples(&[5.0, 5.1, 5.2], &[0.0; 3], &[0.01; 3]).unwrap();
+        assert!((p.dx_m - 0.1).abs() < 1e-12 && p.len() == 3);
+        let e = TwoTrackProfile::from_samples(&[0.0, 0.1, 0.3], &[0.0; 3], &[0.0; 3]);
+        assert!(e.unwrap_err().to_string().contains("sample 3"));
+        assert!(uniform_spacing(&[1.0, 0.5]).is_err());
+        assert!(uniform_spacing(&[0.0, f64::NAN, 1.0]).is_err());
+        assert!(TwoTrackProfile::from_samples(&[0.0, 1.0], &[0.0], &[0.0, 0.0]).is_err());
+    }
 
     #[test]
     fn line_powers_integrate_the_psd_exactly() {

@@ -29,7 +29,7 @@ use rayon::prelude::*;
 use serde::Serialize;
 use terrain_psd::{
     synthesize, welch_psd, Band, CoherenceModel, IsoClass, PowerLawPsd, SurfaceParams,
-    TwoTrackSpec, TwoTrackTerrain, WelchConfig,
+    TwoTrackProfile, TwoTrackSpec, TwoTrackTerrain, WelchConfig,
 };
 use vehicle_components::FlatTerrain;
 
@@ -204,6 +204,45 @@ pub fn ride_tracks(
     positive("length_m", spec.length_m)?;
     let length = RIDE_START_M + RUN_IN_M + spec.length_m + 30.0;
     let terrain = spec.terrain.build(p, length, seed)?;
+    Ok(Arc::new(TireTracks::build(
+        p,
+        spec.load,
+        &ride_options(spec),
+        &terrain,
+        0.5 * p.front_track_m,
+    )?))
+}
+
+/// Road a ride run of `length_m` needs (m): 15 m behind the start, the 20 m run-in, the
+/// measured window and 30 m beyond (the tire contacts and the enveloping filter look ahead).
+pub fn ride_road_needed_m(length_m: f64) -> f64 {
+    RIDE_START_M + RUN_IN_M + length_m + 30.0
+}
+
+/// The enveloping cache of a ride run on a measured two-track road `profile` (laid out from
+/// its first sample, the vehicle's front track between the tracks); the road must be at
+/// least [`ride_road_needed_m`] long. The spec's synthesised terrain is not used.
+pub fn measured_ride_tracks(
+    p: &VehicleParams,
+    spec: &RideSpec,
+    profile: TwoTrackProfile,
+) -> Result<Arc<TireTracks>, VehicleError> {
+    positive("speed_kmh", spec.speed_kmh)?;
+    positive("length_m", spec.length_m)?;
+    let have = profile.dx_m * (profile.len().saturating_sub(1)) as f64;
+    let need = ride_road_needed_m(spec.length_m);
+    if have < need {
+        return Err(VehicleError::Terrain(terrain_psd::TerrainError::Signal(format!(
+            "the road is {have:.1} m long; a ride with a {} m window needs {need:.1} m (15 m behind the start, 20 m run-in, the window, 30 m beyond): shorten the window to at most {:.1} m",
+            spec.length_m,
+            (have - ride_road_needed_m(0.0)).max(0.0)
+        ))));
+    }
+    let surface = SurfaceParams {
+        track_width_m: p.front_track_m,
+        ..SurfaceParams::nominal()
+    };
+    let terrain = TwoTrackTerrain::new(profile, surface)?;
     Ok(Arc::new(TireTracks::build(
         p,
         spec.load,

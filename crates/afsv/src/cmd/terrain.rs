@@ -285,26 +285,9 @@ fn generate(a: GenerateArgs) -> CmdResult {
     Ok(())
 }
 
-/// Uniform spacing of the `x_m` column.
+/// Uniform spacing of the `x_m` column ([`terrain_psd::uniform_spacing`]).
 fn spacing(x: &[f64], path: &Path) -> Result<f64, String> {
-    let p = path.display();
-    if x.len() < 2 {
-        return Err(format!("{p}: needs at least 2 rows, has {}", x.len()));
-    }
-    let dx = (x[x.len() - 1] - x[0]) / (x.len() - 1) as f64;
-    if dx.is_nan() || dx <= 0.0 {
-        return Err(format!("{p}: x_m must increase"));
-    }
-    for (i, w) in x.windows(2).enumerate() {
-        let step = w[1] - w[0];
-        if (step - dx).abs() > 1e-6 * dx {
-            return Err(format!(
-                "{p}: x_m is not uniformly spaced (row {}: step {step} m, mean step {dx} m)",
-                i + 3
-            ));
-        }
-    }
-    Ok(dx)
+    terrain_psd::uniform_spacing(x).map_err(|e| format!("{}: x_m: {e}", path.display()))
 }
 
 fn select(v: &[f64], keep: &[usize]) -> Vec<f64> {

@@ -8,6 +8,7 @@ mod measures;
 mod options;
 mod path_change;
 mod plots;
+mod road;
 mod simulate;
 
 use super::{args, CmdResult};
@@ -103,6 +104,11 @@ pub enum Command {
         /// Length of the measured window after the run-in (m), 10 to 5000; D1: 100.
         #[arg(long, default_value_t = 100.0, allow_hyphen_values = true, value_parser = args::positive_f64)]
         length_m: f64,
+        /// A measured road instead of synthesised terrain: a two-track CSV with columns
+        /// x_m (uniformly spaced), left_m and right_m (other length units such as left_mm
+        /// are converted on read; docs/records.md). One run; no seeds.
+        #[arg(long, conflicts_with_all = ["terrain", "seeds", "seed"])]
+        road: Option<PathBuf>,
     },
     /// D2 roll: ramp steer to the rear unit's absolute rollover; SP-DRT (RMS |a_y| over the
     /// sustained period of |LTR| = 1), the sustained period, rollover time, peak a_y.
@@ -212,7 +218,8 @@ pub fn run(cmd: Command) -> CmdResult {
             case,
             study,
             length_m,
-        } => ride_cmd(&case, &study, length_m),
+            road,
+        } => ride_cmd(&case, &study, length_m, road.as_deref()),
         Command::Roll {
             case,
             study,
@@ -479,16 +486,17 @@ fn prepare(case: &CaseArgs, study: &StudyArgs) -> Result<(VehicleParams, FrontAx
     vehicle_params(case)
 }
 
-fn ride_cmd(case: &CaseArgs, study: &StudyArgs, length_m: f64) -> CmdResult {
+fn ride_cmd(case: &CaseArgs, study: &StudyArgs, length_m: f64, road: Option<&Path>) -> CmdResult {
     if !(10.0..=5000.0).contains(&length_m) {
         return Err(format!("--length-m {}: must be 10 to 5000 m", args::show(length_m)).into());
     }
+    if let (Some(_), Some(_)) = (road, &study.plot) {
+        return Err(
+            "--plot: the ride plot shows seed-mean PSDs of synthesised terrain; not with --road"
+                .into(),
+        );
+    }
     let (p, axle) = prepare(case, study)?;
-    let (terrain, seeds) =
-        terrain_and_seeds(case, study.seeds, study.seed, Some(TerrainSpec::default()))?;
-    let Some(terrain) = terrain else {
-        return Err("--terrain smooth: the ride run needs a terrain (class:...)".into());
-    };
     let speed = case.speed_kmh.unwrap_or(20.0);
     let sim_s = (RUN_IN_M + length_m) / (speed / 3.6);
     if sim_s > MAX_DURATION_S {
@@ -499,6 +507,20 @@ fn ride_cmd(case: &CaseArgs, study: &StudyArgs, length_m: f64) -> CmdResult {
         )
         .into());
     }
+    if let Some(road) = road {
+        let spec = RideSpec {
+            speed_kmh: speed,
+            length_m,
+            ..RideSpec::d1(case.load, axle)
+        };
+        let (m, ground) = road::ride(&p, &spec, road)?;
+        return ride_report(case, study, &spec, &[m], ground);
+    }
+    let (terrain, seeds) =
+        terrain_and_seeds(case, study.seeds, study.seed, Some(TerrainSpec::default()))?;
+    let Some(terrain) = terrain else {
+        return Err("--terrain smooth: the ride run needs a terrain (class:...)".into());
+    };
     let spec = RideSpec {
         speed_kmh: speed,
         length_m,
@@ -518,22 +540,42 @@ fn ride_cmd(case: &CaseArgs, study: &StudyArgs, length_m: f64) -> CmdResult {
             Ok((m, psd))
         })?;
     let measures: Vec<RideMeasures> = runs.iter().map(|r| r.0).collect();
-    let a_wz = spread(&measures, |m| m.a_wz_m_s2)?;
-    let a_z = spread(&measures, |m| m.a_z_rms_m_s2)?;
-    let vertical = spread(&measures, |m| m.vertical_peak_hz)?;
-    let pitch = spread(&measures, |m| m.pitch_peak_hz)?;
+    if let Some(path) = &study.plot {
+        let psds: Vec<RidePsd> = runs.into_iter().filter_map(|r| r.1).collect();
+        plot_ride(path, &psds, &spec, &seeds)?;
+    }
+    let ground = road::Ground {
+        json: terrain_json(&Some(terrain), &seeds),
+        text: format!(
+            "terrain class {}, m_c {} cycles/m",
+            terrain.class, terrain.m_c
+        ),
+        per_run: per_seed(&Some(terrain), &seeds, &measures, NO_STRUT),
+    };
+    ride_report(case, study, &spec, &measures, ground)
+}
+
+/// The ride's measures over its runs (seeds, or one measured road) as JSON or text.
+fn ride_report(
+    case: &CaseArgs,
+    study: &StudyArgs,
+    spec: &RideSpec,
+    measures: &[RideMeasures],
+    ground: road::Ground,
+) -> CmdResult {
+    let (axle, speed, length_m) = (spec.front_axle, spec.speed_kmh, spec.length_m);
+    let a_wz = spread(measures, |m| m.a_wz_m_s2)?;
+    let a_z = spread(measures, |m| m.a_z_rms_m_s2)?;
+    let vertical = spread(measures, |m| m.vertical_peak_hz)?;
+    let pitch = spread(measures, |m| m.pitch_peak_hz)?;
     let travel = match axle {
         FrontAxle::Rigid => None,
-        FrontAxle::Suspended => Some(spread(&measures, |m| {
+        FrontAxle::Suspended => Some(spread(measures, |m| {
             m.strut_travel_p2p_m.unwrap_or(f64::NAN)
         })?),
     };
     let zone = health_guidance_zone(HGCZ_HOURS, HgczRelation::SqrtTime)?;
     let verdict = zone.classify(a_wz.mean);
-    if let Some(path) = &study.plot {
-        let psds: Vec<RidePsd> = runs.into_iter().filter_map(|r| r.1).collect();
-        plot_ride(path, &psds, &spec, &seeds)?;
-    }
     let mut v = json!({
         "scenario": "ride (D1, section 6.4)",
         "load": case.load,
@@ -541,7 +583,7 @@ fn ride_cmd(case: &CaseArgs, study: &StudyArgs, length_m: f64) -> CmdResult {
         "speed_kmh": speed,
         "run_in_m": RUN_IN_M,
         "length_m": length_m,
-        "terrain": terrain_json(&Some(terrain), &seeds),
+        "terrain": ground.json,
         "a_wz_m_s2": a_wz,
         "a_z_rms_m_s2": a_z,
         "strut_travel_p2p_m": travel,
@@ -554,7 +596,7 @@ fn ride_cmd(case: &CaseArgs, study: &StudyArgs, length_m: f64) -> CmdResult {
             "upper_m_s2": zone.upper_m_s2,
             "a_wz_mean_zone": verdict,
         },
-        "per_seed": per_seed(&Some(terrain), &seeds, &measures, NO_STRUT),
+        "per_seed": ground.per_run,
     });
     if travel.is_none() {
         v["strut_travel_p2p_m_reason"] = json!(NO_STRUT);
@@ -567,10 +609,10 @@ fn ride_cmd(case: &CaseArgs, study: &StudyArgs, length_m: f64) -> CmdResult {
         perf_measures::iso2631::HgczZone::Within => "within the zone (caution)",
         perf_measures::iso2631::HgczZone::Above => "above the zone (health risk likely)",
     };
-    let mut text = header_text("ride D1", case.load, axle, speed, seeds.len());
+    let mut text = header_text("ride D1", case.load, axle, speed, measures.len());
     text += &format!(
-        "terrain class {}, m_c {} cycles/m, {length_m} m after a {RUN_IN_M} m run-in\n",
-        terrain.class, terrain.m_c
+        "{}, {length_m} m after a {RUN_IN_M} m run-in\n",
+        ground.text
     );
     text += &spread_text("a_wz (W_k weighted RMS)", &a_wz, "m/s²");
     text += &format!(
