@@ -226,12 +226,15 @@ fn articulated(a: &Articulated, o: &Origin<'_>) -> Result<ArticulatedVehicle, De
     })?;
     for load in [Load::Unloaded, Load::Loaded] {
         Statics::of(&params, load).map_err(|e| {
-            o.err(
-                &tire_path,
-                format!(
-                    "no static equilibrium {load}: {e} (extend the tire's load_deflection table)"
-                ),
-            )
+            let e = e.to_string();
+            // The cg outside the axles is the axles' (or the parts') fault, a load beyond
+            // the tire's table the tire's.
+            let (path, hint) = if e.contains("wheel base") {
+                ("axle", "the axles must straddle the combined cg: check each axle's distance_from_joint_m and the parts' cg_to_joint_m")
+            } else {
+                (tire_path.as_str(), "extend the tire's load_deflection table")
+            };
+            o.err(path, format!("no static equilibrium {load}: {e} ({hint})"))
         })?;
     }
     let (yaw_plane, yaw_plane_derived) = match &a.yaw_plane {

@@ -449,7 +449,7 @@ mod tests {
         let p = TwoTrackProfile::from_samples(&[5.0, 5.1, 5.2], &[0.0; 3], &[0.01; 3]).unwrap();
         assert!((p.dx_m - 0.1).abs() < 1e-12 && p.len() == 3);
         let e = TwoTrackProfile::from_samples(&[0.0, 0.1, 0.3], &[0.0; 3], &[0.0; 3]);
-        assert!(e.unwrap_err().to_string().contains("sample 3"));
+        assert!(e.unwrap_err().to_string().contains("sample 2"));
         assert!(uniform_spacing(&[1.0, 0.5]).is_err());
         assert!(uniform_spacing(&[0.0, f64::NAN, 1.0]).is_err());
         assert!(TwoTrackProfile::from_samples(&[0.0, 1.0], &[0.0], &[0.0, 0.0]).is_err());
