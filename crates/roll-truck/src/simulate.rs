@@ -71,6 +71,14 @@ pub struct RunRecord {
     pub lateral_accel_m_s2: Vec<f64>,
     /// LTR of the whole truck (Eq 2.11).
     pub ltr: Vec<f64>,
+    /// Horizontal lateral acceleration of the sprung-mass cg in the heading frame (m/s²):
+    /// the kinematic acceleration of that point (forward dynamics at the sample), which
+    /// includes the sprung mass's roll motion.
+    pub sprung_lateral_accel_m_s2: Vec<f64>,
+    /// What a lateral accelerometer fixed to the sprung mass at its cg reads (m/s²): the
+    /// specific force `a - g` along the sprung body's y axis. Rolled by `phi`, it reads
+    /// about `a_y cos(phi) + g sin(phi)`.
+    pub sprung_sensor_lateral_accel_m_s2: Vec<f64>,
     /// Roll angle of the sprung mass (rad): right-handed about the forward axis, positive
     /// with the left side up.
     pub roll_rad: Vec<f64>,
@@ -95,6 +103,7 @@ fn push_sample(vehicle: &TruckVehicle, t: f64, y: &[f64], rec: &mut RunRecord) {
     let Ok(tires) = vehicle.apply_forces(t, y, &mut ws, &mut tau) else {
         return;
     };
+    let (sprung, sensor) = sprung_accelerations(vehicle, &mut ws, &tau, tires.heading);
     let fz = &tires.normal_force;
     let left = [fz[0], fz[2] + fz[3]];
     let right = [fz[1], fz[4] + fz[5]];
@@ -109,6 +118,8 @@ fn push_sample(vehicle: &TruckVehicle, t: f64, y: &[f64], rec: &mut RunRecord) {
     rec.lateral_accel_m_s2
         .push(tires.lateral_total / vehicle.model.total_mass());
     rec.ltr.push(ltr);
+    rec.sprung_lateral_accel_m_s2.push(sprung);
+    rec.sprung_sensor_lateral_accel_m_s2.push(sensor);
     rec.roll_rad.push(rot[(2, 1)].atan2(rot[(2, 2)]));
     rec.rollover_margin_m.push(vehicle.rollover_margin_ws(&ws));
     rec.drive_force_n.push(tires.drive_force);
@@ -116,6 +127,32 @@ fn push_sample(vehicle: &TruckVehicle, t: f64, y: &[f64], rec: &mut RunRecord) {
     for (ch, f) in rec.normal_force_n.iter_mut().zip(fz) {
         ch.push(*f);
     }
+}
+
+/// The sprung cg's horizontal lateral acceleration in the heading frame and the specific
+/// force along the sprung y axis (m/s²), from the forward dynamics at the kinematics and
+/// external forces in `ws` (NaN if the dynamics fail).
+fn sprung_accelerations(
+    vehicle: &TruckVehicle,
+    ws: &mut multibody::Workspace,
+    tau: &[f64; NV],
+    heading: f64,
+) -> (f64, f64) {
+    let model = &vehicle.model;
+    let mut vdot = [0.0; NV];
+    match multibody::forward_dynamics(model, ws, tau) {
+        Ok(a) => vdot.copy_from_slice(a.as_slice()),
+        Err(_) => return (f64::NAN, f64::NAN),
+    }
+    if multibody::update_accelerations(model, ws, &vdot).is_err() {
+        return (f64::NAN, f64::NAN);
+    }
+    let sprung = crate::model::body::SPRUNG;
+    let a = ws.point_acceleration(sprung, &nalgebra::Vector3::zeros());
+    let lat = nalgebra::Vector3::new(-heading.sin(), heading.cos(), 0.0);
+    let specific = a - model.gravity();
+    let body_y = ws.body_rotation(sprung).column(1).into_owned();
+    (a.dot(&lat), specific.dot(&body_y))
 }
 
 /// Typical magnitudes of the states (for the absolute tolerances).
