@@ -46,11 +46,12 @@ pub struct RollMeasures {
     /// Peak |a_y| over the run (g): the whole-vehicle cg channel of the sum of the tire
     /// forces (the project's a_y).
     pub peak_ay_g: f64,
-    /// Peak |a_y| of the sprung-mass cg, horizontal in the heading frame (g).
-    pub peak_sprung_ay_g: f64,
+    /// Peak |a_y| of the sprung-mass cg, horizontal in the heading frame (g); `None`
+    /// unless the run recorded the channel (`RunOptions::acceleration_channels`).
+    pub peak_sprung_ay_g: Option<f64>,
     /// Peak |reading| of a lateral accelerometer fixed to the sprung mass at its cg (g):
-    /// includes `g sin(phi)` of the sprung roll `phi`.
-    pub peak_sensor_ay_g: f64,
+    /// includes `g sin(phi)` of the sprung roll `phi`; `None` as above.
+    pub peak_sensor_ay_g: Option<f64>,
     /// Time of the first bump-stop contact of any strut (s).
     pub first_bump_stop_s: Option<f64>,
     /// Peak |a_y| (whole-vehicle channel) before the first bump-stop contact (g); the whole
@@ -76,6 +77,11 @@ pub fn ssf(p: &TruckParams) -> f64 {
     let unsprung = p.front_unsprung_mass_kg + p.rear_unsprung_mass_kg;
     let h = (p.sprung_mass_kg * p.cg_height_m + unsprung * wheel_z) / p.total_mass_kg();
     half_track / h
+}
+
+/// Largest |x| of a recorded channel, `None` if it was not recorded (empty).
+fn recorded_peak(x: &[f64]) -> Option<f64> {
+    (!x.is_empty()).then(|| x.iter().fold(0.0_f64, |m, a| m.max(a.abs())))
 }
 
 /// Interpolated |a_y| at time `t` of the record.
@@ -117,8 +123,8 @@ pub fn roll_measures(
         ay_at_a4_g: period.as_ref().and_then(|s| ay_at(rec, s.end_s)).map(g),
         ay_at_rollover_g: rec.rollover_s.and_then(|t| ay_at(rec, t)).map(g),
         peak_ay_g: g(peak),
-        peak_sprung_ay_g: g(peak_of(&rec.sprung_lateral_accel_m_s2)),
-        peak_sensor_ay_g: g(peak_of(&rec.sprung_sensor_lateral_accel_m_s2)),
+        peak_sprung_ay_g: recorded_peak(&rec.sprung_lateral_accel_m_s2).map(g),
+        peak_sensor_ay_g: recorded_peak(&rec.sprung_sensor_lateral_accel_m_s2).map(g),
         first_bump_stop_s: stop.map(|i| rec.t_s[i]),
         peak_ay_before_stop_g: g(peak_of(&ay[..stop.unwrap_or(ay.len())])),
         rollover_s: rec.rollover_s,

@@ -23,6 +23,10 @@ pub struct RunOptions {
     pub output_dt_s: f64,
     /// Relative tolerance of the Dormand-Prince integrator.
     pub rtol: f64,
+    /// Record the sprung-cg channels ([`RunRecord::sprung_lateral_accel_m_s2`] and the
+    /// sensor channel): one forward-dynamics solve per output sample, about a quarter
+    /// more run time, so off by default and on for single runs and the truck comparison.
+    pub acceleration_channels: bool,
     /// Largest step (s).
     pub max_step_s: f64,
 }
@@ -33,6 +37,7 @@ impl Default for RunOptions {
             t_end_s: 60.0,
             output_dt_s: 0.01,
             rtol: 1e-4,
+            acceleration_channels: false,
             max_step_s: 0.02,
         }
     }
@@ -73,11 +78,13 @@ pub struct RunRecord {
     pub ltr: Vec<f64>,
     /// Horizontal lateral acceleration of the sprung-mass cg in the heading frame (m/s²):
     /// the kinematic acceleration of that point (forward dynamics at the sample), which
-    /// includes the sprung mass's roll motion.
+    /// includes the sprung mass's roll motion. Empty unless
+    /// [`RunOptions::acceleration_channels`].
     pub sprung_lateral_accel_m_s2: Vec<f64>,
     /// What a lateral accelerometer fixed to the sprung mass at its cg reads (m/s²): the
     /// specific force `a - g` along the sprung body's y axis. Rolled by `phi`, it reads
-    /// about `a_y cos(phi) + g sin(phi)`.
+    /// about `a_y cos(phi) + g sin(phi)`. Empty unless
+    /// [`RunOptions::acceleration_channels`].
     pub sprung_sensor_lateral_accel_m_s2: Vec<f64>,
     /// Roll angle of the sprung mass (rad): right-handed about the forward axis, positive
     /// with the left side up.
@@ -95,7 +102,7 @@ pub struct RunRecord {
 }
 
 /// One output sample from the state `y` at `t`.
-fn push_sample(vehicle: &TruckVehicle, t: f64, y: &[f64], rec: &mut RunRecord) {
+fn push_sample(vehicle: &TruckVehicle, t: f64, y: &[f64], channels: bool, rec: &mut RunRecord) {
     let mut ws = vehicle.ws.borrow_mut();
     let mut tau = [0.0; NV];
     // The integrator only hands out states at which the right-hand side succeeded (a
@@ -103,7 +110,11 @@ fn push_sample(vehicle: &TruckVehicle, t: f64, y: &[f64], rec: &mut RunRecord) {
     let Ok(tires) = vehicle.apply_forces(t, y, &mut ws, &mut tau) else {
         return;
     };
-    let (sprung, sensor) = sprung_accelerations(vehicle, &mut ws, &tau, tires.heading);
+    if channels {
+        let (sprung, sensor) = sprung_accelerations(vehicle, &mut ws, &tau, tires.heading);
+        rec.sprung_lateral_accel_m_s2.push(sprung);
+        rec.sprung_sensor_lateral_accel_m_s2.push(sensor);
+    }
     let fz = &tires.normal_force;
     let left = [fz[0], fz[2] + fz[3]];
     let right = [fz[1], fz[4] + fz[5]];
@@ -118,8 +129,6 @@ fn push_sample(vehicle: &TruckVehicle, t: f64, y: &[f64], rec: &mut RunRecord) {
     rec.lateral_accel_m_s2
         .push(tires.lateral_total / vehicle.model.total_mass());
     rec.ltr.push(ltr);
-    rec.sprung_lateral_accel_m_s2.push(sprung);
-    rec.sprung_sensor_lateral_accel_m_s2.push(sensor);
     rec.roll_rad.push(rot[(2, 1)].atan2(rot[(2, 2)]));
     rec.rollover_margin_m.push(vehicle.rollover_margin_ws(&ws));
     rec.drive_force_n.push(tires.drive_force);
@@ -192,7 +201,7 @@ pub fn simulate(vehicle: &TruckVehicle, options: &RunOptions) -> Result<RunRecor
     let mut ws = odeint::Workspace::with_events(state::DIM, 1);
     let mut rec = RunRecord::default();
     integrator.run(vehicle, &problem, &mut ws, |s| {
-        push_sample(vehicle, s.t, s.y, &mut rec);
+        push_sample(vehicle, s.t, s.y, options.acceleration_channels, &mut rec);
         if let SampleKind::Event(_) = s.kind {
             rec.rollover_s = Some(s.t);
         }

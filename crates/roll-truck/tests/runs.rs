@@ -115,6 +115,8 @@ fn straight_run_on_level_ground_stays_straight() {
     };
     let rec = simulate(&v, &opts).unwrap();
     assert_eq!(rec.rollover_s, None);
+    // the sprung-cg channels are recorded only on request
+    assert!(rec.sprung_lateral_accel_m_s2.is_empty());
     assert!(rec.ltr.iter().all(|l| l.abs() < 1e-9));
     assert!(rec.lateral_accel_m_s2.iter().all(|a| a.abs() < 1e-9));
     assert!(rec.roll_rad.iter().all(|r| r.abs() < 1e-9));
@@ -155,7 +157,11 @@ fn plausible_truck_and_the_lateral_acceleration_channels_on_the_smooth_ramp() {
         "{front} {rear}"
     );
     let v = TruckVehicle::new(&p, &level_ground(), 1.0, ModelOptions::default()).unwrap();
-    let rec = simulate(&v, &RunOptions::default()).unwrap();
+    let opts = RunOptions {
+        acceleration_channels: true,
+        ..RunOptions::default()
+    };
+    let rec = simulate(&v, &opts).unwrap();
     let m = roll_truck::measures::roll_measures(&p, &rec, &Default::default()).unwrap();
     let drt = m.drt_g.unwrap();
     assert!(drt > 0.36 && drt < 0.42, "plausible smooth DRT {drt}");

@@ -239,6 +239,7 @@ fn one_run(
     let options = RunOptions {
         t_end_s: duration,
         output_dt_s: dt,
+        acceleration_channels: true,
         ..RunOptions::default()
     };
     let spec = if case.smooth { None } else { Some(spec(case)?) };
@@ -377,8 +378,8 @@ fn measures_text(m: &RollMeasures) -> String {
         show(m.ay_at_a4_g, "g"),
         show(m.ay_at_rollover_g, "g"),
         m.peak_ay_g,
-        m.peak_sprung_ay_g,
-        m.peak_sensor_ay_g,
+        m.peak_sprung_ay_g.unwrap_or(f64::NAN),
+        m.peak_sensor_ay_g.unwrap_or(f64::NAN),
         m.peak_ay_before_stop_g,
         show(m.first_bump_stop_s, "s"),
         show(m.rollover_s, "s"),

@@ -131,6 +131,8 @@ pub(super) fn run_study_cmd(a: &StudyArgs) -> CmdResult {
     let p = truck(t, None)?;
     let options = RunOptions {
         t_end_s: roll_truck::sensitivity::ramp_duration_s(&p),
+        // the truck comparison reports the peaks of every channel
+        acceleration_channels: study == Study::Trucks,
         ..RunOptions::default()
     };
     let result = run_study(study, &p, &seed_list, &options, &a.rule.params()?, &report)?;
