@@ -155,6 +155,30 @@ impl<'a> Ctx<'a> {
         self.results.push(r);
     }
 
+    /// A model-computed number that the paper's data cannot pin down (it depends on
+    /// inputs the paper does not state): the row shows the number, its error and the
+    /// tolerance, and gets [`Status::NotReproducibleFromPaperData`] whatever the error,
+    /// with `reason` (which inputs, and how much the number moves with them).
+    pub fn not_reproducible_from_paper_data(
+        &mut self,
+        id: &str,
+        key: Option<&str>,
+        simulated: f64,
+        reason: impl Into<String>,
+    ) {
+        self.compare_as(
+            Status::NotReproducibleFromPaperData,
+            id,
+            key,
+            None,
+            simulated,
+            reason.into(),
+        );
+        if let Some(r) = self.results.last_mut() {
+            r.status = Status::NotReproducibleFromPaperData;
+        }
+    }
+
     /// A fixture (or one key of it) we cannot compute, with the reason.
     pub fn not_reproducible(&mut self, id: &str, key: Option<&str>, reason: impl Into<String>) {
         let mut r = self.row(id, key, None);
@@ -213,5 +237,13 @@ mod tests {
         ctx.echo(Echo::ByConstruction, "q", Some("a"), None, 1.5, "");
         assert_eq!(ctx.results[4].status, Status::Differs);
         assert!(ctx.results[4].regressed());
+        // A number the paper cannot pin down keeps its error but never agrees, in
+        // tolerance or not.
+        for v in [1.0, 3.0] {
+            ctx.not_reproducible_from_paper_data("q", Some("c"), v, "unstated input");
+            let r = ctx.results.last().unwrap();
+            assert_eq!(r.status, Status::NotReproducibleFromPaperData);
+            assert!(r.error.is_some() && r.note == "unstated input");
+        }
     }
 }

@@ -133,16 +133,19 @@ impl Report {
         out
     }
 
-    /// One-line summary: model-computed rows (reproduced, differ) apart from the echoes
-    /// (input, by-construction), so the reproduced count means model results only.
+    /// One-line summary: model-computed rows (reproduced, differ, not reproducible from
+    /// the paper's data) apart from the echoes (input, by-construction), so the reproduced
+    /// count means model results only.
     pub fn summary_line(&self) -> String {
         let (rep, dif) = (self.count(Status::Reproduced), self.count(Status::Differs));
+        let open = self.count(Status::NotReproducibleFromPaperData);
         format!(
-            "{} rows: {} model-computed ({} reproduced, {} differ), {} echoes ({} input, {} by-construction), {} not reproducible; {} regressions; {:.1} s",
+            "{} rows: {} model-computed ({} reproduced, {} differ, {} not reproducible from the paper's data), {} echoes ({} input, {} by-construction), {} not reproducible; {} regressions; {:.1} s",
             self.results.len(),
-            rep + dif,
+            rep + dif + open,
             rep,
             dif,
+            open,
             self.count(Status::Input) + self.count(Status::ByConstruction),
             self.count(Status::Input),
             self.count(Status::ByConstruction),

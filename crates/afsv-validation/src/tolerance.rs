@@ -102,6 +102,10 @@ pub enum Status {
     Differs,
     /// Needs a model or data we do not have (the reason is in the note).
     NotReproducible,
+    /// Computed, but the paper's data cannot pin the number down: it depends on inputs the
+    /// paper does not state (a steering ramp, a detection rule), and the note says which
+    /// and by how much. Shown with its error and tolerance; never agrees.
+    NotReproducibleFromPaperData,
     /// Echoes an input: the number is a parameter our parameter set carries (a nominal
     /// value, a design bound, the current design), within tolerance. Not a model result.
     Input,
@@ -118,6 +122,7 @@ impl Status {
             Status::Reproduced => "reproduced",
             Status::Differs => "differs",
             Status::NotReproducible => "not-reproducible",
+            Status::NotReproducibleFromPaperData => "not-reproducible-from-paper-data",
             Status::Input => "input",
             Status::ByConstruction => "by-construction",
         }
@@ -162,6 +167,11 @@ mod tests {
     fn echoes_agree_but_are_not_reproduced() {
         assert!(Status::Input.agrees() && Status::ByConstruction.agrees());
         assert!(!Status::Differs.agrees() && !Status::NotReproducible.agrees());
+        assert!(!Status::NotReproducibleFromPaperData.agrees());
+        assert_eq!(
+            serde_json::to_value(Status::NotReproducibleFromPaperData).unwrap(),
+            json!(Status::NotReproducibleFromPaperData.as_str())
+        );
         assert_eq!(Echo::ByConstruction.status().as_str(), "by-construction");
         assert_eq!(serde_json::to_value(Status::Input).unwrap(), json!("input"));
     }

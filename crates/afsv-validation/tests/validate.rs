@@ -63,7 +63,7 @@ fn every_result_and_qualitative_fixture_is_listed_with_a_reason() {
             x.label()
         );
         match x.status {
-            Status::NotReproducible | Status::Differs => {
+            Status::NotReproducible | Status::Differs | Status::NotReproducibleFromPaperData => {
                 assert!(!x.note.trim().is_empty(), "{} needs a reason", x.label())
             }
             Status::Reproduced | Status::Input | Status::ByConstruction => {}

@@ -1,5 +1,6 @@
 //! `afsv roll`: a run writes its record and sidecar and prints finite measures; the
-//! measures of a left and a right ramp agree; the truck parameter set dumps and checks;
+//! measures of a left and a right ramp agree; the plausible truck, the ramp rate, the
+//! stops and the detection rule are options; the truck parameter set dumps and checks;
 //! bad input is a one-line error naming the field or option.
 
 mod cli_support;
@@ -62,6 +63,39 @@ fn bad_input_is_a_one_line_error() {
         (vec!["roll", "measures", "--waviness", "nan"], "finite"),
         (vec!["roll", "measures", "--band", "0.02,20"], "band.n_max"),
         (vec!["roll", "measures", "--duration", "1e9"], "--duration"),
+        (vec!["roll", "measures", "--truck", "stiff"], "stiff"),
+        (
+            vec![
+                "roll",
+                "measures",
+                "--truck",
+                "plausible",
+                "--params",
+                "p.json",
+            ],
+            "--params",
+        ),
+        (vec!["roll", "measures", "--ramp-rate", "0"], "--ramp-rate"),
+        (
+            vec!["roll", "measures", "--sp-threshold", "1.5"],
+            "--sp-threshold",
+        ),
+        (
+            vec!["roll", "measures", "--sp-max-dip", "-1"],
+            "--sp-max-dip",
+        ),
+        (
+            vec!["roll", "study", "trucks", "--truck", "plausible"],
+            "--truck",
+        ),
+        (
+            vec!["roll", "study", "sensitivity", "--ramp-rate", "3"],
+            "--ramp-rate",
+        ),
+        (
+            vec!["roll", "study", "sensitivity", "--plot", "s.svg"],
+            "--plot",
+        ),
     ] {
         let out = afsv(&args);
         let err = String::from_utf8_lossy(&out.stderr);
@@ -92,4 +126,68 @@ fn a_piped_study_prints_one_progress_line_per_run() {
         "{err}"
     );
     assert!(lines[0].contains("ETA"), "{err}");
+}
+
+#[test]
+fn the_plausible_truck_ramp_rate_stops_and_rule_are_options() {
+    let m = |args: &[&str]| {
+        let mut all = vec!["roll", "measures", "--smooth", "--json"];
+        all.extend_from_slice(args);
+        json(&afsv(&all))
+    };
+    let plausible = m(&["--truck", "plausible"]);
+    let drt = plausible["drt_g"].as_f64().unwrap();
+    assert!((drt - 0.387).abs() < 0.01, "plausible smooth DRT {drt}");
+    assert_eq!(plausible["truck"], "plausible");
+    // no stops: the soft calibrated truck rolls over earlier, at a lower a_y
+    let free = m(&["--no-bump-stops"]);
+    assert!(free["first_bump_stop_s"].is_null(), "{free}");
+    assert!(free["drt_g"].as_f64().unwrap() < 0.25, "{free}");
+    // half the ramp rate: the run lasts long enough (default duration 2 + 290/2.5 s)
+    let slow = m(&["--ramp-rate", "2.5"]);
+    let t = slow["rollover_s"].as_f64().unwrap();
+    assert!(t > 50.0 && t < 122.0, "rollover at {t} s");
+    // a looser rule never gives a shorter period on the same run
+    let strict = m(&["--sp-threshold", "0.98", "--sp-max-dip", "0.1"]);
+    let loose = m(&["--sp-threshold", "0.9", "--sp-max-dip", "1"]);
+    assert_eq!(loose["sustained_period_rule"]["threshold"], 0.9);
+    let (s, l) = (
+        strict["sustained_period_s"].as_f64().unwrap_or(0.0),
+        loose["sustained_period_s"].as_f64().unwrap(),
+    );
+    assert!(l > s, "loose {l} s, strict {s} s");
+}
+
+#[test]
+fn study_trucks_compares_both_trucks_with_and_without_stops() {
+    let out = afsv(&["roll", "study", "trucks", "--seeds", "1"]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let v = json(&out);
+    let points = v["points"].as_array().unwrap();
+    let groups: Vec<&str> = points
+        .iter()
+        .map(|p| p["group"].as_str().unwrap())
+        .collect();
+    assert_eq!(
+        groups,
+        [
+            "calibrated",
+            "calibrated, no stops",
+            "plausible",
+            "plausible, no stops"
+        ]
+    );
+    let smooth = |i: usize| points[i]["smooth_drt_g"].as_f64().unwrap();
+    assert!(
+        smooth(2) > smooth(0) + 0.05,
+        "{} vs {}",
+        smooth(2),
+        smooth(0)
+    );
+    let peak = |i: usize| points[i]["peak_ay_g"]["mean"].as_f64().unwrap();
+    assert!(peak(1) < peak(0) && peak(0) < peak(2), "{points:?}");
 }

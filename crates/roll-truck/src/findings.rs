@@ -110,6 +110,7 @@ impl StudyResult {
                     finding("sustained_period_ratio_w", dt, "ΔT(w = 2.4) / ΔT(w = 1.6)"),
                 ]
             }
+            Study::Trucks => trucks_findings(p),
             Study::Band => {
                 let (low, dt_low) = change(p, "lower", 0.25, 0.02);
                 let (high, _) = change(p, "upper", 5.0, 10.0);
@@ -133,6 +134,40 @@ impl StudyResult {
             }
         }
     }
+}
+
+fn trucks_findings(p: &[StudyPoint]) -> Vec<Finding> {
+    let by = |group: &str| p.iter().find(|q| q.group == group);
+    let ratio = |f: &dyn Fn(&StudyPoint) -> f64, num: &str, den: &str| match (by(num), by(den)) {
+        (Some(a), Some(b)) => f(a) / f(b),
+        _ => f64::NAN,
+    };
+    vec![
+        finding(
+            "smooth_drt_plausible_over_calibrated",
+            ratio(
+                &|q| q.smooth_drt_g.unwrap_or(f64::NAN),
+                "plausible",
+                "calibrated",
+            ),
+            "smooth DRT of the plausible truck / of the calibrated one",
+        ),
+        finding(
+            "sp_drt_plausible_over_calibrated",
+            ratio(&|q| q.sp_drt_g.mean, "plausible", "calibrated"),
+            "SP-DRT (class E) of the plausible truck / of the calibrated one",
+        ),
+        finding(
+            "sustained_period_plausible_over_calibrated",
+            ratio(&|q| q.sustained_period_s.mean, "plausible", "calibrated"),
+            "ΔT (class E) of the plausible truck / of the calibrated one",
+        ),
+        finding(
+            "peak_ay_calibrated_stops_removed_over_engaged",
+            ratio(&|q| q.peak_ay_g.mean, "calibrated, no stops", "calibrated"),
+            "peak a_y (class E) of the calibrated truck with its stops out of reach / with them",
+        ),
+    ]
 }
 
 fn cg_findings(p: &[StudyPoint]) -> Vec<Finding> {

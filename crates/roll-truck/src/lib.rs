@@ -4,12 +4,17 @@
 //! terrain (SP-DRT), with the parametric studies of section 2.4.
 //!
 //! - [`params`]: Tables 2.1-2.3 and the documented assumptions; [`registry`] names them.
-//! - [`statics`]: the hand calculation of the static loads (note 1.9).
-//! - [`model`]: the 10-DOF tree; [`suspension`]: struts and bump stops; [`tires`]:
-//!   Eqs 2.1-2.7; [`driver`]: ramp steer and PI speed control; [`vehicle`]: the ODE system.
-//! - [`simulate`]: a run to absolute rollover (an `odeint` event); [`measures`]: LTR
-//!   (Eq 2.11), DRT, SP-DRT, SSF; [`calibration`]: the one calibrated roll compliance;
-//!   [`studies`]: section 2.4 over terrain seeds.
+//! - [`statics`]: the hand calculation of the static loads (note 1.9) and of the roll
+//!   stability floor.
+//! - [`model`]: the 10-DOF tree with its roll centres; [`suspension`]: struts and bump
+//!   stops; [`tires`]: Eqs 2.1-2.7; [`driver`]: ramp steer and PI speed control;
+//!   [`vehicle`]: the ODE system.
+//! - [`simulate`](mod@simulate): a run to absolute rollover (an `odeint` event);
+//!   [`measures`]: LTR (Eq 2.11), DRT, SP-DRT, the peaks of three a_y channels, SSF;
+//!   [`calibration`]: the one calibrated roll compliance; [`studies`]: section 2.4 over
+//!   terrain seeds and the calibrated against the plausible truck
+//!   ([`TruckParams::plausible`]); [`sensitivity`]: ΔT against the unstated steering ramp
+//!   and detection rule.
 //!
 //! See `docs/roll-truck.md` for the map from equations to code and every assumption.
 
@@ -21,6 +26,7 @@ pub mod measures;
 pub mod model;
 pub mod params;
 pub mod registry;
+pub mod sensitivity;
 pub mod simulate;
 pub mod statics;
 pub mod studies;
@@ -31,6 +37,6 @@ pub mod vehicle;
 pub use driver::SteerDirection;
 pub use error::TruckError;
 pub use findings::{r_squared, Finding};
-pub use params::TruckParams;
+pub use params::{BuiltinTruck, TruckParams};
 pub use simulate::{simulate, RunOptions, RunRecord};
 pub use vehicle::{ModelOptions, TruckVehicle};

@@ -43,8 +43,20 @@ pub struct RollMeasures {
     pub ay_at_a4_g: Option<f64>,
     /// |a_y| at absolute rollover B′ (g).
     pub ay_at_rollover_g: Option<f64>,
-    /// Peak |a_y| over the run (g).
+    /// Peak |a_y| over the run (g): the whole-vehicle cg channel of the sum of the tire
+    /// forces (the project's a_y).
     pub peak_ay_g: f64,
+    /// Peak |a_y| of the sprung-mass cg, horizontal in the heading frame (g); `None`
+    /// unless the run recorded the channel (`RunOptions::acceleration_channels`).
+    pub peak_sprung_ay_g: Option<f64>,
+    /// Peak |reading| of a lateral accelerometer fixed to the sprung mass at its cg (g):
+    /// includes `g sin(phi)` of the sprung roll `phi`; `None` as above.
+    pub peak_sensor_ay_g: Option<f64>,
+    /// Time of the first bump-stop contact of any strut (s).
+    pub first_bump_stop_s: Option<f64>,
+    /// Peak |a_y| (whole-vehicle channel) before the first bump-stop contact (g); the whole
+    /// run's peak if no strut reaches its stop.
+    pub peak_ay_before_stop_g: f64,
     /// Time of absolute rollover (s).
     pub rollover_s: Option<f64>,
     /// SSF of the whole truck: mean half track of the axles (weighted by static axle load,
@@ -65,6 +77,11 @@ pub fn ssf(p: &TruckParams) -> f64 {
     let unsprung = p.front_unsprung_mass_kg + p.rear_unsprung_mass_kg;
     let h = (p.sprung_mass_kg * p.cg_height_m + unsprung * wheel_z) / p.total_mass_kg();
     half_track / h
+}
+
+/// Largest |x| of a recorded channel, `None` if it was not recorded (empty).
+fn recorded_peak(x: &[f64]) -> Option<f64> {
+    (!x.is_empty()).then(|| x.iter().fold(0.0_f64, |m, a| m.max(a.abs())))
 }
 
 /// Interpolated |a_y| at time `t` of the record.
@@ -89,7 +106,9 @@ pub fn roll_measures(
     let g = |x: f64| x / G_REPORT;
     let first = smooth_road_drt(&rec.t_s, &rec.ltr, &ay, LIFT_OFF_LTR).ok();
     let period = sustained_period(&rec.t_s, &rec.ltr, &ay, sp).ok();
-    let peak = ay.iter().fold(0.0_f64, |m, a| m.max(*a));
+    let peak_of = |x: &[f64]| x.iter().fold(0.0_f64, |m, a| m.max(a.abs()));
+    let peak = peak_of(&ay);
+    let stop = rec.on_bump_stop.iter().position(|b| *b);
     Ok(RollMeasures {
         drt_g: first.map(|a| g(a.lateral_accel_m_s2)),
         drt_time_s: first.map(|a| a.time_s),
@@ -104,6 +123,10 @@ pub fn roll_measures(
         ay_at_a4_g: period.as_ref().and_then(|s| ay_at(rec, s.end_s)).map(g),
         ay_at_rollover_g: rec.rollover_s.and_then(|t| ay_at(rec, t)).map(g),
         peak_ay_g: g(peak),
+        peak_sprung_ay_g: recorded_peak(&rec.sprung_lateral_accel_m_s2).map(g),
+        peak_sensor_ay_g: recorded_peak(&rec.sprung_sensor_lateral_accel_m_s2).map(g),
+        first_bump_stop_s: stop.map(|i| rec.t_s[i]),
+        peak_ay_before_stop_g: g(peak_of(&ay[..stop.unwrap_or(ay.len())])),
         rollover_s: rec.rollover_s,
         ssf: ssf(p),
     })

@@ -5,7 +5,15 @@
 //! | 0 sprung mass (origin at its cg) | floating | X, Y, Z, roll, pitch, yaw |
 //! | 1, 2 front-left / front-right wheel carrier | prismatic along the sprung z axis | travel |
 //! | 3 rear bounce (massless) | prismatic along the sprung z axis | axle bounce |
-//! | 4 rear axle (dual tires) | revolute about x at the axle centre | axle roll |
+//! | 4 rear axle (dual tires) | revolute about x at the rear roll centre | axle roll |
+//!
+//! Roll centres ([`TruckParams::front_roll_centre_height_m`], `rear_roll_centre_height_m`,
+//! heights above ground at static equilibrium): each front tire hangs from its carrier at
+//! the carrier-fixed point at the front roll-centre height, a vertical column of the static
+//! length from there to the wheel-centre height ([`TireMount::column_m`]); the rear axle's roll
+//! joint sits at the rear roll-centre height above the axle's centre line. At the nominal
+//! heights (the static wheel centres) the columns have zero length and the joint is at the
+//! axle centre.
 //!
 //! Joint coordinates are zero at the static equilibrium of [`crate::statics`] (sprung cg
 //! at `cg_height_m`, wheel centres at the free radius minus the static tire deflection),
@@ -49,13 +57,21 @@ pub const TIRE_NAMES: [&str; 6] = [
     "rear_right_outer",
 ];
 
-/// Where a tire sits: its body, its wheel centre in body coordinates, side and axle.
+/// Where a tire sits: its body, the point it hangs from in body coordinates, the column
+/// down to its wheel centre, side and axle.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct TireMount {
     /// Body index carrying the wheel.
     pub body: usize,
-    /// Wheel centre in body coordinates (m).
+    /// Point the tire hangs from, in body coordinates (m): the wheel centre, or for a front
+    /// tire the carrier-fixed point at the front roll-centre height.
     pub point: Vector3<f64>,
+    /// Height (world z) of the effective wheel centre above `point` (m): the wheel-centre
+    /// height minus the roll-centre height for a front tire, else 0. The tire's deflection
+    /// and contact are those of a wheel centred `column_m` above `point` (below it for a
+    /// roll centre above the wheel centre), its slip velocity is the velocity of `point`, its forces act on `body` along lines
+    /// through the contact below that centre.
+    pub column_m: f64,
     /// Left side (runs on the left track).
     pub left: bool,
     /// Front axle (steered).
@@ -68,6 +84,10 @@ pub fn build_tree(p: &TruckParams) -> Result<(Model, [TireMount; 6]), TruckError
     let r = p.tire_free_radius_m;
     let z_front = r - s.front_tire_deflection_m - p.cg_height_m;
     let z_rear = r - s.rear_tire_deflection_m - p.cg_height_m;
+    // rear roll joint and front tire columns at the roll-centre heights (module docs)
+    let z_joint = p.rear_roll_centre_height_m - p.cg_height_m;
+    let axle_below_joint = z_rear - z_joint;
+    let front_column = (r - s.front_tire_deflection_m) - p.front_roll_centre_height_m;
     let (a, b) = (p.cg_to_front_axle_m, p.cg_to_rear_axle_m());
     let mut builder = ModelBuilder::new(Vector3::new(0.0, 0.0, -p.gravity_m_s2));
     let place = |x: f64, y: f64, z: f64| {
@@ -106,7 +126,7 @@ pub fn build_tree(p: &TruckParams) -> Result<(Model, [TireMount; 6]), TruckError
         name: "rear_bounce".into(),
         parent: Some(body::SPRUNG),
         joint: slider,
-        placement: place(-b, 0.0, z_rear),
+        placement: place(-b, 0.0, z_joint),
         mass: 0.0,
         com: Vector3::zeros(),
         inertia: Matrix3::zeros(),
@@ -119,7 +139,7 @@ pub fn build_tree(p: &TruckParams) -> Result<(Model, [TireMount; 6]), TruckError
         joint: Joint::Revolute { axis: Vector3::x() },
         placement: Isometry3::identity(),
         mass: m_r,
-        com: Vector3::zeros(),
+        com: Vector3::new(0.0, 0.0, axle_below_joint),
         inertia: diag(
             p.rear_axle_roll_inertia_kg_m2,
             0.5 * m_r * r * r,
@@ -133,7 +153,12 @@ pub fn build_tree(p: &TruckParams) -> Result<(Model, [TireMount; 6]), TruckError
     );
     let mount = |body: usize, y: f64, left: bool, front: bool| TireMount {
         body,
-        point: Vector3::new(0.0, y, 0.0),
+        point: if front {
+            Vector3::new(0.0, y, -front_column)
+        } else {
+            Vector3::new(0.0, y, axle_below_joint)
+        },
+        column_m: if front { front_column } else { 0.0 },
         left,
         front,
     };

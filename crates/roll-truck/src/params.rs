@@ -8,6 +8,10 @@
 //! - the struts' equivalent lateral spacing is `strut_spacing_ratio` times the axle's
 //!   track: the one roll-compliance parameter, calibrated once to the smooth-road DRT of
 //!   0.279 g ([`crate::calibration`]);
+//! - roll centres (not in chapter 2): the front tires hang from their carriers at
+//!   `front_roll_centre_height_m`, the rear axle rolls about a joint at
+//!   `rear_roll_centre_height_m`; both default to the static wheel-centre heights
+//!   ([`TruckParams::wheel_centre_heights_m`]);
 //! - bump stops: clearance springs `bump_stop_ratio` = 10 times the strut rate, travel
 //!   symmetric about the static position (note 1.10);
 //! - cornering stiffness through the origin, `k_ty = 4.0 kN/deg * F_z / 140 kN` (Table 2.3
@@ -22,6 +26,49 @@ use serde::{Deserialize, Serialize};
 
 use crate::calibration::CALIBRATED_STRUT_SPACING_RATIO;
 use crate::error::{non_negative, positive, rejected, TruckError};
+
+/// Strut spacing ratio of the plausible truck ([`TruckParams::plausible`]).
+pub const PLAUSIBLE_STRUT_SPACING_RATIO: f64 = 0.5;
+
+/// The built-in trucks: the calibrated one of [`TruckParams::nominal`] and the plausible
+/// one of [`TruckParams::plausible`].
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum BuiltinTruck {
+    /// Strut spacing ratio calibrated to the smooth-road DRT (0.254).
+    Calibrated,
+    /// Struts at half the track (0.5).
+    Plausible,
+}
+
+impl BuiltinTruck {
+    /// Its parameters.
+    pub fn params(self) -> TruckParams {
+        match self {
+            BuiltinTruck::Calibrated => TruckParams::nominal(),
+            BuiltinTruck::Plausible => TruckParams::plausible(),
+        }
+    }
+
+    /// Its name as parsed.
+    pub fn name(self) -> &'static str {
+        match self {
+            BuiltinTruck::Calibrated => "calibrated",
+            BuiltinTruck::Plausible => "plausible",
+        }
+    }
+}
+
+impl std::str::FromStr for BuiltinTruck {
+    type Err = String;
+    fn from_str(s: &str) -> Result<Self, String> {
+        match s {
+            "calibrated" => Ok(Self::Calibrated),
+            "plausible" => Ok(Self::Plausible),
+            _ => Err(format!("unknown truck `{s}` (calibrated, plausible)")),
+        }
+    }
+}
 
 /// Every parameter of the truck model (module docs for the assumed ones).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
@@ -70,6 +117,18 @@ pub struct TruckParams {
     /// Equivalent lateral strut spacing over the axle's track (-), in (0, 1]: the
     /// calibrated roll-compliance parameter.
     pub strut_spacing_ratio: f64,
+    /// Front roll-centre height above level ground at static equilibrium (m): the height
+    /// of the carrier-fixed point from which each front tire hangs as a vertical column
+    /// (its normal and lateral forces act on the carrier along the line through that
+    /// point, its slip velocity is that point's). The sprung mass and the carriers tip
+    /// over the front tires about this height (docs/roll-truck.md). Nominal: the static
+    /// front wheel-centre height (0.977 m, the tire contact under the wheel centre);
+    /// 0 puts the contact patch fixed to the tilting carrier (roll centre at the ground).
+    pub front_roll_centre_height_m: f64,
+    /// Rear roll-centre height above level ground at static equilibrium (m): the height of
+    /// the revolute joint about which the rear axle rolls relative to the sprung mass.
+    /// Nominal: the static rear wheel-centre height (0.985 m, the axle centre).
+    pub rear_roll_centre_height_m: f64,
     /// Tire free radius (m), Table 2.3.
     pub tire_free_radius_m: f64,
     /// Tire vertical rate (N/m), Table 2.3 (1.8 kN/mm).
@@ -109,7 +168,7 @@ impl TruckParams {
     pub fn nominal() -> Self {
         let total_mass = 73_840.0 + 3_900.0 + 7_800.0;
         let weight = total_mass * 9.81;
-        Self {
+        let mut p = Self {
             wheelbase_m: 4.02,
             front_track_m: 3.3,
             rear_track_m: 2.8,
@@ -131,6 +190,8 @@ impl TruckParams {
             rear_travel_m: 0.22,
             bump_stop_ratio: 10.0,
             strut_spacing_ratio: CALIBRATED_STRUT_SPACING_RATIO,
+            front_roll_centre_height_m: 0.0,
+            rear_roll_centre_height_m: 0.0,
             tire_free_radius_m: 1.06,
             tire_vertical_stiffness_n_per_m: 1.8e6,
             tire_vertical_damping_n_s_per_m: 6.0e3,
@@ -144,7 +205,59 @@ impl TruckParams {
             steering_wheel_rate_deg_s: 5.0,
             ramp_start_s: 2.0,
             gravity_m_s2: 9.81,
+        };
+        (p.front_roll_centre_height_m, p.rear_roll_centre_height_m) = p.wheel_centre_heights_m();
+        p
+    }
+
+    /// Static wheel-centre heights `(front, rear)` above level ground (m): the free radius
+    /// minus the static tire deflection of [`crate::statics::Statics`] (0.977, 0.985 m for
+    /// the nominal truck). The nominal roll-centre heights.
+    pub fn wheel_centre_heights_m(&self) -> (f64, f64) {
+        let s = crate::statics::Statics::of(self);
+        (
+            self.tire_free_radius_m - s.front_tire_deflection_m,
+            self.tire_free_radius_m - s.rear_tire_deflection_m,
+        )
+    }
+
+    /// The plausible truck beside the calibrated one: the nominal truck with the struts at
+    /// half the track ([`PLAUSIBLE_STRUT_SPACING_RATIO`]: 1.65 m front, 1.40 m rear, as on a
+    /// haul truck whose struts sit inboard of the wheels near the frame rails), everything
+    /// else as [`TruckParams::nominal`]. Its bump stops engage at the roll angles of
+    /// [`TruckParams::bump_stop_roll_angles_deg`] (10.3 deg front, 8.9 deg rear of
+    /// suspension roll). docs/roll-truck.md compares the two.
+    pub fn plausible() -> Self {
+        Self {
+            strut_spacing_ratio: PLAUSIBLE_STRUT_SPACING_RATIO,
+            ..Self::nominal()
         }
+    }
+
+    /// The same truck with its bump stops out of reach: both travels set to 2 m, so a stop
+    /// would engage only beyond 1 m of strut compression from static (about 2.4 rad of
+    /// suspension roll at the calibrated ratio). For the peak-a_y diagnosis.
+    pub fn without_bump_stops(&self) -> Self {
+        Self {
+            front_travel_m: 2.0,
+            rear_travel_m: 2.0,
+            ..*self
+        }
+    }
+
+    /// Suspension roll angles `(front, rear)` (deg, sprung mass relative to the axle line)
+    /// at which the struts reach their bump stops: half the travel over the half strut
+    /// spacing, `atan(travel / (r T))`.
+    pub fn bump_stop_roll_angles_deg(&self) -> (f64, f64) {
+        let angle = |travel: f64, track: f64| {
+            (travel / (self.strut_spacing_ratio * track))
+                .atan()
+                .to_degrees()
+        };
+        (
+            angle(self.front_travel_m, self.front_track_m),
+            angle(self.rear_travel_m, self.rear_track_m),
+        )
     }
 
     /// Mass of one front wheel carrier (kg): half the front unsprung mass.
@@ -191,6 +304,11 @@ impl TruckParams {
             ("speed_kp_n_per_m_s", self.speed_kp_n_per_m_s),
             ("speed_ki_n_per_m", self.speed_ki_n_per_m),
             ("ramp_start_s", self.ramp_start_s),
+            (
+                "front_roll_centre_height_m",
+                self.front_roll_centre_height_m,
+            ),
+            ("rear_roll_centre_height_m", self.rear_roll_centre_height_m),
         ] {
             non_negative(field, value)?;
         }
@@ -277,6 +395,21 @@ impl TruckParams {
                 self.tire_vertical_stiffness_n_per_m,
                 "static tire deflection would exceed half the free radius",
             ));
+        }
+        for (field, value) in [
+            (
+                "front_roll_centre_height_m",
+                self.front_roll_centre_height_m,
+            ),
+            ("rear_roll_centre_height_m", self.rear_roll_centre_height_m),
+        ] {
+            if value >= self.cg_height_m {
+                return Err(rejected(
+                    field,
+                    value,
+                    "the roll centre must lie below the sprung cg (below cg_height_m)",
+                ));
+            }
         }
         if self.cg_height_m <= self.tire_free_radius_m {
             return Err(rejected(

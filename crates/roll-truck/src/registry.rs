@@ -7,7 +7,7 @@ use vehicle_components::{ParamSet, ParamSpec};
 use crate::params::TruckParams;
 
 /// The parameters of [`TruckParams`], in field order.
-pub const TRUCK_PARAMS: [ParamSpec; 34] = [
+pub const TRUCK_PARAMS: [ParamSpec; 36] = [
     ParamSpec::new("wheelbase_m", "m", 1.0, 10.0, 4.02),
     ParamSpec::new("front_track_m", "m", 1.0, 6.0, 3.3),
     ParamSpec::new("rear_track_m", "m", 1.0, 6.0, 2.8),
@@ -35,6 +35,8 @@ pub const TRUCK_PARAMS: [ParamSpec; 34] = [
     ParamSpec::new("rear_travel_m", "m", 0.01, 2.0, 0.22),
     ParamSpec::new("bump_stop_ratio", "-", 0.1, 1000.0, 10.0),
     ParamSpec::new("strut_spacing_ratio", "-", 0.01, 1.0, 0.254),
+    ParamSpec::new("front_roll_centre_height_m", "m", 0.0, 3.0, 0.977),
+    ParamSpec::new("rear_roll_centre_height_m", "m", 0.0, 3.0, 0.985),
     ParamSpec::new("tire_free_radius_m", "m", 0.1, 3.0, 1.06),
     ParamSpec::new(
         "tire_vertical_stiffness_n_per_m",
@@ -64,7 +66,7 @@ pub const TRUCK_PARAMS: [ParamSpec; 34] = [
 
 impl TruckParams {
     /// Mutable references to the fields in [`TRUCK_PARAMS`] order.
-    fn slots(&mut self) -> [&mut f64; 34] {
+    fn slots(&mut self) -> [&mut f64; 36] {
         [
             &mut self.wheelbase_m,
             &mut self.front_track_m,
@@ -87,6 +89,8 @@ impl TruckParams {
             &mut self.rear_travel_m,
             &mut self.bump_stop_ratio,
             &mut self.strut_spacing_ratio,
+            &mut self.front_roll_centre_height_m,
+            &mut self.rear_roll_centre_height_m,
             &mut self.tire_free_radius_m,
             &mut self.tire_vertical_stiffness_n_per_m,
             &mut self.tire_vertical_damping_n_s_per_m,

@@ -23,6 +23,10 @@ pub struct RunOptions {
     pub output_dt_s: f64,
     /// Relative tolerance of the Dormand-Prince integrator.
     pub rtol: f64,
+    /// Record the sprung-cg channels ([`RunRecord::sprung_lateral_accel_m_s2`] and the
+    /// sensor channel): one forward-dynamics solve per output sample, about a quarter
+    /// more run time, so off by default and on for single runs and the truck comparison.
+    pub acceleration_channels: bool,
     /// Largest step (s).
     pub max_step_s: f64,
 }
@@ -33,6 +37,7 @@ impl Default for RunOptions {
             t_end_s: 60.0,
             output_dt_s: 0.01,
             rtol: 1e-4,
+            acceleration_channels: false,
             max_step_s: 0.02,
         }
     }
@@ -71,6 +76,16 @@ pub struct RunRecord {
     pub lateral_accel_m_s2: Vec<f64>,
     /// LTR of the whole truck (Eq 2.11).
     pub ltr: Vec<f64>,
+    /// Horizontal lateral acceleration of the sprung-mass cg in the heading frame (m/s²):
+    /// the kinematic acceleration of that point (forward dynamics at the sample), which
+    /// includes the sprung mass's roll motion. Empty unless
+    /// [`RunOptions::acceleration_channels`].
+    pub sprung_lateral_accel_m_s2: Vec<f64>,
+    /// What a lateral accelerometer fixed to the sprung mass at its cg reads (m/s²): the
+    /// specific force `a - g` along the sprung body's y axis. Rolled by `phi`, it reads
+    /// about `a_y cos(phi) + g sin(phi)`. Empty unless
+    /// [`RunOptions::acceleration_channels`].
+    pub sprung_sensor_lateral_accel_m_s2: Vec<f64>,
     /// Roll angle of the sprung mass (rad): right-handed about the forward axis, positive
     /// with the left side up.
     pub roll_rad: Vec<f64>,
@@ -87,7 +102,7 @@ pub struct RunRecord {
 }
 
 /// One output sample from the state `y` at `t`.
-fn push_sample(vehicle: &TruckVehicle, t: f64, y: &[f64], rec: &mut RunRecord) {
+fn push_sample(vehicle: &TruckVehicle, t: f64, y: &[f64], channels: bool, rec: &mut RunRecord) {
     let mut ws = vehicle.ws.borrow_mut();
     let mut tau = [0.0; NV];
     // The integrator only hands out states at which the right-hand side succeeded (a
@@ -95,6 +110,11 @@ fn push_sample(vehicle: &TruckVehicle, t: f64, y: &[f64], rec: &mut RunRecord) {
     let Ok(tires) = vehicle.apply_forces(t, y, &mut ws, &mut tau) else {
         return;
     };
+    if channels {
+        let (sprung, sensor) = sprung_accelerations(vehicle, &mut ws, &tau, tires.heading);
+        rec.sprung_lateral_accel_m_s2.push(sprung);
+        rec.sprung_sensor_lateral_accel_m_s2.push(sensor);
+    }
     let fz = &tires.normal_force;
     let left = [fz[0], fz[2] + fz[3]];
     let right = [fz[1], fz[4] + fz[5]];
@@ -116,6 +136,32 @@ fn push_sample(vehicle: &TruckVehicle, t: f64, y: &[f64], rec: &mut RunRecord) {
     for (ch, f) in rec.normal_force_n.iter_mut().zip(fz) {
         ch.push(*f);
     }
+}
+
+/// The sprung cg's horizontal lateral acceleration in the heading frame and the specific
+/// force along the sprung y axis (m/s²), from the forward dynamics at the kinematics and
+/// external forces in `ws` (NaN if the dynamics fail).
+fn sprung_accelerations(
+    vehicle: &TruckVehicle,
+    ws: &mut multibody::Workspace,
+    tau: &[f64; NV],
+    heading: f64,
+) -> (f64, f64) {
+    let model = &vehicle.model;
+    let mut vdot = [0.0; NV];
+    match multibody::forward_dynamics(model, ws, tau) {
+        Ok(a) => vdot.copy_from_slice(a.as_slice()),
+        Err(_) => return (f64::NAN, f64::NAN),
+    }
+    if multibody::update_accelerations(model, ws, &vdot).is_err() {
+        return (f64::NAN, f64::NAN);
+    }
+    let sprung = crate::model::body::SPRUNG;
+    let a = ws.point_acceleration(sprung, &nalgebra::Vector3::zeros());
+    let lat = nalgebra::Vector3::new(-heading.sin(), heading.cos(), 0.0);
+    let specific = a - model.gravity();
+    let body_y = ws.body_rotation(sprung).column(1).into_owned();
+    (a.dot(&lat), specific.dot(&body_y))
 }
 
 /// Typical magnitudes of the states (for the absolute tolerances).
@@ -155,7 +201,7 @@ pub fn simulate(vehicle: &TruckVehicle, options: &RunOptions) -> Result<RunRecor
     let mut ws = odeint::Workspace::with_events(state::DIM, 1);
     let mut rec = RunRecord::default();
     integrator.run(vehicle, &problem, &mut ws, |s| {
-        push_sample(vehicle, s.t, s.y, &mut rec);
+        push_sample(vehicle, s.t, s.y, options.acceleration_channels, &mut rec);
         if let SampleKind::Event(_) = s.kind {
             rec.rollover_s = Some(s.t);
         }

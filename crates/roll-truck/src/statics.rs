@@ -49,6 +49,73 @@ impl Statics {
     }
 }
 
+/// Quasi-static roll stiffness (N m/rad) of the upright truck `p` on level ground, by hand:
+/// the second derivative of its potential energy in the sprung roll angle `phi`, the
+/// axle-line rolls `theta_f`, `theta_r` minimised out, lateral translation free (no
+/// lateral tire stiffness at rest), small angles:
+///
+/// ```text
+/// V = K_sf (theta_f - phi)^2 / 2 + K_tf theta_f^2 / 2 + K_sr (theta_r - phi)^2 / 2
+///   + (K_tr + S_r (h_r - c_r)) theta_r^2 / 2
+///   - (S_f (H - h_f) + 2 W_f (h_f - c_f) + S_r (H - c_r)) phi^2 / 2
+/// K = K_sf K_tf / (K_sf + K_tf) + K_sr K'_tr / (K_sr + K'_tr) - D
+/// ```
+///
+/// with strut roll rates `K_s = k (r T)^2 / 2` (Table 2.2 per station, `r` the strut
+/// spacing ratio), tire roll rates `K_t = k_t sum y_i^2` (front at `±T_f/2`, rear duals at
+/// `±(T_r ± d)/2`), sprung weights on the axles `S_f`, `S_r`, static front tire load
+/// `W_f`, sprung cg height `H`, wheel-centre heights `h`, roll-centre heights `c`
+/// ([`TruckParams::front_roll_centre_height_m`], `rear_roll_centre_height_m`). The front
+/// term: the sprung mass and carriers tip over tires that hang from the carriers at `c_f`,
+/// so the whole front weight `2 W_f` rises with `(h_f - c_f)` besides the sprung weight's
+/// `(H - h_f)`. The truck is statically roll-stable when `K > 0`.
+pub fn roll_stiffness_n_m_per_rad(p: &TruckParams) -> f64 {
+    let s = Statics::of(p);
+    let (h_f, h_r) = p.wheel_centre_heights_m();
+    let (c_f, c_r) = (p.front_roll_centre_height_m, p.rear_roll_centre_height_m);
+    let h = p.cg_height_m;
+    let r = p.strut_spacing_ratio;
+    let k_t = p.tire_vertical_stiffness_n_per_m;
+    let k_sf = p.front_spring_n_per_m * (r * p.front_track_m).powi(2) / 2.0;
+    let k_sr = p.rear_spring_n_per_m * (r * p.rear_track_m).powi(2) / 2.0;
+    let k_tf = k_t * p.front_track_m.powi(2) / 2.0;
+    let (outer, inner) = (
+        0.5 * (p.rear_track_m + p.dual_spacing_m),
+        0.5 * (p.rear_track_m - p.dual_spacing_m),
+    );
+    let s_f = 2.0 * s.front_strut_force_n;
+    let s_r = 2.0 * s.rear_strut_force_n;
+    let k_tr = 2.0 * k_t * (outer * outer + inner * inner) + s_r * (h_r - c_r);
+    let series = |a: f64, b: f64| a * b / (a + b);
+    let destabilising = s_f * (h - h_f) + 2.0 * s.front_tire_load_n * (h_f - c_f) + s_r * (h - c_r);
+    series(k_sf, k_tf) + series(k_sr, k_tr) - destabilising
+}
+
+/// The smallest strut spacing ratio in `(0, 1]` at which [`roll_stiffness_n_m_per_rad`]
+/// is positive (bisection to 1e-9; the stiffness rises with the ratio), or `None` if the
+/// truck is unstable even at 1. The hand value of the stability floor that
+/// [`crate::calibration::calibrate_strut_spacing`] finds by simulation.
+pub fn hand_stability_floor(p: &TruckParams) -> Option<f64> {
+    let at = |r: f64| {
+        let mut q = *p;
+        q.strut_spacing_ratio = r;
+        roll_stiffness_n_m_per_rad(&q)
+    };
+    if at(1.0) <= 0.0 {
+        return None;
+    }
+    let (mut lo, mut hi) = (0.0, 1.0);
+    while hi - lo > 1e-9 {
+        let mid = 0.5 * (lo + hi);
+        if at(mid) > 0.0 {
+            hi = mid;
+        } else {
+            lo = mid;
+        }
+    }
+    Some(hi)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -62,5 +129,23 @@ mod tests {
         // per wheel station: 119 mm front, 45 mm rear static strut deflection
         assert!((s.front_strut_deflection_m - 0.119).abs() < 1e-3);
         assert!((s.rear_strut_deflection_m - 0.0445).abs() < 1e-3);
+    }
+
+    #[test]
+    fn hand_floor_rises_when_the_front_tires_hang_lower() {
+        let p = TruckParams::nominal();
+        let wheel_centre = hand_stability_floor(&p).unwrap();
+        let mut ground = p;
+        ground.front_roll_centre_height_m = 0.0;
+        let ground = hand_stability_floor(&ground).unwrap();
+        // numbers of docs/roll-truck.md
+        assert!((wheel_centre - 0.2531).abs() < 2e-4, "{wheel_centre}");
+        assert!((ground - 0.2776).abs() < 2e-4, "{ground}");
+        // a stiff suspension is stable, a very soft one not
+        let mut q = p;
+        q.strut_spacing_ratio = 0.5;
+        assert!(roll_stiffness_n_m_per_rad(&q) > 0.0);
+        q.strut_spacing_ratio = 0.1;
+        assert!(roll_stiffness_n_m_per_rad(&q) < 0.0);
     }
 }

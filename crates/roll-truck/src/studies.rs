@@ -63,11 +63,39 @@ pub struct Run {
 }
 
 /// A ramp-steer run of `p` on level ground (`spec = None`) or on the terrain of `spec`
-/// and `seed`.
+/// and `seed`, [`terrain_length_m`] long.
 pub fn run_case(
     p: &TruckParams,
     spec: Option<&TwoTrackSpec>,
     seed: u64,
+    direction: SteerDirection,
+    options: &RunOptions,
+    sp: &SustainedPeriodParams,
+) -> Result<Run, TruckError> {
+    run_case_on(
+        p,
+        spec,
+        seed,
+        terrain_length_m(p, options),
+        direction,
+        options,
+        sp,
+    )
+}
+
+/// Length of the rough terrain of [`run_case`] (m): [`TERRAIN_LENGTH_M`], or longer for a
+/// run longer than the default 60 s (the path at the target speed plus 50 m).
+pub fn terrain_length_m(p: &TruckParams, options: &RunOptions) -> f64 {
+    (p.target_speed_m_s * options.t_end_s * 1.1 + 60.0).max(TERRAIN_LENGTH_M)
+}
+
+/// [`run_case`] on a synthesized terrain `terrain_length_m` long (the synthesis depends on
+/// the length, so equal lengths give equal terrains for a seed).
+pub fn run_case_on(
+    p: &TruckParams,
+    spec: Option<&TwoTrackSpec>,
+    seed: u64,
+    terrain_length_m: f64,
     direction: SteerDirection,
     options: &RunOptions,
     sp: &SustainedPeriodParams,
@@ -88,7 +116,7 @@ pub fn run_case(
             simulate(&v, options)?
         }
         Some(spec) => {
-            let terrain = rough_terrain(p, spec, TERRAIN_LENGTH_M, seed)?;
+            let terrain = rough_terrain(p, spec, terrain_length_m, seed)?;
             simulate(&truck_on(p, &terrain, direction, path_length_m)?, options)?
         }
     };
@@ -113,6 +141,10 @@ pub enum Study {
     /// Band limits: upper 1, 3, 5, 10 and lower 0.02, 0.05, 0.15, 0.25 cycles/m
     /// (Fig 2.14, L688, L700).
     Band,
+    /// The calibrated and the plausible truck ([`TruckParams::plausible`]), each with its
+    /// bump stops and with them out of reach ([`TruckParams::without_bump_stops`]), on the
+    /// smooth road and the nominal class E terrain (issue 28).
+    Trucks,
 }
 
 impl std::str::FromStr for Study {
@@ -123,8 +155,9 @@ impl std::str::FromStr for Study {
             "roughness" => Ok(Self::Roughness),
             "waviness" => Ok(Self::Waviness),
             "band" => Ok(Self::Band),
+            "trucks" => Ok(Self::Trucks),
             _ => Err(format!(
-                "unknown study `{s}` (cg, roughness, waviness, band)"
+                "unknown study `{s}` (cg, roughness, waviness, band, trucks)"
             )),
         }
     }
@@ -166,11 +199,13 @@ impl Study {
             Study::Roughness => "roughness coefficient alpha_r (m^3)",
             Study::Waviness => "waviness w (-)",
             Study::Band => "band limit (cycles/m)",
+            Study::Trucks => "truck (0 calibrated, 1 without stops, 2 plausible, 3 without stops)",
         }
     }
 
     /// The variants, one parameter changed at a time from the nominal truck and terrain
-    /// (class E, w = 2, 0.02-5 cycles/m, m_c = 0.3; L680-L682).
+    /// (class E, w = 2, 0.02-5 cycles/m, m_c = 0.3; L680-L682). [`Study::Trucks`] compares
+    /// the built-in trucks and ignores `base`.
     pub fn variants(self, base: &TruckParams) -> Result<Vec<Variant>, TruckError> {
         let e = terrain_psd::IsoClass::E.alpha_r();
         let nominal = |x: f64, group: &str, spec: TwoTrackSpec| Variant {
@@ -224,6 +259,29 @@ impl Study {
                 for lo in [0.02, 0.05, 0.15, 0.25] {
                     let spec = spec_with(e, 2.0, (lo, 5.0), 0.3)?;
                     out.push(nominal(lo, "lower limit (x-5)", spec));
+                }
+            }
+            Study::Trucks => {
+                let trucks = [
+                    ("calibrated", TruckParams::nominal()),
+                    (
+                        "calibrated, no stops",
+                        TruckParams::nominal().without_bump_stops(),
+                    ),
+                    ("plausible", TruckParams::plausible()),
+                    (
+                        "plausible, no stops",
+                        TruckParams::plausible().without_bump_stops(),
+                    ),
+                ];
+                for (i, (group, params)) in trucks.into_iter().enumerate() {
+                    out.push(Variant {
+                        group: group.into(),
+                        x: i as f64,
+                        params,
+                        spec: spec_with(e, 2.0, (0.02, 5.0), 0.3)?,
+                        with_smooth: true,
+                    });
                 }
             }
         }
@@ -294,8 +352,16 @@ pub struct StudyPoint {
     pub ay_at_a4_g: Stat,
     /// |a_y| at absolute rollover B′ (g).
     pub ay_at_rollover_g: Stat,
-    /// Peak |a_y| (g).
+    /// Peak |a_y| (g), whole-vehicle channel.
     pub peak_ay_g: Stat,
+    /// Peak |a_y| of the sprung cg, horizontal (g).
+    pub peak_sprung_ay_g: Stat,
+    /// Peak |reading| of a lateral accelerometer on the sprung cg (g).
+    pub peak_sensor_ay_g: Stat,
+    /// Peak |a_y| before the first bump-stop contact (g).
+    pub peak_ay_before_stop_g: Stat,
+    /// Smooth-road peak |a_y| (g), whole-vehicle channel.
+    pub smooth_peak_ay_g: Option<f64>,
     /// Time of absolute rollover (s).
     pub rollover_s: Stat,
     /// Seeds whose run failed or gave no sustained period.
@@ -421,6 +487,10 @@ fn point(v: &Variant, i: usize, results: &[JobResult]) -> Result<StudyPoint, Tru
         ay_at_a4_g: stat(&|m| m.ay_at_a4_g),
         ay_at_rollover_g: stat(&|m| m.ay_at_rollover_g),
         peak_ay_g: stat(&|m| Some(m.peak_ay_g)),
+        peak_sprung_ay_g: stat(&|m| m.peak_sprung_ay_g),
+        peak_sensor_ay_g: stat(&|m| m.peak_sensor_ay_g),
+        peak_ay_before_stop_g: stat(&|m| Some(m.peak_ay_before_stop_g)),
+        smooth_peak_ay_g: smooth.as_ref().map(|m| m.peak_ay_g),
         rollover_s: stat(&|m| m.rollover_s),
         seeds_without_period: rough.len() - sp_drt_g.n,
         sp_drt_g,

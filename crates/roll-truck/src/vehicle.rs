@@ -259,7 +259,10 @@ impl TruckVehicle {
         let mut slopes = [0.0; 6];
         let mut rear_load = 0.0;
         for (i, m) in self.mounts.iter().enumerate() {
-            let c = ws.point_position(m.body, &m.point);
+            // the effective wheel centre: the column above the hanging point (zero length
+            // at the nominal roll centres)
+            let mut c = ws.point_position(m.body, &m.point);
+            c.z += m.column_m;
             let vc = ws.point_velocity(m.body, &m.point);
             let s = y[state::PATH] + (c - origin).dot(&h);
             let contact = self.tracks[track_index(m)].contact(s, c.z);

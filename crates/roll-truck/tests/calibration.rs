@@ -6,6 +6,7 @@ use roll_truck::calibration::{
     calibrate_strut_spacing, is_roll_stable, CALIBRATED_STRUT_SPACING_RATIO, TARGET_SMOOTH_DRT_G,
 };
 use roll_truck::measures::smooth_drt_g;
+use roll_truck::statics::hand_stability_floor;
 use roll_truck::TruckParams;
 
 #[test]
@@ -33,4 +34,43 @@ fn calibrated_truck_is_stable_and_within_ten_percent_of_the_smooth_drt() {
     soft.strut_spacing_ratio = 0.242;
     assert!(!is_roll_stable(&soft).unwrap());
     assert!((smooth_drt_g(&soft).unwrap() - TARGET_SMOOTH_DRT_G).abs() < 0.003);
+}
+
+/// The stability floor of the simulated truck against the hand calculation of
+/// `statics::roll_stiffness_n_m_per_rad`, for both readings of the front roll centre: the
+/// tires hanging from the carriers at the wheel centre (the nominal truck) and at the
+/// ground (the contact patch fixed to the tilting carrier). Four 20 s straight runs.
+#[test]
+fn stability_floor_matches_the_hand_calculation_for_both_roll_centre_readings() {
+    let nominal = TruckParams::nominal();
+    let mut ground = nominal;
+    ground.front_roll_centre_height_m = 0.0;
+    for (reading, p, expected) in [
+        ("wheel centre", nominal, 0.2531),
+        ("ground", ground, 0.2776),
+    ] {
+        let floor = hand_stability_floor(&p).unwrap();
+        assert!(
+            (floor - expected).abs() < 5e-4,
+            "{reading}: hand floor {floor}"
+        );
+        let with = |r: f64| {
+            let mut q = p;
+            q.strut_spacing_ratio = r;
+            is_roll_stable(&q).unwrap()
+        };
+        assert!(
+            with(floor + 0.001),
+            "{reading}: unstable above the hand floor {floor}"
+        );
+        assert!(
+            !with(floor - 0.001),
+            "{reading}: stable below the hand floor {floor}"
+        );
+    }
+    // the calibrated constant is the wheel-centre floor rounded up
+    let floor = hand_stability_floor(&nominal).unwrap();
+    assert!(
+        CALIBRATED_STRUT_SPACING_RATIO > floor && CALIBRATED_STRUT_SPACING_RATIO - floor < 1e-3
+    );
 }

@@ -1,6 +1,8 @@
 //! Energy conservation of the whole truck with dampers and tire damping off, no drive
 //! and no lateral tire force (relaxation length so long that the lag states stay at zero):
-//! kinetic + gravitational + strut + bump-stop + tire-spring energy is constant.
+//! kinetic + gravitational + strut + bump-stop + tire-spring energy is constant, at the
+//! nominal roll centres and with the front tires hanging from the ground point of their
+//! carriers and the rear roll joint 0.4 m above the axle.
 
 use odeint::{Control, Integrator, Solver};
 use roll_truck::measures::level_ground;
@@ -8,7 +10,15 @@ use roll_truck::{ModelOptions, SteerDirection, TruckParams, TruckVehicle};
 
 #[test]
 fn conservative_truck_keeps_its_energy() {
-    let mut p = TruckParams::nominal();
+    let mut moved = TruckParams::nominal();
+    moved.front_roll_centre_height_m = 0.0;
+    moved.rear_roll_centre_height_m += 0.4;
+    for p in [TruckParams::nominal(), moved] {
+        keeps_its_energy(p);
+    }
+}
+
+fn keeps_its_energy(mut p: TruckParams) {
     p.front_damping_n_s_per_m = 0.0;
     p.rear_damping_n_s_per_m = 0.0;
     p.tire_vertical_damping_n_s_per_m = 0.0;

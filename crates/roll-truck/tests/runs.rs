@@ -115,6 +115,8 @@ fn straight_run_on_level_ground_stays_straight() {
     };
     let rec = simulate(&v, &opts).unwrap();
     assert_eq!(rec.rollover_s, None);
+    // the sprung-cg channels are recorded only on request
+    assert!(rec.sprung_lateral_accel_m_s2.is_empty());
     assert!(rec.ltr.iter().all(|l| l.abs() < 1e-9));
     assert!(rec.lateral_accel_m_s2.iter().all(|a| a.abs() < 1e-9));
     assert!(rec.roll_rad.iter().all(|r| r.abs() < 1e-9));
@@ -140,4 +142,54 @@ fn bad_inputs_are_rejected_with_the_field_named() {
     };
     let e = simulate(&smooth(SteerDirection::Left), &opts).unwrap_err();
     assert!(e.to_string().contains("output_dt_s"), "{e}");
+}
+
+/// The plausible truck on the smooth ramp: its stops engage later and its DRT is higher
+/// than the calibrated truck's; the a_y channels agree with each other before the stops
+/// (sprung cg against whole vehicle; the sprung-fixed sensor reads `a_y cos(phi) + g
+/// sin(phi)`).
+#[test]
+fn plausible_truck_and_the_lateral_acceleration_channels_on_the_smooth_ramp() {
+    let p = TruckParams::plausible();
+    let (front, rear) = p.bump_stop_roll_angles_deg();
+    assert!(
+        (front - 10.3).abs() < 0.05 && (rear - 8.93).abs() < 0.05,
+        "{front} {rear}"
+    );
+    let v = TruckVehicle::new(&p, &level_ground(), 1.0, ModelOptions::default()).unwrap();
+    let opts = RunOptions {
+        acceleration_channels: true,
+        ..RunOptions::default()
+    };
+    let rec = simulate(&v, &opts).unwrap();
+    let m = roll_truck::measures::roll_measures(&p, &rec, &Default::default()).unwrap();
+    let drt = m.drt_g.unwrap();
+    assert!(drt > 0.36 && drt < 0.42, "plausible smooth DRT {drt}");
+    let first_stop = m.first_bump_stop_s.unwrap();
+    assert!(first_stop > 20.0, "first stop at {first_stop} s");
+    assert!(m.peak_ay_before_stop_g <= m.peak_ay_g);
+    let g = p.gravity_m_s2;
+    let mut checked = 0;
+    for i in 0..rec.t_s.len() {
+        let (t, ay) = (rec.t_s[i], rec.lateral_accel_m_s2[i]);
+        if t < 10.0 || t > first_stop {
+            continue;
+        }
+        let (sprung, sensor, phi) = (
+            rec.sprung_lateral_accel_m_s2[i],
+            rec.sprung_sensor_lateral_accel_m_s2[i],
+            rec.roll_rad[i],
+        );
+        assert!(
+            (sprung - ay).abs() < 0.02 * ay.abs() + 0.01,
+            "t {t}: {sprung} vs {ay}"
+        );
+        let expected = sprung * phi.cos() + g * phi.sin();
+        assert!(
+            (sensor - expected).abs() < 0.02,
+            "t {t}: {sensor} vs {expected}"
+        );
+        checked += 1;
+    }
+    assert!(checked > 1000, "{checked} samples");
 }

@@ -9,9 +9,41 @@
 use super::Ctx;
 use crate::tolerance::Echo;
 use perf_measures::roll::SustainedPeriodParams;
+use roll_truck::sensitivity::{run_sensitivity, SensitivityCell};
 use roll_truck::studies::{run_case, run_variants, Study, StudyPoint, StudyResult, Variant};
 use roll_truck::{Finding, RunOptions, SteerDirection, TruckParams};
 use terrain_psd::IsoClass;
+
+/// Why ΔT is not reproducible from the paper's data.
+const UNSTATED: &str = "ΔT depends on the steering ramp rate and on the rule that detects the sustained period (LTR threshold, tolerated dips), neither given in chapter 2, and it scatters with the terrain seed";
+
+/// The ranges of the calibrated truck's class E ΔT (s) and of its class A -> E ratio over
+/// the ramp rates and detection rules of `roll_truck::sensitivity`, on
+/// [`VALIDATION_SEEDS`] seeds, as text (`"a-b s"`, `"× a-× b"`).
+fn sensitivity_ranges() -> Result<(String, String), String> {
+    let seeds: Vec<u64> = (1..=VALIDATION_SEEDS as u64).collect();
+    let cells = run_sensitivity(
+        &[("calibrated".to_string(), TruckParams::nominal())],
+        &seeds,
+        &|_, _| {},
+    )
+    .map_err(|e| e.to_string())?;
+    let range = |f: &dyn Fn(&SensitivityCell) -> f64| {
+        cells
+            .iter()
+            .map(f)
+            .filter(|v| v.is_finite())
+            .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), v| {
+                (lo.min(v), hi.max(v))
+            })
+    };
+    let (dt_lo, dt_hi) = range(&|c| c.class_e_s.mean);
+    let (r_lo, r_hi) = range(&|c| c.ratio_e_over_a);
+    Ok((
+        format!("{dt_lo:.1}-{dt_hi:.1} s"),
+        format!("× {r_lo:.2}-× {r_hi:.2}"),
+    ))
+}
 
 /// Terrain seeds per rough-terrain point (few, so that the validation stays fast).
 pub(super) const VALIDATION_SEEDS: usize = 3;
@@ -59,8 +91,9 @@ fn seeds_note(p: &StudyPoint, what: &str) -> String {
 /// The chapter-2 rows (module docs).
 pub(super) fn check_chapter2(ctx: &mut Ctx) -> Result<(), String> {
     smooth_rows(ctx)?;
+    let ranges = sensitivity_ranges()?;
     let cg = study(Study::CgHeight, &|_| true)?;
-    nominal_rows(ctx, &cg)?;
+    nominal_rows(ctx, &cg, &ranges.0)?;
     cg_rows(ctx, &cg);
     let (a, e) = (IsoClass::A.alpha_r(), IsoClass::E.alpha_r());
     let rough = study(Study::Roughness, &|v| {
@@ -73,12 +106,11 @@ pub(super) fn check_chapter2(ctx: &mut Ctx) -> Result<(), String> {
         found(&rough, "drt_change_a_to_e_pct"),
         "prediction, m_c = 0.3, class A -> E",
     );
-    ctx.compare(
+    ctx.not_reproducible_from_paper_data(
         "s2_drt_change_class_a_to_e",
         Some("sustained_period_ratio"),
-        None,
         found(&rough, "sustained_period_ratio_e_over_a"),
-        "prediction; the model's sustained period hardly grows with roughness: on smooth and mildly rough ground the calibrated truck already holds LTR near 1 for about 3-4 s before rollover",
+        format!("{UNSTATED}; over ramp rates 2.5-10 deg/s and three detection rules the calibrated truck's ratio spans {} ({VALIDATION_SEEDS} seeds; 10 seeds in docs/roll-truck.md, `afsv roll study sensitivity`), so no single number can be checked against × 6.4", ranges.1),
     );
     let w = study(Study::Waviness, &|v| at(v, &[1.6, 2.4]))?;
     ctx.compare(
@@ -149,7 +181,7 @@ fn smooth_rows(ctx: &mut Ctx) -> Result<(), String> {
 }
 
 /// Rows of the nominal truck on the nominal class E terrain (the cg study's middle point).
-fn nominal_rows(ctx: &mut Ctx, cg: &StudyResult) -> Result<(), String> {
+fn nominal_rows(ctx: &mut Ctx, cg: &StudyResult, dt_range: &str) -> Result<(), String> {
     let n = cg
         .points
         .get(cg.points.len() / 2)
@@ -161,34 +193,36 @@ fn nominal_rows(ctx: &mut Ctx, cg: &StudyResult) -> Result<(), String> {
         n.sp_drt_g.mean,
         seeds_note(n, "prediction, SP-DRT on class E, m_c = 0.3"),
     );
-    ctx.compare(
+    ctx.not_reproducible_from_paper_data(
         "s2_sustained_period",
-        None,
         None,
         n.sustained_period_s.mean,
         format!(
-            "prediction with SustainedPeriodParams::default(); ± {:.2} s over the seeds",
+            "{UNSTATED}; ± {:.2} s over the seeds with the default rule at 5 deg/s; the calibrated truck's class E ΔT spans {dt_range} over ramp rates 2.5-10 deg/s and the three rules ({VALIDATION_SEEDS} seeds; 10 seeds in docs/roll-truck.md, `afsv roll study sensitivity`)",
             n.sustained_period_s.sd
         ),
     );
-    ctx.compare(
+    ctx.not_reproducible_from_paper_data(
         "s2_t_lift_a4",
         None,
-        None,
         n.sustained_end_s.mean,
-        "depends on the ramp (not given in chapter 2; assumed 5 deg/s at the wheel, ratio 25, from t = 2 s)",
+        "the time of A4 after the ramp start scales roughly inversely with the steering ramp rate, which chapter 2 does not give (assumed 5 deg/s at the steering wheel, ratio 25, from t = 2 s; `afsv roll measures --ramp-rate` shows it)",
     );
     for (key, stat, what) in [
-        ("a4", &n.ay_at_a4_g, "|a_y| at A4"),
-        ("b_prime", &n.ay_at_rollover_g, "|a_y| at absolute rollover"),
-        ("peak", &n.peak_ay_g, "peak |a_y|"),
+        ("a4", &n.ay_at_a4_g, "|a_y| at A4".to_string()),
+        (
+            "b_prime",
+            &n.ay_at_rollover_g,
+            "|a_y| at absolute rollover".to_string(),
+        ),
+        ("peak", &n.peak_ay_g, peak_note()?),
     ] {
         ctx.compare(
             "s2_ay_at_a4_b_prime",
             Some(key),
             None,
             stat.mean,
-            format!("prediction, {what}, ± {:.3} g over the seeds", stat.sd),
+            format!("prediction, ± {:.3} g over the seeds: {what}", stat.sd),
         );
     }
     ctx.compare(
@@ -206,6 +240,26 @@ fn nominal_rows(ctx: &mut Ctx, cg: &StudyResult) -> Result<(), String> {
         "prediction, highest |a_y| in the sustained period",
     );
     Ok(())
+}
+
+/// Why the peak a_y is low: the calibrated truck without its stops and the plausible
+/// truck, on the same seeds (`afsv roll study trucks`).
+fn peak_note() -> Result<String, String> {
+    let trucks = study(Study::Trucks, &|v| {
+        v.group == "calibrated, no stops" || v.group == "plausible"
+    })?;
+    let peak = |group: &str| {
+        trucks
+            .points
+            .iter()
+            .find(|p| p.group == group)
+            .map_or(f64::NAN, |p| p.peak_ay_g.mean)
+    };
+    Ok(format!(
+        "peak |a_y| of the whole-vehicle channel (sum of the tire forces; the sprung cg's horizontal a_y peaks about 11 % higher, docs/roll-truck.md); the calibrated truck's very soft roll suspension ends the run early: with its bump stops out of reach the peak falls to {:.3} g, and the plausible truck (strut spacing ratio 0.5) reaches {:.3} g",
+        peak("calibrated, no stops"),
+        peak("plausible"),
+    ))
 }
 
 /// Rows of the cg study (Figs 2.10-2.11).

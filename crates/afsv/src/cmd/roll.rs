@@ -1,7 +1,9 @@
 //! `afsv roll`: roll stability of the rigid mining truck of chapter 2 (crate `roll-truck`):
 //! a ramp-steer run to absolute rollover into a record, its roll measures (DRT, SP-DRT,
 //! ΔT, a_y at A⁴ and B′, peak, SSF), the section 2.4 studies over terrain seeds with a
-//! plot, and the calibration of the strut spacing ratio. Parses, calls, prints.
+//! plot, the comparison of the calibrated and the plausible truck, the sensitivity of ΔT
+//! to the steering ramp and the detection rule (`roll_study.rs`), and the calibration of
+//! the strut spacing ratio. Parses, calls, prints.
 
 use super::{args, CmdResult};
 use afsv::output::{OutputGuard, OutputKind};
@@ -9,19 +11,75 @@ use afsv_records::Record;
 use perf_measures::roll::SustainedPeriodParams;
 use roll_truck::measures::RollMeasures;
 use roll_truck::model::TIRE_NAMES;
-use roll_truck::studies::{run_case, run_study, Study, StudyResult, MAX_SEEDS};
-use roll_truck::{RunOptions, RunRecord, SteerDirection, TruckParams};
+use roll_truck::studies::run_case;
+use roll_truck::{BuiltinTruck, RunOptions, RunRecord, SteerDirection, TruckParams};
 use serde_json::json;
 use std::io::IsTerminal;
 use std::path::{Path, PathBuf};
+
+#[path = "roll_study.rs"]
+mod roll_study;
 use terrain_psd::{Band, CoherenceModel, IsoClass, PowerLawPsd, TwoTrackSpec};
+
+/// Which truck, and the settings chapter 2 does not state: the steering ramp rate and the
+/// bump stops.
+#[derive(clap::Args, Debug, Clone)]
+pub struct TruckArgs {
+    /// Truck parameter file (JSON, as written by `afsv params dump truck`), validated.
+    #[arg(long)]
+    pub params: Option<PathBuf>,
+    /// Built-in truck: `calibrated` (strut spacing ratio 0.254, the default) or
+    /// `plausible` (struts at half the track, 0.5); not with --params.
+    #[arg(long, conflicts_with = "params")]
+    pub truck: Option<BuiltinTruck>,
+    /// Steering-wheel ramp rate (deg/s), replacing the parameter set's (5 deg/s, not given
+    /// in chapter 2).
+    #[arg(long, allow_hyphen_values = true, value_parser = args::positive_f64)]
+    pub ramp_rate: Option<f64>,
+    /// Put the bump stops out of reach (both strut travels 2 m).
+    #[arg(long)]
+    pub no_bump_stops: bool,
+}
+
+/// The detection rule of the sustained period (not given in chapter 2).
+#[derive(clap::Args, Debug, Clone, Copy)]
+pub struct RuleArgs {
+    /// LTR threshold of the sustained period, in (0, 1) (default 0.95).
+    #[arg(long, allow_hyphen_values = true, value_parser = args::open_fraction_f64)]
+    pub sp_threshold: Option<f64>,
+    /// Longest dip below the threshold that does not end the sustained period (s, default
+    /// 0.5).
+    #[arg(long, allow_hyphen_values = true, value_parser = args::nonneg_f64)]
+    pub sp_max_dip: Option<f64>,
+}
+
+impl RuleArgs {
+    /// The rule: the defaults with the given options replaced, validated.
+    pub fn params(&self) -> Result<SustainedPeriodParams, String> {
+        let mut sp = SustainedPeriodParams::default();
+        if let Some(t) = self.sp_threshold {
+            sp.threshold = t;
+        }
+        if let Some(d) = self.sp_max_dip {
+            sp.max_dip_s = d;
+        }
+        sp.validate()
+            .map_err(|e| format!("--sp-threshold/--sp-max-dip: {e}"))?;
+        Ok(sp)
+    }
+
+    fn given(&self) -> bool {
+        self.sp_threshold.is_some() || self.sp_max_dip.is_some()
+    }
+}
 
 /// The truck, its terrain and the run settings.
 #[derive(clap::Args, Debug)]
 pub struct CaseArgs {
-    /// Truck parameter file (JSON, as written by `afsv params dump truck`), validated.
-    #[arg(long)]
-    pub params: Option<PathBuf>,
+    #[command(flatten)]
+    pub truck: TruckArgs,
+    #[command(flatten)]
+    pub rule: RuleArgs,
     /// Sprung cg height (m), replacing the parameter set's.
     #[arg(long, allow_hyphen_values = true, value_parser = args::positive_f64)]
     pub cg_height_m: Option<f64>,
@@ -46,10 +104,11 @@ pub struct CaseArgs {
     /// Terrain seed.
     #[arg(long, default_value_t = 1)]
     pub seed: u64,
-    /// Simulated time if the truck does not roll over (s), at most 3600. The rough terrain
-    /// is 800 m long (72 s at 40 km/h); beyond it the ground keeps its end height.
-    #[arg(long, default_value_t = 60.0, allow_hyphen_values = true, value_parser = args::positive_f64)]
-    pub duration: f64,
+    /// Simulated time if the truck does not roll over (s), at most 3600. Default: the ramp
+    /// start plus 290 deg of steering-wheel angle at the ramp rate (60 s at 5 deg/s). The
+    /// rough terrain is 800 m long, or longer for runs beyond 60 s.
+    #[arg(long, allow_hyphen_values = true, value_parser = args::positive_f64)]
+    pub duration: Option<f64>,
 }
 
 /// `afsv roll` subcommands.
@@ -79,27 +138,12 @@ pub enum Command {
         #[arg(long)]
         json: bool,
     },
-    /// A study of section 2.4 over terrain seeds 1..=N (common to every variant): `cg`
-    /// (Figs 2.10-2.11), `roughness` (Fig 2.12), `waviness` (Fig 2.13), `band` (Fig 2.14).
-    Study {
-        /// Which study.
-        study: Study,
-        /// Number of terrain seeds (1 to 1000).
-        #[arg(long, default_value_t = 10)]
-        seeds: usize,
-        /// Truck parameter file (JSON), validated.
-        #[arg(long)]
-        params: Option<PathBuf>,
-        /// SVG plot of the SP-DRT (mean ± SD) and, for `cg`, the smooth DRT and SSF.
-        #[arg(long)]
-        plot: Option<PathBuf>,
-        /// Replace an existing plot afsv did not write.
-        #[arg(long)]
-        force: bool,
-        /// Print JSON even on a terminal.
-        #[arg(long)]
-        json: bool,
-    },
+    /// A study over terrain seeds 1..=N (common to every variant): of section 2.4, `cg`
+    /// (Figs 2.10-2.11), `roughness` (Fig 2.12), `waviness` (Fig 2.13), `band`
+    /// (Fig 2.14); `trucks`, the calibrated and the plausible truck with and without their
+    /// bump stops; `sensitivity`, ΔT and the class A -> E ratio against the ramp rate
+    /// (2.5, 5, 10 deg/s) and the detection rule (default, strict, loose).
+    Study(roll_study::StudyArgs),
     /// Find the strut spacing ratio of the smooth-road DRT target among the roll-stable
     /// ratios (the derivation of the built-in constant), as JSON.
     Calibrate {
@@ -122,7 +166,7 @@ pub fn run(cmd: Command) -> CmdResult {
             force,
         } => simulate(&case, dt, &output, force),
         Command::Measures { case, json } => {
-            let p = truck(case.params.as_deref(), case.cg_height_m)?;
+            let p = truck(&case.truck, case.cg_height_m)?;
             let run = one_run(&case, &p, 0.01)?;
             if json || !std::io::stdout().is_terminal() {
                 afsv::output::print_json(&measures_json(&run.measures, &case))?;
@@ -131,23 +175,17 @@ pub fn run(cmd: Command) -> CmdResult {
             }
             Ok(())
         }
-        Command::Study {
-            study,
-            seeds,
-            params,
-            plot,
-            force,
-            json,
-        } => run_study_cmd(
-            study,
-            seeds,
-            params.as_deref(),
-            plot.as_deref(),
-            force,
-            json,
-        ),
+        Command::Study(a) => roll_study::run_study_cmd(&a),
         Command::Calibrate { params, target_g } => {
-            let p = truck(params.as_deref(), None)?;
+            let p = truck(
+                &TruckArgs {
+                    params,
+                    truck: None,
+                    ramp_rate: None,
+                    no_bump_stops: false,
+                },
+                None,
+            )?;
             let c =
                 roll_truck::calibration::calibrate_strut_spacing(&p, (0.15, 0.6), target_g, 1e-4)?;
             afsv::output::print_json(&c)?;
@@ -156,14 +194,23 @@ pub fn run(cmd: Command) -> CmdResult {
     }
 }
 
-/// The truck of `--params` (or nominal) with an optional cg height, validated.
-fn truck(params: Option<&Path>, cg_height_m: Option<f64>) -> Result<TruckParams, String> {
-    let mut p: TruckParams = match params {
-        Some(path) => super::params::read(path)?,
-        None => TruckParams::nominal(),
+/// The truck of `--params` or `--truck` (default calibrated) with the ramp rate, the
+/// stops and an optional cg height applied, validated.
+fn truck(a: &TruckArgs, cg_height_m: Option<f64>) -> Result<TruckParams, String> {
+    let params = a.params.as_deref();
+    let mut p: TruckParams = match (params, a.truck) {
+        (Some(path), _) => super::params::read(path)?,
+        (None, Some(t)) => t.params(),
+        (None, None) => TruckParams::nominal(),
     };
     if let Some(h) = cg_height_m {
         p.cg_height_m = h;
+    }
+    if let Some(r) = a.ramp_rate {
+        p.steering_wheel_rate_deg_s = r;
+    }
+    if a.no_bump_stops {
+        p = p.without_bump_stops();
     }
     p.validate().map_err(|e| match params {
         Some(path) => format!("{}: {e}", path.display()),
@@ -185,16 +232,18 @@ fn one_run(
     p: &TruckParams,
     dt: f64,
 ) -> Result<roll_truck::studies::Run, Box<dyn std::error::Error>> {
-    if case.duration > 3600.0 {
-        return Err(format!("--duration {}: at most 3600 s", args::show(case.duration)).into());
+    let duration = duration(case, p);
+    if duration > 3600.0 {
+        return Err(format!("--duration {}: at most 3600 s", args::show(duration)).into());
     }
     let options = RunOptions {
-        t_end_s: case.duration,
+        t_end_s: duration,
         output_dt_s: dt,
+        acceleration_channels: true,
         ..RunOptions::default()
     };
     let spec = if case.smooth { None } else { Some(spec(case)?) };
-    let sp = SustainedPeriodParams::default();
+    let sp = case.rule.params()?;
     Ok(run_case(
         p,
         spec.as_ref(),
@@ -205,19 +254,27 @@ fn one_run(
     )?)
 }
 
+/// `--duration`, or the ramp start plus [`roll_truck::sensitivity::RAMP_SPAN_DEG`] at the
+/// truck's ramp rate.
+fn duration(case: &CaseArgs, p: &TruckParams) -> f64 {
+    case.duration
+        .unwrap_or_else(|| roll_truck::sensitivity::ramp_duration_s(p))
+}
+
 fn simulate(case: &CaseArgs, dt: f64, output: &Path, force: bool) -> CmdResult {
-    args::check_samples(
-        &format!("--duration {}", args::show(case.duration)),
-        &format!("duration/dt with --dt {}", args::show(dt)),
-        case.duration / dt,
-        roll_truck::simulate::MAX_SAMPLES as f64,
-    )?;
     let mut guard = OutputGuard::new(force);
-    if let Some(p) = &case.params {
+    if let Some(p) = &case.truck.params {
         guard.input("--params", p)?;
     }
     guard.output("-o", output, OutputKind::Record)?;
-    let p = truck(case.params.as_deref(), case.cg_height_m)?;
+    let p = truck(&case.truck, case.cg_height_m)?;
+    let duration = duration(case, &p);
+    args::check_samples(
+        &format!("--duration {}", args::show(duration)),
+        &format!("duration/dt with --dt {}", args::show(dt)),
+        duration / dt,
+        roll_truck::simulate::MAX_SAMPLES as f64,
+    )?;
     let run = one_run(case, &p, dt)?;
     let out = record(&run.record)?;
     let mut out = out;
@@ -248,6 +305,14 @@ fn record(r: &RunRecord) -> Result<Record, afsv_records::RecordError> {
     out.push_column("speed_m_s", r.speed_m_s.clone())?;
     out.push_column("lateral_accel_m_s2", r.lateral_accel_m_s2.clone())?;
     out.push_column("ltr", r.ltr.clone())?;
+    out.push_column(
+        "sprung_lateral_accel_m_s2",
+        r.sprung_lateral_accel_m_s2.clone(),
+    )?;
+    out.push_column(
+        "sprung_sensor_lateral_accel_m_s2",
+        r.sprung_sensor_lateral_accel_m_s2.clone(),
+    )?;
     out.push_column("roll_rad", r.roll_rad.clone())?;
     out.push_column("rollover_margin_m", r.rollover_margin_m.clone())?;
     out.push_column("drive_force_n", r.drive_force_n.clone())?;
@@ -282,6 +347,12 @@ fn terrain_json(case: &CaseArgs) -> serde_json::Value {
 fn measures_json(m: &RollMeasures, case: &CaseArgs) -> serde_json::Value {
     let mut v = serde_json::to_value(m).unwrap_or_default();
     v["terrain"] = terrain_json(case);
+    v["truck"] = json!(match (&case.truck.params, case.truck.truck) {
+        (Some(path), _) => path.display().to_string(),
+        (None, t) => t.unwrap_or(BuiltinTruck::Calibrated).name().to_string(),
+    });
+    v["bump_stops"] = json!(!case.truck.no_bump_stops);
+    v["sustained_period_rule"] = json!(case.rule.params().ok());
     v["g_for_reporting_m_s2"] = json!(roll_truck::measures::G_REPORT);
     afsv::output::explain_nulls(
         v,
@@ -298,7 +369,7 @@ fn measures_text(m: &RollMeasures) -> String {
         .sustained_range_g
         .map_or("n/a".into(), |(a, b)| format!("{a:.3}-{b:.3} g"));
     format!(
-        "DRT (first LTR = 1)      {}\nSP-DRT                   {}\nsustained period ΔT      {} ({} to {})\na_y range in ΔT          {range}\na_y at A4                {}\na_y at rollover B'       {}\npeak a_y                 {:.3} g\nabsolute rollover        {}\nSSF                      {:.3}\n",
+        "DRT (first LTR = 1)      {}\nSP-DRT                   {}\nsustained period ΔT      {} ({} to {})\na_y range in ΔT          {range}\na_y at A4                {}\na_y at rollover B'       {}\npeak a_y                 {:.3} g (whole vehicle, tire forces; sprung cg {:.3} g, sprung-fixed sensor {:.3} g)\npeak a_y before stops    {:.3} g (first stop contact {})\nabsolute rollover        {}\nSSF                      {:.3}\n",
         show(m.drt_g, "g"),
         show(m.sp_drt_g, "g"),
         show(m.sustained_period_s, "s"),
@@ -307,127 +378,11 @@ fn measures_text(m: &RollMeasures) -> String {
         show(m.ay_at_a4_g, "g"),
         show(m.ay_at_rollover_g, "g"),
         m.peak_ay_g,
+        m.peak_sprung_ay_g.unwrap_or(f64::NAN),
+        m.peak_sensor_ay_g.unwrap_or(f64::NAN),
+        m.peak_ay_before_stop_g,
+        show(m.first_bump_stop_s, "s"),
         show(m.rollover_s, "s"),
         m.ssf,
     )
-}
-
-fn run_study_cmd(
-    study: Study,
-    seeds: usize,
-    params: Option<&Path>,
-    plot: Option<&Path>,
-    force: bool,
-    json: bool,
-) -> CmdResult {
-    if seeds == 0 || seeds > MAX_SEEDS {
-        return Err(format!("--seeds {seeds}: must be 1 to {MAX_SEEDS}").into());
-    }
-    let mut guard = OutputGuard::new(force);
-    if let Some(p) = params {
-        guard.input("--params", p)?;
-    }
-    if let Some(p) = plot {
-        guard.output("--plot", p, OutputKind::Svg)?;
-    }
-    let p = truck(params, None)?;
-    let seed_list: Vec<u64> = (1..=seeds as u64).collect();
-    // The number of runs is known once the study has built its variants.
-    let progress = std::sync::OnceLock::new();
-    let report = |_done: usize, total: usize| {
-        progress
-            .get_or_init(|| afsv::progress::Progress::new("afsv roll study", "runs", Some(total)))
-            .step("");
-    };
-    let result = run_study(
-        study,
-        &p,
-        &seed_list,
-        &RunOptions::default(),
-        &SustainedPeriodParams::default(),
-        &report,
-    )?;
-    if let Some(p) = progress.get() {
-        p.finish();
-    }
-    if let Some(path) = plot {
-        plot_study(path, &result)?;
-    }
-    if json || !std::io::stdout().is_terminal() {
-        let mut v = serde_json::to_value(&result)?;
-        v["findings"] = serde_json::to_value(result.findings())?;
-        afsv::output::print_json(&v)?;
-    } else {
-        print!("{}", study_text(&result));
-    }
-    Ok(())
-}
-
-fn study_text(r: &StudyResult) -> String {
-    let mut s = format!(
-        "{:<22} {:>10} {:>10} {:>16} {:>14} {:>7}\n",
-        "group", "x", "smooth g", "SP-DRT g", "ΔT s", "SSF"
-    );
-    for p in &r.points {
-        s += &format!(
-            "{:<22} {:>10.4} {:>10} {:>7.3} ± {:<6.3} {:>6.2} ± {:<5.2} {:>7.3}\n",
-            p.group,
-            p.x,
-            p.smooth_drt_g.map_or("n/a".into(), |v| format!("{v:.3}")),
-            p.sp_drt_g.mean,
-            p.sp_drt_g.sd,
-            p.sustained_period_s.mean,
-            p.sustained_period_s.sd,
-            p.ssf,
-        );
-    }
-    for f in r.findings() {
-        s += &format!("{:<44} {:>9.4}  {}\n", f.name, f.value, f.meaning);
-    }
-    s
-}
-
-fn plot_study(path: &Path, r: &StudyResult) -> CmdResult {
-    let mut groups: Vec<&str> = r.points.iter().map(|p| p.group.as_str()).collect();
-    groups.dedup();
-    let mut columns: Vec<(String, Vec<f64>, Vec<f64>)> = Vec::new();
-    for g in &groups {
-        let pts: Vec<_> = r.points.iter().filter(|p| p.group == *g).collect();
-        let x: Vec<f64> = pts.iter().map(|p| p.x).collect();
-        let y = |f: &dyn Fn(&roll_truck::studies::StudyPoint) -> f64| {
-            pts.iter().map(|p| f(p)).collect()
-        };
-        columns.push((format!("SP-DRT {g}"), x.clone(), y(&|p| p.sp_drt_g.mean)));
-        columns.push((
-            format!("- SD {g}"),
-            x.clone(),
-            y(&|p| p.sp_drt_g.mean - p.sp_drt_g.sd),
-        ));
-        columns.push((
-            format!("+ SD {g}"),
-            x.clone(),
-            y(&|p| p.sp_drt_g.mean + p.sp_drt_g.sd),
-        ));
-        if r.study == Study::CgHeight {
-            columns.push((
-                "smooth DRT".into(),
-                x.clone(),
-                y(&|p| p.smooth_drt_g.unwrap_or(f64::NAN)),
-            ));
-            columns.push(("SSF".into(), x, y(&|p| p.ssf)));
-        }
-    }
-    let series: Vec<afsv_plot::Series> = columns
-        .iter()
-        .map(|(label, x, y)| afsv_plot::Series { label, x, y })
-        .collect();
-    afsv_plot::line_plot(
-        path,
-        &format!("rough-terrain SP-DRT over {} seeds", r.seeds.len()),
-        r.study.x_label(),
-        "lateral acceleration (g) / SSF",
-        &series,
-    )?;
-    afsv::output::mark_svg(path)?;
-    Ok(())
 }

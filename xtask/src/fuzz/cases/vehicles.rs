@@ -21,7 +21,16 @@ pub(super) fn roll_case(g: &mut Gen<'_>, group: &str) {
         "roll study" => {
             let s = g
                 .rng
-                .pick(&["cg", "roughness", "waviness", "band", "bogus", ""])
+                .pick(&[
+                    "cg",
+                    "roughness",
+                    "waviness",
+                    "band",
+                    "trucks",
+                    "sensitivity",
+                    "bogus",
+                    "",
+                ])
                 .to_string();
             g.arg(&s);
             let v = g.bad();
@@ -86,6 +95,19 @@ fn roll_case_args(g: &mut Gen<'_>) {
             .to_string();
         g.push_opt("--seed", &s);
     }
+    if g.rng.chance(0.2) {
+        let t = g
+            .rng
+            .pick(&["calibrated", "plausible", "stiff", ""])
+            .to_string();
+        g.push_opt("--truck", &t);
+    }
+    g.num("--ramp-rate", "10", 0.1);
+    if g.rng.chance(0.2) {
+        g.arg("--no-bump-stops");
+    }
+    g.num("--sp-threshold", "0.9", 0.1);
+    g.num("--sp-max-dip", "1", 0.1);
     if g.rng.chance(0.3 * g.scale) {
         let v = g.bad();
         g.push_opt("--duration", &v);

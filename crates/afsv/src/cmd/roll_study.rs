@@ -1,0 +1,271 @@
+//! `afsv roll study`: the section 2.4 studies, the comparison of the built-in trucks
+//! (`trucks`) and the sensitivity of ΔT to the steering ramp and the detection rule
+//! (`sensitivity`). Parses, calls, prints.
+
+use super::{truck, CmdResult, RuleArgs, TruckArgs};
+use afsv::output::{OutputGuard, OutputKind};
+use roll_truck::sensitivity::{run_sensitivity, SensitivityCell};
+use roll_truck::studies::{run_study, Stat, Study, StudyResult, MAX_SEEDS};
+use roll_truck::{BuiltinTruck, RunOptions, TruckParams};
+use std::io::IsTerminal;
+use std::path::{Path, PathBuf};
+
+/// Which study `afsv roll study` runs.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum StudyName {
+    /// A study of `roll_truck::studies` (section 2.4, or `trucks`).
+    Runs(Study),
+    /// `sensitivity`: `roll_truck::sensitivity`.
+    Sensitivity,
+}
+
+impl std::str::FromStr for StudyName {
+    type Err = String;
+    fn from_str(s: &str) -> Result<Self, String> {
+        match s {
+            "sensitivity" => Ok(Self::Sensitivity),
+            _ => s
+                .parse()
+                .map(Self::Runs)
+                .map_err(|e: String| e.replace("band, trucks)", "band, trucks, sensitivity)")),
+        }
+    }
+}
+
+/// Options of `afsv roll study`.
+#[derive(clap::Args, Debug)]
+pub struct StudyArgs {
+    /// Which study: cg, roughness, waviness, band, trucks, sensitivity.
+    pub study: StudyName,
+    /// Number of terrain seeds (1 to 1000).
+    #[arg(long, default_value_t = 10)]
+    pub seeds: usize,
+    #[command(flatten)]
+    pub truck: TruckArgs,
+    #[command(flatten)]
+    pub rule: RuleArgs,
+    /// SVG plot of the SP-DRT (mean ± SD) and, for `cg`, the smooth DRT and SSF (not for
+    /// `sensitivity`).
+    #[arg(long)]
+    pub plot: Option<PathBuf>,
+    /// Replace an existing plot afsv did not write.
+    #[arg(long)]
+    pub force: bool,
+    /// Print JSON even on a terminal.
+    #[arg(long)]
+    pub json: bool,
+}
+
+/// Run `afsv roll study`.
+pub(super) fn run_study_cmd(a: &StudyArgs) -> CmdResult {
+    let seeds = a.seeds;
+    if seeds == 0 || seeds > MAX_SEEDS {
+        return Err(format!("--seeds {seeds}: must be 1 to {MAX_SEEDS}").into());
+    }
+    let t = &a.truck;
+    let chosen = t.params.is_some() || t.truck.is_some();
+    match a.study {
+        StudyName::Runs(Study::Trucks) if chosen || t.ramp_rate.is_some() || t.no_bump_stops => {
+            return Err("study trucks compares the built-in trucks with and without stops at their own ramp; --params, --truck, --ramp-rate and --no-bump-stops do not apply".into());
+        }
+        StudyName::Sensitivity if t.ramp_rate.is_some() || a.rule.given() => {
+            return Err("study sensitivity sweeps the ramp rate and the detection rule itself; --ramp-rate, --sp-threshold and --sp-max-dip do not apply".into());
+        }
+        StudyName::Sensitivity if a.plot.is_some() => {
+            return Err("--plot: study sensitivity has no plot (its table is the result)".into());
+        }
+        _ => {}
+    }
+    let mut guard = OutputGuard::new(a.force);
+    if let Some(p) = &t.params {
+        guard.input("--params", p)?;
+    }
+    if let Some(p) = &a.plot {
+        guard.output("--plot", p, OutputKind::Svg)?;
+    }
+    let seed_list: Vec<u64> = (1..=seeds as u64).collect();
+    // The number of runs is known once the study has built its variants.
+    let progress = std::sync::OnceLock::new();
+    let report = |_done: usize, total: usize| {
+        progress
+            .get_or_init(|| afsv::progress::Progress::new("afsv roll study", "runs", Some(total)))
+            .step("");
+    };
+    let pretty = !a.json && std::io::stdout().is_terminal();
+    let study = match a.study {
+        StudyName::Runs(s) => s,
+        StudyName::Sensitivity => {
+            let trucks: Vec<(String, TruckParams)> = if chosen {
+                let name = match (&t.params, t.truck) {
+                    (Some(p), _) => p.display().to_string(),
+                    (None, b) => b.unwrap_or(BuiltinTruck::Calibrated).name().to_string(),
+                };
+                vec![(name, truck(t, None)?)]
+            } else {
+                [BuiltinTruck::Calibrated, BuiltinTruck::Plausible]
+                    .map(|b| {
+                        let mut p = b.params();
+                        if t.no_bump_stops {
+                            p = p.without_bump_stops();
+                        }
+                        (b.name().to_string(), p)
+                    })
+                    .to_vec()
+            };
+            let cells = run_sensitivity(&trucks, &seed_list, &report)?;
+            if let Some(p) = progress.get() {
+                p.finish();
+            }
+            if pretty {
+                print!("{}", sensitivity_text(&cells, seeds));
+            } else {
+                afsv::output::print_json(&serde_json::json!({
+                    "study": "sensitivity",
+                    "seeds": seed_list,
+                    "cells": cells,
+                }))?;
+            }
+            return Ok(());
+        }
+    };
+    let p = truck(t, None)?;
+    let options = RunOptions {
+        t_end_s: roll_truck::sensitivity::ramp_duration_s(&p),
+        // the truck comparison reports the peaks of every channel
+        acceleration_channels: study == Study::Trucks,
+        ..RunOptions::default()
+    };
+    let result = run_study(study, &p, &seed_list, &options, &a.rule.params()?, &report)?;
+    if let Some(p) = progress.get() {
+        p.finish();
+    }
+    if let Some(path) = &a.plot {
+        plot_study(path, &result)?;
+    }
+    if pretty {
+        print!("{}", study_text(&result));
+    } else {
+        let mut v = serde_json::to_value(&result)?;
+        v["findings"] = serde_json::to_value(result.findings())?;
+        afsv::output::print_json(&v)?;
+    }
+    Ok(())
+}
+
+fn pm(s: &Stat, digits: usize) -> String {
+    if s.n == 0 {
+        return "n/a".into();
+    }
+    format!("{:.d$} ± {:.d$}", s.mean, s.sd, d = digits)
+}
+
+fn study_text(r: &StudyResult) -> String {
+    let mut s = format!(
+        "{:<22} {:>10} {:>10} {:>16} {:>14} {:>16} {:>7}\n",
+        "group", "x", "smooth g", "SP-DRT g", "ΔT s", "peak a_y g", "SSF"
+    );
+    for p in &r.points {
+        s += &format!(
+            "{:<22} {:>10.4} {:>10} {:>16} {:>14} {:>16} {:>7.3}\n",
+            p.group,
+            p.x,
+            p.smooth_drt_g.map_or("n/a".into(), |v| format!("{v:.3}")),
+            pm(&p.sp_drt_g, 3),
+            pm(&p.sustained_period_s, 2),
+            pm(&p.peak_ay_g, 3),
+            p.ssf,
+        );
+    }
+    if r.study == Study::Trucks {
+        s += &format!(
+            "\n{:<22} {:>16} {:>16} {:>16} {:>16}\n",
+            "peak a_y (class E)",
+            "whole vehicle g",
+            "sprung cg g",
+            "sprung sensor g",
+            "before stops g"
+        );
+        for p in &r.points {
+            s += &format!(
+                "{:<22} {:>16} {:>16} {:>16} {:>16}\n",
+                p.group,
+                pm(&p.peak_ay_g, 3),
+                pm(&p.peak_sprung_ay_g, 3),
+                pm(&p.peak_sensor_ay_g, 3),
+                pm(&p.peak_ay_before_stop_g, 3),
+            );
+        }
+        s += "\n";
+    }
+    for f in r.findings() {
+        s += &format!("{:<44} {:>9.4}  {}\n", f.name, f.value, f.meaning);
+    }
+    s
+}
+
+fn sensitivity_text(cells: &[SensitivityCell], seeds: usize) -> String {
+    let mut s = format!(
+        "ΔT over {seeds} seeds (class A and E, w = 2, 0.02-5 cycles/m, m_c = 0.3)\n{:<12} {:>9} {:<8} {:>7} {:>7} {:>15} {:>15} {:>9} {:>15}\n",
+        "truck", "ramp °/s", "rule", "LTR ≥", "dip s", "ΔT class A s", "ΔT class E s", "E / A", "SP-DRT E g"
+    );
+    for c in cells {
+        s += &format!(
+            "{:<12} {:>9.1} {:<8} {:>7.2} {:>7.2} {:>15} {:>15} {:>9.2} {:>15}\n",
+            c.truck,
+            c.ramp_rate_deg_s,
+            c.rule.name(),
+            c.threshold,
+            c.max_dip_s,
+            pm(&c.class_a_s, 2),
+            pm(&c.class_e_s, 2),
+            c.ratio_e_over_a,
+            pm(&c.sp_drt_e_g, 3),
+        );
+    }
+    s
+}
+
+fn plot_study(path: &Path, r: &StudyResult) -> CmdResult {
+    let mut groups: Vec<&str> = r.points.iter().map(|p| p.group.as_str()).collect();
+    groups.dedup();
+    let mut columns: Vec<(String, Vec<f64>, Vec<f64>)> = Vec::new();
+    for g in &groups {
+        let pts: Vec<_> = r.points.iter().filter(|p| p.group == *g).collect();
+        let x: Vec<f64> = pts.iter().map(|p| p.x).collect();
+        let y = |f: &dyn Fn(&roll_truck::studies::StudyPoint) -> f64| {
+            pts.iter().map(|p| f(p)).collect()
+        };
+        columns.push((format!("SP-DRT {g}"), x.clone(), y(&|p| p.sp_drt_g.mean)));
+        columns.push((
+            format!("- SD {g}"),
+            x.clone(),
+            y(&|p| p.sp_drt_g.mean - p.sp_drt_g.sd),
+        ));
+        columns.push((
+            format!("+ SD {g}"),
+            x.clone(),
+            y(&|p| p.sp_drt_g.mean + p.sp_drt_g.sd),
+        ));
+        if r.study == Study::CgHeight {
+            columns.push((
+                "smooth DRT".into(),
+                x.clone(),
+                y(&|p| p.smooth_drt_g.unwrap_or(f64::NAN)),
+            ));
+            columns.push(("SSF".into(), x, y(&|p| p.ssf)));
+        }
+    }
+    let series: Vec<afsv_plot::Series> = columns
+        .iter()
+        .map(|(label, x, y)| afsv_plot::Series { label, x, y })
+        .collect();
+    afsv_plot::line_plot(
+        path,
+        &format!("rough-terrain SP-DRT over {} seeds", r.seeds.len()),
+        r.study.x_label(),
+        "lateral acceleration (g) / SSF",
+        &series,
+    )?;
+    afsv::output::mark_svg(path)?;
+    Ok(())
+}
