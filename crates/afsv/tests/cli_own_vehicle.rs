@@ -3,7 +3,7 @@
 //! and its own strut file, yaw-plane data derived from its units) runs through `params check`,
 //! `evaluate`, `vehicle ride`, `yaw measures`, `study speed-sweep` and `hps characterize`
 //! and gives numbers of its own; the prototype dumped to a file and read back gives the
-//! built-in's numbers bit for bit; and a description without a strut is refused where a strut
+//! built-in's numbers bit for bit, as does the Chapter 2 truck; and a description without a strut is refused where a strut
 //! is designed.
 
 mod cli_support;
@@ -179,6 +179,43 @@ fn the_dumped_prototype_reads_back_to_the_built_in_numbers_bit_for_bit() {
         let mut with_file = args.clone();
         with_file.extend(["--vehicle", f]);
         assert_eq!(json(&afsv(&with_file)), builtin, "{args:?}");
+    }
+}
+
+#[test]
+fn the_dumped_chapter2_truck_reads_back_to_the_built_in_numbers_bit_for_bit() {
+    let file = scratch("own", "truck.toml");
+    json(&afsv(&[
+        "params",
+        "dump",
+        "vehicle",
+        "--builtin",
+        "chapter2-truck",
+        "-o",
+        file.to_str().unwrap(),
+    ]));
+    let strip = |mut v: serde_json::Value| {
+        v.as_object_mut().unwrap().remove("truck");
+        v
+    };
+    let builtin = strip(json(&afsv(&["roll", "measures", "--json"])));
+    let described = json(&afsv(&[
+        "roll",
+        "measures",
+        "--json",
+        "--vehicle",
+        file.to_str().unwrap(),
+    ]));
+    assert_eq!(described["truck"], file.to_str().unwrap());
+    assert_eq!(strip(described), builtin);
+    // An articulated description is no rigid truck, and the other way round.
+    for args in [
+        vec!["roll", "measures", "--vehicle", "prototype"],
+        vec!["vehicle", "yaw", "--vehicle", file.to_str().unwrap()],
+    ] {
+        let out = afsv(&args);
+        assert!(!out.status.success(), "{args:?}");
+        assert!(String::from_utf8_lossy(&out.stderr).contains("--vehicle"));
     }
 }
 

@@ -2,7 +2,7 @@
 //! `docs/vehicles.md`) or the name of a built-in one (`prototype`, the default, and
 //! `chapter2-truck`); a file of that name wins over the built-in.
 
-use afsv_vehicle::{load_builtin, load_file, ArticulatedVehicle, Described, Vehicle};
+use afsv_vehicle::{load_builtin, load_file, ArticulatedVehicle, Described, TruckVehicle, Vehicle};
 use std::path::Path;
 
 /// The help line of every `--vehicle` option.
@@ -27,6 +27,17 @@ pub fn articulated(arg: Option<&Path>) -> Result<ArticulatedVehicle, String> {
         Vehicle::RigidTruck(t) => Err(format!(
             "--vehicle: `{}` is a rigid truck; this command runs an articulated vehicle (the rigid truck runs with `afsv roll`)",
             t.name
+        )),
+    }
+}
+
+/// The rigid truck `arg` names (a file or `chapter2-truck`).
+pub fn truck(arg: &Path) -> Result<TruckVehicle, String> {
+    match load(Some(arg))?.vehicle {
+        Vehicle::RigidTruck(t) => Ok(t),
+        Vehicle::Articulated(a) => Err(format!(
+            "--vehicle: `{}` is articulated; `afsv roll` runs a rigid truck (articulated vehicles run with `afsv vehicle` and `afsv evaluate`)",
+            a.name
         )),
     }
 }

@@ -32,6 +32,11 @@ pub struct TruckArgs {
     /// `plausible` (struts at half the track, 0.5); not with --params.
     #[arg(long, conflicts_with = "params")]
     pub truck: Option<BuiltinTruck>,
+    /// Vehicle description of a rigid truck (TOML, docs/vehicles.md; `afsv params dump
+    /// vehicle --builtin chapter2-truck` writes one to start from) or a built-in name
+    /// (chapter2-truck); not with --params or --truck.
+    #[arg(long, conflicts_with_all = ["params", "truck"])]
+    pub vehicle: Option<PathBuf>,
     /// Steering-wheel ramp rate (deg/s), replacing the parameter set's (5 deg/s, not given
     /// in chapter 2).
     #[arg(long, allow_hyphen_values = true, value_parser = args::positive_f64)]
@@ -181,6 +186,7 @@ pub fn run(cmd: Command) -> CmdResult {
                 &TruckArgs {
                     params,
                     truck: None,
+                    vehicle: None,
                     ramp_rate: None,
                     no_bump_stops: false,
                 },
@@ -194,14 +200,40 @@ pub fn run(cmd: Command) -> CmdResult {
     }
 }
 
-/// The truck of `--params` or `--truck` (default calibrated) with the ramp rate, the
+impl TruckArgs {
+    /// The truck's name in reports: the parameter file, the description or the built-in.
+    pub fn name(&self) -> String {
+        match (&self.params, &self.vehicle, self.truck) {
+            (Some(p), _, _) | (None, Some(p), _) => p.display().to_string(),
+            (None, None, t) => t.unwrap_or(BuiltinTruck::Calibrated).name().to_string(),
+        }
+    }
+
+    /// Declare the files the truck is read from as inputs.
+    pub fn declare_inputs(&self, guard: &mut OutputGuard) -> Result<(), String> {
+        if let Some(p) = &self.params {
+            guard.input("--params", p)?;
+        }
+        if let Some(v) = self
+            .vehicle
+            .as_deref()
+            .filter(|v| super::described::is_file(v))
+        {
+            guard.input("--vehicle", v)?;
+        }
+        Ok(())
+    }
+}
+
+/// The truck of `--params`, `--truck` or `--vehicle` (default calibrated) with the ramp rate, the
 /// stops and an optional cg height applied, validated.
 fn truck(a: &TruckArgs, cg_height_m: Option<f64>) -> Result<TruckParams, String> {
     let params = a.params.as_deref();
-    let mut p: TruckParams = match (params, a.truck) {
-        (Some(path), _) => super::params::read(path)?,
-        (None, Some(t)) => t.params(),
-        (None, None) => TruckParams::nominal(),
+    let mut p: TruckParams = match (params, a.truck, &a.vehicle) {
+        (Some(path), _, _) => super::params::read(path)?,
+        (None, Some(t), _) => t.params(),
+        (None, None, Some(v)) => super::described::truck(v)?.params,
+        (None, None, None) => TruckParams::nominal(),
     };
     if let Some(h) = cg_height_m {
         p.cg_height_m = h;
@@ -263,9 +295,7 @@ fn duration(case: &CaseArgs, p: &TruckParams) -> f64 {
 
 fn simulate(case: &CaseArgs, dt: f64, output: &Path, force: bool) -> CmdResult {
     let mut guard = OutputGuard::new(force);
-    if let Some(p) = &case.truck.params {
-        guard.input("--params", p)?;
-    }
+    case.truck.declare_inputs(&mut guard)?;
     guard.output("-o", output, OutputKind::Record)?;
     let p = truck(&case.truck, case.cg_height_m)?;
     let duration = duration(case, &p);
@@ -347,10 +377,7 @@ fn terrain_json(case: &CaseArgs) -> serde_json::Value {
 fn measures_json(m: &RollMeasures, case: &CaseArgs) -> serde_json::Value {
     let mut v = serde_json::to_value(m).unwrap_or_default();
     v["terrain"] = terrain_json(case);
-    v["truck"] = json!(match (&case.truck.params, case.truck.truck) {
-        (Some(path), _) => path.display().to_string(),
-        (None, t) => t.unwrap_or(BuiltinTruck::Calibrated).name().to_string(),
-    });
+    v["truck"] = json!(case.truck.name());
     v["bump_stops"] = json!(!case.truck.no_bump_stops);
     v["sustained_period_rule"] = json!(case.rule.params().ok());
     v["g_for_reporting_m_s2"] = json!(roll_truck::measures::G_REPORT);

@@ -63,10 +63,10 @@ pub(super) fn run_study_cmd(a: &StudyArgs) -> CmdResult {
         return Err(format!("--seeds {seeds}: must be 1 to {MAX_SEEDS}").into());
     }
     let t = &a.truck;
-    let chosen = t.params.is_some() || t.truck.is_some();
+    let chosen = t.params.is_some() || t.truck.is_some() || t.vehicle.is_some();
     match a.study {
         StudyName::Runs(Study::Trucks) if chosen || t.ramp_rate.is_some() || t.no_bump_stops => {
-            return Err("study trucks compares the built-in trucks with and without stops at their own ramp; --params, --truck, --ramp-rate and --no-bump-stops do not apply".into());
+            return Err("study trucks compares the built-in trucks with and without stops at their own ramp; --params, --truck, --vehicle, --ramp-rate and --no-bump-stops do not apply".into());
         }
         StudyName::Sensitivity if t.ramp_rate.is_some() || a.rule.given() => {
             return Err("study sensitivity sweeps the ramp rate and the detection rule itself; --ramp-rate, --sp-threshold and --sp-max-dip do not apply".into());
@@ -77,9 +77,7 @@ pub(super) fn run_study_cmd(a: &StudyArgs) -> CmdResult {
         _ => {}
     }
     let mut guard = OutputGuard::new(a.force);
-    if let Some(p) = &t.params {
-        guard.input("--params", p)?;
-    }
+    t.declare_inputs(&mut guard)?;
     if let Some(p) = &a.plot {
         guard.output("--plot", p, OutputKind::Svg)?;
     }
@@ -96,11 +94,7 @@ pub(super) fn run_study_cmd(a: &StudyArgs) -> CmdResult {
         StudyName::Runs(s) => s,
         StudyName::Sensitivity => {
             let trucks: Vec<(String, TruckParams)> = if chosen {
-                let name = match (&t.params, t.truck) {
-                    (Some(p), _) => p.display().to_string(),
-                    (None, b) => b.unwrap_or(BuiltinTruck::Calibrated).name().to_string(),
-                };
-                vec![(name, truck(t, None)?)]
+                vec![(t.name(), truck(t, None)?)]
             } else {
                 [BuiltinTruck::Calibrated, BuiltinTruck::Plausible]
                     .map(|b| {
