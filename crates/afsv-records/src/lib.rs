@@ -25,6 +25,7 @@
 
 pub mod atomic;
 pub mod convention;
+pub mod provenance;
 pub mod units;
 
 pub use convention::{ReadOptions, SIGN_CONVENTION};
@@ -175,7 +176,7 @@ impl Record {
     /// channel are converted to [`SIGN_CONVENTION`] (the original statement is kept in the
     /// metadata as `converted_from`).
     pub fn read_with(path: &Path, opts: &ReadOptions) -> Result<Self, RecordError> {
-        let text = std::fs::read_to_string(path).map_err(|source| RecordError::Io {
+        let text = provenance::read_input(path).map_err(|source| RecordError::Io {
             path: path.to_path_buf(),
             source,
         })?;
@@ -374,7 +375,7 @@ fn headers_line(reader: &csv::Reader<&[u8]>) -> u64 {
 }
 
 fn read_sidecar(path: &Path) -> Result<serde_json::Value, RecordError> {
-    let text = std::fs::read_to_string(path).map_err(|source| RecordError::Io {
+    let text = provenance::read_input(path).map_err(|source| RecordError::Io {
         path: path.to_path_buf(),
         source,
     })?;

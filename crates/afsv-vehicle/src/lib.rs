@@ -74,7 +74,7 @@ pub fn load_file(path: &Path) -> Result<Described, DescriptionError> {
             limit: read::MAX_BYTES,
         });
     }
-    let text = std::fs::read_to_string(path).map_err(|e| io(e.to_string()))?;
+    let text = afsv_records::provenance::read_input(path).map_err(|e| io(e.to_string()))?;
     load_str(&text, &origin, &resolve::folder_of(path))
 }
 

@@ -387,7 +387,7 @@ pub fn read_strut_file(file: &Path) -> Result<StrutParams, String> {
             meta.len()
         ));
     }
-    let text = std::fs::read_to_string(file).map_err(|e| format!("{shown}: {e}"))?;
+    let text = afsv_records::provenance::read_input(file).map_err(|e| format!("{shown}: {e}"))?;
     let mut de = serde_json::Deserializer::from_str(&text);
     serde_path_to_error::deserialize::<_, StrutParams>(&mut de).map_err(|e| {
         let inner = e.inner();

@@ -34,7 +34,8 @@ pub const WRITTEN_BY: &str = "afsv";
 /// The comment afsv puts at the top of every SVG it writes.
 pub const SVG_MARKER: &str = "<!-- written_by: afsv -->";
 
-/// Print `value` as pretty JSON on stdout.
+/// Print `value` as pretty JSON on stdout; an object gets the run's `"provenance"`
+/// ([`crate::provenance::stamp`]: tool, version, commit, input files with SHA-256).
 ///
 /// No NaN or infinity is ever printed: serde_json already writes them as `null`, and every
 /// `null` field (or array holding a `null`) that has no `"<field>_reason"` sibling gets one
@@ -42,6 +43,10 @@ pub const SVG_MARKER: &str = "<!-- written_by: afsv -->";
 /// what it wanted.
 pub fn print_json<T: Serialize + ?Sized>(value: &T) -> Result<(), std::io::Error> {
     let mut v = serde_json::to_value(value)?;
+    if let Some(obj) = v.as_object_mut() {
+        obj.entry("provenance")
+            .or_insert_with(crate::provenance::stamp);
+    }
     annotate_nulls(&mut v);
     let text = serde_json::to_string_pretty(&v)?;
     let mut out = std::io::stdout().lock();

@@ -274,6 +274,7 @@ fn harmonic(a: HarmonicArgs) -> CmdResult {
             "units": {"time_s": "s", "displacement_m": "m (+ compression)", "velocity_m_s": "m/s",
                       "force_n": "N (+ compressive)", "p_piston_pa": "Pa absolute", "p_rod_pa": "Pa absolute"},
         });
+        afsv::provenance::stamp_record(&mut r);
         r.write(path)?;
     }
     if let Some(path) = &a.plot {

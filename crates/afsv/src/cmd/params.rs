@@ -211,7 +211,8 @@ fn check_vehicle(file: &Path) -> Result<Value, String> {
 
 /// A parameter file as `T`, refusing unknown fields; errors name the file, line and column.
 pub(super) fn read<T: serde::de::DeserializeOwned>(path: &Path) -> Result<T, String> {
-    let text = std::fs::read_to_string(path).map_err(|e| format!("{}: {e}", path.display()))?;
+    let text = afsv_records::provenance::read_input(path)
+        .map_err(|e| format!("{}: {e}", path.display()))?;
     serde_json::from_str(&text).map_err(|e| format!("{}: {e}", path.display()))
 }
 

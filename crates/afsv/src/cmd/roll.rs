@@ -317,6 +317,7 @@ fn simulate(case: &CaseArgs, dt: f64, output: &Path, force: bool) -> CmdResult {
         "params": p,
         "rollover_s": run.record.rollover_s,
     });
+    afsv::provenance::stamp_record(&mut out);
     out.write(output)?;
     let mut summary = measures_json(&run.measures, case);
     summary["output"] = json!(output);

@@ -256,6 +256,7 @@ fn generate(a: GenerateArgs) -> CmdResult {
             rec.push_column("left_m", prof.left_m.clone())?;
             rec.push_column("right_m", prof.right_m.clone())?;
             rec.meta = meta.clone();
+            afsv::provenance::stamp_record(&mut rec);
             rec.write(path)?;
             if let Some(p) = &progress {
                 p.step("written");

@@ -159,8 +159,8 @@ fn parse_range(text: &str, option: &str) -> Result<Vec<f64>, String> {
 fn load_params(args: &SweepArgs) -> Result<TireParams, Box<dyn std::error::Error>> {
     let mut p = match &args.params {
         Some(path) => {
-            let text =
-                std::fs::read_to_string(path).map_err(|e| format!("{}: {e}", path.display()))?;
+            let text = afsv_records::provenance::read_input(path)
+                .map_err(|e| format!("{}: {e}", path.display()))?;
             serde_json::from_str::<TireParams>(&text)
                 .map_err(|e| format!("{}: {e}", path.display()))?
         }

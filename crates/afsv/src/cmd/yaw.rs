@@ -187,7 +187,8 @@ fn load_params(v: &VehicleArgs) -> Result<YawPlaneParams, Box<dyn std::error::Er
 
 /// Read and validate a yaw-plane parameter file.
 pub fn read_params(path: &Path) -> Result<YawPlaneParams, Box<dyn std::error::Error>> {
-    let text = std::fs::read_to_string(path).map_err(|e| format!("{}: {e}", path.display()))?;
+    let text = afsv_records::provenance::read_input(path)
+        .map_err(|e| format!("{}: {e}", path.display()))?;
     let p: YawPlaneParams =
         serde_json::from_str(&text).map_err(|e| format!("{}: {e}", path.display()))?;
     p.validate()
@@ -402,6 +403,7 @@ pub fn run(cmd: Command) -> CmdResult {
                 "solver_stats": rec.stats,
             });
             afsv::output::check_finite_record(&out)?;
+            afsv::provenance::stamp_record(&mut out);
             out.write(&output)?;
             afsv::output::print_json(&serde_json::json!({
                 "output": output,

@@ -67,6 +67,7 @@ pub(super) fn path_change_cmd(
             "params": p,
         });
         afsv::output::check_finite_record(&r)?;
+        afsv::provenance::stamp_record(&mut r);
         r.write(path)?;
     }
     if let Some(path) = out.plot.as_deref() {

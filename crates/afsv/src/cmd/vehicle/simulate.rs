@@ -81,6 +81,7 @@ pub(super) fn simulate_cmd(
         "params": p,
     });
     afsv::output::check_finite_record(&out)?;
+    afsv::provenance::stamp_record(&mut out);
     out.write(output)?;
     afsv::output::print_json(&json!({
         "output": output,

@@ -1,0 +1,49 @@
+//! Where an output comes from: the tool, its version, the git commit it was built from, and
+//! every input file the run read with its SHA-256 (`afsv_records::provenance`). Every JSON
+//! that `afsv` prints ([`crate::output::print_json`]) and every record sidecar it writes
+//! ([`stamp_record`]) carries it under `"provenance"`.
+
+use serde_json::{json, Value};
+
+/// The git commit the binary was built from, when it was built from a checkout.
+pub const COMMIT: Option<&str> = option_env!("AFSV_GIT_COMMIT");
+
+/// The provenance of this run so far.
+pub fn stamp() -> Value {
+    let mut v = json!({
+        "tool": "afsv",
+        "version": env!("CARGO_PKG_VERSION"),
+        "commit": COMMIT,
+        "inputs": afsv_records::provenance::inputs(),
+    });
+    if COMMIT.is_none() {
+        v["commit_reason"] = "not built from a git checkout".into();
+    }
+    v
+}
+
+/// Put the provenance into a record's sidecar metadata (making it an object if it was
+/// empty).
+pub fn stamp_record(rec: &mut afsv_records::Record) {
+    if !rec.meta.is_object() {
+        rec.meta = json!({});
+    }
+    rec.meta["provenance"] = stamp();
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_stamp_names_the_tool_version_and_inputs() {
+        let s = stamp();
+        assert_eq!(s["tool"], "afsv");
+        assert_eq!(s["version"], env!("CARGO_PKG_VERSION"));
+        assert!(s["inputs"].is_array());
+        assert!(s["commit"].is_string() || s["commit_reason"].is_string());
+        let mut rec = afsv_records::Record::new();
+        stamp_record(&mut rec);
+        assert_eq!(rec.meta["provenance"]["tool"], "afsv");
+    }
+}
