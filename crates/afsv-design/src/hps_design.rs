@@ -23,12 +23,13 @@ pub struct HpsDesign {
 }
 
 impl HpsDesign {
-    /// A design with every area finite and positive.
+    /// A design with every area finite, positive and inside the strut registry's plausible
+    /// range (`afsv params list strut`: A_hc up to 0.2 m², A_v and A_b up to 1e-3 m²).
     pub fn new(a_hc: f64, a_v: f64, a_b: f64) -> Result<Self, DesignError> {
         Ok(Self {
-            a_hc: positive("a_hc", a_hc)?,
-            a_v: positive("a_v", a_v)?,
-            a_b: positive("a_b", a_b)?,
+            a_hc: plausible("a_hc", a_hc)?,
+            a_v: plausible("a_v", a_v)?,
+            a_b: plausible("a_b", a_b)?,
         })
     }
 
@@ -59,9 +60,37 @@ impl HpsDesign {
     }
 }
 
+/// `value` if positive and inside the strut registry's range of `name`.
+fn plausible(name: &'static str, value: f64) -> Result<f64, DesignError> {
+    use vehicle_components::ParamSet;
+    let v = positive(name, value)?;
+    let nominal = StrutParams::front_axle();
+    let (_, spec) = nominal.find(name).map_err(|_| DesignError::Invalid {
+        field: name,
+        value,
+        reason: "not a strut parameter",
+    })?;
+    if v > spec.upper || v < spec.lower {
+        return Err(DesignError::Invalid {
+            field: name,
+            value,
+            reason: "outside the strut's plausible range (afsv params list strut)",
+        });
+    }
+    Ok(v)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn implausible_areas_are_refused() {
+        assert!(HpsDesign::new(0.038, 8e-6, 1.1e-5).is_ok());
+        assert!(HpsDesign::new(0.038, 9999.0, 1.1e-5).is_err());
+        assert!(HpsDesign::new(5.0, 8e-6, 1.1e-5).is_err());
+        assert!(HpsDesign::new(0.038, 8e-6, f64::NAN).is_err());
+    }
 
     #[test]
     fn zero_design_change_returns_the_nominal_set() {
