@@ -90,7 +90,16 @@ fn main() -> ExitCode {
                 .take_while(|l| !l.trim().is_empty() && !l.starts_with("Usage:"))
                 .map(str::trim)
                 .collect();
-            let message = message.join(" ");
+            let mut message = message.join(" ");
+            // clap's suggestions ("tip: a similar argument exists: '--speed-kmh'") follow
+            // after a blank line: keep them.
+            for tip in text
+                .lines()
+                .map(str::trim)
+                .filter(|l| l.starts_with("tip:"))
+            {
+                message = format!("{message}; {tip}");
+            }
             let message = message.strip_prefix("error: ").unwrap_or(&message);
             eprintln!("afsv: error: {} (see `afsv --help`)", one_line(message));
             return ExitCode::from(2);

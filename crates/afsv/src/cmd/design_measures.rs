@@ -295,6 +295,44 @@ pub fn assess_runs(with_hps: bool, seeds: usize) -> usize {
     (1 + usize::from(with_hps)) * (1 + 3 * seeds)
 }
 
+/// Whether the means of `a` and `b` differ by at least twice the standard error of their
+/// difference over the seeds (`sqrt(sd_a²/n_a + sd_b²/n_b)`); with one seed nothing is
+/// settled.
+pub fn settled(a: &Spread, b: &Spread) -> bool {
+    let se = (a.sd * a.sd / a.n as f64 + b.sd * b.sd / b.n as f64).sqrt();
+    a.n > 1 && b.n > 1 && (a.mean - b.mean).abs() >= 2.0 * se
+}
+
+/// The HPS's relative changes (percent) with whether each is settled over the seeds
+/// ([`settled`]), as JSON; `None` without an HPS.
+pub fn hps_changes(d: &DesignMeasures) -> Option<serde_json::Value> {
+    let h = d.nominal_hps.as_ref()?;
+    let u = &d.unsuspended;
+    let one = |with: &Spread, base: &Spread| {
+        serde_json::json!({
+            "percent": 100.0 * (with.mean / base.mean - 1.0),
+            "settled_over_seeds": settled(with, base),
+        })
+    };
+    Some(serde_json::json!({
+        "a_wz_unloaded": one(&h.ride_unloaded.a_wz_m_s2, &u.ride_unloaded.a_wz_m_s2),
+        "a_wz_loaded": one(&h.ride_loaded.a_wz_m_s2, &u.ride_loaded.a_wz_m_s2),
+        "sp_drt": one(&h.sp_drt_m_s2, &u.sp_drt_m_s2),
+        "rule": "settled: the means differ by at least twice the standard error of the difference over the seeds",
+    }))
+}
+
+/// The relative change from `base` to `with` in percent, marked when it lies within the
+/// seed spread ([`settled`]).
+fn change(with: &Spread, base: &Spread) -> String {
+    let pct = 100.0 * (with.mean / base.mean - 1.0);
+    if settled(with, base) {
+        format!("{pct:+.1} %")
+    } else {
+        format!("{pct:+.1} % (within the seed spread)")
+    }
+}
+
 /// `mean ± sd` with `digits` decimals.
 fn pm(s: &Spread, digits: usize) -> String {
     format!("{:.digits$} ± {:.digits$}", s.mean, s.sd)
@@ -354,7 +392,7 @@ pub fn to_text(d: &DesignMeasures) -> String {
         "Hz",
     );
     s += &row(
-        "yaw damping ratio",
+        "yaw damping ratio (D3 decay fit)",
         &|a| format!("{:.3}", a.yaw.damping_ratio),
         "-",
     );
@@ -372,12 +410,13 @@ pub fn to_text(d: &DesignMeasures) -> String {
     if let Some(h) = &d.nominal_hps {
         let u = &d.unsuspended;
         s += &format!(
-            "  HPS change: a_wz {:+.0} % unloaded, {:+.0} % loaded; SP-DRT {:+.1} %; omega_z {:+.1} %\n",
-            100.0 * (h.ride_unloaded.a_wz_m_s2.mean / u.ride_unloaded.a_wz_m_s2.mean - 1.0),
-            100.0 * (h.ride_loaded.a_wz_m_s2.mean / u.ride_loaded.a_wz_m_s2.mean - 1.0),
-            100.0 * (h.sp_drt_m_s2.mean / u.sp_drt_m_s2.mean - 1.0),
+            "  HPS change: a_wz {} unloaded, {} loaded; SP-DRT {}; omega_z {:+.1} %\n",
+            change(&h.ride_unloaded.a_wz_m_s2, &u.ride_unloaded.a_wz_m_s2),
+            change(&h.ride_loaded.a_wz_m_s2, &u.ride_loaded.a_wz_m_s2),
+            change(&h.sp_drt_m_s2, &u.sp_drt_m_s2),
             100.0 * (h.yaw.omega_z_hz / u.yaw.omega_z_hz - 1.0),
         );
+        s += "  (\"within the seed spread\": the change is less than twice its standard error over\n   the seeds, so its sign is not settled; run more --seeds)\n";
     } else {
         s += "  (the description gives the front axle no strut: no HPS column)\n";
     }
