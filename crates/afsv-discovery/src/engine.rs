@@ -2,7 +2,9 @@
 
 use super::evidence::{self, Evidence};
 use super::fitting::{Config, Context, Fitted};
+use super::form::{self, FormRule, NamingTests, Outcome};
 use super::layout::{channel_scales, RecordSet};
+use super::placebo::WithPlacebos;
 use super::signature::{channel_signature, ChannelSignature};
 use super::stats::{self, SignificanceRule};
 use super::{ActiveEffect, DiscoveryError, DiscoveryModel};
@@ -41,6 +43,8 @@ pub struct DiscoveryOptions {
     /// held-out gain the rule requires); the others stop after scouting (the report lists
     /// them as pruned). Each full fit replays every training record dozens of times.
     pub finalists: usize,
+    /// The naming tests a significant candidate must pass to be named ([`form`]).
+    pub form: FormRule,
 }
 
 /// Levenberg-Marquardt iterations of a scouting fit (see [`DiscoveryOptions::starts`]).
@@ -59,6 +63,7 @@ impl Default for DiscoveryOptions {
             scout_records: 8,
             polish_iterations: 6,
             finalists: 3,
+            form: FormRule::default(),
         }
     }
 }
@@ -152,6 +157,8 @@ pub struct Step {
     /// stood, started from that candidate's solution, explained the same gap, so the round
     /// was repeated against the better-fitted model.
     pub attribution: Option<String>,
+    /// The naming tests of the round's best candidate when it was significant.
+    pub naming_tests: Option<NamingTests>,
 }
 
 /// The conditions one record was replayed under.
@@ -196,6 +203,10 @@ pub struct Discovery {
     pub gap_shrink: f64,
     /// When nothing was named: the best candidate's share of the reducible gap.
     pub best_unnamed_shrink: Option<(String, f64)>,
+    /// The calibrated baseline's held-out error over the noise floor.
+    pub excess_over_noise: f64,
+    /// What was found: effects named, a model-form discrepancy, or nothing missing.
+    pub outcome: Outcome,
 }
 
 /// Per-channel error of a configuration given as baseline values and active effects,
@@ -247,7 +258,15 @@ pub fn calibrate<M: DiscoveryModel + ?Sized>(
 ) -> Result<FitOutcome, DiscoveryError> {
     let names: Vec<String> = (1..=train.len()).map(|i| i.to_string()).collect();
     let prep = prepare_all(model, train, &names)?;
-    let ctx = context(model, train, &prep, train, &prep, opts)?;
+    let ctx = context(
+        model,
+        train,
+        &prep,
+        train,
+        &prep,
+        opts,
+        model.catalogue().len(),
+    )?;
     let nominal = nominal_config(&ctx);
     let (calibrated, _, _) = ctx.fit(
         Config {
@@ -275,11 +294,15 @@ pub fn discover<M: DiscoveryModel + ?Sized>(
         return Err(DiscoveryError::NoRecords);
     }
     check_candidates(model, opts)?;
+    // Placebo candidates follow the catalogue; only the naming tests fit them.
+    let wrapped = WithPlacebos::new(model);
+    let real = wrapped.real;
+    let model = &wrapped;
     let train_names = labels(train_names, train.len(), "train");
     let holdout_names = labels(holdout_names, holdout.len(), "holdout");
     let tp = prepare_all(model, train, &train_names)?;
     let hp = prepare_all(model, holdout, &holdout_names)?;
-    let ctx = context(model, train, &tp, holdout, &hp, opts)?;
+    let ctx = context(model, train, &tp, holdout, &hp, opts, real)?;
     let mut conditions = Vec::new();
     for (set, names, prep) in [
         ("train", &train_names, &tp),
@@ -313,6 +336,7 @@ pub fn discover<M: DiscoveryModel + ?Sized>(
     let holdout_noise_mse = ctx.holdout.noise_mse();
     let search = search(
         &ctx,
+        real,
         &nominal_cfg.baseline,
         calibrated_fit,
         holdout_noise_mse,
@@ -332,6 +356,18 @@ pub fn discover<M: DiscoveryModel + ?Sized>(
             stats::gap_shrink(calibrated.holdout_mse, *mse, holdout_noise_mse),
         )
     });
+    let excess_over_noise = if holdout_noise_mse > 0.0 {
+        calibrated.holdout_mse / holdout_noise_mse
+    } else {
+        f64::INFINITY
+    };
+    let outcome = outcome(
+        &search,
+        &calibrated,
+        holdout_noise_mse,
+        excess_over_noise,
+        &opts.form,
+    );
     let evidence = evidence::of_named(&ctx, &search.named, &search.chain, &holdout_names)?;
     let tb = ctx.channel_errors(&ctx.train, &calibrated_cfg);
     let ta = ctx.channel_errors(&ctx.train, &current.1);
@@ -358,7 +394,64 @@ pub fn discover<M: DiscoveryModel + ?Sized>(
         holdout_noise_mse,
         gap_shrink,
         best_unnamed_shrink,
+        excess_over_noise,
+        outcome,
     })
+}
+
+/// The outcome of a search (see [`Outcome`] and [`form`]).
+fn outcome(
+    s: &Search,
+    calibrated: &super::FitOutcome,
+    noise: f64,
+    excess: f64,
+    rule: &FormRule,
+) -> Outcome {
+    let failed = s
+        .steps
+        .iter()
+        .filter_map(|st| st.naming_tests.as_ref())
+        .find(|t| !t.passed());
+    if !s.named.is_empty() {
+        return Outcome::Named {
+            effects: s.named.clone(),
+            remainder: failed.map(|t| {
+                format!(
+                    "model-form discrepancy: the closest candidate {} fails: {}",
+                    t.effect,
+                    t.failed.join("; ")
+                )
+            }),
+        };
+    }
+    if let Some(t) = failed {
+        let explains = s.rejected.as_ref().map_or(0.0, |mse| {
+            stats::gap_shrink(calibrated.holdout_mse, *mse, noise)
+        });
+        return Outcome::ModelFormDiscrepancy {
+            excess_over_noise: excess,
+            closest: Some(t.effect.clone()),
+            explains,
+            failed: t.failed.clone(),
+        };
+    }
+    if rule.enabled && excess > rule.noise_ratio {
+        let best = s.best_unnamed.as_ref();
+        return Outcome::ModelFormDiscrepancy {
+            excess_over_noise: excess,
+            closest: best.map(|(n, _)| n.clone()),
+            explains: best.map_or(0.0, |(_, mse)| {
+                stats::gap_shrink(calibrated.holdout_mse, *mse, noise)
+            }),
+            failed: vec![format!(
+                "significance: no candidate passes the significance rule, yet the calibrated baseline leaves more than {} times the noise",
+                rule.noise_ratio
+            )],
+        };
+    }
+    Outcome::NothingMissing {
+        excess_over_noise: excess,
+    }
 }
 
 fn labels(names: &[String], n: usize, set: &str) -> Vec<String> {
@@ -402,6 +495,7 @@ fn context<'a, M: DiscoveryModel + ?Sized>(
     holdout: &'a [Record],
     hp: &'a [M::Prepared],
     opts: &'a DiscoveryOptions,
+    real: usize,
 ) -> Result<Context<'a, M>, DiscoveryError> {
     let channels = model.channels();
     let base_specs = model.baseline_params();
@@ -435,6 +529,7 @@ fn context<'a, M: DiscoveryModel + ?Sized>(
         holdout: set(holdout, hp, &(0..holdout.len()).collect::<Vec<_>>())?,
         base_specs,
         catalogue: model.catalogue(),
+        real,
         opts,
     })
 }
@@ -493,6 +588,8 @@ struct Search {
     /// The model before each named effect and after it, in naming order.
     chain: Vec<(Config, Config)>,
     best_unnamed: Option<(String, f64)>,
+    /// Held-out error of a significant candidate that failed a naming test.
+    rejected: Option<f64>,
 }
 
 /// Rounds repeated after a failed attribution check (each lowers the reference's training
@@ -503,6 +600,7 @@ const MAX_REPEATS: usize = 2;
 /// the significance rule and the attribution check, refit, repeat.
 fn search<M: DiscoveryModel + ?Sized>(
     ctx: &Context<'_, M>,
+    real: usize,
     nominal_base: &[f64],
     calibrated: Fitted,
     holdout_noise_mse: f64,
@@ -517,6 +615,7 @@ fn search<M: DiscoveryModel + ?Sized>(
         named: Vec::new(),
         chain: Vec::new(),
         best_unnamed: None,
+        rejected: None,
     };
     let mut repeats = 0;
     while s.named.len() < opts.max_effects {
@@ -558,6 +657,7 @@ fn search<M: DiscoveryModel + ?Sized>(
                     candidates: round.choices,
                     named: None,
                     attribution: Some(note),
+                    naming_tests: None,
                 });
                 s.current = better;
                 repeats += 1;
@@ -567,7 +667,21 @@ fn search<M: DiscoveryModel + ?Sized>(
                 break;
             }
         }
-        let named = accepted.map(|(c, name)| (c.clone(), name.clone()));
+        let tests = match accepted {
+            Some((cand, _)) if opts.form.enabled => {
+                let t = form::naming_tests(ctx, &s.current, cand, nominal_base, real)?;
+                progress.fit_done("naming tests");
+                Some(t)
+            }
+            _ => None,
+        };
+        let passed = tests.as_ref().is_none_or(NamingTests::passed);
+        let named = accepted
+            .filter(|_| passed)
+            .map(|(c, name)| (c.clone(), name.clone()));
+        if !passed {
+            s.rejected = accepted.map(|(c, _)| c.0.holdout_mse);
+        }
         if named.is_none() && s.named.is_empty() {
             s.best_unnamed = round
                 .best
@@ -578,6 +692,7 @@ fn search<M: DiscoveryModel + ?Sized>(
             candidates: round.choices,
             named: named.as_ref().map(|(_, n)| n.clone()),
             attribution: None,
+            naming_tests: tests,
         });
         let Some((cand, name)) = named else {
             break;
@@ -613,7 +728,7 @@ fn round<M: DiscoveryModel + ?Sized>(
 ) -> Result<Option<Round>, DiscoveryError> {
     let opts = ctx.opts;
     let (cur, cfg, n_eff) = current;
-    let tried: Vec<usize> = (0..ctx.catalogue.len())
+    let tried: Vec<usize> = (0..ctx.real)
         .filter(|&e| !cfg.effects.iter().any(|(a, _)| *a == e))
         .filter(|&e| {
             opts.candidates

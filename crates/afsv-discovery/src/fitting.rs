@@ -89,6 +89,8 @@ pub(crate) struct Context<'a, M: DiscoveryModel + ?Sized> {
     pub holdout: RecordSet<'a, M::Prepared>,
     pub base_specs: Vec<ParamSpec>,
     pub catalogue: Vec<EffectSpec>,
+    /// Catalogue entries from here on are placebos ([`super::placebo`]), never candidates.
+    pub real: usize,
     pub opts: &'a DiscoveryOptions,
 }
 
@@ -426,7 +428,7 @@ impl<M: DiscoveryModel + ?Sized> Context<'_, M> {
 }
 
 /// True when `value` sits on (within 1e-6 of the range of) one of its bounds.
-fn at_bound(value: f64, spec: &ParamSpec) -> bool {
+pub(crate) fn at_bound(value: f64, spec: &ParamSpec) -> bool {
     let span = (spec.upper - spec.lower).abs();
     let tol = 1e-6
         * if span.is_finite() && span > 0.0 {

@@ -40,10 +40,12 @@ mod engine;
 mod error;
 pub mod evidence;
 mod fitting;
+pub mod form;
 pub mod hps;
 mod layout;
 #[cfg(feature = "plots")]
 mod overlay;
+pub mod placebo;
 pub mod report;
 pub mod signature;
 pub mod stats;
@@ -56,6 +58,7 @@ pub use engine::{
 };
 pub use error::DiscoveryError;
 pub use evidence::{Evidence, RecordEvidence};
+pub use form::{FormRule, GroupFit, NamingTests, Outcome};
 
 use afsv_records::Record;
 
@@ -146,6 +149,12 @@ pub trait DiscoveryModel: Sync {
     fn prepare(&self, record: &Record) -> Result<Self::Prepared, DiscoveryError>;
     /// The conditions a prepared record is replayed under, in words (for the report).
     fn condition(&self, prepared: &Self::Prepared) -> String;
+    /// The condition group of a prepared record for the parameter-constancy test of
+    /// [`form`] (strut: quasi-static or dynamic test; vehicle: its load). `None` (the
+    /// default) leaves the record out of that test.
+    fn group(&self, _prepared: &Self::Prepared) -> Option<String> {
+        None
+    }
     /// Simulate a prepared record with the given baseline parameter values and effects;
     /// returns one predicted series per entry of `channels()`, on the record's time base
     /// (`None` for a channel the model cannot predict for this record).
