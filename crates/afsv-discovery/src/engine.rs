@@ -1,7 +1,7 @@
 //! The calibrate / locate / try / name loop of [`discover`](super).
 
 use super::evidence::{self, Evidence};
-use super::fitting::{Config, Context, Fitted};
+use super::fitting::{finalists, spanning_subset, Config, Context, Fitted, Scouted};
 use super::form::{self, FormRule, NamingTests, Outcome};
 use super::layout::{channel_scales, RecordSet};
 use super::placebo::WithPlacebos;
@@ -356,14 +356,15 @@ pub fn discover<M: DiscoveryModel + ?Sized>(
             stats::gap_shrink(calibrated.holdout_mse, *mse, holdout_noise_mse),
         )
     });
-    let excess_over_noise = if holdout_noise_mse > 0.0 {
-        calibrated.holdout_mse / holdout_noise_mse
-    } else {
-        f64::INFINITY
-    };
-    let outcome = outcome(
-        &search,
-        &calibrated,
+    let excess_over_noise = calibrated.holdout_mse / holdout_noise_mse.max(f64::MIN_POSITIVE);
+    let outcome = form::outcome(
+        &form::SearchSummary {
+            named: &search.named,
+            steps: &search.steps,
+            rejected_mse: search.rejected,
+            best_unnamed: search.best_unnamed.as_ref(),
+        },
+        calibrated.holdout_mse,
         holdout_noise_mse,
         excess_over_noise,
         &opts.form,
@@ -397,61 +398,6 @@ pub fn discover<M: DiscoveryModel + ?Sized>(
         excess_over_noise,
         outcome,
     })
-}
-
-/// The outcome of a search (see [`Outcome`] and [`form`]).
-fn outcome(
-    s: &Search,
-    calibrated: &super::FitOutcome,
-    noise: f64,
-    excess: f64,
-    rule: &FormRule,
-) -> Outcome {
-    let failed = s
-        .steps
-        .iter()
-        .filter_map(|st| st.naming_tests.as_ref())
-        .find(|t| !t.passed());
-    if !s.named.is_empty() {
-        return Outcome::Named {
-            effects: s.named.clone(),
-            remainder: failed.map(|t| {
-                format!(
-                    "model-form discrepancy: the closest candidate {} fails: {}",
-                    t.effect,
-                    t.failed.join("; ")
-                )
-            }),
-        };
-    }
-    if let Some(t) = failed {
-        let explains = s.rejected.as_ref().map_or(0.0, |mse| {
-            stats::gap_shrink(calibrated.holdout_mse, *mse, noise)
-        });
-        return Outcome::ModelFormDiscrepancy {
-            excess_over_noise: excess,
-            closest: Some(t.effect.clone()),
-            explains,
-            failed: t.failed.clone(),
-        };
-    }
-    if rule.enabled && excess > rule.noise_ratio {
-        let best = s.best_unnamed.as_ref();
-        return Outcome::ModelFormDiscrepancy {
-            excess_over_noise: excess,
-            closest: best.map(|(n, _)| n.clone()),
-            explains: best.map_or(0.0, |(_, mse)| {
-                stats::gap_shrink(calibrated.holdout_mse, *mse, noise)
-            }),
-            failed: vec![format!(
-                "significance: no candidate passes the significance rule, yet the calibrated baseline leaves more than {} times the noise",
-                rule.noise_ratio
-            )],
-        };
-    }
-    Outcome::NothingMissing {
-        excess_over_noise: excess,
-    }
 }
 
 fn labels(names: &[String], n: usize, set: &str) -> Vec<String> {
@@ -532,17 +478,6 @@ fn context<'a, M: DiscoveryModel + ?Sized>(
         real,
         opts,
     })
-}
-
-/// `k` record indices spread evenly over the records sorted by their conditions, so that
-/// every load, speed range and manoeuvre is represented.
-fn spanning_subset(conditions: &[String], k: usize) -> Vec<usize> {
-    let mut order: Vec<usize> = (0..conditions.len()).collect();
-    order.sort_by(|&a, &b| conditions[a].cmp(&conditions[b]).then(a.cmp(&b)));
-    let n = order.len();
-    let mut picked: Vec<usize> = (0..k.min(n)).map(|i| order[i * n / k.min(n)]).collect();
-    picked.sort_unstable();
-    picked
 }
 
 fn nominal_config<M: DiscoveryModel + ?Sized>(ctx: &Context<'_, M>) -> Config {
@@ -705,10 +640,6 @@ fn search<M: DiscoveryModel + ?Sized>(
     Ok(s)
 }
 
-/// A scouted candidate: its catalogue index and its configuration with the scouting-set
-/// residual sum of squares, or why scouting failed.
-type Scouted = (usize, Result<(Config, f64), DiscoveryError>);
-
 /// The candidates of one round, scored against the current model.
 struct Round {
     choices: Vec<EffectChoice>,
@@ -862,24 +793,4 @@ fn attribution_check<M: DiscoveryModel + ?Sized>(
         refit.0.holdout_mse
     );
     Ok(Some((note, refit)))
-}
-
-/// The candidates worth a fit to convergence: the `k` with the lowest scouting error, of
-/// which all but the best must have lowered the scouting records' error (against the
-/// round's reference `ref_rss`) by at least half the held-out gain the rule requires. A
-/// candidate that has not done that on the training subset is not expected to pass on the
-/// held-out records; the best one is always fitted, so the report can say how close the
-/// round came.
-fn finalists(scouted: &[Scouted], k: usize, ref_rss: f64, min_gain: f64) -> Vec<usize> {
-    let mut ok: Vec<(usize, f64)> = scouted
-        .iter()
-        .filter_map(|(e, r)| r.as_ref().ok().map(|(_, rss)| (*e, *rss)))
-        .collect();
-    ok.sort_by(|a, b| a.1.total_cmp(&b.1));
-    ok.into_iter()
-        .enumerate()
-        .filter(|(i, (_, rss))| *i == 0 || ref_rss - rss >= 0.5 * min_gain * ref_rss)
-        .take(k.max(1))
-        .map(|(_, (e, _))| e)
-        .collect()
 }

@@ -9,7 +9,10 @@
 //! 1. **Bounds.** A fitted effect parameter on a bound of its range fails: the data push it
 //!    beyond any physical value, as a proxy does.
 //! 2. **Placebos.** The generic corrections of [`crate::placebo`] with the same number of
-//!    parameters are fitted exactly as the candidate was. The candidate's held-out gain
+//!    parameters are scouted exactly as the candidate was (same start points, short fits
+//!    with the baseline freed), then get [`crate::DiscoveryOptions::polish_iterations`]
+//!    more iterations on all training records (not the candidate's fit to convergence,
+//!    which costs as much as a whole candidate). The candidate's held-out gain
 //!    `G_e = MSE_ref - MSE_e` must beat the best placebo's `G_p` by a clear margin:
 //!    `G_p <= (1 - m) G_e` with `m` = [`FormRule::placebo_margin`].
 //! 3. **Constancy.** A real effect has one parameter value across conditions. With the
@@ -222,7 +225,7 @@ pub(crate) fn naming_tests<M: DiscoveryModel + ?Sized>(
         .par_iter()
         .filter_map(|&p| {
             let (c, _) = ctx.scout_candidate(&current.1, nominal_base, p).ok()?;
-            let f = ctx.finish_candidate(c, current.2).ok()?;
+            let f = ctx.polish_short(c, current.2).ok()?;
             Some((
                 ctx.catalogue[p].name.clone(),
                 current.0.holdout_mse - f.0.holdout_mse,
@@ -292,6 +295,80 @@ pub(crate) fn naming_tests<M: DiscoveryModel + ?Sized>(
         constant,
         failed,
     })
+}
+
+/// What the outcome of a search depends on.
+pub(crate) struct SearchSummary<'a> {
+    /// Effects named, in order.
+    pub named: &'a [String],
+    /// The rounds.
+    pub steps: &'a [super::Step],
+    /// Held-out error of a significant candidate that failed a naming test.
+    pub rejected_mse: Option<f64>,
+    /// With nothing named: the best candidate and its held-out error.
+    pub best_unnamed: Option<&'a (String, f64)>,
+}
+
+/// The outcome of a search (see [`Outcome`]).
+pub(crate) fn outcome(
+    s: &SearchSummary<'_>,
+    calibrated_mse: f64,
+    noise: f64,
+    excess: f64,
+    rule: &FormRule,
+) -> Outcome {
+    let failed = s
+        .steps
+        .iter()
+        .filter_map(|st| st.naming_tests.as_ref())
+        .find(|t| !t.passed());
+    if !s.named.is_empty() {
+        return Outcome::Named {
+            effects: s.named.to_vec(),
+            remainder: failed.map(|t| {
+                format!(
+                    "model-form discrepancy: the closest candidate {} fails: {}",
+                    t.effect,
+                    t.failed.join("; ")
+                )
+            }),
+        };
+    }
+    if let Some(t) = failed {
+        let explains = s
+            .rejected_mse
+            .map_or(0.0, |mse| stats::gap_shrink(calibrated_mse, mse, noise));
+        return Outcome::ModelFormDiscrepancy {
+            excess_over_noise: excess,
+            closest: Some(t.effect.clone()),
+            explains,
+            failed: t.failed.clone(),
+        };
+    }
+    if rule.enabled && excess > rule.noise_ratio {
+        let best = s.best_unnamed;
+        return Outcome::ModelFormDiscrepancy {
+            excess_over_noise: excess,
+            closest: best.map(|(n, _)| n.clone()),
+            explains: best.map_or(0.0, |(_, mse)| {
+                stats::gap_shrink(calibrated_mse, *mse, noise)
+            }),
+            failed: vec![if s.steps.is_empty() {
+                format!(
+                    "no candidate was tried (the effect limit or the candidate list), and the calibrated baseline leaves more than {} times the noise",
+                    rule.noise_ratio
+                )
+            } else {
+                format!(
+                    "significance: no candidate passes the significance rule, yet the calibrated baseline leaves more than {} times the noise",
+                    rule.noise_ratio
+                )
+            }],
+        };
+    }
+    Outcome::NothingMissing {
+        excess_over_noise: excess,
+    }
 }
 
 /// Whether two groups' values agree (see the module docs).
