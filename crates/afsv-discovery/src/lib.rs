@@ -9,9 +9,13 @@
 //! 2. **Locate** the disagreement per channel, per phase and by signature ([`signature`]).
 //! 3. **Try** every effect of the model's catalogue: fit its parameters (with the baseline's
 //!    calibrated parameters freed again) on the training records, score it on held-out records.
-//! 4. **Name** an effect only when the improvement is significant ([`stats`]), add it, repeat.
-//! 5. **Report** the effects named, fitted parameters with standard errors, before/after errors
-//!    and the gap shrink ([`report`]).
+//! 4. **Name** an effect only when the improvement is significant ([`stats`]) and it passes
+//!    the naming tests that tell a missing effect from a model-form difference (bounds,
+//!    [`placebo`] candidates, parameter constancy across condition groups: [`form`]); add it,
+//!    repeat.
+//! 5. **Report** the outcome ([`Outcome`]: named / model-form discrepancy / nothing
+//!    missing), the effects named, fitted parameters with standard errors, before/after
+//!    errors and the gap shrink ([`report`]).
 //!
 //! Two models come with the crate: the hydro-pneumatic strut on a bench ([`hps`]) and the
 //! yaw-plane vehicle with hydraulic frame steering ([`yaw`]); [`synth`] writes
