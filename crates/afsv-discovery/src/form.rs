@@ -60,7 +60,7 @@ impl Default for FormRule {
         Self {
             placebo_margin: 0.3,
             constancy_z: 3.0,
-            constancy_rel: 0.3,
+            constancy_rel: 0.1,
             noise_ratio: 4.0,
             enabled: true,
         }
