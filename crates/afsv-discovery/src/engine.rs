@@ -356,7 +356,9 @@ pub fn discover<M: DiscoveryModel + ?Sized>(
             stats::gap_shrink(calibrated.holdout_mse, *mse, holdout_noise_mse),
         )
     });
-    let excess_over_noise = calibrated.holdout_mse / holdout_noise_mse.max(f64::MIN_POSITIVE);
+    // Finite even on noise-free records (JSON has no infinity).
+    let excess_over_noise =
+        (calibrated.holdout_mse / holdout_noise_mse.max(f64::MIN_POSITIVE)).min(f64::MAX);
     let outcome = form::outcome(
         &form::SearchSummary {
             named: &search.named,

@@ -118,6 +118,7 @@ pub enum Outcome {
         /// In naming order.
         effects: Vec<String>,
         /// After them, a significant candidate that failed a naming test, in words.
+        #[serde(skip_serializing_if = "Option::is_none")]
         remainder: Option<String>,
     },
     /// The calibrated baseline differs from the records in a way no catalogue effect
@@ -126,6 +127,7 @@ pub enum Outcome {
         /// Calibrated baseline's held-out error over the noise floor.
         excess_over_noise: f64,
         /// The closest candidate.
+        #[serde(skip_serializing_if = "Option::is_none")]
         closest: Option<String>,
         /// Its share of the reducible held-out gap.
         explains: f64,
