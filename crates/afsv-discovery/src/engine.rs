@@ -1,8 +1,10 @@
 //! The calibrate / locate / try / name loop of [`discover`](super).
 
 use super::evidence::{self, Evidence};
-use super::fitting::{Config, Context, Fitted};
+use super::fitting::{finalists, spanning_subset, Config, Context, Fitted, Scouted};
+use super::form::{self, FormRule, NamingTests, Outcome};
 use super::layout::{channel_scales, RecordSet};
+use super::placebo::WithPlacebos;
 use super::signature::{channel_signature, ChannelSignature};
 use super::stats::{self, SignificanceRule};
 use super::{ActiveEffect, DiscoveryError, DiscoveryModel};
@@ -41,6 +43,8 @@ pub struct DiscoveryOptions {
     /// held-out gain the rule requires); the others stop after scouting (the report lists
     /// them as pruned). Each full fit replays every training record dozens of times.
     pub finalists: usize,
+    /// The naming tests a significant candidate must pass to be named ([`form`]).
+    pub form: FormRule,
 }
 
 /// Levenberg-Marquardt iterations of a scouting fit (see [`DiscoveryOptions::starts`]).
@@ -59,6 +63,7 @@ impl Default for DiscoveryOptions {
             scout_records: 8,
             polish_iterations: 6,
             finalists: 3,
+            form: FormRule::default(),
         }
     }
 }
@@ -152,6 +157,8 @@ pub struct Step {
     /// stood, started from that candidate's solution, explained the same gap, so the round
     /// was repeated against the better-fitted model.
     pub attribution: Option<String>,
+    /// The naming tests of the round's best candidate when it was significant.
+    pub naming_tests: Option<NamingTests>,
 }
 
 /// The conditions one record was replayed under.
@@ -196,6 +203,10 @@ pub struct Discovery {
     pub gap_shrink: f64,
     /// When nothing was named: the best candidate's share of the reducible gap.
     pub best_unnamed_shrink: Option<(String, f64)>,
+    /// The calibrated baseline's held-out error over the noise floor.
+    pub excess_over_noise: f64,
+    /// What was found: effects named, a model-form discrepancy, or nothing missing.
+    pub outcome: Outcome,
 }
 
 /// Per-channel error of a configuration given as baseline values and active effects,
@@ -247,7 +258,15 @@ pub fn calibrate<M: DiscoveryModel + ?Sized>(
 ) -> Result<FitOutcome, DiscoveryError> {
     let names: Vec<String> = (1..=train.len()).map(|i| i.to_string()).collect();
     let prep = prepare_all(model, train, &names)?;
-    let ctx = context(model, train, &prep, train, &prep, opts)?;
+    let ctx = context(
+        model,
+        train,
+        &prep,
+        train,
+        &prep,
+        opts,
+        model.catalogue().len(),
+    )?;
     let nominal = nominal_config(&ctx);
     let (calibrated, _, _) = ctx.fit(
         Config {
@@ -275,11 +294,15 @@ pub fn discover<M: DiscoveryModel + ?Sized>(
         return Err(DiscoveryError::NoRecords);
     }
     check_candidates(model, opts)?;
+    // Placebo candidates follow the catalogue; only the naming tests fit them.
+    let wrapped = WithPlacebos::new(model);
+    let real = wrapped.real;
+    let model = &wrapped;
     let train_names = labels(train_names, train.len(), "train");
     let holdout_names = labels(holdout_names, holdout.len(), "holdout");
     let tp = prepare_all(model, train, &train_names)?;
     let hp = prepare_all(model, holdout, &holdout_names)?;
-    let ctx = context(model, train, &tp, holdout, &hp, opts)?;
+    let ctx = context(model, train, &tp, holdout, &hp, opts, real)?;
     let mut conditions = Vec::new();
     for (set, names, prep) in [
         ("train", &train_names, &tp),
@@ -313,6 +336,7 @@ pub fn discover<M: DiscoveryModel + ?Sized>(
     let holdout_noise_mse = ctx.holdout.noise_mse();
     let search = search(
         &ctx,
+        real,
         &nominal_cfg.baseline,
         calibrated_fit,
         holdout_noise_mse,
@@ -332,6 +356,21 @@ pub fn discover<M: DiscoveryModel + ?Sized>(
             stats::gap_shrink(calibrated.holdout_mse, *mse, holdout_noise_mse),
         )
     });
+    // Finite even on noise-free records (JSON has no infinity).
+    let excess_over_noise =
+        (calibrated.holdout_mse / holdout_noise_mse.max(f64::MIN_POSITIVE)).min(f64::MAX);
+    let outcome = form::outcome(
+        &form::SearchSummary {
+            named: &search.named,
+            steps: &search.steps,
+            rejected_mse: search.rejected,
+            best_unnamed: search.best_unnamed.as_ref(),
+        },
+        calibrated.holdout_mse,
+        holdout_noise_mse,
+        excess_over_noise,
+        &opts.form,
+    );
     let evidence = evidence::of_named(&ctx, &search.named, &search.chain, &holdout_names)?;
     let tb = ctx.channel_errors(&ctx.train, &calibrated_cfg);
     let ta = ctx.channel_errors(&ctx.train, &current.1);
@@ -358,6 +397,8 @@ pub fn discover<M: DiscoveryModel + ?Sized>(
         holdout_noise_mse,
         gap_shrink,
         best_unnamed_shrink,
+        excess_over_noise,
+        outcome,
     })
 }
 
@@ -402,6 +443,7 @@ fn context<'a, M: DiscoveryModel + ?Sized>(
     holdout: &'a [Record],
     hp: &'a [M::Prepared],
     opts: &'a DiscoveryOptions,
+    real: usize,
 ) -> Result<Context<'a, M>, DiscoveryError> {
     let channels = model.channels();
     let base_specs = model.baseline_params();
@@ -435,19 +477,9 @@ fn context<'a, M: DiscoveryModel + ?Sized>(
         holdout: set(holdout, hp, &(0..holdout.len()).collect::<Vec<_>>())?,
         base_specs,
         catalogue: model.catalogue(),
+        real,
         opts,
     })
-}
-
-/// `k` record indices spread evenly over the records sorted by their conditions, so that
-/// every load, speed range and manoeuvre is represented.
-fn spanning_subset(conditions: &[String], k: usize) -> Vec<usize> {
-    let mut order: Vec<usize> = (0..conditions.len()).collect();
-    order.sort_by(|&a, &b| conditions[a].cmp(&conditions[b]).then(a.cmp(&b)));
-    let n = order.len();
-    let mut picked: Vec<usize> = (0..k.min(n)).map(|i| order[i * n / k.min(n)]).collect();
-    picked.sort_unstable();
-    picked
 }
 
 fn nominal_config<M: DiscoveryModel + ?Sized>(ctx: &Context<'_, M>) -> Config {
@@ -493,6 +525,8 @@ struct Search {
     /// The model before each named effect and after it, in naming order.
     chain: Vec<(Config, Config)>,
     best_unnamed: Option<(String, f64)>,
+    /// Held-out error of a significant candidate that failed a naming test.
+    rejected: Option<f64>,
 }
 
 /// Rounds repeated after a failed attribution check (each lowers the reference's training
@@ -503,6 +537,7 @@ const MAX_REPEATS: usize = 2;
 /// the significance rule and the attribution check, refit, repeat.
 fn search<M: DiscoveryModel + ?Sized>(
     ctx: &Context<'_, M>,
+    real: usize,
     nominal_base: &[f64],
     calibrated: Fitted,
     holdout_noise_mse: f64,
@@ -517,6 +552,7 @@ fn search<M: DiscoveryModel + ?Sized>(
         named: Vec::new(),
         chain: Vec::new(),
         best_unnamed: None,
+        rejected: None,
     };
     let mut repeats = 0;
     while s.named.len() < opts.max_effects {
@@ -558,6 +594,7 @@ fn search<M: DiscoveryModel + ?Sized>(
                     candidates: round.choices,
                     named: None,
                     attribution: Some(note),
+                    naming_tests: None,
                 });
                 s.current = better;
                 repeats += 1;
@@ -567,7 +604,21 @@ fn search<M: DiscoveryModel + ?Sized>(
                 break;
             }
         }
-        let named = accepted.map(|(c, name)| (c.clone(), name.clone()));
+        let tests = match accepted {
+            Some((cand, _)) if opts.form.enabled => {
+                let t = form::naming_tests(ctx, &s.current, cand, nominal_base, real)?;
+                progress.fit_done("naming tests");
+                Some(t)
+            }
+            _ => None,
+        };
+        let passed = tests.as_ref().is_none_or(NamingTests::passed);
+        let named = accepted
+            .filter(|_| passed)
+            .map(|(c, name)| (c.clone(), name.clone()));
+        if !passed {
+            s.rejected = accepted.map(|(c, _)| c.0.holdout_mse);
+        }
         if named.is_none() && s.named.is_empty() {
             s.best_unnamed = round
                 .best
@@ -578,6 +629,7 @@ fn search<M: DiscoveryModel + ?Sized>(
             candidates: round.choices,
             named: named.as_ref().map(|(_, n)| n.clone()),
             attribution: None,
+            naming_tests: tests,
         });
         let Some((cand, name)) = named else {
             break;
@@ -589,10 +641,6 @@ fn search<M: DiscoveryModel + ?Sized>(
     }
     Ok(s)
 }
-
-/// A scouted candidate: its catalogue index and its configuration with the scouting-set
-/// residual sum of squares, or why scouting failed.
-type Scouted = (usize, Result<(Config, f64), DiscoveryError>);
 
 /// The candidates of one round, scored against the current model.
 struct Round {
@@ -613,7 +661,7 @@ fn round<M: DiscoveryModel + ?Sized>(
 ) -> Result<Option<Round>, DiscoveryError> {
     let opts = ctx.opts;
     let (cur, cfg, n_eff) = current;
-    let tried: Vec<usize> = (0..ctx.catalogue.len())
+    let tried: Vec<usize> = (0..ctx.real)
         .filter(|&e| !cfg.effects.iter().any(|(a, _)| *a == e))
         .filter(|&e| {
             opts.candidates
@@ -747,24 +795,4 @@ fn attribution_check<M: DiscoveryModel + ?Sized>(
         refit.0.holdout_mse
     );
     Ok(Some((note, refit)))
-}
-
-/// The candidates worth a fit to convergence: the `k` with the lowest scouting error, of
-/// which all but the best must have lowered the scouting records' error (against the
-/// round's reference `ref_rss`) by at least half the held-out gain the rule requires. A
-/// candidate that has not done that on the training subset is not expected to pass on the
-/// held-out records; the best one is always fitted, so the report can say how close the
-/// round came.
-fn finalists(scouted: &[Scouted], k: usize, ref_rss: f64, min_gain: f64) -> Vec<usize> {
-    let mut ok: Vec<(usize, f64)> = scouted
-        .iter()
-        .filter_map(|(e, r)| r.as_ref().ok().map(|(_, rss)| (*e, *rss)))
-        .collect();
-    ok.sort_by(|a, b| a.1.total_cmp(&b.1));
-    ok.into_iter()
-        .enumerate()
-        .filter(|(i, (_, rss))| *i == 0 || ref_rss - rss >= 0.5 * min_gain * ref_rss)
-        .take(k.max(1))
-        .map(|(_, (e, _))| e)
-        .collect()
 }

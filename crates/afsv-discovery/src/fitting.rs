@@ -89,6 +89,8 @@ pub(crate) struct Context<'a, M: DiscoveryModel + ?Sized> {
     pub holdout: RecordSet<'a, M::Prepared>,
     pub base_specs: Vec<ParamSpec>,
     pub catalogue: Vec<EffectSpec>,
+    /// Catalogue entries from here on are placebos ([`super::placebo`]), never candidates.
+    pub real: usize,
     pub opts: &'a DiscoveryOptions,
 }
 
@@ -194,6 +196,12 @@ impl<M: DiscoveryModel + ?Sized> Context<'_, M> {
     ) -> Result<Fitted, DiscoveryError> {
         let (fitted, se, converged, _) = self.fit_on(&start, &self.train, max_iter)?;
         self.score(fitted, &se, converged, n_eff)
+    }
+
+    /// A short fit of a scouted configuration: [`DiscoveryOptions::polish_iterations`] on
+    /// all training records, then scored (the placebos' budget in [`super::form`]).
+    pub fn polish_short(&self, config: Config, n_eff: f64) -> Result<Fitted, DiscoveryError> {
+        self.polish(config, self.opts.polish_iterations, Some(n_eff))
     }
 
     /// Residual sum of squares of a configuration on the scouting records.
@@ -426,7 +434,7 @@ impl<M: DiscoveryModel + ?Sized> Context<'_, M> {
 }
 
 /// True when `value` sits on (within 1e-6 of the range of) one of its bounds.
-fn at_bound(value: f64, spec: &ParamSpec) -> bool {
+pub(crate) fn at_bound(value: f64, spec: &ParamSpec) -> bool {
     let span = (spec.upper - spec.lower).abs();
     let tol = 1e-6
         * if span.is_finite() && span > 0.0 {
@@ -440,4 +448,39 @@ fn at_bound(value: f64, spec: &ParamSpec) -> bool {
 /// Sum of squares.
 pub(crate) fn sum_sq(r: &[f64]) -> f64 {
     r.iter().map(|v| v * v).sum()
+}
+
+/// A scouted candidate: its catalogue index and its configuration with the scouting-set
+/// residual sum of squares, or why scouting failed.
+pub(crate) type Scouted = (usize, Result<(Config, f64), DiscoveryError>);
+
+/// `k` record indices spread evenly over the records sorted by their conditions, so that
+/// every load, speed range and manoeuvre is represented.
+pub(crate) fn spanning_subset(conditions: &[String], k: usize) -> Vec<usize> {
+    let mut order: Vec<usize> = (0..conditions.len()).collect();
+    order.sort_by(|&a, &b| conditions[a].cmp(&conditions[b]).then(a.cmp(&b)));
+    let n = order.len();
+    let mut picked: Vec<usize> = (0..k.min(n)).map(|i| order[i * n / k.min(n)]).collect();
+    picked.sort_unstable();
+    picked
+}
+
+/// The candidates worth a fit to convergence: the `k` with the lowest scouting error, of
+/// which all but the best must have lowered the scouting records' error (against the
+/// round's reference `ref_rss`) by at least half the held-out gain the rule requires. A
+/// candidate that has not done that on the training subset is not expected to pass on the
+/// held-out records; the best one is always fitted, so the report can say how close the
+/// round came.
+pub(crate) fn finalists(scouted: &[Scouted], k: usize, ref_rss: f64, min_gain: f64) -> Vec<usize> {
+    let mut ok: Vec<(usize, f64)> = scouted
+        .iter()
+        .filter_map(|(e, r)| r.as_ref().ok().map(|(_, rss)| (*e, *rss)))
+        .collect();
+    ok.sort_by(|a, b| a.1.total_cmp(&b.1));
+    ok.into_iter()
+        .enumerate()
+        .filter(|(i, (_, rss))| *i == 0 || ref_rss - rss >= 0.5 * min_gain * ref_rss)
+        .take(k.max(1))
+        .map(|(_, (e, _))| e)
+        .collect()
 }

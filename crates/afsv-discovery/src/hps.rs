@@ -50,6 +50,8 @@ pub struct StrutReplay {
     pub peak_velocity_m_s: f64,
     /// Conditions in words.
     pub condition: String,
+    /// Condition group of the constancy test: `quasi-static` below 0.5 Hz, else `dynamic`.
+    pub group: String,
 }
 
 impl HpsStrutModel {
@@ -105,8 +107,8 @@ impl HpsStrutModel {
                 1 => ext.gas_fraction_growth = Some(GasFractionGrowth { k_gamma: v[0] }),
                 2 => {
                     ext.asymmetric_friction = Some(AsymmetricFriction {
-                        compression: v[0],
-                        extension: v[1],
+                        compression: 1.0 + v[0],
+                        extension: 1.0 - v[0],
                     })
                 }
                 3 => ext.valve_lag = Some(ValveLag { tau: v[0] }),
@@ -312,12 +314,12 @@ impl DiscoveryModel for HpsStrutModel {
             },
             EffectSpec {
                 name: EFFECTS[2].into(),
-                description: "seal friction that differs between compression and extension (structural asymmetry of the seals)".into(),
+                description: "seal friction that differs between compression and extension (structural asymmetry of the seals): the friction levels times (1 + a) in compression and (1 - a) in extension; their mean level is the calibrated F_c and mu_v".into(),
                 citation: "section 5.4.2 (model underestimates compression friction)".into(),
-                params: vec![
-                    ParamSpec::new("compression_factor", 1.0, 0.1, 10.0),
-                    ParamSpec::new("extension_factor", 1.0, 0.1, 10.0),
-                ],
+                params: vec![ParamSpec {
+                    typical: 0.2,
+                    ..ParamSpec::new("asymmetry", 0.0, -0.9, 0.9)
+                }],
             },
             EffectSpec {
                 name: EFFECTS[3].into(),
@@ -357,8 +359,19 @@ impl DiscoveryModel for HpsStrutModel {
             displacement_m: z.to_vec(),
             velocity_m_s: Some(v),
         };
+        // The motion's frequency from its peak velocity and amplitude (harmonic tests).
+        let mean = z.iter().sum::<f64>() / z.len().max(1) as f64;
+        let amplitude = z.iter().map(|v| (v - mean).abs()).fold(0.0, f64::max);
+        let peak_velocity_m_s = excitation.peak_velocity();
+        let freq = peak_velocity_m_s / (2.0 * std::f64::consts::PI * amplitude.max(1e-9));
         Ok(StrutReplay {
-            peak_velocity_m_s: excitation.peak_velocity(),
+            group: if freq < 0.5 {
+                "quasi-static"
+            } else {
+                "dynamic"
+            }
+            .to_string(),
+            peak_velocity_m_s,
             excitation,
             condition: format!("{} strut{f}{amp}", self.strut.as_deref().unwrap_or("user")),
         })
@@ -366,6 +379,10 @@ impl DiscoveryModel for HpsStrutModel {
 
     fn condition(&self, prepared: &StrutReplay) -> String {
         prepared.condition.clone()
+    }
+
+    fn group(&self, prepared: &StrutReplay) -> Option<String> {
+        Some(prepared.group.clone())
     }
 
     fn simulate(

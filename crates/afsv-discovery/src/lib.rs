@@ -9,9 +9,13 @@
 //! 2. **Locate** the disagreement per channel, per phase and by signature ([`signature`]).
 //! 3. **Try** every effect of the model's catalogue: fit its parameters (with the baseline's
 //!    calibrated parameters freed again) on the training records, score it on held-out records.
-//! 4. **Name** an effect only when the improvement is significant ([`stats`]), add it, repeat.
-//! 5. **Report** the effects named, fitted parameters with standard errors, before/after errors
-//!    and the gap shrink ([`report`]).
+//! 4. **Name** an effect only when the improvement is significant ([`stats`]) and it passes
+//!    the naming tests that tell a missing effect from a model-form difference (bounds,
+//!    [`placebo`] candidates, parameter constancy across condition groups: [`form`]); add it,
+//!    repeat.
+//! 5. **Report** the outcome ([`Outcome`]: named / model-form discrepancy / nothing
+//!    missing), the effects named, fitted parameters with standard errors, before/after
+//!    errors and the gap shrink ([`report`]).
 //!
 //! Two models come with the crate: the hydro-pneumatic strut on a bench ([`hps`]) and the
 //! yaw-plane vehicle with hydraulic frame steering ([`yaw`]); [`synth`] writes
@@ -40,10 +44,12 @@ mod engine;
 mod error;
 pub mod evidence;
 mod fitting;
+pub mod form;
 pub mod hps;
 mod layout;
 #[cfg(feature = "plots")]
 mod overlay;
+pub mod placebo;
 pub mod report;
 pub mod signature;
 pub mod stats;
@@ -56,6 +62,7 @@ pub use engine::{
 };
 pub use error::DiscoveryError;
 pub use evidence::{Evidence, RecordEvidence};
+pub use form::{FormRule, GroupFit, NamingTests, Outcome};
 
 use afsv_records::Record;
 
@@ -146,6 +153,12 @@ pub trait DiscoveryModel: Sync {
     fn prepare(&self, record: &Record) -> Result<Self::Prepared, DiscoveryError>;
     /// The conditions a prepared record is replayed under, in words (for the report).
     fn condition(&self, prepared: &Self::Prepared) -> String;
+    /// The condition group of a prepared record for the parameter-constancy test of
+    /// [`form`] (strut: quasi-static or dynamic test; vehicle: its load). `None` (the
+    /// default) leaves the record out of that test.
+    fn group(&self, _prepared: &Self::Prepared) -> Option<String> {
+        None
+    }
     /// Simulate a prepared record with the given baseline parameter values and effects;
     /// returns one predicted series per entry of `channels()`, on the record's time base
     /// (`None` for a channel the model cannot predict for this record).

@@ -66,6 +66,7 @@ fn sig3(v: f64) -> String {
 pub fn markdown(d: &Discovery, plots: &[PathBuf], dir: &Path) -> String {
     let mut s = String::new();
     summary(&mut s, d);
+    naming_tests(&mut s, d);
     if !d.named.is_empty() {
         fitted_effects(&mut s, d);
         evidence(&mut s, d);
@@ -83,6 +84,12 @@ pub fn markdown(d: &Discovery, plots: &[PathBuf], dir: &Path) -> String {
 fn summary(s: &mut String, d: &Discovery) {
     let _ = writeln!(s, "# Model-discrepancy report: {}\n", d.model);
     let _ = writeln!(s, "{}\n", headline(d));
+    let _ = writeln!(
+        s,
+        "**Outcome:** {} (exit code {}).\n",
+        d.outcome.describe(),
+        d.outcome.exit_code()
+    );
     if d.named.is_empty() {
         let _ = writeln!(s, "**No missing effect named.** The calibrated baseline explains the records as well as any candidate of the catalogue does, within the significance rule.");
         if let Some((name, shrink)) = &d.best_unnamed_shrink {
@@ -105,6 +112,70 @@ fn summary(s: &mut String, d: &Discovery) {
         if d.gap_shrink < 0.7 {
             let _ = writeln!(s, "\nThe named effects explain only part of the gap: something outside the catalogue (or a different form of a named effect) remains.");
         }
+    }
+}
+
+/// The naming tests of each significant candidate ([`crate::form`]).
+fn naming_tests(s: &mut String, d: &Discovery) {
+    let tested: Vec<_> = d
+        .steps
+        .iter()
+        .filter_map(|st| st.naming_tests.as_ref())
+        .collect();
+    let _ = writeln!(
+        s,
+        "\n## Naming tests\n\nThe calibrated baseline leaves {:.2}x the estimated noise floor on the held-out records.\n",
+        d.excess_over_noise
+    );
+    if tested.is_empty() {
+        let _ = writeln!(s, "No candidate was significant, so none was tested.");
+        return;
+    }
+    let _ = writeln!(s, "| candidate | on a bound | held-out gain | best placebo (gain) | condition groups | constant | verdict |\n|---|---|---|---|---|---|---|");
+    for t in tested {
+        let groups: Vec<String> = t
+            .groups
+            .iter()
+            .map(|g| {
+                let v: Vec<String> = g
+                    .values
+                    .iter()
+                    .zip(&g.std_errors)
+                    .map(|(v, e)| format!("{} ± {}", sig3(*v), opt(*e, sig3)))
+                    .collect();
+                let b = if g.at_bound { " (at a bound)" } else { "" };
+                format!("{} [{}]: {}{b}", g.group, g.records, v.join(", "))
+            })
+            .collect();
+        let _ = writeln!(
+            s,
+            "| {} | {} | {:.3e} | {} | {} | {} | {} |",
+            t.effect,
+            if t.at_bound.is_empty() {
+                "no".to_string()
+            } else {
+                t.at_bound.join(", ")
+            },
+            t.effect_gain,
+            t.best_placebo
+                .as_ref()
+                .map_or("n/a".to_string(), |(n, g)| format!("{n} ({g:.3e})")),
+            if groups.is_empty() {
+                "n/a".to_string()
+            } else {
+                groups.join("; ")
+            },
+            match t.constant {
+                Some(true) => "yes",
+                Some(false) => "no",
+                None => "not testable",
+            },
+            if t.passed() {
+                "named".to_string()
+            } else {
+                format!("fails: {}", t.failed.join("; "))
+            }
+        );
     }
 }
 
@@ -309,6 +380,19 @@ pub fn headline(d: &Discovery) -> String {
     } else {
         "steering"
     };
+    if let super::Outcome::ModelFormDiscrepancy {
+        excess_over_noise,
+        closest,
+        ..
+    } = &d.outcome
+    {
+        return format!(
+            "The calibrated paper model leaves {excess_over_noise:.1} times the noise on these {subject} records, and no effect of the catalogue explains it as a real effect would{}: the model's form differs from the records' (laws or parameters the paper does not state), so calibrate or revise the baseline before naming physics.",
+            closest
+                .as_ref()
+                .map_or(String::new(), |c| format!(" (the closest, {c}, fails a naming test)"))
+        );
+    }
     if d.named.is_empty() {
         return match &d.best_unnamed_shrink {
             Some((name, shrink)) if *shrink > 0.0 => format!(

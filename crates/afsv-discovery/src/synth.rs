@@ -210,7 +210,7 @@ pub fn hps_default_size(name: &str) -> Vec<f64> {
     match name {
         "gas-heat-transfer" => vec![3.0],
         "gas-fraction-growth" => vec![0.15],
-        "asymmetric-friction" => vec![2.0, 0.5],
+        "asymmetric-friction" => vec![0.6],
         "check-valve-lag" => vec![0.03],
         _ => Vec::new(),
     }
@@ -578,14 +578,14 @@ mod tests {
         let m = HpsStrutModel::nominal();
         let cat = m.catalogue();
         let e = parse_effects(
-            "gas-heat-transfer, asymmetric-friction=1.5:0.7",
+            "gas-heat-transfer, asymmetric-friction=0.3",
             &cat,
             hps_default_size,
         )
         .unwrap();
         assert_eq!(e.len(), 2);
         assert_eq!(e[0].values, vec![3.0]);
-        assert_eq!(e[1].values, vec![1.5, 0.7]);
+        assert_eq!(e[1].values, vec![0.3]);
         assert!(parse_effects("nope", &cat, hps_default_size).is_err());
         assert!(parse_effects("gas-heat-transfer=1:2", &cat, hps_default_size).is_err());
         assert!(parse_effects("gas-heat-transfer=x", &cat, hps_default_size).is_err());

@@ -73,6 +73,9 @@ pub struct YawReplay {
     pub params: YawPlaneParams,
     /// Conditions in words.
     pub condition: String,
+    /// Condition group of the constancy test: fast or slow steering (peak steering-wheel
+    /// rate above or below [`FAST_STEERING_DEG_S`]), which sets the flows through the valve.
+    pub group: String,
     /// Forward speed (m/s).
     pub speed_m_s: f64,
     /// Steering-wheel input (smoothed, from t = 0).
@@ -89,6 +92,11 @@ pub struct YawReplay {
 /// with SI states); from 1e-7 on it is 0.97-0.99 and 30 % dearer than at 1e-6
 /// (docs/discovery.md "Integration tolerance").
 pub const REPLAY_RTOL: f64 = 1e-7;
+
+/// Peak steering-wheel rate (deg/s) from which a record counts as fast steering in the
+/// parameter-constancy test ([`crate::form`]): a driver's quick step or pulse, against
+/// ramps and slow sines.
+pub const FAST_STEERING_DEG_S: f64 = 300.0;
 
 impl YawPlaneModel {
     /// The paper's vehicle: Table 3.1 for both loads, the full steering model; records must
@@ -488,8 +496,18 @@ impl DiscoveryModel for YawPlaneModel {
             .and_then(serde_json::Value::as_str)
             .map(|m| format!(", {m}"))
             .unwrap_or_default();
+        let peak_rate = angle_rad
+            .windows(2)
+            .map(|w| (w[1] - w[0]).abs().to_degrees() / dt)
+            .fold(0.0, f64::max);
         Ok(YawReplay {
             params,
+            group: if peak_rate >= FAST_STEERING_DEG_S {
+                "fast steering"
+            } else {
+                "slow steering"
+            }
+            .to_string(),
             condition: format!("{load}, {:.1} km/h{manoeuvre}", speed_m_s * 3.6),
             speed_m_s,
             input: SteerInput::Table {
@@ -503,6 +521,10 @@ impl DiscoveryModel for YawPlaneModel {
 
     fn condition(&self, prepared: &YawReplay) -> String {
         prepared.condition.clone()
+    }
+
+    fn group(&self, prepared: &YawReplay) -> Option<String> {
+        Some(prepared.group.clone())
     }
 
     fn simulate(

@@ -57,3 +57,33 @@ fn timing() {
     );
     std::fs::remove_dir_all(&dir).unwrap();
 }
+
+/// Write the realistic variant's record sets (`tests/independent/realistic.rs`: other
+/// readings of what the paper leaves open), each with one hidden effect or none: the strut
+/// bench programme and a vehicle set of N + N records of 20 s (N from
+/// `AFSV_INDEPENDENT_RECORDS`, default 32): `AFSV_INDEPENDENT_DIR=/tmp/real cargo test
+/// --release -p afsv-discovery --test discover_independent -- --ignored write_realistic_sets`.
+#[test]
+#[ignore = "writes record folders for manual runs"]
+fn write_realistic_sets() {
+    let dir =
+        PathBuf::from(std::env::var("AFSV_INDEPENDENT_DIR").expect("set AFSV_INDEPENDENT_DIR"));
+    let n: usize = std::env::var("AFSV_INDEPENDENT_RECORDS")
+        .ok()
+        .and_then(|v| v.parse().ok())
+        .unwrap_or(32);
+    let strut = std::iter::once(None).chain(independent::STRUT_EFFECTS.iter().copied().map(Some));
+    for (k, e) in strut.enumerate() {
+        let hidden = e.map(|e| (e, independent::default_size(e)));
+        let sub = dir.join(format!("strut-{}", e.unwrap_or("none")));
+        let d = independent::realistic::strut();
+        independent::strut_record_set_of(&sub, &d, hidden, 400 + k as u64);
+    }
+    let yaw = std::iter::once(None).chain(independent::YAW_EFFECTS.iter().copied().map(Some));
+    for (k, e) in yaw.enumerate() {
+        let hidden = e.map(|e| (e, independent::default_size(e)));
+        let sub = dir.join(format!("yaw-{}", e.unwrap_or("none")));
+        let v = independent::realistic::vehicle;
+        independent::yaw_record_set_of(&sub, v, hidden, (n, n), 20.0, 300 + k as u64);
+    }
+}

@@ -297,3 +297,22 @@ fn record_set_has_the_expected_files_sidecars_and_is_deterministic() {
         let _ = std::fs::remove_dir_all(dir);
     }
 }
+
+/// The realistic variant (`tests/independent/realistic.rs`) at Table 6.3 differs from the
+/// crate's model by a few percent, as two faithful implementations do (issue 24: about 3 %
+/// force NRMSE on the front-axle strut), not by the 0.01 % of the note's readings.
+#[test]
+fn the_realistic_variant_differs_from_the_crate_by_a_few_percent() {
+    let d = independent::realistic::strut_choices(StrutData::table_6_3());
+    let mut force = Vec::new();
+    for t in [ONE_HZ, SIX_HZ, SLOW] {
+        let mine = simulate_strut(&d, StrutHidden::None, &t);
+        let theirs = crate_run(&t, &HpsExtensions::none());
+        let (worst, text) = compare(&mine, &theirs);
+        println!("realistic {} Hz +-{} mm: {text}", t.freq_hz, t.amp_m * 1e3);
+        force.push(nrmse(&mine.force_n, &theirs.force_n[..mine.force_n.len()]));
+        assert!(worst < 0.3, "{text}");
+    }
+    let mean = force.iter().sum::<f64>() / force.len() as f64;
+    assert!((0.01..0.1).contains(&mean), "mean force NRMSE {mean}");
+}

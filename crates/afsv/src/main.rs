@@ -109,7 +109,11 @@ fn main() -> ExitCode {
     let result = match cli.command {
         Command::Evaluate(args) => cmd::evaluate::run(args),
         Command::Check(args) => cmd::check::run(args),
-        Command::Discover(args) => cmd::discover::run_discover_cmd(args),
+        // Its outcome (named / model-form discrepancy / nothing missing) is the exit code.
+        Command::Discover(args) => match cmd::discover::run_discover_cmd(args) {
+            Ok(code) => return ExitCode::from(code),
+            Err(e) => Err(e),
+        },
         Command::Synth(args) => cmd::discover::run_synth(args),
         Command::Hps(c) => cmd::hps::run(c),
         Command::Measures(c) => cmd::measures::run(c),

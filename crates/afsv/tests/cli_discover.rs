@@ -4,13 +4,13 @@
 //!
 //! | test | proves | also proved by |
 //! |---|---|---|
-//! | `synth_then_discover_...` | the two commands chained as a user runs them: synth's folder layout and truth.json, discover's JSON on stdout, report.md / report.json / SVG overlays, the inputs untouched, synth refusing a non-empty folder | the naming itself: `discover_hps` (library, full catalogue) |
+//! | `synth_then_discover_...` | the two commands chained as a user runs them: synth's folder layout and truth.json, discover's JSON on stdout (outcome `named`, exit code 0), report.md / report.json / SVG overlays, the inputs untouched, synth refusing a non-empty folder | the naming itself: `discover_hps` (library, full catalogue) |
 //! | `bad_input_gives_one_line_errors` | unknown effect, missing folders, unknown model: one-line errors | the fuzz suite (`cargo xtask fuzz`) |
 //! | `overlapping_sets_...` | overlapping training / held-out sets (spelled differently), a report folder among the inputs, `-o` onto a file: refused before any fit | - |
 //! | `list_effects_prints_the_catalogue` | the vehicle catalogue holds only mechanisms the paper's model lacks; the calibrated parameters are listed | - |
 //! | `records_written_elsewhere_...` | another tool's layout (column order, extra column, BOM, CRLF, 100 Hz, clock offset, no sidecar) is read; an unknown load is refused naming the field, then `--load` / `--params-for` apply per record; the effect is still named with a shrink > 0.7 | naming on independent vehicle records: `discover_yaw` |
 //! | `sign_conventions_...` | a convention stated in words is refused naming both ways forward; `--assume-convention` reads it and a per-channel statement is honoured: both name the hidden effect | naming on strut records: `discover_hps`, `synth_then_discover_...`; the conversion: `afsv-records` unit tests |
-//! | `synth_replaces_only_...` | synth replaces only its own folder and only with `--force`; a foreign file or folder is never replaced; piped discover prints one progress line per fit | - |
+//! | `synth_replaces_only_...` | synth replaces only its own folder and only with `--force`; a foreign file or folder is never replaced; piped discover prints one progress line per fit; with nothing named the exit code is the outcome's (3 or 4, as the JSON says) | the outcome codes: `afsv_discovery::form` unit tests |
 //!
 //! Cost: the sign-convention records are written at every third sample (120 Hz): what the
 //! test proves is the reading, and the two discoveries it runs then cost a third.
@@ -49,6 +49,9 @@ fn synth_then_discover_names_the_hidden_effect() {
     let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
     assert_eq!(v["named"], serde_json::json!(["gas-heat-transfer"]));
     assert!(v["gap_shrink"].as_f64().unwrap() > 0.7);
+    // The outcome: named, exit code 0.
+    assert_eq!(v["outcome"]["kind"], "named", "{v}");
+    assert_eq!(out.status.code(), Some(0));
     let md = std::fs::read_to_string(report.join("report.md")).unwrap();
     assert!(md.contains("gas-heat-transfer"));
     assert!(report.join("report.json").is_file());
@@ -516,11 +519,18 @@ fn synth_replaces_only_its_own_folder_and_only_with_force() {
         "-o",
         report.to_str().unwrap(),
     ]);
+    // Nothing tried, so nothing named: the exit code is the outcome's, 3 (model-form
+    // discrepancy: the baseline is far above the noise) or 4 (nothing missing), as the
+    // JSON says.
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout)
+        .unwrap_or_else(|_| panic!("{}", String::from_utf8_lossy(&out.stderr)));
+    let kind = v["outcome"]["kind"].as_str().unwrap();
+    let code = out.status.code().unwrap();
     assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
+        (kind, code) == ("model-form-discrepancy", 3) || (kind, code) == ("nothing-missing", 4),
+        "{kind} {code}"
     );
+    assert_eq!(v["exit_code"], code);
     let err = String::from_utf8_lossy(&out.stderr);
     assert!(
         err.lines().next().is_some_and(|l| l

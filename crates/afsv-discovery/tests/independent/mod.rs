@@ -10,15 +10,16 @@
 // Index loops over the state vectors read like the equations (RK4 stages, 3x3 solve).
 #![allow(clippy::needless_range_loop)]
 
+pub mod realistic;
 pub mod records;
 pub mod rng;
 pub mod strut;
 pub mod yaw;
 
 #[allow(unused_imports)]
-pub use strut::{strut_record_set, STRUT_EFFECTS};
+pub use strut::{strut_record_set, strut_record_set_of, STRUT_EFFECTS};
 #[allow(unused_imports)]
-pub use yaw::{yaw_record_set, YAW_EFFECTS};
+pub use yaw::{yaw_record_set, yaw_record_set_of, YAW_EFFECTS};
 
 /// A realistic size for a hidden effect, clearly visible above the record noise:
 /// backlash 0.3 deg, droop 9e8 Pa s/m^3, strut Coulomb friction 3 kN, entrained air 1 %,

@@ -94,6 +94,15 @@ pub struct StrutData {
     pub travel: f64,
     /// rod-chamber dead length (m) at full extension
     pub rod_dead_length: f64,
+    /// Density of the orifice laws (Eq 5.12): the upstream chamber's (`true`) or the mean
+    /// of both (`false`, the note's reading); Eq 5.6's density ratio is kept.
+    pub upwind_density: bool,
+    /// Rod-side cavitation floor (MPa, absolute).
+    pub floor_mpa: f64,
+    /// Width of the taper above the floor (MPa).
+    pub floor_taper_mpa: f64,
+    /// Regularisation pressure of the orifice square roots (Pa): a laminar-like law below it.
+    pub sqrt_reg_pa: f64,
 }
 
 /// The fixed perturbations of the record generator (fraction of nominal).
@@ -143,6 +152,10 @@ impl StrutData {
             vh_min: 0.001,
             travel: 0.12,
             rod_dead_length: 0.010,
+            upwind_density: false,
+            floor_mpa: P_FLOOR_MPA,
+            floor_taper_mpa: FLOOR_TAPER_MPA,
+            sqrt_reg_pa: SQRT_REG_PA,
         }
     }
 
@@ -169,6 +182,8 @@ impl StrutData {
             "gamma0": self.gamma0, "n": self.n, "mu_v_n_s_m": self.mu_v, "f_c_n": self.f_c,
             "f_s_n": self.f_s, "k_s_s_m": self.k_s, "vh_ratio": self.vh_ratio, "vh_min_m_s": self.vh_min,
             "travel_m": self.travel, "rod_dead_length_m": self.rod_dead_length,
+            "upwind_density": self.upwind_density, "floor_mpa": self.floor_mpa,
+            "floor_taper_mpa": self.floor_taper_mpa, "sqrt_reg_pa": self.sqrt_reg_pa,
         })
     }
 }
@@ -294,8 +309,8 @@ struct Emul {
     beta: f64, // MPa
 }
 
-fn reg_sqrt_pa(dp_pa: f64) -> f64 {
-    dp_pa / (dp_pa * dp_pa + SQRT_REG_PA * SQRT_REG_PA).sqrt().sqrt()
+fn reg_sqrt_pa(dp_pa: f64, reg_pa: f64) -> f64 {
+    dp_pa / (dp_pa * dp_pa + reg_pa * reg_pa).sqrt().sqrt()
 }
 
 impl Strut {
@@ -381,18 +396,24 @@ impl Strut {
     fn rhs(&self, z: f64, zd: f64, y: &[f64; NS], dy: &mut [f64; NS]) {
         let d = &self.d;
         let pc = y[0];
-        let pr = y[1].max(P_FLOOR_MPA);
+        let pr = y[1].max(d.floor_mpa);
         let vg = self.gas_volume(y);
         // Eq 5.7 (litres)
         let vc = (self.v_c0 + self.v_g0 - d.a_hc * z * 1e3 - vg).max(1e-9);
         let vr = (self.v_r0 + self.a_ann * z * 1e3).max(1e-9);
         let ec = self.emulsion(pc);
         let er = self.emulsion(pr);
-        let rho_bar = 0.5 * (ec.rho + er.rho);
+        let rho_bar = if !d.upwind_density {
+            0.5 * (ec.rho + er.rho)
+        } else if pc >= pr {
+            ec.rho
+        } else {
+            er.rho
+        };
         // Eq 5.12 (m^3/s -> L/s)
         let dp_pa = (pc - pr) * 1e6;
         let k = (2.0 / rho_bar).sqrt();
-        let q_b = self.cab * k * reg_sqrt_pa(dp_pa);
+        let q_b = self.cab * k * reg_sqrt_pa(dp_pa, d.sqrt_reg_pa);
         let opening = match self.valve_tau {
             Some(tau) => {
                 let target = if dp_pa > 0.0 { 1.0 } else { 0.0 };
@@ -405,7 +426,7 @@ impl Strut {
             }
         };
         let q_c = if dp_pa > 0.0 {
-            opening * self.cav * k * reg_sqrt_pa(dp_pa)
+            opening * self.cav * k * reg_sqrt_pa(dp_pa, d.sqrt_reg_pa)
         } else {
             0.0
         };
@@ -430,14 +451,14 @@ impl Strut {
         // Eq 5.6
         let mut dpr = er.beta / vr * (ec.rho / er.rho * q - self.a_ann * zd * 1e3);
         if dpr < 0.0 {
-            dpr *= ((y[1] - P_FLOOR_MPA) / FLOOR_TAPER_MPA).clamp(0.0, 1.0);
+            dpr *= ((y[1] - d.floor_mpa) / d.floor_taper_mpa).clamp(0.0, 1.0);
         }
         dy[1] = dpr;
     }
 
     fn force(&self, z: f64, zd: f64, y: &[f64; NS]) -> f64 {
         let d = &self.d;
-        let pr = y[1].max(P_FLOOR_MPA);
+        let pr = y[1].max(d.floor_mpa);
         (y[0] * d.a_hc - pr * self.a_ann - P_ATM_MPA * d.a_hr) * 1e6 + self.friction(z, zd)
     }
 }
@@ -464,7 +485,7 @@ pub fn simulate_strut(d: &StrutData, hidden: StrutHidden, test: &BenchTest) -> S
         run.velocity_m_s.push(zd);
         run.force_n.push(s.force(z, zd, &y));
         run.p_piston_pa.push(y[0] * 1e6);
-        run.p_rod_pa.push(y[1].max(P_FLOOR_MPA) * 1e6);
+        run.p_rod_pa.push(y[1].max(d.floor_mpa) * 1e6);
         if k + 1 == n_out {
             break;
         }
@@ -490,7 +511,7 @@ pub fn simulate_strut(d: &StrutData, hidden: StrutHidden, test: &BenchTest) -> S
             for i in 0..NS {
                 y[i] += h / 6.0 * (k1[i] + 2.0 * k2[i] + 2.0 * k3[i] + k4[i]);
             }
-            y[1] = y[1].max(P_FLOOR_MPA);
+            y[1] = y[1].max(d.floor_mpa);
         }
         assert!(
             y.iter().all(|v| v.is_finite()) && y[0] > 0.0,
@@ -555,11 +576,16 @@ pub fn bench_programme() -> Vec<(BenchTest, bool)> {
 /// Write the strut record set: `dir/train` (5 records), `dir/holdout` (2) and
 /// `dir/truth.json`. Truth model: [`StrutData::perturbed`] plus the hidden effect.
 pub fn strut_record_set(dir: &Path, hidden: Option<(&str, f64)>, seed: u64) {
+    strut_record_set_of(dir, &StrutData::perturbed(), hidden, seed);
+}
+
+/// [`strut_record_set`] with the truth's parameters and choices `d`.
+pub fn strut_record_set_of(dir: &Path, d: &StrutData, hidden: Option<(&str, f64)>, seed: u64) {
+    let d = *d;
     let effect = match hidden {
         Some((name, size)) => StrutHidden::from_name(name, size),
         None => StrutHidden::None,
     };
-    let d = StrutData::perturbed();
     let mut listing = Vec::new();
     for (k, (test, holdout)) in bench_programme().into_iter().enumerate() {
         let run = simulate_strut(&d, effect, &test);

@@ -241,14 +241,19 @@ impl Progress for FitProgress {
     }
 }
 
-fn run_discover<M: DiscoveryModel>(model: &M, args: &DiscoverArgs) -> CmdResult {
+/// The exit code of `afsv discover` on success: 0 effects named (or `--list-effects`), 3 a
+/// model-form discrepancy, 4 nothing missing (`afsv_discovery::Outcome::exit_code`,
+/// docs/discovery.md); errors exit with 1 as for every command.
+pub type DiscoverResult = Result<u8, Box<dyn std::error::Error>>;
+
+fn run_discover<M: DiscoveryModel>(model: &M, args: &DiscoverArgs) -> DiscoverResult {
     if args.list_effects {
         afsv::output::print_json(&serde_json::json!({
             "model": model.name(),
             "baseline_params": model.baseline_params(),
             "catalogue": model.catalogue(),
         }))?;
-        return Ok(());
+        return Ok(0);
     }
     let output = args.output.as_deref().ok_or("-o/--output is required")?;
     let train_files = csv_files(&args.train)?;
@@ -280,6 +285,9 @@ fn run_discover<M: DiscoveryModel>(model: &M, args: &DiscoverArgs) -> CmdResult 
     afsv::output::print_json(&serde_json::json!({
         "model": d.model,
         "summary": afsv_discovery::report::headline(&d),
+        "outcome": d.outcome,
+        "exit_code": d.outcome.exit_code(),
+        "excess_over_noise": d.excess_over_noise,
         "named": d.named,
         "effect_params": d.final_model.effect_params,
         "gap_shrink": d.gap_shrink,
@@ -291,11 +299,11 @@ fn run_discover<M: DiscoveryModel>(model: &M, args: &DiscoverArgs) -> CmdResult 
         "report": output.join("report.md"),
         "files_written": written.len(),
     }))?;
-    Ok(())
+    Ok(d.outcome.exit_code())
 }
 
 /// Run `afsv discover`.
-pub fn run_discover_cmd(args: DiscoverArgs) -> CmdResult {
+pub fn run_discover_cmd(args: DiscoverArgs) -> DiscoverResult {
     match args.model {
         ModelKind::HpsStrut => {
             if args.load.is_some() || !args.params_for.is_empty() {

@@ -479,4 +479,4 @@ mod set;
 
 pub use model::{simulate_yaw, YAW_STEP_S};
 #[allow(unused_imports)]
-pub use set::{yaw_record_set, YAW_KINDS, YAW_NOISE, YAW_SAMPLE_HZ};
+pub use set::{yaw_record_set, yaw_record_set_of, YAW_KINDS, YAW_NOISE, YAW_SAMPLE_HZ};

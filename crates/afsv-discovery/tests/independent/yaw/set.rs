@@ -99,6 +99,26 @@ pub fn yaw_record_set(
     duration_s: f64,
     seed: u64,
 ) {
+    yaw_record_set_of(
+        dir,
+        YawParams::perturbed,
+        hidden,
+        (n_train, n_holdout),
+        duration_s,
+        seed,
+    );
+}
+
+/// [`yaw_record_set`] with the truth's vehicle per load from `params` and
+/// `(n_train, n_holdout)` records.
+pub fn yaw_record_set_of(
+    dir: &Path,
+    params: fn(YawLoad) -> YawParams,
+    hidden: Option<(&str, f64)>,
+    (n_train, n_holdout): (usize, usize),
+    duration_s: f64,
+    seed: u64,
+) {
     let effect = match hidden {
         Some((name, size)) => YawHidden::from_name(name, size),
         None => YawHidden::None,
@@ -140,7 +160,7 @@ pub fn yaw_record_set(
     for (set, i, load, speed_kmh) in plan {
         let kind = YAW_KINDS[i % 4];
         let steer = manoeuvre(kind, speed_kmh, &mut rng);
-        let params = YawParams::perturbed(load);
+        let params = params(load);
         let run = simulate_yaw(
             &params,
             effect,
@@ -199,8 +219,8 @@ pub fn yaw_record_set(
         },
         "note": "truth = the full paper model (tire relaxation Eq 3.16 and velocity leakage Eq 3.6 present) at the perturbed parameters",
         "perturbations": YAW_PERTURBATION.iter().map(|(n, v)| (n.to_string(), serde_json::json!(v))).collect::<serde_json::Map<_, _>>(),
-        "parameters": {"loaded": YawParams::perturbed(YawLoad::Loaded).json(),
-                       "unloaded": YawParams::perturbed(YawLoad::Unloaded).json()},
+        "parameters": {"loaded": params(YawLoad::Loaded).json(),
+                       "unloaded": params(YawLoad::Unloaded).json()},
         "noise_sd": YAW_NOISE.iter().map(|(n, v)| (n.to_string(), serde_json::json!(v))).collect::<serde_json::Map<_, _>>(),
         "duration_s": duration_s,
         "seed": seed,
