@@ -85,11 +85,7 @@ impl TerrainSpec {
             CoherenceModel::piecewise(self.m_c)?,
         )?;
         let profile = synthesize(&spec, length_m, TERRAIN_DX_M, seed)?;
-        let surface = SurfaceParams {
-            track_width_m: p.front_track_m,
-            ..SurfaceParams::nominal()
-        };
-        Ok(TwoTrackTerrain::new(profile, surface)?)
+        Ok(TwoTrackTerrain::new(profile, surface_of(p))?)
     }
 }
 
@@ -202,15 +198,33 @@ pub fn ride_tracks(
 ) -> Result<Arc<TireTracks>, VehicleError> {
     positive("speed_kmh", spec.speed_kmh)?;
     positive("length_m", spec.length_m)?;
-    let length = RIDE_START_M + RUN_IN_M + spec.length_m + 30.0;
-    let terrain = spec.terrain.build(p, length, seed)?;
+    let terrain = spec
+        .terrain
+        .build(p, ride_road_needed_m(spec.length_m), seed)?;
+    ride_tracks_on(p, spec, &terrain)
+}
+
+/// The enveloping cache of a ride run on `terrain` (both tracks under the front track).
+fn ride_tracks_on(
+    p: &VehicleParams,
+    spec: &RideSpec,
+    terrain: &TwoTrackTerrain,
+) -> Result<Arc<TireTracks>, VehicleError> {
     Ok(Arc::new(TireTracks::build(
         p,
         spec.load,
         &ride_options(spec),
-        &terrain,
+        terrain,
         0.5 * p.front_track_m,
     )?))
+}
+
+/// The terrain surface under `p`: the nominal surface with the vehicle's front track.
+fn surface_of(p: &VehicleParams) -> SurfaceParams {
+    SurfaceParams {
+        track_width_m: p.front_track_m,
+        ..SurfaceParams::nominal()
+    }
 }
 
 /// Road a ride run of `length_m` needs (m): 15 m behind the start, the 20 m run-in, the
@@ -238,18 +252,7 @@ pub fn measured_ride_tracks(
             (have - ride_road_needed_m(0.0)).max(0.0)
         ))));
     }
-    let surface = SurfaceParams {
-        track_width_m: p.front_track_m,
-        ..SurfaceParams::nominal()
-    };
-    let terrain = TwoTrackTerrain::new(profile, surface)?;
-    Ok(Arc::new(TireTracks::build(
-        p,
-        spec.load,
-        &ride_options(spec),
-        &terrain,
-        0.5 * p.front_track_m,
-    )?))
+    ride_tracks_on(p, spec, &TwoTrackTerrain::new(profile, surface_of(p))?)
 }
 
 /// One ride run on `tracks` ([`ride_tracks`]): the record and its measures.
