@@ -23,7 +23,7 @@ pub fn write_report<M: DiscoveryModel + ?Sized>(
     let mut written = Vec::new();
     let json = serde_json::to_string_pretty(d)?;
     let p = dir.join("report.json");
-    std::fs::write(&p, json + "\n").map_err(|e| DiscoveryError::io(&p, e))?;
+    afsv_records::atomic::write(&p, json + "\n").map_err(|e| DiscoveryError::io(&p, e))?;
     written.push(p);
 
     #[cfg(feature = "plots")]
@@ -41,7 +41,7 @@ pub fn write_report<M: DiscoveryModel + ?Sized>(
     };
     let md = markdown(d, &plots, dir);
     let p = dir.join("report.md");
-    std::fs::write(&p, md).map_err(|e| DiscoveryError::io(&p, e))?;
+    afsv_records::atomic::write(&p, md).map_err(|e| DiscoveryError::io(&p, e))?;
     written.push(p);
     Ok(written)
 }

@@ -566,7 +566,7 @@ pub fn write_records(
     }
     let text = serde_json::to_string_pretty(truth)?;
     let path = dir.join("truth.json");
-    std::fs::write(&path, text + "\n").map_err(|e| DiscoveryError::io(path, e))
+    afsv_records::atomic::write(&path, text + "\n").map_err(|e| DiscoveryError::io(path, e))
 }
 
 #[cfg(test)]
