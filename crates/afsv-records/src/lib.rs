@@ -115,10 +115,18 @@ impl Record {
         }
     }
 
-    /// Add a column; all columns must have the same length and distinct names.
+    /// Add a column; all columns must have the same length and distinct names, and every
+    /// value must be finite: a record this crate writes is one its reader accepts.
     pub fn push_column(&mut self, name: &str, values: Vec<f64>) -> Result<(), RecordError> {
         if self.names.iter().any(|n| n == name) {
             return Err(RecordError::Invalid(format!("duplicate column `{name}`")));
+        }
+        if let Some(row) = values.iter().position(|v| !v.is_finite()) {
+            return Err(RecordError::Invalid(format!(
+                "column `{name}` holds {} at row {} (counting from 1 below the header)",
+                values[row],
+                row + 1
+            )));
         }
         if let Some(first) = self.columns.first() {
             if first.len() != values.len() {
@@ -452,6 +460,17 @@ mod tests {
         assert_eq!(r.column("az_m_s2").unwrap(), &[1.0, 2.0]);
         assert_eq!(r.column("az_g").unwrap(), &[1.0, 2.0]);
         assert!(r.unit_conversions.is_empty());
+    }
+
+    #[test]
+    fn a_record_built_in_code_refuses_non_finite_values() {
+        let mut r = Record::new();
+        r.push_column("time_s", vec![0.0, 0.1, 0.2]).unwrap();
+        let e = r.push_column("ltr", vec![0.1, f64::NAN, 0.3]).unwrap_err();
+        assert!(e.to_string().contains("`ltr` holds NaN at row 2"), "{e}");
+        let e = r.push_column("f_n", vec![f64::INFINITY, 0.0, 0.0]).unwrap_err();
+        assert!(e.to_string().contains("row 1"), "{e}");
+        assert_eq!(r.names(), ["time_s"]);
     }
 
     #[test]

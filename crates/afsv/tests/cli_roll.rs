@@ -25,6 +25,34 @@ fn simulate_writes_a_record_and_prints_the_measures() {
 }
 
 #[test]
+fn a_jump_on_very_wavy_ground_is_marked_not_written_as_nan() {
+    // Waviness 3 on class E throws the truck off the ground within the first second: the
+    // LTR (Eq 2.11) has no load to transfer there. The record must stay readable.
+    let out = scratch("roll", "jump.csv");
+    let path = out.to_str().unwrap();
+    let v = json(&afsv(&[
+        "roll",
+        "simulate",
+        "--duration",
+        "5",
+        "--waviness",
+        "3",
+        "-o",
+        path,
+    ]));
+    let first = v["first_airborne_s"].as_f64().unwrap();
+    assert!(first > 0.0 && first < 5.0, "{v}");
+    assert!(v["airborne_time_s"].as_f64().unwrap() > 0.0, "{v}");
+    let rec = afsv_records::Record::read(&out).unwrap();
+    let air = rec.column("airborne").unwrap();
+    let ltr = rec.column("ltr").unwrap();
+    assert!(air.iter().any(|&a| a == 1.0));
+    for (a, l) in air.iter().zip(ltr) {
+        assert!(l.is_finite() && (*a == 0.0 || *l == 0.0), "airborne {a}, LTR {l}");
+    }
+}
+
+#[test]
 fn left_and_right_ramps_give_the_same_smooth_measures() {
     let left = json(&afsv(&["roll", "measures", "--smooth", "--json"]));
     let right = json(&afsv(&[

@@ -54,6 +54,11 @@ pub struct RollMeasures {
     pub peak_sensor_ay_g: Option<f64>,
     /// Time of the first bump-stop contact of any strut (s).
     pub first_bump_stop_s: Option<f64>,
+    /// Time of the first sample with every wheel off the ground (s); the LTR reads 0 there.
+    pub first_airborne_s: Option<f64>,
+    /// Time spent with every wheel off the ground (s): the sum of the output intervals
+    /// that end on an airborne sample.
+    pub airborne_time_s: f64,
     /// Peak |a_y| (whole-vehicle channel) before the first bump-stop contact (g); the whole
     /// run's peak if no strut reaches its stop.
     pub peak_ay_before_stop_g: f64,
@@ -109,6 +114,10 @@ pub fn roll_measures(
     let peak_of = |x: &[f64]| x.iter().fold(0.0_f64, |m, a| m.max(a.abs()));
     let peak = peak_of(&ay);
     let stop = rec.on_bump_stop.iter().position(|b| *b);
+    let airborne_time_s = (1..rec.t_s.len())
+        .filter(|&i| rec.airborne[i])
+        .map(|i| rec.t_s[i] - rec.t_s[i - 1])
+        .sum();
     Ok(RollMeasures {
         drt_g: first.map(|a| g(a.lateral_accel_m_s2)),
         drt_time_s: first.map(|a| a.time_s),
@@ -126,6 +135,8 @@ pub fn roll_measures(
         peak_sprung_ay_g: recorded_peak(&rec.sprung_lateral_accel_m_s2).map(g),
         peak_sensor_ay_g: recorded_peak(&rec.sprung_sensor_lateral_accel_m_s2).map(g),
         first_bump_stop_s: stop.map(|i| rec.t_s[i]),
+        first_airborne_s: rec.airborne.iter().position(|b| *b).map(|i| rec.t_s[i]),
+        airborne_time_s,
         peak_ay_before_stop_g: g(peak_of(&ay[..stop.unwrap_or(ay.len())])),
         rollover_s: rec.rollover_s,
         ssf: ssf(p),

@@ -74,8 +74,11 @@ pub struct RunRecord {
     /// Horizontal lateral acceleration of the whole-vehicle cg in the heading frame
     /// (m/s²): the sum of the tire forces' lateral components over the total mass.
     pub lateral_accel_m_s2: Vec<f64>,
-    /// LTR of the whole truck (Eq 2.11).
+    /// LTR of the whole truck (Eq 2.11). With every wheel off the ground there is no load
+    /// to transfer: such a sample reads 0 and is marked in [`RunRecord::airborne`].
     pub ltr: Vec<f64>,
+    /// Whether every tire is off the ground (a jump on rough terrain).
+    pub airborne: Vec<bool>,
     /// Horizontal lateral acceleration of the sprung-mass cg in the heading frame (m/s²):
     /// the kinematic acceleration of that point (forward dynamics at the sample), which
     /// includes the sprung mass's roll motion. Empty unless
@@ -118,7 +121,10 @@ fn push_sample(vehicle: &TruckVehicle, t: f64, y: &[f64], channels: bool, rec: &
     let fz = &tires.normal_force;
     let left = [fz[0], fz[2] + fz[3]];
     let right = [fz[1], fz[4] + fz[5]];
-    let ltr = perf_measures::roll::ltr(&left, &right).unwrap_or(f64::NAN);
+    // Eq 2.11 is undefined without load (`perf_measures::roll::ltr` refuses a zero total):
+    // an airborne sample transfers none.
+    let airborne = fz.iter().all(|&f| f <= 0.0);
+    let ltr = perf_measures::roll::ltr(&left, &right).unwrap_or(0.0);
     let rot = ws.body_rotation(crate::model::body::SPRUNG);
     let s = vehicle.suspension.compressions(&[y[7], y[8], y[9], y[10]]);
     let stop = s[..2].iter().any(|&x| vehicle.suspension.front.on_stop(x))
@@ -129,6 +135,7 @@ fn push_sample(vehicle: &TruckVehicle, t: f64, y: &[f64], channels: bool, rec: &
     rec.lateral_accel_m_s2
         .push(tires.lateral_total / vehicle.model.total_mass());
     rec.ltr.push(ltr);
+    rec.airborne.push(airborne);
     rec.roll_rad.push(rot[(2, 1)].atan2(rot[(2, 2)]));
     rec.rollover_margin_m.push(vehicle.rollover_margin_ws(&ws));
     rec.drive_force_n.push(tires.drive_force);

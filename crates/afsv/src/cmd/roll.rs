@@ -353,6 +353,12 @@ fn record(r: &RunRecord) -> Result<Record, afsv_records::RecordError> {
         .map(|b| f64::from(u8::from(*b)))
         .collect();
     out.push_column("on_bump_stop", stop)?;
+    let airborne = r
+        .airborne
+        .iter()
+        .map(|b| f64::from(u8::from(*b)))
+        .collect();
+    out.push_column("airborne", airborne)?;
     for (name, values) in TIRE_NAMES.iter().zip(&r.normal_force_n) {
         out.push_column(&format!("normal_force_{name}_n"), values.clone())?;
     }
@@ -397,7 +403,7 @@ fn measures_text(m: &RollMeasures) -> String {
         .sustained_range_g
         .map_or("n/a".into(), |(a, b)| format!("{a:.3}-{b:.3} g"));
     format!(
-        "DRT (first LTR = 1)      {}\nSP-DRT                   {}\nsustained period ΔT      {} ({} to {})\na_y range in ΔT          {range}\na_y at A4                {}\na_y at rollover B'       {}\npeak a_y                 {:.3} g (whole vehicle, tire forces; sprung cg {:.3} g, sprung-fixed sensor {:.3} g)\npeak a_y before stops    {:.3} g (first stop contact {})\nabsolute rollover        {}\nSSF                      {:.3}\n",
+        "DRT (first LTR = 1)      {}\nSP-DRT                   {}\nsustained period ΔT      {} ({} to {})\na_y range in ΔT          {range}\na_y at A4                {}\na_y at rollover B'       {}\npeak a_y                 {:.3} g (whole vehicle, tire forces; sprung cg {}, sprung-fixed sensor {})\npeak a_y before stops    {:.3} g (first stop contact {})\nall wheels off ground    {}\nabsolute rollover        {}\nSSF                      {:.3}\n",
         show(m.drt_g, "g"),
         show(m.sp_drt_g, "g"),
         show(m.sustained_period_s, "s"),
@@ -406,11 +412,23 @@ fn measures_text(m: &RollMeasures) -> String {
         show(m.ay_at_a4_g, "g"),
         show(m.ay_at_rollover_g, "g"),
         m.peak_ay_g,
-        m.peak_sprung_ay_g.unwrap_or(f64::NAN),
-        m.peak_sensor_ay_g.unwrap_or(f64::NAN),
+        show(m.peak_sprung_ay_g, "g"),
+        show(m.peak_sensor_ay_g, "g"),
         m.peak_ay_before_stop_g,
         show(m.first_bump_stop_s, "s"),
+        airborne_text(m),
         show(m.rollover_s, "s"),
         m.ssf,
     )
+}
+
+/// When the truck jumped: the LTR (Eq 2.11) reads 0 on those samples.
+fn airborne_text(m: &RollMeasures) -> String {
+    match m.first_airborne_s {
+        None => "never".into(),
+        Some(t) => format!(
+            "{:.3} s in all, first at {t:.3} s (LTR reads 0 there: no load to transfer)",
+            m.airborne_time_s
+        ),
+    }
 }
