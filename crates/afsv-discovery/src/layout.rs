@@ -199,9 +199,10 @@ impl<'a, P: Send + Sync> RecordSet<'a, P> {
             for s in segs {
                 if let Some(meas) = rec.column(&self.channels[s.channel]) {
                     let scale = self.scales[s.channel];
-                    sum += super::stats::noise_variance(&meas[s.skip..s.skip + s.len])
-                        / (scale * scale)
-                        * s.len as f64;
+                    sum +=
+                        optimize::noise::measurement_noise_variance(&meas[s.skip..s.skip + s.len])
+                            / (scale * scale)
+                            * s.len as f64;
                     n += s.len;
                 }
             }

@@ -1,5 +1,6 @@
 //! Statistics behind "significant": information criteria corrected for serially correlated
-//! residuals, a noise-floor estimate, and the decision rule.
+//! residuals and the decision rule (the noise floor is
+//! `optimize::noise::measurement_noise_variance`).
 //!
 //! Time-series residuals are strongly autocorrelated, so counting every sample as an
 //! independent observation would make any extra parameter look significant. We use the
@@ -50,42 +51,6 @@ pub fn bic(rss: f64, n: f64, n_eff: f64, k: usize) -> f64 {
 /// Gaussian Akaike information criterion (same conventions as [`bic`]).
 pub fn aic(rss: f64, n: f64, n_eff: f64, k: usize) -> f64 {
     n_eff * (rss / n).max(f64::MIN_POSITIVE).ln() + 2.0 * k as f64
-}
-
-/// Measurement-noise variance of a densely sampled smooth signal, from its fourth
-/// differences `d[i] = y[i-2] - 4y[i-1] + 6y[i] - 4y[i+1] + y[i+2]`: white noise of variance
-/// `s^2` gives `var(d) = 70 s^2`, while a smooth signal contributes `(2 pi f dt)^4` of its
-/// own variance — 4e-4 for an 8 Hz strut test sampled at 360 Hz, where second differences
-/// let the signal through and read the 150 N load-cell noise as 370 N. The variance is
-/// `(1.4826 MAD)^2`, so a few sharp features (valve openings) do not inflate it.
-///
-/// Noise that a sensor's filter has made correlated from sample to sample reads low (to
-/// 0.46 of its variance for a first-order filter with its corner at fs/7): the estimate is
-/// then a lower bound, and the gap shrink computed with it is understated, never overstated.
-pub fn noise_variance(y: &[f64]) -> f64 {
-    if y.len() < 8 {
-        return 0.0;
-    }
-    let mut d: Vec<f64> = (2..y.len() - 2)
-        .map(|i| y[i - 2] - 4.0 * y[i - 1] + 6.0 * y[i] - 4.0 * y[i + 1] + y[i + 2])
-        .collect();
-    let med = median(&mut d);
-    let mut dev: Vec<f64> = d.iter().map(|v| (v - med).abs()).collect();
-    let sigma_d = 1.4826 * median(&mut dev);
-    sigma_d * sigma_d / 70.0
-}
-
-fn median(v: &mut [f64]) -> f64 {
-    if v.is_empty() {
-        return 0.0;
-    }
-    v.sort_by(|a, b| a.total_cmp(b));
-    let m = v.len() / 2;
-    if v.len() % 2 == 1 {
-        v[m]
-    } else {
-        0.5 * (v[m - 1] + v[m])
-    }
 }
 
 /// Thresholds of the decision "this effect is significant".
@@ -166,59 +131,6 @@ mod tests {
                     .sum::<f64>()
             })
             .collect()
-    }
-
-    #[test]
-    fn noise_variance_of_smooth_signal_plus_noise() {
-        let e = lcg_noise(20_000, 3);
-        let y: Vec<f64> = e
-            .iter()
-            .enumerate()
-            .map(|(i, v)| (i as f64 * 0.001).sin() * 5.0 + 0.1 * v)
-            .collect();
-        let want = 0.01 * 4.0 / 12.0;
-        let got = noise_variance(&y);
-        assert!((got / want - 1.0).abs() < 0.1, "{got} vs {want}");
-    }
-
-    #[test]
-    fn noise_variance_beside_a_fast_large_signal() {
-        // 50 kN at 8 Hz sampled at 360 Hz with 150 N of noise (the strut bench's load cell).
-        let e = lcg_noise(20_000, 5);
-        let scale = 150.0 / (4.0_f64 / 12.0).sqrt();
-        let y: Vec<f64> = e
-            .iter()
-            .enumerate()
-            .map(|(i, v)| {
-                5e4 * (2.0 * std::f64::consts::PI * 8.0 * i as f64 / 360.0).sin() + scale * v
-            })
-            .collect();
-        let got = noise_variance(&y).sqrt();
-        assert!((got / 150.0 - 1.0).abs() < 0.1, "{got} vs 150");
-    }
-
-    #[test]
-    fn band_limited_noise_reads_low_never_high() {
-        // First-order low-pass noise (a sensor's conditioning filter), corners 50 Hz and
-        // 30 Hz at 360 and 200 Hz, on a slow signal: the estimate is a lower bound.
-        for (a, seed) in [
-            ((-2.0 * std::f64::consts::PI * 50.0 / 360.0).exp(), 7),
-            ((-2.0 * std::f64::consts::PI * 30.0 / 200.0).exp(), 8),
-        ] {
-            let w = lcg_noise(40_000, seed);
-            let mut e = vec![0.0; w.len()];
-            for i in 1..w.len() {
-                e[i] = a * e[i - 1] + w[i];
-            }
-            let var: f64 = e.iter().map(|v| v * v).sum::<f64>() / e.len() as f64;
-            let y: Vec<f64> = e
-                .iter()
-                .enumerate()
-                .map(|(i, v)| 20.0 * (i as f64 * 0.002).sin() + v)
-                .collect();
-            let got = noise_variance(&y);
-            assert!(got < var && got > 0.3 * var, "a {a}: {got} vs {var}");
-        }
     }
 
     #[test]

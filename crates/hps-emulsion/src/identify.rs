@@ -3,6 +3,7 @@
 
 use crate::error::HpsError;
 use crate::extensions::HpsExtensions;
+use crate::fit_checks::{ChannelCheck, ChannelChecks, VelocitySource};
 use crate::params::StrutParams;
 use crate::simulate::{simulate_displacement, Excitation, SimOptions};
 use optimize::least_squares::{fit, FitOptions, Problem};
@@ -228,6 +229,10 @@ pub struct IdentifyResult {
     pub iterations: usize,
     /// Whether a convergence test was met.
     pub converged: bool,
+    /// The fitted model's residual against the record's noise, per channel.
+    pub checks: ChannelChecks,
+    /// Where the velocity came from (measured, or differentiated from the displacement).
+    pub velocity: VelocitySource,
 }
 
 struct Channel<'a> {
@@ -260,6 +265,19 @@ impl IdProblem<'_> {
     fn simulate(&self, p: &StrutParams) -> Result<[Vec<f64>; 3], HpsError> {
         let r = simulate_displacement(p, &self.ext, &self.exc, &self.opts.sim)?;
         Ok([r.force, r.p_piston, r.p_rod])
+    }
+
+    fn checks(&self, sim: &[Vec<f64>; 3]) -> ChannelChecks {
+        let check = |c: usize| {
+            self.channels[c]
+                .as_ref()
+                .map(|ch| ChannelCheck::of(&ch.meas[self.first..], &sim[c][self.first..]))
+        };
+        ChannelChecks {
+            force: check(0),
+            p_piston: check(1),
+            p_rod: check(2),
+        }
     }
 
     fn nrmse(&self, sim: &[Vec<f64>; 3]) -> ChannelNrmse {
@@ -472,5 +490,11 @@ pub fn identify(
         nrmse: problem.nrmse(&sim),
         iterations: res.iterations,
         converged: res.converged,
+        checks: problem.checks(&sim),
+        velocity: VelocitySource::of(
+            &measured.time[first..],
+            &measured.displacement[first..],
+            measured.velocity.as_deref().map(|v| &v[first..]),
+        ),
     })
 }

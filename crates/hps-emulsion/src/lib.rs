@@ -30,6 +30,7 @@ pub mod component;
 pub mod emulsion;
 pub mod error;
 pub mod extensions;
+pub mod fit_checks;
 pub mod flow;
 pub mod friction;
 pub mod identify;

@@ -205,6 +205,12 @@ pub struct IdentifyArgs {
     /// Simulate but do not compare the first seconds (start-up transient), >= 0.
     #[arg(long, default_value_t = 0.0, allow_hyphen_values = true, value_parser = args::nonneg_f64)]
     pub warmup: f64,
+    /// Exit 0 even when the fit did not earn its result (a parameter on its bound, a fit
+    /// worse than its start, no convergence, a residual far above the record's noise, a
+    /// pressure one atmosphere off, a noisy differentiated velocity). The problems are
+    /// still printed.
+    #[arg(long)]
+    pub accept_poor_fit: bool,
 }
 
 /// Run `afsv hps ...`.
@@ -421,6 +427,8 @@ fn identify_cmd(a: IdentifyArgs) -> CmdResult {
             res.iterations
         ));
     }
+    problems.extend(res.checks.problems());
+    problems.extend(res.velocity.problem());
     let converged = res.converged && problems.is_empty();
     afsv::output::print_json(&serde_json::json!({
         "input": a.input.display().to_string(),
@@ -433,9 +441,12 @@ fn identify_cmd(a: IdentifyArgs) -> CmdResult {
         "converged": converged,
         "optimizer_converged": res.converged,
         "improved": !worse,
+        "residual_checks": residual_checks_json(&res.checks),
+        "velocity": res.velocity,
         "problems": problems,
+        "accepted_despite_problems": a.accept_poor_fit && !problems.is_empty(),
     }))?;
-    if problems.is_empty() {
+    if problems.is_empty() || a.accept_poor_fit {
         Ok(())
     } else {
         Err(afsv::output::NotEarned(format!("hps identify: {}", problems.join("; "))).into())
@@ -444,6 +455,24 @@ fn identify_cmd(a: IdentifyArgs) -> CmdResult {
 
 /// Reason of a `null` NRMSE.
 const NO_CHANNEL: &str = "channel not in the record";
+
+/// The residual of each compared channel against the record's own noise.
+fn residual_checks_json(c: &hps_emulsion::fit_checks::ChannelChecks) -> serde_json::Value {
+    let one = |c: &Option<hps_emulsion::fit_checks::ChannelCheck>| {
+        c.map(|c| {
+            json!({
+                "residual_rms": c.residual_rms,
+                "noise_rms": c.noise_rms,
+                "residual_to_noise": afsv::output::finite_or_null(c.residual_to_noise()),
+                "mean_offset": c.mean_offset,
+            })
+        })
+    };
+    afsv::output::explain_nulls(
+        json!({ "force_n": one(&c.force), "p_piston_pa": one(&c.p_piston), "p_rod_pa": one(&c.p_rod) }),
+        NO_CHANNEL,
+    )
+}
 
 /// The strut of `hps identify`: --strut, else the sidecar's `"strut"`; neither is an error.
 fn identify_strut(
