@@ -184,6 +184,26 @@ fn decay_fit_of_articulation_record() {
         "articulation_deg",
     ]));
     assert!((v["start_s"].as_f64().unwrap() - 1.0).abs() < 1e-9);
+    assert_eq!(v["problems"].as_array().unwrap().len(), 0, "{v}");
+    // A window that starts before the pulse ends is not one free decay: the fit is
+    // printed, its problem named, and the exit status (3) says it was not earned.
+    let early = [
+        "measures",
+        "decay",
+        "-i",
+        &path,
+        "--column",
+        "articulation_deg",
+    ];
+    let mut args = early.to_vec();
+    args.extend(["--start-s", "0.5"]);
+    let out = afsv(&args);
+    assert_eq!(out.status.code(), Some(3), "{out:?}");
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(err.contains("times the noise"), "{err}");
+    args.push("--accept-poor-fit");
+    let v = json(&afsv(&args));
+    assert_eq!(v["accepted_despite_problems"], true);
     one_line_error(
         &afsv(&["measures", "decay", "-i", &path, "--column", "yaw_deg"]),
         "yaw_deg",

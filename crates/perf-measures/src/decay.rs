@@ -54,6 +54,54 @@ pub struct DecayFit {
     pub iterations: usize,
     /// Whether LM met its convergence test.
     pub converged: bool,
+    /// Measurement-noise RMS read from the record itself (fourth differences, robust
+    /// spread; `optimize::noise::measurement_noise_variance`), floored at 0.1 % of its
+    /// range (units of `y`).
+    pub noise_rms: f64,
+}
+
+/// A decay fit's RMS residual above this multiple of the record's noise RMS leaves a
+/// response the single-mode decay does not describe (a second mode, a nonlinearity, a
+/// wrong window).
+pub const DECAY_RESIDUAL_NOISE_LIMIT: f64 = 3.0;
+
+/// Fewer damped cycles than this leave the damping ratio poorly determined.
+pub const DECAY_MIN_CYCLES: f64 = 1.5;
+
+impl DecayFit {
+    /// What keeps this fit from being a measurement, one sentence each (empty when the fit
+    /// earned its numbers): no convergence, a residual far above the record's noise, too few
+    /// cycles, or a damping ratio whose standard error exceeds half its value.
+    pub fn problems(&self) -> Vec<String> {
+        let mut out = Vec::new();
+        if !self.converged {
+            out.push(format!(
+                "the decay fit met no convergence test in {} iterations",
+                self.iterations
+            ));
+        }
+        if self.rmse > DECAY_RESIDUAL_NOISE_LIMIT * self.noise_rms {
+            out.push(format!(
+                "the residual ({:.4e} RMS) is {:.1} times the noise the record shows ({:.4e} RMS): the response is not one decaying mode over this window (another mode, a nonlinearity, or the window starts before the input ends)",
+                self.rmse,
+                self.rmse / self.noise_rms,
+                self.noise_rms
+            ));
+        }
+        if self.cycles < DECAY_MIN_CYCLES {
+            out.push(format!(
+                "the window covers {:.2} damped cycles (need {DECAY_MIN_CYCLES} for a damping ratio)",
+                self.cycles
+            ));
+        }
+        if !(self.damping_ratio_std <= 0.5 * self.damping_ratio.abs()) {
+            out.push(format!(
+                "the damping ratio {:.4} has a standard error of {:.4}: not determined by this record",
+                self.damping_ratio, self.damping_ratio_std
+            ));
+        }
+        out
+    }
 }
 
 struct DecayProblem<'a> {
@@ -333,6 +381,18 @@ pub fn decay_window(
     Ok(i0..i1)
 }
 
+/// The record's noise RMS, floored at 0.1 % of its range (see [`DecayFit::noise_rms`]).
+fn noise_rms(y: &[f64]) -> f64 {
+    let (lo, hi) = y
+        .iter()
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), v| {
+            (a.min(*v), b.max(*v))
+        });
+    optimize::noise::measurement_noise_variance(y)
+        .sqrt()
+        .max(1e-3 * (hi - lo))
+}
+
 /// Fit the single-DOF free decay `y = offset + A exp(-zeta wn t) cos(wd t + phi)` to a
 /// history `(t, y)` that starts at the free-decay onset (see the module documentation).
 /// Needs at least 8 samples covering at least half a damped cycle.
@@ -478,6 +538,7 @@ pub fn fit_free_decay(t: &[f64], y: &[f64]) -> Result<DecayFit, MeasureError> {
         damping_ratio_std: var(g_z).max(0.0).sqrt(),
         r_squared: 1.0 - r.rss / sst,
         cycles,
+        noise_rms: noise_rms(y),
         iterations: r.iterations,
         converged: r.converged,
     })

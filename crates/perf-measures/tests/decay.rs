@@ -94,6 +94,42 @@ fn heavy_damping_and_one_and_a_half_cycles() {
 }
 
 #[test]
+fn a_fit_at_the_noise_earns_its_numbers_and_a_second_mode_does_not() {
+    let c = Case {
+        f_n: 1.7,
+        zeta: 0.2,
+        amp: 5.0,
+        offset: -3.0,
+        phase: 0.0,
+    };
+    let (t, y) = record(&c, 100.0, 2.5, 0.25, 3);
+    let f = fit_free_decay(&t, &y).unwrap();
+    assert!(f.problems().is_empty(), "{:?}", f.problems());
+    assert!((f.noise_rms / 0.25 - 1.0).abs() < 0.3, "{f:?}");
+    // A second, lightly damped mode at 4.3 Hz with 20 % of the amplitude, on a quieter
+    // record (0.02 of noise): one decaying mode no longer describes it.
+    let (t, y) = record(&c, 100.0, 2.5, 0.02, 3);
+    let y2: Vec<f64> = t
+        .iter()
+        .zip(&y)
+        .map(|(ti, v)| {
+            let tau = ti - 1.3;
+            v + 1.0 * (-0.05 * 2.0 * PI * 4.3 * tau).exp() * (2.0 * PI * 4.3 * tau).cos()
+        })
+        .collect();
+    let f = fit_free_decay(&t, &y2).unwrap();
+    let p = f.problems();
+    assert!(
+        p.iter().any(|m| m.contains("times the noise")),
+        "{p:?} {f:?}"
+    );
+    // Less than 1.5 cycles: flagged.
+    let (t, y) = record(&c, 100.0, 0.7, 0.01, 4);
+    let f = fit_free_decay(&t, &y).unwrap();
+    assert!(f.problems().iter().any(|m| m.contains("cycles")), "{f:?}");
+}
+
+#[test]
 fn growing_oscillation_has_negative_damping() {
     let c = Case {
         f_n: 3.0,

@@ -112,6 +112,11 @@ pub struct DecayArgs {
     /// End of the fitted window (s); default: end of the record.
     #[arg(long, value_name = "S", allow_hyphen_values = true, value_parser = args::finite_f64)]
     pub end_s: Option<f64>,
+    /// Exit 0 even when the fit did not earn its numbers (no convergence, a residual far
+    /// above the record's noise, under 1.5 cycles, an undetermined damping ratio). The
+    /// problems are still printed.
+    #[arg(long)]
+    pub accept_poor_fit: bool,
 }
 
 /// Options of `afsv measures step`.
@@ -317,15 +322,22 @@ fn decay(a: DecayArgs) -> CmdResult {
         .map_err(|e| format!("{}: {e}", a.input.display()))?;
     let (tw, yw) = (&t[w.clone()], &y[w]);
     let fit = fit_free_decay(tw, yw).map_err(|e| format!("{}: {e}", a.input.display()))?;
+    let problems = fit.problems();
     afsv::output::print_json(&json!({
         "column": a.column,
         "start_s": tw[0],
         "end_s": tw[tw.len() - 1],
         "samples": tw.len(),
-        "note": "amplitude, offset and rmse are in the column's unit",
+        "note": "amplitude, offset, rmse and noise_rms are in the column's unit",
         "fit": fit,
+        "problems": problems,
+        "accepted_despite_problems": a.accept_poor_fit && !problems.is_empty(),
     }))?;
-    Ok(())
+    if problems.is_empty() || a.accept_poor_fit {
+        Ok(())
+    } else {
+        Err(afsv::output::NotEarned(format!("measures decay: {}", problems.join("; "))).into())
+    }
 }
 
 fn step(a: StepArgs) -> CmdResult {
