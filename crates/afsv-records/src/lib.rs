@@ -468,7 +468,9 @@ mod tests {
         r.push_column("time_s", vec![0.0, 0.1, 0.2]).unwrap();
         let e = r.push_column("ltr", vec![0.1, f64::NAN, 0.3]).unwrap_err();
         assert!(e.to_string().contains("`ltr` holds NaN at row 2"), "{e}");
-        let e = r.push_column("f_n", vec![f64::INFINITY, 0.0, 0.0]).unwrap_err();
+        let e = r
+            .push_column("f_n", vec![f64::INFINITY, 0.0, 0.0])
+            .unwrap_err();
         assert!(e.to_string().contains("row 1"), "{e}");
         assert_eq!(r.names(), ["time_s"]);
     }

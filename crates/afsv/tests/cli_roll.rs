@@ -48,7 +48,10 @@ fn a_jump_on_very_wavy_ground_is_marked_not_written_as_nan() {
     let ltr = rec.column("ltr").unwrap();
     assert!(air.iter().any(|&a| a == 1.0));
     for (a, l) in air.iter().zip(ltr) {
-        assert!(l.is_finite() && (*a == 0.0 || *l == 0.0), "airborne {a}, LTR {l}");
+        assert!(
+            l.is_finite() && (*a == 0.0 || *l == 0.0),
+            "airborne {a}, LTR {l}"
+        );
     }
 }
 

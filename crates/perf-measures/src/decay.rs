@@ -94,7 +94,8 @@ impl DecayFit {
                 self.cycles
             ));
         }
-        if !(self.damping_ratio_std <= 0.5 * self.damping_ratio.abs()) {
+        let determined = self.damping_ratio_std <= 0.5 * self.damping_ratio.abs();
+        if !determined {
             out.push(format!(
                 "the damping ratio {:.4} has a standard error of {:.4}: not determined by this record",
                 self.damping_ratio, self.damping_ratio_std

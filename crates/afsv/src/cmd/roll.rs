@@ -353,11 +353,7 @@ fn record(r: &RunRecord) -> Result<Record, afsv_records::RecordError> {
         .map(|b| f64::from(u8::from(*b)))
         .collect();
     out.push_column("on_bump_stop", stop)?;
-    let airborne = r
-        .airborne
-        .iter()
-        .map(|b| f64::from(u8::from(*b)))
-        .collect();
+    let airborne = r.airborne.iter().map(|b| f64::from(u8::from(*b))).collect();
     out.push_column("airborne", airborne)?;
     for (name, values) in TIRE_NAMES.iter().zip(&r.normal_force_n) {
         out.push_column(&format!("normal_force_{name}_n"), values.clone())?;
