@@ -6,3 +6,4 @@
 pub mod output;
 pub mod progress;
 pub mod provenance;
+pub mod table;

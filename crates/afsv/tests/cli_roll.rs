@@ -46,7 +46,7 @@ fn a_jump_on_very_wavy_ground_is_marked_not_written_as_nan() {
     let rec = afsv_records::Record::read(&out).unwrap();
     let air = rec.column("airborne").unwrap();
     let ltr = rec.column("ltr").unwrap();
-    assert!(air.iter().any(|&a| a == 1.0));
+    assert!(air.contains(&1.0));
     for (a, l) in air.iter().zip(ltr) {
         assert!(
             l.is_finite() && (*a == 0.0 || *l == 0.0),

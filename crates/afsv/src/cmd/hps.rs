@@ -129,8 +129,8 @@ pub enum Command {
     /// optionally write the record (CSV + JSON sidecar) and an SVG of the loops.
     Harmonic(HarmonicArgs),
     /// Run the laboratory programme (0.1 Hz at 5/25/50 mm; 1-8 Hz at peak velocities
-    /// 0.05-0.2356 m/s, amplitude capped at 45 mm) and print stiffness, damping and energy per
-    /// test as JSON.
+    /// 0.05-0.2356 m/s, amplitude capped at 45 mm): stiffness, damping and energy per test
+    /// (a table on a terminal, JSON on a pipe or with --json, CSV with -o).
     Characterize(CharacterizeArgs),
     /// Fit model parameters to a measured strut record (CSV with time_s, displacement_m and
     /// any of force_n, p_piston_pa, p_rod_pa); print fitted values, standard errors and NRMSE.
@@ -185,6 +185,11 @@ pub struct CharacterizeArgs {
     /// Gas volume fraction of the emulsion, e.g. 0.03.
     #[arg(long, allow_hyphen_values = true, value_parser = args::nonneg_f64)]
     pub gamma0: Option<f64>,
+    /// Replace an existing -o file afsv did not write (never the --strut file).
+    #[arg(long)]
+    pub force: bool,
+    #[command(flatten)]
+    pub table: args::TableArgs,
 }
 
 /// Options of `afsv hps identify`.
@@ -307,6 +312,12 @@ fn harmonic(a: HarmonicArgs) -> CmdResult {
 }
 
 fn characterize_cmd(a: CharacterizeArgs) -> CmdResult {
+    let mut guard = afsv::output::OutputGuard::new(a.force);
+    if let Some(f) = a.strut.file() {
+        guard.input("--strut", f)?;
+    }
+    let out = a.table.output();
+    out.declare(&mut guard)?;
     let params = with_gamma0(a.strut.params()?, a.gamma0)?;
     let tests = lab_programme(params.travel);
     let progress = Progress::new("afsv hps characterize", "tests", Some(tests.len()));
@@ -326,11 +337,41 @@ fn characterize_cmd(a: CharacterizeArgs) -> CmdResult {
         ));
     }
     progress.finish();
-    afsv::output::print_json(&serde_json::json!({
+    let full = serde_json::json!({
         "strut": a.strut.name(),
         "gamma0": params.gamma0,
         "tests": rows,
-    }))?;
+    });
+    let table = afsv::table::from_rows(
+        full["tests"].as_array().map_or(&[], Vec::as_slice),
+        &[
+            "frequency_hz",
+            "amplitude_m",
+            "peak_velocity_m_s",
+            "effective_stiffness_n_m",
+            "equivalent_damping_n_s_m",
+            "peak_damping_compression_n",
+            "peak_damping_extension_n",
+            "dissipated_energy_j",
+            "spring_loop_area_j",
+            "damping_loop_area_n_m_s",
+            "p_piston_min_pa",
+            "p_piston_max_pa",
+            "p_rod_min_pa",
+            "p_rod_max_pa",
+        ],
+    )?;
+    out.emit(
+        &table,
+        &full,
+        &format!(
+            "strut {} (gamma0 {}): the lab programme of section 5.3, last cycle of each test (SI units)\n",
+            a.strut.name(),
+            params.gamma0
+        ),
+        "afsv hps characterize",
+        serde_json::json!({ "strut": a.strut.name(), "gamma0": params.gamma0 }),
+    )?;
     Ok(())
 }
 

@@ -8,6 +8,7 @@ use afsv_dynamics::YawPlaneParams;
 use hps_emulsion::StrutParams;
 use roll_truck::TruckParams;
 use serde_json::{json, Value};
+use std::io::IsTerminal;
 use std::path::{Path, PathBuf};
 use terrain_psd::{SurfaceParams, TwoTrackSpec};
 use tire_fiala::TireParams;
@@ -80,6 +81,9 @@ pub enum Command {
         /// Which set.
         #[arg(value_enum)]
         set: ParamSet,
+        /// Print JSON, also on a terminal (a pipe always gets JSON).
+        #[arg(long)]
+        json: bool,
     },
 }
 
@@ -144,7 +148,7 @@ pub fn run(cmd: Command) -> CmdResult {
             report["file"] = json!(file);
             afsv::output::print_json(&report)?;
         }
-        Command::List { set } => {
+        Command::List { set, json } => {
             let list = match set {
                 ParamSet::YawPlane => specs(&YawPlaneParams::nominal(afsv_dynamics::Load::Loaded)),
                 ParamSet::Strut => specs(&StrutParams::front_axle()),
@@ -161,10 +165,62 @@ pub fn run(cmd: Command) -> CmdResult {
                     json!({ "set": "vehicle", "builtin": rows })
                 }
             };
-            afsv::output::print_json(&list)?;
+            if json || !std::io::stdout().is_terminal() {
+                afsv::output::print_json(&list)?;
+            } else {
+                print!("{}", list_text(&list));
+            }
         }
     }
     Ok(())
+}
+
+/// A parameter list (or the built-in vehicles) as aligned columns for a terminal.
+fn list_text(list: &Value) -> String {
+    let cell = |v: &Value| match v {
+        Value::String(s) => s.clone(),
+        Value::Null => "-".into(),
+        other => other.to_string(),
+    };
+    let (cols, rows): (&[&str], &Vec<Value>) = match (list.get("parameters"), list.get("builtin")) {
+        (Some(Value::Array(r)), _) => {
+            (&["name", "unit", "nominal", "lower", "upper", "typical"], r)
+        }
+        (_, Some(Value::Array(r))) => (&["name", "description"], r),
+        _ => return format!("{list}\n"),
+    };
+    let table: Vec<Vec<String>> = rows
+        .iter()
+        .map(|r| cols.iter().map(|c| cell(&r[*c])).collect())
+        .collect();
+    let widths: Vec<usize> = cols
+        .iter()
+        .enumerate()
+        .map(|(j, c)| {
+            table
+                .iter()
+                .map(|r| r[j].chars().count())
+                .fold(c.len(), usize::max)
+        })
+        .collect();
+    let line = |items: Vec<&str>| {
+        let parts: Vec<String> = items
+            .iter()
+            .zip(&widths)
+            .map(|(s, w)| format!("{s:<w$}"))
+            .collect();
+        parts.join("  ").trim_end().to_string() + "\n"
+    };
+    let mut out = format!(
+        "{} ({} entries; --json for JSON)\n",
+        cell(&list["set"]),
+        rows.len()
+    );
+    out += &line(cols.to_vec());
+    for r in &table {
+        out += &line(r.iter().map(String::as_str).collect());
+    }
+    out
 }
 
 /// `afsv params dump vehicle`: the built-in description `name` as commented TOML, to

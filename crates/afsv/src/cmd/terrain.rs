@@ -35,7 +35,8 @@ pub enum Command {
     /// Estimate the PSDs, cross-spectrum, coherence and cross-slope PSD of a profile file
     ///
     /// Reads a CSV with columns x_m (uniformly spaced), left_m and optionally right_m (as
-    /// written by `afsv terrain generate -o`) and prints JSON: Welch one-sided PSDs
+    /// written by `afsv terrain generate -o`) and reports (a table on a terminal, JSON on a
+    /// pipe or with --json, every bin as CSV with -o) Welch one-sided PSDs
     /// (m^3 = m^2/(cycle/m)), and with right_m also the cross-spectral density (conj(L) R),
     /// the magnitude-squared coherence (Eq 2.9) and the PSD of the cross-slope angle
     /// (left - right)/B in rad^2/(cycle/m) (roll excitation, Fig 2.7), on frequencies
@@ -130,6 +131,11 @@ pub struct PsdArgs {
     /// the Nyquist frequency 1/(2 dx).
     #[arg(long, value_name = "N_MIN,N_MAX")]
     pub band: Option<String>,
+    /// Replace an existing -o file afsv did not write (never the input).
+    #[arg(long)]
+    pub force: bool,
+    #[command(flatten)]
+    pub table: args::TableArgs,
 }
 
 /// Run `afsv terrain ...`.
@@ -296,6 +302,10 @@ fn select(v: &[f64], keep: &[usize]) -> Vec<f64> {
 }
 
 fn psd(a: PsdArgs) -> CmdResult {
+    let mut guard = OutputGuard::new(a.force);
+    guard.record_input("--input", &a.input)?;
+    let table_out = a.table.output();
+    table_out.declare(&mut guard)?;
     let rec = Record::read(&a.input)?;
     let x = rec.require("x_m", &a.input)?;
     let left = rec.require("left_m", &a.input)?;
@@ -373,9 +383,68 @@ fn psd(a: PsdArgs) -> CmdResult {
             out["target"] = target_report(&spec, &freq, &keep, &cs, a.track_width);
         }
     }
+    let mut table = afsv::table::from_columns(
+        &spectrum,
+        &[
+            "n_cycles_per_m",
+            "psd_left_m3",
+            "psd_right_m3",
+            "coherence",
+            "cross_slope_psd_rad2_per_cycle_per_m",
+            "csd_re_m3",
+            "csd_im_m3",
+        ],
+    )?;
+    if let Some(target) = out.get("target") {
+        let t = afsv::table::from_columns(target, &["psd_m3", "coherence"])?;
+        for (name, col) in [
+            ("target_psd_m3", "psd_m3"),
+            ("target_coherence", "coherence"),
+        ] {
+            if let Some(c) = t.column(col) {
+                table.push_column(name, c.to_vec())?;
+            }
+        }
+    }
+    let summary = psd_summary(&out);
     out["spectrum"] = spectrum;
-    afsv::output::print_json(&out)?;
+    table_out.emit(
+        &table,
+        &out,
+        &summary,
+        "afsv terrain psd",
+        json!({ "input": a.input.display().to_string(), "welch": out["welch"] }),
+    )?;
     Ok(())
+}
+
+/// The scalar results of `terrain psd`, as lines for a terminal.
+fn psd_summary(out: &Value) -> String {
+    let num = |k: &str| out[k].as_f64();
+    let mut s = format!(
+        "{}: {} samples at {} m; Welch {} segments of {} m, resolution {} cycles/m\n",
+        out["input"].as_str().unwrap_or_default(),
+        out["samples"],
+        out["dx_m"],
+        out["welch"]["segments"],
+        out["welch"]["segment_m"],
+        out["welch"]["resolution_cycles_per_m"],
+    );
+    for (label, v, i) in [
+        ("left", "variance_left_m2", "psd_integral_left_m2"),
+        ("right", "variance_right_m2", "psd_integral_right_m2"),
+    ] {
+        if let (Some(v), Some(i)) = (num(v), num(i)) {
+            s += &format!("{label} track: variance {v:.4e} m², PSD integral {i:.4e} m²\n");
+        }
+    }
+    if let Some(e) = out["target"]["psd_mean_error_db"].as_f64() {
+        s += &format!(
+            "against the sidecar's model over its band: PSD {e:+.2} dB, coherence {:+.3} (mean errors)\n",
+            out["target"]["coherence_mean_error"].as_f64().unwrap_or(f64::NAN)
+        );
+    }
+    s
 }
 
 /// The terrain model recorded in a sidecar by `afsv terrain generate`, if any.

@@ -8,8 +8,9 @@ use tire_fiala::{Envelope, EnvelopeMethod, Fiala, HandlingModel, PolylineProfile
 /// Subcommands of `afsv tire`.
 #[derive(clap::Subcommand)]
 pub enum Command {
-    /// Sweep slip angle and/or slip ratio at one or more loads and print the Fiala forces
-    /// as JSON rows {fz_n, kappa, alpha_deg, fx_n, fy_n, mz_nm, my_nm}.
+    /// Sweep slip angle and/or slip ratio at one or more loads: the Fiala forces as rows
+    /// {fz_n, kappa, alpha_deg, fx_n, fy_n, mz_nm, my_nm} (a table on a terminal, JSON on a
+    /// pipe or with --json, CSV with -o).
     ///
     /// Signs: x forward, y left; alpha has the sign of Eq 3.17 (positive alpha gives
     /// positive F_y); kappa > 0 in traction; M_z with the paper's sign (same as alpha);
@@ -17,10 +18,10 @@ pub enum Command {
     /// alpha -20:20:0.5 deg at kappa 0. Tire: the 29.5R29 of Table 6.2 (see
     /// docs/tire-fiala.md for the assumed values), changed by --params and the options.
     Sweep(SweepArgs),
-    /// Envelope a terrain profile with the tire and print, at every profile point, the
-    /// effective elevation z_oi and slope (Eqs 2.3-2.4 / 6.2-6.3) seen by a wheel held at
-    /// a constant deflection, as JSON rows
-    /// {x_m, z_profile_m, z_eff_m, slope_rad, contact_length_m, wheel_z_m}.
+    /// Envelope a terrain profile with the tire: at every profile point, the effective
+    /// elevation z_oi and slope (Eqs 2.3-2.4 / 6.2-6.3) seen by a wheel held at a constant
+    /// deflection, as rows {x_m, z_profile_m, z_eff_m, slope_rad, contact_length_m,
+    /// wheel_z_m} (a table on a terminal, JSON on a pipe or with --json, CSV with -o).
     Envelope(EnvelopeArgs),
 }
 
@@ -60,9 +61,11 @@ pub struct SweepArgs {
     /// otherwise F_x vs kappa; one curve per (F_z, kappa) or (F_z, alpha).
     #[arg(long, value_name = "SVG")]
     pub plot: Option<PathBuf>,
-    /// Replace an existing --plot file afsv did not write (never the --params file).
+    /// Replace an existing --plot or -o file afsv did not write (never the --params file).
     #[arg(long)]
     pub force: bool,
+    #[command(flatten)]
+    pub table: args::TableArgs,
 }
 
 /// Which profile column a wheel runs on.
@@ -106,6 +109,11 @@ pub struct EnvelopeArgs {
     /// Sampling step of the profile under the tire, m.
     #[arg(long, default_value_t = 0.01, value_name = "M", allow_hyphen_values = true, value_parser = args::positive_f64)]
     pub spacing_m: f64,
+    /// Replace an existing -o file afsv did not write (never the --profile file).
+    #[arg(long)]
+    pub force: bool,
+    #[command(flatten)]
+    pub table: args::TableArgs,
 }
 
 /// Run `afsv tire ...`.
@@ -205,6 +213,8 @@ fn sweep(args: SweepArgs) -> CmdResult {
     if let Some(p) = &args.plot {
         guard.output("--plot", p, OutputKind::Svg)?;
     }
+    let out = args.table.output();
+    out.declare(&mut guard)?;
     let fzs = parse_range(&args.fz, "--fz")?;
     if let Some(bad) = fzs.iter().find(|&&f| f <= 0.0) {
         return Err(format!(
@@ -256,7 +266,30 @@ fn sweep(args: SweepArgs) -> CmdResult {
         plot_sweep(path, &tire_name, &rows, &fzs, &kappas, &alphas)?;
         afsv::output::mark_svg(path)?;
     }
-    afsv::output::print_json(&rows)?;
+    let full = serde_json::to_value(&rows)?;
+    let table = afsv::table::from_rows(
+        full.as_array().map_or(&[], Vec::as_slice),
+        &[
+            "fz_n",
+            "kappa",
+            "alpha_deg",
+            "fx_n",
+            "fy_n",
+            "mz_nm",
+            "my_nm",
+        ],
+    )?;
+    let tire = match &args.params {
+        Some(f) => f.display().to_string(),
+        None => "nominal 29.5R29 (Table 6.2)".into(),
+    };
+    out.emit(
+        &table,
+        &full,
+        &format!("Fiala forces of the {tire} tire (N, N·m; alpha in deg)\n"),
+        "afsv tire sweep",
+        serde_json::json!({ "tire": tire }),
+    )?;
     Ok(())
 }
 
@@ -363,6 +396,10 @@ struct EnvelopeRow {
 }
 
 fn envelope(args: EnvelopeArgs) -> CmdResult {
+    let mut guard = OutputGuard::new(args.force);
+    guard.record_input("--profile", &args.profile)?;
+    let out = args.table.output();
+    out.declare(&mut guard)?;
     let rec = afsv_records::Record::read(&args.profile)?;
     let xs = rec.require("x_m", &args.profile)?.to_vec();
     let col = match args.track {
@@ -389,7 +426,36 @@ fn envelope(args: EnvelopeArgs) -> CmdResult {
             wheel_z_m: p.wheel_z,
         });
     }
-    afsv::output::print_json(&rows)?;
+    let full = serde_json::to_value(&rows)?;
+    let table = afsv::table::from_rows(
+        full.as_array().map_or(&[], Vec::as_slice),
+        &[
+            "x_m",
+            "z_profile_m",
+            "z_eff_m",
+            "slope_rad",
+            "contact_length_m",
+            "wheel_z_m",
+        ],
+    )?;
+    out.emit(
+        &table,
+        &full,
+        &format!(
+            "terrain enveloped by a {} m tire at {} m deflection, {} track of {}\n",
+            args.radius,
+            args.deflection_m,
+            col,
+            args.profile.display()
+        ),
+        "afsv tire envelope",
+        serde_json::json!({
+            "profile": args.profile.display().to_string(),
+            "track": col,
+            "radius_m": args.radius,
+            "deflection_m": args.deflection_m,
+        }),
+    )?;
     Ok(())
 }
 

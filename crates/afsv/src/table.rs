@@ -1,0 +1,227 @@
+//! Tabular results under one output rule: a terminal gets a short aligned table, `--json`
+//! (or a pipe) gets the whole result as JSON, and `-o FILE.csv` gets every row as CSV with
+//! a sidecar (`FILE.json`: what wrote it, its provenance) beside it, written whole or not
+//! at all (`afsv_records::Record::write`).
+
+use crate::output::{OutputGuard, OutputKind};
+use afsv_records::Record;
+use serde_json::{json, Value};
+use std::io::IsTerminal;
+use std::path::PathBuf;
+
+/// Rows shown at each end of a table on a terminal.
+pub const TERMINAL_ROWS: usize = 8;
+
+/// Where a tabular result goes (the `--json` and `-o` options of a command; the command's
+/// `--force` reaches the CSV through the [`OutputGuard`] it is declared to).
+#[derive(Debug, Clone, Default)]
+pub struct TableOutput {
+    /// `--json`: the whole result as JSON, even on a terminal.
+    pub json: bool,
+    /// `-o FILE.csv`: every row as CSV (with its sidecar).
+    pub csv: Option<PathBuf>,
+}
+
+impl TableOutput {
+    /// Declare the CSV output (and its sidecar) to `guard` before anything is computed.
+    pub fn declare(&self, guard: &mut OutputGuard) -> Result<(), String> {
+        if let Some(p) = &self.csv {
+            guard.output("-o", p, OutputKind::Record)?;
+        }
+        Ok(())
+    }
+
+    /// Emit a result: `table` is its rows as named numeric columns, `full` the whole result
+    /// as JSON (the table and whatever else it carries), `summary` the lines a terminal
+    /// shows above the table (may be empty), `written_by` the subcommand (e.g.
+    /// `"afsv tire sweep"`), `meta` extra sidecar fields.
+    pub fn emit(
+        &self,
+        table: &Record,
+        full: &Value,
+        summary: &str,
+        written_by: &str,
+        meta: Value,
+    ) -> Result<(), Box<dyn std::error::Error>> {
+        let terminal = !self.json && std::io::stdout().is_terminal();
+        if let Some(path) = &self.csv {
+            let mut rec = table.clone();
+            rec.meta = meta;
+            if !rec.meta.is_object() {
+                rec.meta = json!({});
+            }
+            rec.meta["written_by"] = json!(written_by);
+            crate::provenance::stamp_record(&mut rec);
+            rec.write(path)?;
+            if terminal {
+                println!(
+                    "wrote {} rows of {} columns to {} (sidecar {})",
+                    rec.len(),
+                    rec.names().len(),
+                    path.display(),
+                    path.with_extension("json").display()
+                );
+                print!("{summary}{}", text(table, TERMINAL_ROWS));
+            } else {
+                crate::output::print_json(&json!({
+                    "output": path,
+                    "sidecar": path.with_extension("json"),
+                    "rows": rec.len(),
+                    "columns": rec.names(),
+                }))?;
+            }
+        } else if terminal {
+            print!("{summary}{}", text(table, TERMINAL_ROWS));
+            println!(
+                "({} rows; --json for the whole result, -o FILE.csv for every row as CSV)",
+                table.len()
+            );
+        } else {
+            crate::output::print_json(full)?;
+        }
+        Ok(())
+    }
+}
+
+/// The columns `names` (in that order) from JSON objects that each hold them as numbers;
+/// a field missing or not a finite number is an error naming the row.
+pub fn from_rows(rows: &[Value], names: &[&str]) -> Result<Record, String> {
+    let mut rec = Record::new();
+    for name in names {
+        let col = rows
+            .iter()
+            .enumerate()
+            .map(|(i, r)| {
+                r.get(*name)
+                    .and_then(Value::as_f64)
+                    .ok_or_else(|| format!("row {} has no number `{name}`", i + 1))
+            })
+            .collect::<Result<Vec<f64>, String>>()?;
+        rec.push_column(name, col).map_err(|e| e.to_string())?;
+    }
+    Ok(rec)
+}
+
+/// Named numeric columns from arrays of equal length in the JSON object `obj` (those of
+/// `names` that it has).
+pub fn from_columns(obj: &Value, names: &[&str]) -> Result<Record, String> {
+    let mut rec = Record::new();
+    for name in names {
+        let Some(arr) = obj.get(*name).and_then(Value::as_array) else {
+            continue;
+        };
+        let col = arr
+            .iter()
+            .map(|v| v.as_f64().ok_or_else(|| format!("`{name}` holds {v}")))
+            .collect::<Result<Vec<f64>, String>>()?;
+        rec.push_column(name, col).map_err(|e| e.to_string())?;
+    }
+    Ok(rec)
+}
+
+/// An aligned text table of `rec`: the header, the first and last `ends` rows, and a
+/// `...` line between them when rows are left out. Numbers show 6 significant digits.
+pub fn text(rec: &Record, ends: usize) -> String {
+    let n = rec.len();
+    let shown: Vec<usize> = if n <= 2 * ends {
+        (0..n).collect()
+    } else {
+        (0..ends).chain(n - ends..n).collect()
+    };
+    let cells: Vec<Vec<String>> = rec
+        .names()
+        .iter()
+        .map(|name| {
+            let col = rec.column(name).unwrap_or_default();
+            shown.iter().map(|&i| number(col[i])).collect()
+        })
+        .collect();
+    let widths: Vec<usize> = rec
+        .names()
+        .iter()
+        .zip(&cells)
+        .map(|(h, c)| c.iter().map(String::len).max().unwrap_or(0).max(h.len()))
+        .collect();
+    let mut out = String::new();
+    let line = |items: Vec<&str>, out: &mut String| {
+        let parts: Vec<String> = items
+            .iter()
+            .zip(&widths)
+            .map(|(s, w)| format!("{s:>w$}"))
+            .collect();
+        out.push_str(parts.join("  ").trim_end());
+        out.push('\n');
+    };
+    line(rec.names().iter().map(String::as_str).collect(), &mut out);
+    for k in 0..shown.len() {
+        if k == ends && n > 2 * ends {
+            out.push_str(&format!("... {} rows left out ...\n", n - 2 * ends));
+        }
+        line(cells.iter().map(|c| c[k].as_str()).collect(), &mut out);
+    }
+    out
+}
+
+/// A number with 6 significant digits, in plain notation between 1e-3 and 1e6.
+fn number(v: f64) -> String {
+    let a = v.abs();
+    if v == 0.0 {
+        "0".into()
+    } else if (1e-3..1e6).contains(&a) {
+        let decimals = (5 - a.log10().floor() as i32).max(0) as usize;
+        let s = format!("{v:.decimals$}");
+        if s.contains('.') {
+            s.trim_end_matches('0').trim_end_matches('.').to_string()
+        } else {
+            s
+        }
+    } else {
+        format!("{v:.5e}")
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn rows_become_columns_and_a_missing_field_is_named() {
+        let rows = vec![
+            json!({"x_m": 0.0, "name": "a", "z_m": 1.5}),
+            json!({"x_m": 0.5, "name": "b", "z_m": -2.0}),
+        ];
+        let rec = from_rows(&rows, &["z_m", "x_m"]).unwrap();
+        assert_eq!(rec.names(), ["z_m", "x_m"]);
+        assert_eq!(rec.column("z_m").unwrap(), &[1.5, -2.0]);
+        let bad = vec![json!({"x_m": 0.0}), json!({"y": 1.0})];
+        assert!(from_rows(&bad, &["x_m"]).unwrap_err().contains("row 2"));
+    }
+
+    #[test]
+    fn a_long_table_shows_its_ends_on_a_terminal() {
+        let mut rec = Record::new();
+        rec.push_column("n_cycles_per_m", (0..100).map(f64::from).collect())
+            .unwrap();
+        rec.push_column(
+            "psd_m3",
+            (0..100).map(|i| 1e-4 / (1.0 + f64::from(i))).collect(),
+        )
+        .unwrap();
+        let t = text(&rec, 3);
+        let lines: Vec<&str> = t.lines().collect();
+        assert_eq!(lines.len(), 1 + 3 + 1 + 3, "{t}");
+        assert!(lines[0].trim_start().starts_with("n_cycles_per_m"));
+        assert!(lines[4].contains("94 rows left out"));
+        assert!(lines[7].trim_start().starts_with("99"), "{t}");
+        assert!(lines[7].contains("1.00000e-6"), "{t}");
+    }
+
+    #[test]
+    fn numbers_read_plainly() {
+        assert_eq!(number(0.0), "0");
+        assert_eq!(number(123.456789), "123.457");
+        assert_eq!(number(-0.5), "-0.5");
+        assert_eq!(number(2.5e-7), "2.50000e-7");
+        assert_eq!(number(150000.0), "150000");
+    }
+}
