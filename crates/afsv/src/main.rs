@@ -22,7 +22,7 @@ struct Cli {
 
 #[derive(Subcommand)]
 enum Command {
-    /// Assess the built-in default vehicle: a summary on a terminal, JSON with --json or when piped.
+    /// Assess a vehicle (the built-in default, or `--vehicle FILE`): ride, roll and yaw with their seed spread and paper standing; a summary on a terminal, JSON with --json or when piped.
     Evaluate(cmd::evaluate::Args),
     /// Run the toolkit's self-checks (ISO 2631-1 weightings, terrain synthesis fidelity).
     Check(cmd::check::Args),
@@ -33,7 +33,7 @@ enum Command {
     /// Hydro-pneumatic suspension strut with gas-oil emulsion: `harmonic`, `characterize`, `identify`.
     #[command(subcommand)]
     Hps(cmd::hps::Command),
-    /// Performance measures: ISO 2631-1 weightings and exposure, free-decay fit, step metrics.
+    /// Performance measures on records: `weighting` (ISO 2631-1 filters), `wbv` (exposure), `decay` (free-decay fit), `step` (step metrics), `check` (the weightings against the standard's table).
     #[command(subcommand)]
     Measures(cmd::measures::Command),
     /// Terrain profiles: synthesize two tracks with a PSD and coherence (`generate`), estimate spectra (`psd`).
@@ -48,16 +48,16 @@ enum Command {
     /// Roll stability of the rigid mining truck (chapter 2): `simulate`, `measures`, `study`, `calibrate`.
     #[command(subcommand)]
     Roll(cmd::roll::Command),
-    /// Design studies on the 3-D vehicle (chapter 6): `hps-sensitivity` (Table 6.4).
+    /// Design studies on the 3-D vehicle (chapter 6): `hps-sensitivity` (Table 6.4), `speed-sweep` (D4 against speed).
     #[command(subcommand)]
     Study(cmd::study::Command),
-    /// The 3-D articulated vehicle of chapter 6: `ride`, `roll`, `yaw` (design runs over terrain seeds), `simulate`.
+    /// The 3-D articulated vehicle of chapter 6: `ride`, `roll`, `yaw`, `path-change` (design runs over terrain seeds), `measures` (D1-D3 together), `simulate`.
     #[command(subcommand)]
     Vehicle(cmd::vehicle::Command),
-    /// Parameter sets as JSON: `dump` the nominal set, `check` a file.
+    /// Parameter sets and vehicle descriptions: `dump` the nominal set, `check` a file, `list` the named parameters.
     #[command(subcommand)]
     Params(cmd::params::Command),
-    /// Design optimisation: `afs` (Chapter 4 frame steering, pattern search + SQP).
+    /// Design optimisation: `afs` (Chapter 4 frame steering, pattern search + SQP), `hps` (Chapter 6 front-axle strut, GA).
     #[command(subcommand)]
     Optimize(cmd::optimize::Command),
     /// Batches of design points from `afsv optimize afs --ask`: `evaluate` one shard of a batch (e.g. one Slurm array task).

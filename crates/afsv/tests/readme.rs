@@ -85,3 +85,55 @@ fn sh_blocks_are_found_and_other_fences_skipped() {
     assert_eq!(non_finite_word("x = -inf"), Some("-inf".into()));
     assert_eq!(non_finite_word("information, infinite, nano 1e-5"), None);
 }
+
+/// The subcommands clap lists under `afsv ARGS --help` (its "Commands:" section, without
+/// `help`).
+fn subcommands(args: &[&str]) -> Vec<String> {
+    let mut all = args.to_vec();
+    all.push("--help");
+    let out = cli_support::afsv(&all);
+    assert!(out.status.success(), "{all:?}");
+    let text = String::from_utf8(out.stdout).unwrap();
+    text.lines()
+        .skip_while(|l| !l.starts_with("Commands:"))
+        .skip(1)
+        .take_while(|l| !l.trim().is_empty())
+        .filter_map(|l| l.split_whitespace().next())
+        .filter(|name| *name != "help")
+        .map(str::to_string)
+        .collect()
+}
+
+#[test]
+fn every_subcommand_is_named_in_the_top_help_and_documented() {
+    let root = repo_root();
+    let mut docs = std::fs::read_to_string(root.join("README.md")).unwrap();
+    for e in std::fs::read_dir(root.join("docs")).unwrap().flatten() {
+        if e.path().extension().is_some_and(|x| x == "md") {
+            docs += &std::fs::read_to_string(e.path()).unwrap();
+        }
+    }
+    let top = cli_support::afsv(&["--help"]);
+    let top = String::from_utf8(top.stdout).unwrap();
+    let mut missing = Vec::new();
+    let groups = subcommands(&[]);
+    assert!(groups.len() >= 10, "{groups:?}");
+    for group in &groups {
+        if !docs.contains(&format!("afsv {group}")) {
+            missing.push(format!("`afsv {group}` is in no doc"));
+        }
+        let line = top
+            .lines()
+            .find(|l| l.split_whitespace().next() == Some(group.as_str()))
+            .unwrap_or_default();
+        for sub in subcommands(&[group]) {
+            if !line.contains(&format!("`{sub}`")) {
+                missing.push(format!("`afsv --help` does not name `{group} {sub}`"));
+            }
+            if !docs.contains(&format!("afsv {group} {sub}")) {
+                missing.push(format!("`afsv {group} {sub}` is in no doc"));
+            }
+        }
+    }
+    assert!(missing.is_empty(), "{}", missing.join("\n"));
+}

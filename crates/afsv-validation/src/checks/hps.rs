@@ -59,11 +59,6 @@ pub(super) fn check_hps_front(ctx: &mut Ctx) -> Result<(), String> {
             v,
             "nominal design = afsv_design::HpsDesign::of(StrutParams::front_axle)",
         );
-        ctx.not_reproducible(
-            id,
-            Some("optimal"),
-            "needs the chapter-6 HPS optimisation on the 3-D vehicle, not implemented",
-        );
     }
     Ok(())
 }

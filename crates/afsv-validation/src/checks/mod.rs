@@ -146,6 +146,9 @@ pub const CHECKS: &[(&str, &[&str], CheckFn)] = &[
     (
         "table_6_5_hps_optimum",
         &[
+            "t6_5_a_hc[optimal]",
+            "t6_5_a_v[optimal]",
+            "t6_5_a_b[optimal]",
             "t6_5_awz",
             "t6_5_sp_drt",
             "t6_5_omega_z",

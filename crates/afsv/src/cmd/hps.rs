@@ -478,6 +478,7 @@ fn identify_cmd(a: IdentifyArgs) -> CmdResult {
         "fitted": fitted,
         "nrmse_initial": afsv::output::explain_nulls(json!(res.nrmse_initial), NO_CHANNEL),
         "nrmse": afsv::output::explain_nulls(json!(res.nrmse), NO_CHANNEL),
+        "nrmse_definition": "RMS(simulated - measured) / (max - min of the measured channel), over the compared samples",
         "iterations": res.iterations,
         "converged": converged,
         "optimizer_converged": res.converged,
