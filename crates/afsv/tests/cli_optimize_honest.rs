@@ -66,6 +66,41 @@ fn an_infeasible_best_point_is_not_earned_and_names_the_violated_constraint() {
 }
 
 #[test]
+fn the_ask_tell_report_of_an_infeasible_run_is_not_earned_either() {
+    let state = scratch("honest-ask", "state.json");
+    let batch = scratch("honest-ask", "b.jsonl");
+    let results = scratch("honest-ask", "r.jsonl");
+    let geometry = [
+        "--front-mount-dir-deg",
+        "30",
+        "--tire-point=1,-0.5",
+        "--engine-point=1.2,-0.2",
+    ];
+    let with = |extra: &[&str]| {
+        let mut a = geometry.to_vec();
+        a.extend(extra);
+        optimize(&a)
+    };
+    for _ in 0..100 {
+        let asked = with(&["--state", s(&state), "--ask", s(&batch)]);
+        if asked.status.code() == Some(3) {
+            let err = stderr(&asked);
+            assert!(
+                err.contains("no feasible design found") && err.contains("eq_4_9_engine = +0.416"),
+                "{err}"
+            );
+            let v: serde_json::Value = serde_json::from_slice(&asked.stdout).unwrap();
+            assert_eq!(v["runs"][0]["feasible"], false);
+            return;
+        }
+        json(&asked);
+        json(&afsv(&["batch", "evaluate", s(&batch), "-o", s(&results)]));
+        json(&with(&["--state", s(&state), "--tell", s(&results)]));
+    }
+    panic!("the ask/tell run did not finish in 100 batches");
+}
+
+#[test]
 fn quiet_silences_the_summary_line() {
     let loud = optimize(&[]);
     assert!(stderr(&loud).contains("run with the steering-arm constraint done"));
