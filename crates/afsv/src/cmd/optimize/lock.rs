@@ -88,7 +88,8 @@ fn field<'a>(text: &'a str, key: &str) -> Option<&'a str> {
 /// Why the lock is not ours: who holds it, from the lock file's text.
 fn held_by(flag: &str, target: &Path, path: &Path, text: &str) -> String {
     let who = match (field(text, "pid"), field(text, "host")) {
-        (Some(pid), Some(h)) if h == host() => {
+        // Where /proc lists processes (Linux), say whether the pid runs here.
+        (Some(pid), Some(h)) if h == host() && Path::new("/proc/self").exists() => {
             let running = Path::new("/proc").join(pid).exists();
             format!(
                 "pid {pid} on this machine, {}",
@@ -99,6 +100,7 @@ fn held_by(flag: &str, target: &Path, path: &Path, text: &str) -> String {
                 }
             )
         }
+        (Some(pid), Some(h)) if h == host() => format!("pid {pid} on this machine"),
         (Some(pid), Some(h)) => format!("pid {pid} on host {h}"),
         _ => "a run that is starting".into(),
     };
