@@ -150,11 +150,7 @@ impl<'a> AfsAskTell<'a> {
 
     /// The pattern-search settings of screened start `i` (as in [`optimise`]).
     fn screening_options(&self, i: usize) -> PatternSearchOptions {
-        PatternSearchOptions {
-            seed: self.settings.seed.wrapping_add(1 + i as u64),
-            min_mesh: self.settings.screen_min_mesh,
-            ..self.settings.pattern
-        }
+        crate::afs_resume::screening_options(&self.settings, i)
     }
 
     /// Where `run` stands and the unit-cube points (or the start point) it needs next.

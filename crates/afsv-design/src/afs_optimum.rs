@@ -10,6 +10,7 @@
 
 use crate::afs_design::AfsDesign;
 use crate::afs_problem::{AfsProblem, DesignEvaluation};
+use crate::afs_resume::{check_run_state, screening_options};
 use crate::error::DesignError;
 use optimize::lhs::{latin_hypercube, LhsOptions};
 use optimize::pattern_search::{PatternSearch, PatternSearchOptions, PatternSearchState};
@@ -115,6 +116,15 @@ pub struct AfsOptimum {
     pub start_spread_f: f64,
 }
 
+impl AfsOptimum {
+    /// Whether the run found a feasible design: the PS/SQP point (the best of the run by
+    /// Deb's rules) meets every constraint. When it does not, no point met them all, and the
+    /// point is the least infeasible one found, not an optimum.
+    pub fn feasible(&self) -> bool {
+        self.ps_sqp.is_feasible()
+    }
+}
+
 fn opt_err(e: OptimizeError) -> DesignError {
     DesignError::Shape {
         field: "optimiser",
@@ -160,13 +170,6 @@ pub fn optimise(
 ) -> Result<AfsOptimum, DesignError> {
     let starts = start_points(problem, s)?;
     let screened = problem.screened();
-    let mut run = resume;
-    if run.finished.len() > starts.len() {
-        return Err(DesignError::Shape {
-            field: "resume",
-            reason: "the checkpoint holds more starts than these settings".into(),
-        });
-    }
     if !(s.screen_min_mesh >= s.pattern.min_mesh && s.screen_min_mesh < s.pattern.initial_mesh) {
         return Err(DesignError::Invalid {
             field: "screen_min_mesh",
@@ -174,18 +177,17 @@ pub fn optimise(
             reason: "must be in [pattern.min_mesh, pattern.initial_mesh)",
         });
     }
+    s.pattern.validate().map_err(opt_err)?;
+    // A resumed state is an input: checked before anything runs or is written.
+    check_run_state(problem, s, &resume)?;
+    let mut run = resume;
     let ck_err = |e: String| DesignError::Shape {
         field: "checkpoint",
         reason: e,
     };
     while run.finished.len() < starts.len() {
         let i = run.finished.len();
-        let o = PatternSearchOptions {
-            seed: s.seed.wrapping_add(1 + i as u64),
-            min_mesh: s.screen_min_mesh,
-            ..s.pattern
-        };
-        let ps = PatternSearch::new(&screened, o).map_err(opt_err)?;
+        let ps = PatternSearch::new(&screened, screening_options(s, i)).map_err(opt_err)?;
         let state = match run.current.take() {
             Some(st) => st,
             None => ps.start(&starts[i]).map_err(opt_err)?,

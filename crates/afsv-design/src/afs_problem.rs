@@ -214,6 +214,23 @@ pub struct DesignEvaluation {
     pub constraints: Vec<(AfsConstraint, f64)>,
 }
 
+impl DesignEvaluation {
+    /// The constraints the design violates (value > 0, or not a number), with their values,
+    /// in [`AfsProblem::constraints`]' order; empty when the design is feasible.
+    pub fn violated(&self) -> Vec<(AfsConstraint, f64)> {
+        self.constraints
+            .iter()
+            .copied()
+            .filter(|(_, v)| v.is_nan() || *v > 0.0)
+            .collect()
+    }
+
+    /// Whether every constraint holds (value <= 0), as the solvers count feasibility.
+    pub fn is_feasible(&self) -> bool {
+        self.violated().is_empty()
+    }
+}
+
 /// The chapter-4 problem with the current design's measures computed once.
 #[derive(Debug, Clone)]
 pub struct AfsProblem {

@@ -24,6 +24,7 @@ pub mod afs_ask_tell;
 pub mod afs_design;
 pub mod afs_optimum;
 pub mod afs_problem;
+pub mod afs_resume;
 pub mod ahp;
 pub mod error;
 pub mod hps_design;
@@ -40,6 +41,7 @@ pub use afs_optimum::{optimise, AfsOptimisationSettings, AfsOptimum, AfsRunState
 pub use afs_problem::{
     AfsConstraint, AfsProblem, AfsProblemSpec, DesignEvaluation, InterferenceGeometry,
 };
+pub use afs_resume::check_run_state;
 pub use ahp::{AhpHierarchy, AhpLevels, GoalComparison};
 pub use error::DesignError;
 pub use hps_design::HpsDesign;

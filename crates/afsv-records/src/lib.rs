@@ -29,8 +29,31 @@ pub mod provenance;
 pub mod units;
 
 pub use convention::{ReadOptions, SIGN_CONVENTION};
+use std::collections::HashSet;
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
+
+/// Most columns a CSV header may have: a wider header is refused before any row is read
+/// (a malformed or hostile file fails at once, in time linear in its header). A record of
+/// the toolkit has a few dozen channels; 4,096 leaves room for any logger export.
+pub const MAX_COLUMNS: usize = 4096;
+
+/// Column names an error message lists before it says how many more there are.
+pub const LISTED_COLUMNS: usize = 10;
+
+/// `names` for an error message: the first [`LISTED_COLUMNS`], then "... and N more".
+pub fn list_columns(names: &[String]) -> String {
+    let shown = names
+        .iter()
+        .take(LISTED_COLUMNS)
+        .map(String::as_str)
+        .collect::<Vec<_>>()
+        .join(", ");
+    match names.len().saturating_sub(LISTED_COLUMNS) {
+        0 => shown,
+        more => format!("{shown}, ... and {more} more"),
+    }
+}
 
 /// A column-oriented numeric record.
 #[derive(Debug, Clone, Default, PartialEq)]
@@ -170,7 +193,7 @@ impl Record {
         self.column(name).ok_or_else(|| RecordError::MissingColumn {
             path: path.to_path_buf(),
             name: name.to_string(),
-            available: self.names.join(", "),
+            available: list_columns(&self.names),
         })
     }
 
@@ -241,7 +264,7 @@ impl Record {
             let Some(j) = self.names.iter().position(|n| *n == channel) else {
                 return Err(err(format!(
                     "sign_convention names channel `{channel}`, which the record does not have (columns: {})",
-                    self.names.join(", ")
+                    list_columns(&self.names)
                 )));
             };
             convention::apply(conversion, &mut self.columns[j]);
@@ -277,12 +300,24 @@ impl Record {
         if headers.is_empty() || (headers.len() == 1 && headers[0].is_empty()) {
             return Err(perr(1, 1, "empty file: expected a header line".into()));
         }
+        if headers.len() > MAX_COLUMNS {
+            return Err(perr(
+                1,
+                MAX_COLUMNS + 1,
+                format!(
+                    "the header has {} columns, more than the {MAX_COLUMNS} a record may have",
+                    headers.len()
+                ),
+            ));
+        }
         let mut rec = Self::new();
+        // One pass with a set: linear in the header's width.
+        let mut seen = HashSet::with_capacity(headers.len());
         for (j, h) in headers.iter().enumerate() {
             if h.is_empty() {
                 return Err(perr(1, j + 1, "empty column name in header".into()));
             }
-            if rec.names.iter().any(|n| n == h) {
+            if !seen.insert(h) {
                 return Err(perr(1, j + 1, format!("duplicate column `{h}`")));
             }
             rec.names.push(h.to_string());
@@ -498,6 +533,42 @@ mod tests {
     fn time_that_does_not_increase_is_reported_where_it_happens() {
         let e = Record::parse_csv("force_n,time_s\n1,0\n2,0.1\n3,0.1\n", p()).unwrap_err();
         assert!(e.to_string().starts_with("rec.csv:4:2:"), "{e}");
+    }
+
+    #[test]
+    fn a_wide_header_is_refused_at_once_and_errors_list_few_columns() {
+        let wide: Vec<String> = (0..100_000).map(|j| format!("c{j}_x")).collect();
+        let text = format!("{}\n", wide.join(","));
+        let t = std::time::Instant::now();
+        let e = Record::parse_csv(&text, p()).unwrap_err().to_string();
+        assert!(t.elapsed().as_secs_f64() < 1.0, "{:?}", t.elapsed());
+        assert!(
+            e.starts_with("rec.csv:1:4097:") && e.contains("100000 columns"),
+            "{e}"
+        );
+        assert!(e.len() < 200, "{e}");
+        // The widest allowed header parses in one pass, and a missing column's error lists
+        // ten names and the count of the others.
+        let most = wide[..MAX_COLUMNS].join(",");
+        let row = vec!["1"; MAX_COLUMNS].join(",");
+        let t = std::time::Instant::now();
+        let r = Record::parse_csv(&format!("{most}\n{row}\n"), p()).unwrap();
+        assert!(t.elapsed().as_secs_f64() < 1.0, "{:?}", t.elapsed());
+        let e = r.require("time_s", p()).unwrap_err().to_string();
+        assert!(
+            e.ends_with("c8_x, c9_x, ... and 4086 more)") && e.contains("(columns: c0_x, c1_x,"),
+            "{e}"
+        );
+        // A duplicate far along is still found, where it is.
+        let mut dup = wide[..MAX_COLUMNS].to_vec();
+        dup[MAX_COLUMNS - 1] = "c17_x".into();
+        let e = Record::parse_csv(&format!("{}\n", dup.join(",")), p()).unwrap_err();
+        assert!(
+            e.to_string()
+                .starts_with("rec.csv:1:4096: duplicate column `c17_x`"),
+            "{e}"
+        );
+        assert_eq!(list_columns(&wide[..3]), "c0_x, c1_x, c2_x");
     }
 
     #[test]

@@ -21,6 +21,12 @@ pub fn set_quiet(quiet: bool) {
     QUIET.store(quiet, Ordering::Relaxed);
 }
 
+/// Whether `afsv --quiet` switched progress off (commands that report on stderr outside a
+/// [`Progress`], e.g. a per-run summary line, stay silent too).
+pub fn is_quiet() -> bool {
+    QUIET.load(Ordering::Relaxed)
+}
+
 enum Sink {
     /// Nothing is reported.
     Off,

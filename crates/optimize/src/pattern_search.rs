@@ -158,21 +158,82 @@ impl<'a, P: ConstrainedProblem + ?Sized> PatternSearch<'a, P> {
         })
     }
 
-    /// Checks that a saved state belongs to this problem.
+    /// Checks a saved state as strictly as an input: it belongs to this problem (one
+    /// unit-cube coordinate per variable, in [0, 1]; `x` the image of `u`; one finite value
+    /// per constraint), its mesh is one this search can reach (finite, in
+    /// [`min_mesh` x `contraction`, `max_mesh`], on the grid `initial_mesh` x
+    /// `contraction`^k when `expansion` x `contraction` = 1), its counts are consistent (at
+    /// least one evaluation per iteration besides the start point) and a stop agrees with
+    /// its mesh or count.
     pub fn check_state(&self, s: &PatternSearchState) -> Result<(), OptimizeError> {
+        let bad = |what: String| {
+            Err(OptimizeError::Checkpoint(format!(
+                "pattern-search state: {what}"
+            )))
+        };
         let b = self.problem.bounds();
-        let ok = s.u.len() == b.dim()
-            && s.x.len() == b.dim()
-            && s.eval.constraints.len() == self.problem.n_constraints()
-            && s.mesh > 0.0
-            && s.u.iter().all(|u| (0.0..=1.0).contains(u));
-        if ok {
-            Ok(())
-        } else {
-            Err(OptimizeError::Checkpoint(
-                "pattern-search state of another dimension or constraint count".into(),
-            ))
+        let o = &self.options;
+        if s.u.len() != b.dim() || s.x.len() != b.dim() {
+            return bad(format!(
+                "{} unit coordinates and {} values for a problem of {} variables",
+                s.u.len(),
+                s.x.len(),
+                b.dim()
+            ));
         }
+        if s.eval.constraints.len() != self.problem.n_constraints() {
+            return bad(format!(
+                "{} constraint values for a problem of {}",
+                s.eval.constraints.len(),
+                self.problem.n_constraints()
+            ));
+        }
+        if let Some(u) = s.u.iter().find(|u| !(0.0..=1.0).contains(*u)) {
+            return bad(format!("unit coordinate {u:?} outside [0, 1]"));
+        }
+        if s.x != b.from_unit(&s.u) {
+            return bad("the point x is not the image of its unit coordinates u".into());
+        }
+        if !(s.eval.f.is_finite() && s.eval.constraints.iter().all(|c| c.is_finite())) {
+            return bad("an objective or constraint value that is not finite".into());
+        }
+        if !(s.mesh.is_finite() && s.mesh >= o.min_mesh * o.contraction && s.mesh <= o.max_mesh) {
+            return bad(format!(
+                "mesh {:?} outside [{:?}, {:?}]",
+                s.mesh,
+                o.min_mesh * o.contraction,
+                o.max_mesh
+            ));
+        }
+        if o.expansion * o.contraction == 1.0 && !on_grid(s.mesh, o) {
+            return bad(format!(
+                "mesh {:?} is not {:?} times a power of {:?}",
+                s.mesh, o.initial_mesh, o.contraction
+            ));
+        }
+        if s.evaluations < 1 + s.iteration {
+            return bad(format!(
+                "{} evaluations for {} iterations",
+                s.evaluations, s.iteration
+            ));
+        }
+        let consistent = match s.stop {
+            Some(PatternStop::MeshConverged) => s.mesh < o.min_mesh,
+            Some(PatternStop::EvaluationLimit) => s.evaluations >= o.max_evaluations,
+            None => true,
+        };
+        if !consistent {
+            return bad(format!(
+                "stop {:?} with mesh {} and {} evaluations",
+                s.stop, s.mesh, s.evaluations
+            ));
+        }
+        if s.search_done && o.search_points == 0
+            || s.iteration > 0 && o.search_points > 0 && !s.search_done
+        {
+            return bad("a search step that these settings do not make".into());
+        }
+        Ok(())
     }
 
     /// One iteration: the search step at iteration 0 (if configured; a success skips the
@@ -324,4 +385,14 @@ impl<'a, P: ConstrainedProblem + ?Sized> PatternSearch<'a, P> {
             None => false,
         }
     }
+}
+
+/// Whether `mesh` is `initial_mesh` or `max_mesh` times an integral power of `contraction`
+/// (the sizes a search that halves and doubles can reach), to a relative 1e-12.
+fn on_grid(mesh: f64, o: &PatternSearchOptions) -> bool {
+    [o.initial_mesh, o.max_mesh].iter().any(|base| {
+        let k = (mesh / base).ln() / o.contraction.ln();
+        let near = base * o.contraction.powi(k.round() as i32);
+        k.is_finite() && ((near - mesh) / mesh).abs() < 1e-12
+    })
 }

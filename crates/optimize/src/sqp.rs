@@ -261,6 +261,44 @@ pub fn sqp_ask(
     })
 }
 
+/// Checks a saved log as strictly as an input: one unit coordinate in [0, 1] per variable
+/// and one value per constraint in every entry, finite values, no point twice, and no more
+/// entries than `max_calls` calls with their difference points can make.
+fn check_log(
+    log: &[LoggedEvaluation],
+    n: usize,
+    nc: usize,
+    options: &SqpOptions,
+) -> Result<(), OptimizeError> {
+    let bad = |what: String| Err(OptimizeError::Checkpoint(format!("SQP log: {what}")));
+    let most = options.max_calls * (1 + if options.central { 2 * n } else { n });
+    if log.len() > most {
+        return bad(format!(
+            "{} entries, more than the {most} of {} calls",
+            log.len(),
+            options.max_calls
+        ));
+    }
+    let mut seen = std::collections::HashSet::with_capacity(log.len());
+    for (i, l) in log.iter().enumerate() {
+        if l.u.len() != n || l.eval.constraints.len() != nc {
+            return bad(format!(
+                "entry {i} of another dimension or constraint count"
+            ));
+        }
+        if !l.u.iter().all(|u| (0.0..=1.0).contains(u)) {
+            return bad(format!("entry {i} outside the unit cube"));
+        }
+        if !(l.eval.f.is_finite() && l.eval.constraints.iter().all(|c| c.is_finite())) {
+            return bad(format!("entry {i} holds a value that is not finite"));
+        }
+        if !seen.insert(key(&l.u)) {
+            return bad(format!("entry {i} repeats an earlier point"));
+        }
+    }
+    Ok(())
+}
+
 /// A batch of unit-cube points.
 type Batch = Vec<Vec<f64>>;
 
@@ -297,14 +335,7 @@ fn drive(
         "finite and >= 0",
     )?;
     let nc = source.nc;
-    if log
-        .iter()
-        .any(|l| l.u.len() != n || l.eval.constraints.len() != nc)
-    {
-        return Err(OptimizeError::Checkpoint(
-            "SQP log of another dimension or constraint count".into(),
-        ));
-    }
+    check_log(&log, n, nc, options)?;
     let replay_len = log.len();
     let cache = log.iter().map(|l| (key(&l.u), l.eval.clone())).collect();
     let ev = Evaluator {

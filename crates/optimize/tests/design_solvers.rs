@@ -457,3 +457,83 @@ mod invariants {
         }
     }
 }
+
+/// A saved pattern-search state or SQP log is an input: every state a run checkpoints
+/// passes, and a state or log edited out of what the solver can produce is refused.
+#[test]
+fn saved_states_and_logs_outside_what_a_run_makes_are_refused() {
+    let p = himmelblau();
+    let o = PatternSearchOptions {
+        min_mesh: 1e-3,
+        ..ps_options(6)
+    };
+    let ps = PatternSearch::new(&p, o).unwrap();
+    let mut saved = Vec::new();
+    let end = ps
+        .run(ps.start(&[1.0, 1.0]).unwrap(), &Silent, &mut |st| {
+            saved.push(st.clone());
+            Ok(())
+        })
+        .unwrap();
+    assert!(saved.len() > 5);
+    for st in &saved {
+        ps.check_state(st).unwrap();
+    }
+    let refuse = |edit: &dyn Fn(&mut PatternSearchState), want: &str| {
+        let mut t = end.clone();
+        edit(&mut t);
+        let e = ps.check_state(&t).unwrap_err().to_string();
+        assert!(e.contains(want), "{want:?} not in {e}");
+        // run() refuses it before any evaluation.
+        assert!(ps.run(t, &Silent, &mut |_| Ok(())).is_err());
+    };
+    refuse(&|t| t.mesh = 1e308, "mesh 1e308 outside");
+    refuse(&|t| t.mesh = f64::NAN, "outside");
+    refuse(&|t| t.mesh = 0.3, "is not 0.25 times a power of 0.5");
+    refuse(&|t| t.u[0] = 1.5, "unit coordinate 1.5 outside [0, 1]");
+    refuse(&|t| t.x[0] += 1e-9, "not the image");
+    refuse(&|t| t.eval.f = f64::INFINITY, "not finite");
+    refuse(&|t| t.eval.constraints.push(0.0), "constraint values");
+    refuse(&|t| t.evaluations = t.iteration, "evaluations for");
+    refuse(
+        &|t| t.stop = Some(PatternStop::EvaluationLimit),
+        "stop Some(EvaluationLimit)",
+    );
+    refuse(&|t| t.search_done = false, "a search step");
+
+    let s = run_ps(&p, ps_options(0), &[2.0, 2.0]);
+    let opts = SqpOptions {
+        max_calls: 5,
+        ..SqpOptions::default()
+    };
+    let r = sqp(&p, &s.x, &opts, vec![], &Silent, &mut |_| Ok(())).unwrap();
+    assert!(!r.log.is_empty());
+    let again = sqp(&p, &s.x, &opts, r.log.clone(), &Silent, &mut |_| Ok(())).unwrap();
+    assert_eq!(again.eval, r.eval);
+    let refuse_log = |edit: &dyn Fn(&mut Vec<LoggedEvaluation>), want: &str| {
+        let mut log = r.log.clone();
+        edit(&mut log);
+        let e = sqp(&p, &s.x, &opts, log, &Silent, &mut |_| Ok(()))
+            .unwrap_err()
+            .to_string();
+        assert!(e.contains(want), "{want:?} not in {e}");
+    };
+    refuse_log(&|l| l[0].u[1] = -0.5, "entry 0 outside the unit cube");
+    refuse_log(
+        &|l| l[1].eval.f = f64::NAN,
+        "entry 1 holds a value that is not finite",
+    );
+    refuse_log(&|l| l.push(l[0].clone()), "repeats an earlier point");
+    refuse_log(
+        &|l| {
+            let extra: Vec<LoggedEvaluation> = (0..100)
+                .map(|k| LoggedEvaluation {
+                    u: vec![k as f64 / 100.0, 0.5],
+                    eval: l[0].eval.clone(),
+                })
+                .collect();
+            l.extend(extra);
+        },
+        "more than the",
+    );
+}

@@ -20,8 +20,9 @@ use std::collections::BTreeMap;
 use std::io::{BufRead, IsTerminal, Read};
 use std::path::{Path, PathBuf};
 
-/// Version of the batch, results and state formats.
-pub const FORMAT_VERSION: u32 = 1;
+/// Version of the batch and results formats (2: headers carry the asking state's
+/// SHA-256, [`BatchHeader::state_sha256`]).
+pub const FORMAT_VERSION: u32 = 2;
 /// `format` of a batch file's header.
 pub const BATCH_FORMAT: &str = "afsv-batch";
 /// `format` of a results file's header.
@@ -93,6 +94,11 @@ pub struct BatchHeader {
     pub sign_convention: String,
     /// Number of the batch (batches told before it).
     pub batch: usize,
+    /// SHA-256 (hex) of the ask/tell state file's content when it asked this batch: with
+    /// `batch`, the identity of the question. `--tell` takes results only for its own
+    /// state's current batch. (Absent in a file of version 1: read as empty, refused.)
+    #[serde(default)]
+    pub state_sha256: String,
     /// Whether the run has finished (then the batch holds no point).
     pub finished: bool,
     /// Number of point lines that follow.
@@ -133,6 +139,10 @@ pub struct ResultsHeader {
     pub sign_convention: String,
     /// The batch's number.
     pub batch: usize,
+    /// The batch's [`BatchHeader::state_sha256`], carried over: which state asked for
+    /// these results.
+    #[serde(default)]
+    pub state_sha256: String,
     /// The shard, "I/N".
     pub shard: String,
     /// Number of result lines that follow.
@@ -200,8 +210,9 @@ pub fn variable_names() -> Vec<String> {
         .collect()
 }
 
-/// `serde_json`'s message without its " at line 1 column C" (each line is parsed alone).
-fn message(e: &serde_json::Error) -> String {
+/// `serde_json`'s message without its " at line L column C" (each line is parsed alone;
+/// callers that report a position give it themselves).
+pub fn message(e: &serde_json::Error) -> String {
     let m = e.to_string();
     match m.rsplit_once(" at line ") {
         Some((head, _)) => head.to_string(),
@@ -272,6 +283,12 @@ pub fn read_batch(label: &str, path: &Path) -> Result<(BatchHeader, Vec<BatchPoi
                 h.format, h.version
             )));
         }
+        if !is_sha256_hex(&h.state_sha256) {
+            return Err(bad(format!(
+                "state_sha256 {:?} is not a SHA-256 in hex",
+                h.state_sha256
+            )));
+        }
         if h.variables != variable_names() {
             return Err(bad(format!(
                 "variables {:?}, expected {:?}",
@@ -302,6 +319,13 @@ pub fn read_batch(label: &str, path: &Path) -> Result<(BatchHeader, Vec<BatchPoi
         }
     }
     Ok((h, lines.into_iter().map(|(_, p)| p).collect()))
+}
+
+/// Whether `s` is a SHA-256 digest in lower-case hex (64 digits).
+pub fn is_sha256_hex(s: &str) -> bool {
+    s.len() == 64
+        && s.bytes()
+            .all(|b| b.is_ascii_digit() || (b'a'..=b'f').contains(&b))
 }
 
 /// Id of point `index` of batch `batch`.
@@ -443,6 +467,7 @@ fn evaluate(a: &EvaluateArgs) -> CmdResult {
         written_by: "afsv batch evaluate".into(),
         sign_convention: afsv_records::SIGN_CONVENTION.into(),
         batch: header.batch,
+        state_sha256: header.state_sha256.clone(),
         shard: shard_text.clone(),
         points: lines.len(),
         problems: header.problems.clone(),

@@ -8,7 +8,7 @@
 
 use super::batch;
 use super::CmdResult;
-use afsv::output::{is_afsv_json, OutputGuard, OutputKind};
+use afsv::output::{is_afsv_json, NotEarned, OutputGuard, OutputKind};
 use afsv_design::{
     optimise, AfsDesignBounds, AfsOptimisationSettings, AfsOptimum, AfsProblem, AfsProblemSpec,
     AfsRunState, AhpHierarchy, InterferenceGeometry, Objective,
@@ -22,9 +22,11 @@ use std::path::{Path, PathBuf};
 
 mod ask_tell;
 mod hps;
+mod lock;
 mod report;
 
 use ask_tell::AskTell;
+use lock::RunLock;
 use report::{to_json, to_text, write_plots, Bar};
 
 /// `afsv optimize` subcommands.
@@ -141,6 +143,7 @@ pub fn run(cmd: Command) -> CmdResult {
 
 /// The checkpoint file: one run state per configuration, with the settings it belongs to.
 #[derive(Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
 struct Checkpoint {
     written_by: String,
     sign_convention: String,
@@ -291,6 +294,19 @@ fn run_afs(a: &AfsArgs) -> CmdResult {
     if a.tell.len() > batch::MAX_SHARDS {
         return Err(format!("--tell: more than {} results files", batch::MAX_SHARDS).into());
     }
+    // One run at a time on a checkpoint or state file; the lock is held until the command
+    // returns, and taken before the file is read.
+    let (_lock, stored) = match (&a.checkpoint, &a.state) {
+        (Some(p), _) => (
+            Some(RunLock::take("--checkpoint", p)?),
+            read_stored("--checkpoint", p)?,
+        ),
+        (None, Some(p)) => (
+            Some(RunLock::take("--state", p)?),
+            read_stored("--state", p)?,
+        ),
+        (None, None) => (None, None),
+    };
     let mut guard = OutputGuard::new(a.force);
     let mut told = Vec::with_capacity(a.tell.len());
     for f in &a.tell {
@@ -349,6 +365,7 @@ fn run_afs(a: &AfsArgs) -> CmdResult {
         let job = AskTell {
             args: a,
             state_path: state,
+            stored,
             settings,
             settings_json,
             descs,
@@ -357,11 +374,22 @@ fn run_afs(a: &AfsArgs) -> CmdResult {
         };
         return job.run();
     }
-    let mut ck = match &a.checkpoint {
-        Some(p) => load_afsv_json::<Checkpoint>("--checkpoint", p)?
-            .map(|ck| same_settings("--checkpoint", p, &ck.settings, &settings_json).map(|()| ck))
-            .transpose()?,
-        None => None,
+    let mut ck = match (&a.checkpoint, stored) {
+        (Some(p), Some(text)) => {
+            let ck: Checkpoint = parse_stored("--checkpoint", p, &text)?;
+            same_settings("--checkpoint", p, &ck.settings, &settings_json)?;
+            if ck.runs.len() > configs.len() {
+                return Err(format!(
+                    "--checkpoint {}: {} runs, these options make {}",
+                    p.display(),
+                    ck.runs.len(),
+                    configs.len()
+                )
+                .into());
+            }
+            Some(ck)
+        }
+        _ => None,
     }
     .unwrap_or(Checkpoint {
         written_by: "afsv optimize afs".into(),
@@ -369,14 +397,29 @@ fn run_afs(a: &AfsArgs) -> CmdResult {
         settings: settings_json,
         runs: Vec::new(),
     });
+    let problems: Vec<AfsProblem> = descs
+        .iter()
+        .map(|d| AfsProblem::new(spec_of(d)?, objective).map_err(|e| e.to_string()))
+        .collect::<Result<_, String>>()?;
+    // Every stored run is checked before any run starts (and so before the checkpoint is
+    // written again): a refused resume leaves the file as it was.
+    if let Some(p) = &a.checkpoint {
+        for (i, (run, problem)) in ck.runs.iter().zip(&problems).enumerate() {
+            afsv_design::check_run_state(problem, &settings, run).map_err(|e| {
+                format!(
+                    "--checkpoint {}: run {}: {e}; remove it to start afresh",
+                    p.display(),
+                    i + 1
+                )
+            })?;
+        }
+    }
     let progress = Bar::new()?;
     let mut outcomes = Vec::new();
-    let mut problems = Vec::new();
-    for (i, ((label, arm), desc)) in configs.iter().zip(&descs).enumerate() {
+    for (i, ((label, arm), problem)) in configs.iter().zip(&problems).enumerate() {
         let t = std::time::Instant::now();
-        let problem = AfsProblem::new(spec_of(desc)?, objective)?;
         let resume = ck.runs.get(i).cloned().unwrap_or_default();
-        let optimum = optimise(&problem, &settings, resume, &progress, &mut |st| {
+        let optimum = optimise(problem, &settings, resume, &progress, &mut |st| {
             let Some(path) = &a.checkpoint else {
                 return Ok(());
             };
@@ -391,13 +434,14 @@ fn run_afs(a: &AfsArgs) -> CmdResult {
             optimum,
             seconds: t.elapsed().as_secs_f64(),
         });
-        problems.push(problem);
     }
     progress.finish();
     report(a, &objective, &problems, &outcomes)
 }
 
-/// Plots, then the report on stdout (JSON or text), of finished runs.
+/// Plots, then the report on stdout (JSON or text), of finished runs. A run whose best
+/// point violates a constraint found no feasible design: the report is printed, and the
+/// command is [`NotEarned`] (exit 3), naming the violated constraints and their values.
 fn report(
     a: &AfsArgs,
     objective: &Objective,
@@ -411,26 +455,75 @@ fn report(
     } else {
         print!("{}", to_text(a, &current, outcomes));
     }
-    Ok(())
+    let infeasible: Vec<String> = outcomes
+        .iter()
+        .filter(|r| !r.optimum.feasible())
+        .map(|r| format!("run {}: {}", r.label, report::violations(&r.optimum)))
+        .collect();
+    if infeasible.is_empty() {
+        Ok(())
+    } else {
+        Err(NotEarned(format!(
+            "optimize afs: no feasible design found ({}); the least infeasible point is printed, not an optimum (check the Eq 4.9 points and --min-arm-m)",
+            infeasible.join("; ")
+        ))
+        .into())
+    }
 }
 
-/// An afsv-written JSON file (`None` if it does not exist).
-fn load_afsv_json<T: DeserializeOwned>(flag: &str, path: &Path) -> Result<Option<T>, String> {
-    let Ok(text) = std::fs::read_to_string(path) else {
-        return Ok(None);
+/// The text of a stored afsv JSON file (a checkpoint or a state), `None` if it does not
+/// exist. Unreadable, truncated, malformed or foreign files are refused with their cause
+/// (a truncated file, e.g. from a full disk, is named so, with where it ends).
+fn read_stored(flag: &str, path: &Path) -> Result<Option<String>, String> {
+    let at = |what: String| format!("{flag} {}: {what}", path.display());
+    let bytes = match std::fs::read(path) {
+        Ok(b) => b,
+        Err(e) if e.kind() == std::io::ErrorKind::NotFound => return Ok(None),
+        Err(e) => return Err(at(e.to_string())),
     };
-    if !is_afsv_json(&text) {
-        return Err(format!(
-            "{flag} {}: exists and was not written by afsv",
-            path.display()
-        ));
+    let text = String::from_utf8(bytes).map_err(|e| {
+        at(format!(
+            "not UTF-8 text (byte {}), so not a file afsv wrote",
+            e.utf8_error().valid_up_to()
+        ))
+    })?;
+    if text.trim().is_empty() {
+        return Err(at(format!(
+            "empty ({} bytes): not a complete file; remove it to start afresh",
+            text.len()
+        )));
     }
-    serde_json::from_str(&text).map(Some).map_err(|e| {
+    if let Err(e) = serde_json::from_str::<Value>(&text) {
+        return Err(at(if e.is_eof() {
+            format!(
+                "truncated: not valid JSON, it ends inside a value at line {} column {}; remove it to start afresh",
+                e.line(),
+                e.column()
+            )
+        } else {
+            format!(
+                "not valid JSON at line {} column {}: {}",
+                e.line(),
+                e.column(),
+                batch::message(&e)
+            )
+        }));
+    }
+    if !is_afsv_json(&text) {
+        return Err(at("exists and was not written by afsv".into()));
+    }
+    Ok(Some(text))
+}
+
+/// `text` (from [`read_stored`]) as `T`, with the line and column of what does not fit.
+fn parse_stored<T: DeserializeOwned>(flag: &str, path: &Path, text: &str) -> Result<T, String> {
+    serde_json::from_str(text).map_err(|e| {
         format!(
-            "{flag} {}: line {} column {}: {e}",
+            "{flag} {}: line {} column {}: {}",
             path.display(),
             e.line(),
-            e.column()
+            e.column(),
+            batch::message(&e)
         )
     })
 }

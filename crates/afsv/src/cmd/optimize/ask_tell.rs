@@ -2,7 +2,7 @@
 //! batch, or the report once the run is done) and `--tell` (the results of every shard).
 
 use super::super::batch::{self, BatchHeader, BatchPoint, PointResult, ResultsHeader};
-use super::{load_afsv_json, report, same_settings, write_json, AfsArgs, ProblemDesc, RunOutcome};
+use super::{parse_stored, report, same_settings, AfsArgs, ProblemDesc, RunOutcome};
 use crate::cmd::CmdResult;
 use afsv_design::{
     AfsAsk, AfsAskTell, AfsOptimisationSettings, AfsProblem, AfsRunState, AfsVariable, Objective,
@@ -33,11 +33,15 @@ struct AskTellState {
 
 /// `format` of the state file.
 const STATE_FORMAT: &str = "afsv-ask-tell-state";
+/// `version` of the state file.
+const STATE_VERSION: u32 = 1;
 
 /// One `--ask` or `--tell` of an ask/tell run.
 pub(super) struct AskTell<'a> {
     pub(super) args: &'a AfsArgs,
     pub(super) state_path: &'a Path,
+    /// The state file's text as read (under the run lock), `None` if it does not exist.
+    pub(super) stored: Option<String>,
     pub(super) settings: AfsOptimisationSettings,
     pub(super) settings_json: Value,
     pub(super) descs: Vec<ProblemDesc>,
@@ -54,15 +58,15 @@ struct Asked {
 
 impl AskTell<'_> {
     pub(super) fn run(&self) -> CmdResult {
-        let stored = load_afsv_json::<AskTellState>("--state", self.state_path)?;
         let drivers: Vec<AfsAskTell> = self
             .problems
             .iter()
             .map(|p| AfsAskTell::new(p, self.settings))
             .collect::<Result<_, _>>()?;
-        let created = stored.is_none();
-        let state = match stored {
-            Some(st) => {
+        let created = self.stored.is_none();
+        let state = match &self.stored {
+            Some(text) => {
+                let st: AskTellState = parse_stored("--state", self.state_path, text)?;
                 same_settings(
                     "--state",
                     self.state_path,
@@ -70,16 +74,20 @@ impl AskTell<'_> {
                     &self.settings_json,
                 )?;
                 if st.format != STATE_FORMAT
-                    || st.version != batch::FORMAT_VERSION
+                    || st.version != STATE_VERSION
                     || st.runs.len() != self.problems.len()
                 {
                     return Err(format!(
-                        "--state {}: not an ask/tell state of version {} with {} runs",
+                        "--state {}: not an ask/tell state of version {STATE_VERSION} with {} runs",
                         self.state_path.display(),
-                        batch::FORMAT_VERSION,
                         self.problems.len()
                     )
                     .into());
+                }
+                for (i, (run, problem)) in st.runs.iter().zip(self.problems).enumerate() {
+                    afsv_design::check_run_state(problem, &self.settings, run).map_err(|e| {
+                        format!("--state {}: run {}: {e}", self.state_path.display(), i + 1)
+                    })?;
                 }
                 st
             }
@@ -94,15 +102,22 @@ impl AskTell<'_> {
                 written_by: "afsv optimize afs".into(),
                 sign_convention: afsv_records::SIGN_CONVENTION.into(),
                 format: STATE_FORMAT.into(),
-                version: batch::FORMAT_VERSION,
+                version: STATE_VERSION,
                 settings: self.settings_json.clone(),
                 batch: 0,
                 runs: vec![AfsRunState::default(); self.problems.len()],
             },
         };
+        // The identity of what this state asks: the SHA-256 of the file's content (as it
+        // is, or as a new state will be written).
+        let text = match &self.stored {
+            Some(t) => t.clone(),
+            None => serde_json::to_string(&state)?,
+        };
+        let sha = afsv_records::provenance::sha256_hex(text.as_bytes());
         match &self.args.ask {
-            Some(path) => self.ask(&drivers, &state, created, path),
-            None => self.tell(&drivers, state),
+            Some(path) => self.ask(&drivers, &state, created.then_some(&text), &sha, path),
+            None => self.tell(&drivers, state, &sha),
         }
     }
 
@@ -151,11 +166,14 @@ impl AskTell<'_> {
         Ok((!finished).then_some(asked))
     }
 
+    /// Writes the next batch (identified by `sha`, the state's SHA-256, and its number),
+    /// and a new state's file (`created`: its text); once finished, the report.
     fn ask(
         &self,
         drivers: &[AfsAskTell],
         state: &AskTellState,
-        created: bool,
+        created: Option<&String>,
+        sha: &str,
         path: &Path,
     ) -> CmdResult {
         let asked = self.asked(drivers, state)?;
@@ -166,21 +184,25 @@ impl AskTell<'_> {
             written_by: "afsv optimize afs --ask".into(),
             sign_convention: afsv_records::SIGN_CONVENTION.into(),
             batch: state.batch,
+            state_sha256: sha.into(),
             finished: asked.is_none(),
             points: points.len(),
             variables: batch::variable_names(),
             problems: self.descs.clone(),
         };
         batch::write_jsonl(path, &header, points)?;
-        if created {
-            write_json(self.state_path, state)?;
+        if let Some(text) = created {
+            afsv_records::atomic::write(self.state_path, text)
+                .map_err(|e| format!("{}: {e}", self.state_path.display()))?;
         }
         let Some(asked) = asked else {
-            eprintln!(
+            if !afsv::progress::is_quiet() {
+                eprintln!(
                 "afsv optimize afs: the run has finished after {} batches; {} holds no point; the report follows",
                 state.batch,
                 path.display()
             );
+            }
             let outcomes = drivers
                 .iter()
                 .zip(&state.runs)
@@ -229,7 +251,12 @@ impl AskTell<'_> {
     /// Reads every results file and returns the evaluations in the batch's order, checking
     /// that every asked id comes exactly once, no other id comes, and every file belongs to
     /// this batch and these problems.
-    fn results(&self, state: &AskTellState, asked: &Asked) -> Result<Vec<Evaluation>, String> {
+    fn results(
+        &self,
+        state: &AskTellState,
+        sha: &str,
+        asked: &Asked,
+    ) -> Result<Vec<Evaluation>, String> {
         let index: HashMap<&str, usize> = asked
             .points
             .iter()
@@ -255,6 +282,14 @@ impl AskTell<'_> {
                     return Err(format!(
                         "--tell {file}: results of batch {}, the state asked batch {}",
                         h.batch, state.batch
+                    ));
+                }
+                if h.state_sha256 != sha {
+                    return Err(format!(
+                        "--tell {file}: results of batch {} as another state asked it (state SHA-256 {}..., this state's {}...): they belong to another run or an older copy of this state; evaluate this state's batch (--ask) and tell its results",
+                        h.batch,
+                        h.state_sha256.get(..12).unwrap_or(&h.state_sha256),
+                        &sha[..12]
                     ));
                 }
                 Ok(())
@@ -303,14 +338,14 @@ impl AskTell<'_> {
         Ok(found.into_iter().flatten().map(|(e, _)| e).collect())
     }
 
-    fn tell(&self, drivers: &[AfsAskTell], mut state: AskTellState) -> CmdResult {
+    fn tell(&self, drivers: &[AfsAskTell], mut state: AskTellState, sha: &str) -> CmdResult {
         let asked = self.asked(drivers, &state)?.ok_or_else(|| {
             format!(
                 "--state {}: the run has finished; --ask prints its report",
                 self.state_path.display()
             )
         })?;
-        let mut evals = self.results(&state, &asked)?.into_iter();
+        let mut evals = self.results(&state, sha, &asked)?.into_iter();
         for ((d, run), n) in drivers
             .iter()
             .zip(state.runs.iter_mut())
@@ -322,7 +357,7 @@ impl AskTell<'_> {
             }
         }
         state.batch += 1;
-        write_json(self.state_path, &state)?;
+        super::write_json(self.state_path, &state)?;
         let finished = self.asked(drivers, &state)?.is_none();
         let status = json!({"told": state.batch - 1, "points": asked.points.len(), "next_batch": state.batch, "finished": finished});
         if self.args.json || !std::io::stdout().is_terminal() {

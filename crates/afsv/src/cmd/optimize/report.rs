@@ -54,12 +54,13 @@ pub(super) fn write_plots(
     Ok(())
 }
 
-/// Progress on stderr: a spinner on a terminal, a line per finished run otherwise.
+/// Progress on stderr: a spinner on a terminal, a line per finished run otherwise;
+/// nothing under `afsv --quiet`.
 pub(super) struct Bar(Option<indicatif::ProgressBar>);
 
 impl Bar {
     pub(super) fn new() -> Result<Self, String> {
-        if !std::io::stderr().is_terminal() {
+        if afsv::progress::is_quiet() || !std::io::stderr().is_terminal() {
             return Ok(Bar(None));
         }
         let bar = indicatif::ProgressBar::new_spinner();
@@ -72,9 +73,17 @@ impl Bar {
     }
 
     pub(super) fn done(&self, label: &str, o: &AfsOptimum, seconds: f64) {
+        if afsv::progress::is_quiet() {
+            return;
+        }
         let line = format!(
-            "afsv optimize afs: run {label} done: F = {:.4}, {} evaluations, {seconds:.1} s",
+            "afsv optimize afs: run {label} done: F = {:.4}{}, {} evaluations, {seconds:.1} s",
             o.ps_sqp.f,
+            if o.feasible() {
+                ""
+            } else {
+                " (no feasible design)"
+            },
             o.evaluations_ps + o.evaluations_sqp
         );
         match &self.0 {
@@ -158,6 +167,8 @@ pub(super) fn to_json(
             "min_steering_arm_m": r.min_arm_m,
             "ps": evaluation_json(&r.optimum.ps),
             "ps_sqp": evaluation_json(&r.optimum.ps_sqp),
+            "feasible": r.optimum.feasible(),
+            "violated_constraints": r.optimum.ps_sqp.violated().iter().map(|(c, v)| json!({"name": c.name(), "value": v})).collect::<Vec<_>>(),
             "sqp_improved": r.optimum.sqp_improved,
             "sqp_status": r.optimum.sqp_status,
             "evaluations": {"pattern_search": r.optimum.evaluations_ps, "sqp": r.optimum.evaluations_sqp},
@@ -166,6 +177,23 @@ pub(super) fn to_json(
             "seconds": r.seconds,
         })).collect::<Vec<_>>(),
     })
+}
+
+/// The constraints the run's PS/SQP point violates, with their values
+/// (`eq_4_9_engine = +0.416`; a constraint holds where its value is <= 0).
+pub(super) fn violations(o: &AfsOptimum) -> String {
+    o.ps_sqp
+        .violated()
+        .iter()
+        .map(|(c, v)| {
+            if v.abs() >= 1e-3 {
+                format!("{} = {v:+.3}", c.name())
+            } else {
+                format!("{} = {v:+.2e}", c.name())
+            }
+        })
+        .collect::<Vec<_>>()
+        .join(", ")
 }
 
 fn geometry_line(g: &FullLockGeometry) -> String {
@@ -232,6 +260,12 @@ pub(super) fn to_text(a: &AfsArgs, current: &DesignEvaluation, runs: &[RunOutcom
             "  {:<22} {:>10.3} {:>10.4} {:>10.4}\n",
             "F = W.V (Eq 4.8)", current.f, ps.f, sq.f
         );
+        if !r.optimum.feasible() {
+            s += &format!(
+                "  NO FEASIBLE DESIGN FOUND: the PS/SQP column is the least infeasible point, not an optimum; violated: {}\n",
+                violations(&r.optimum)
+            );
+        }
         s += &format!(
             "  PS:     {}\n  PS/SQP: {}\n",
             geometry_line(&ps.geometry),
