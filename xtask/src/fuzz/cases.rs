@@ -541,7 +541,7 @@ fn measures_case(g: &mut Gen<'_>, group: &str) {
 /// A batch file of `afsv optimize afs --ask` (header and two points), one line of it
 /// broken or a number replaced by a bad value, and a good or bad `--shard`.
 const BATCH_LINES: [&str; 3] = [
-    r#"{"format":"afsv-batch","version":1,"written_by":"afsv optimize afs --ask","sign_convention":"afsv-v1","batch":0,"finished":false,"points":2,"variables":["a0_rad","l1_m","l2_m","valve_av","bulk_modulus_pa"],"problems":[{"kind":"afs_chapter4","label":"with the steering-arm constraint","relaxed":false,"min_steering_arm_m":0.25,"rtol":1e-8,"form":"energy_consistent","eq_4_9":null}]}"#,
+    r#"{"format":"afsv-batch","version":2,"written_by":"afsv optimize afs --ask","sign_convention":"afsv-v1","batch":0,"state_sha256":"5f2b0c6e9a4d8e1f3c7b2a6d9e0f4a8b1c5d9e2f6a0b4c8d3e7f1a5b9c2d6e0f","finished":false,"points":2,"variables":["a0_rad","l1_m","l2_m","valve_av","bulk_modulus_pa"],"problems":[{"kind":"afs_chapter4","label":"with the steering-arm constraint","relaxed":false,"min_steering_arm_m":0.25,"rtol":1e-8,"form":"energy_consistent","eq_4_9":null}]}"#,
     r#"{"id":"b0-0","problem":0,"phase":"start_point","screened":true,"x":{"a0_rad":1.335176877775662,"bulk_modulus_pa":1600000000.0,"l1_m":1.96,"l2_m":0.64,"valve_av":8e-10}}"#,
     r#"{"id":"b0-1","problem":0,"phase":"sqp","screened":false,"x":{"a0_rad":1.0,"bulk_modulus_pa":1700000000.0,"l1_m":2.0,"l2_m":0.9,"valve_av":1.2e-9}}"#,
 ];
