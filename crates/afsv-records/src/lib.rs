@@ -146,7 +146,7 @@ impl Record {
         }
         if let Some(row) = values.iter().position(|v| !v.is_finite()) {
             return Err(RecordError::Invalid(format!(
-                "column `{name}` holds {} at row {} (counting from 1 below the header)",
+                "column `{name}` holds {} at row {} (counting from 1 below the header); a record holds finite numbers only, so nothing is written",
                 values[row],
                 row + 1
             )));

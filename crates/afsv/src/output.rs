@@ -368,29 +368,6 @@ pub fn mark_svg(path: &Path) -> Result<(), String> {
     afsv_records::atomic::write(path, marked).map_err(err)
 }
 
-/// Refuse to write a record with a non-finite value: the error names the first such
-/// column and the row's `time_s` (or index). A model that accepted parameters far out of
-/// range can compute an infinite energy or pressure; the file must not carry it.
-pub fn check_finite_record(rec: &afsv_records::Record) -> Result<(), String> {
-    let time = rec.column("time_s");
-    for name in rec.names() {
-        let Some(col) = rec.column(name) else {
-            continue;
-        };
-        if let Some(i) = col.iter().position(|v| !v.is_finite()) {
-            let at = match time.and_then(|t| t.get(i)) {
-                Some(t) => format!("t = {t} s"),
-                None => format!("row {i}"),
-            };
-            return Err(format!(
-                "the run's `{name}` is not finite ({}) at {at}; a parameter is far out of range (nothing written)",
-                col[i]
-            ));
-        }
-    }
-    Ok(())
-}
-
 /// The channels a record was converted from another unit on reading, as JSON
 /// (`[{"from": "az_g", "to": "az_m_s2", "factor": 9.80665}, ...]`), so a command's output says
 /// which channels it used and how.
@@ -528,20 +505,5 @@ mod tests {
         assert!(!is_afsv_json(r#"{"sign_convention": "afsv-v1"}"#));
         assert!(!is_afsv_json(r#"{"written_by": "afsv"}"#));
         assert!(!is_afsv_json("[1]"));
-    }
-
-    #[test]
-    fn records_with_non_finite_values_are_refused() {
-        let mut r = afsv_records::Record::new();
-        r.push_column("time_s", vec![0.0, 0.5]).unwrap();
-        r.push_column("energy_j", vec![1.0, 2.0]).unwrap();
-        check_finite_record(&r).unwrap();
-        r.push_column("actuator_energy_j", vec![1.0, f64::INFINITY])
-            .unwrap();
-        let e = check_finite_record(&r).unwrap_err();
-        assert!(
-            e.contains("`actuator_energy_j`") && e.contains("t = 0.5 s"),
-            "{e}"
-        );
     }
 }

@@ -66,7 +66,6 @@ pub(super) fn path_change_cmd(
             "axes": AXES,
             "params": p,
         });
-        afsv::output::check_finite_record(&r)?;
         afsv::provenance::stamp_record(&mut r);
         r.write(path)?;
     }

@@ -80,7 +80,6 @@ pub(super) fn simulate_cmd(
         "axes": AXES,
         "params": p,
     });
-    afsv::output::check_finite_record(&out)?;
     afsv::provenance::stamp_record(&mut out);
     out.write(output)?;
     afsv::output::print_json(&json!({
