@@ -11,12 +11,12 @@ def to_bytes(name: str, x: Any) -> bytes:
     """`x` as native-endian contiguous float64 bytes; a non-numeric or non-1-D `x` is a
     TypeError/ValueError naming the argument."""
     try:
-        a = np.ascontiguousarray(x, dtype=np.float64)
+        a = np.asarray(x, dtype=np.float64)
     except (TypeError, ValueError) as e:
         raise TypeError(f"{name}: expected a 1-D array of numbers ({e})") from None
     if a.ndim != 1:
         raise ValueError(f"{name}: expected a 1-D array, got {a.ndim} dimensions")
-    return a.tobytes()
+    return np.ascontiguousarray(a).tobytes()
 
 
 def maybe_bytes(name: str, x: Any) -> Optional[bytes]:
