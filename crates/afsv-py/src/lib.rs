@@ -23,6 +23,7 @@ use pyo3::types::{PyByteArray, PyDict, PyList, PyTuple};
 mod desc;
 mod measures;
 mod models;
+mod optim;
 mod terrain;
 mod vehicles;
 
@@ -172,5 +173,6 @@ fn _afsv(m: &Bound<'_, PyModule>) -> PyResult<()> {
     measures::register(m)?;
     desc::register(m)?;
     vehicles::register(m)?;
+    optim::register(m)?;
     Ok(())
 }

@@ -16,6 +16,7 @@ from .models import (
     simulate_vehicle,
     simulate_yaw,
 )
+from .optimize import OptimizeResult, minimize
 from .record import Record
 from .terrain import CrossSpectrum, Spectrum, cross_spectrum, synthesize, welch_psd
 from .vehicle import Vehicle, builtin_vehicles, load_vehicle
@@ -43,4 +44,6 @@ __all__ = [
     "roll_measures",
     "decay",
     "step",
+    "minimize",
+    "OptimizeResult",
 ]
