@@ -25,6 +25,7 @@ pub mod afs_design;
 pub mod afs_optimum;
 pub mod afs_problem;
 pub mod ahp;
+pub mod design_3d;
 pub mod error;
 pub mod hps_design;
 pub mod hps_optimum;

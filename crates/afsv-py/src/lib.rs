@@ -21,6 +21,7 @@ use pyo3::prelude::*;
 use pyo3::types::{PyByteArray, PyDict, PyList, PyTuple};
 
 mod desc;
+mod evaluate;
 mod measures;
 mod models;
 mod optim;
@@ -174,5 +175,6 @@ fn _afsv(m: &Bound<'_, PyModule>) -> PyResult<()> {
     desc::register(m)?;
     vehicles::register(m)?;
     optim::register(m)?;
+    evaluate::register(m)?;
     Ok(())
 }

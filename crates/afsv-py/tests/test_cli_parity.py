@@ -125,3 +125,25 @@ def test_ltr_and_roll_measures() -> None:
     assert (sp["start_s"], sp["end_s"], sp["duration_s"]) == (
         truck["sustained_start_s"], truck["sustained_end_s"], truck["sustained_period_s"])
     assert sp["sp_drt_m_s2"] / 9.80665 == pytest.approx(truck["sp_drt_g"], rel=1e-12)
+
+
+def without_reasons(v):
+    """The CLI's JSON without its `*_reason` explanations of nulls (presentation only)."""
+    if isinstance(v, dict):
+        return {k: without_reasons(x) for k, x in v.items() if not k.endswith("_reason")}
+    return v
+
+
+def test_evaluate_matches_the_cli(cli) -> None:
+    out = cli("evaluate", "--json", "--seeds", "1", "--seed", "3", "--speed-kmh", "40")
+    got = afsv.evaluate(seeds=1, seed=3, speed_kmh=40)
+    assert got["vehicle"] == out["vehicle"]
+    measures = without_reasons(out["design_measures_3d"])
+    measures.pop("hps_change")
+    assert got["design_measures_3d"] == measures
+    for key in ("loaded", "unloaded", "stable"):
+        assert got["yaw_plane"][key] == out["yaw_plane"][key], key
+    assert got["front_axle_strut"] == out["front_axle_strut"]
+    for key, value in out["terrain"].items():
+        if key != "note":
+            assert got["terrain"][key] == value, key

@@ -7,6 +7,7 @@ out. Every run is the Rust library's, with the GIL released; see docs/python.md.
 """
 
 from ._afsv import SolverError, __version__
+from .evaluate import evaluate
 from .measures import decay, iso2631, ltr, roll_measures, step
 from .models import (
     characterize_strut,
@@ -45,5 +46,6 @@ __all__ = [
     "decay",
     "step",
     "minimize",
+    "evaluate",
     "OptimizeResult",
 ]
