@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 import json
-from typing import Any, Dict, Iterator, List, Tuple
+from typing import Any, Dict, Iterator, List, Optional, Tuple
 
 import numpy as np
 
@@ -20,47 +20,61 @@ class Record:
     """
 
     def __init__(self, columns: List[Tuple[str, bytearray]], meta: str) -> None:
-        self._columns: Dict[str, np.ndarray] = {n: from_bytes(b) for n, b in columns}
-        self.meta: Dict[str, Any] = json.loads(meta)
+        # the numpy view of a channel is made on first use (a sweep that reads two
+        # channels of 39 pays for two)
+        self._raw: Dict[str, bytearray] = dict(columns)
+        self._columns: Dict[str, np.ndarray] = {}
+        self._meta_text = meta
+        self._meta: Optional[Dict[str, Any]] = None
+
+    @property
+    def meta(self) -> Dict[str, Any]:
+        """What the CLI writes to the record's sidecar: model, parameters, solver
+        statistics, measures (parsed on first use)."""
+        if self._meta is None:
+            self._meta = json.loads(self._meta_text)
+        return self._meta
 
     @property
     def t(self) -> np.ndarray:
         """The independent variable: the first column (s, or m for a profile)."""
-        return next(iter(self._columns.values()))
+        return self[next(iter(self._raw))]
 
     @property
     def names(self) -> List[str]:
         """Channel names in record order."""
-        return list(self._columns)
+        return list(self._raw)
 
     def __getitem__(self, name: str) -> np.ndarray:
-        try:
-            return self._columns[name]
-        except KeyError:
-            raise KeyError(f"no channel `{name}` (known: {', '.join(self._columns)})") from None
+        a = self._columns.get(name)
+        if a is None:
+            try:
+                a = self._columns[name] = from_bytes(self._raw[name])
+            except KeyError:
+                raise KeyError(f"no channel `{name}` (known: {', '.join(self._raw)})") from None
+        return a
 
     def __getattr__(self, name: str) -> np.ndarray:
-        cols = self.__dict__.get("_columns", {})
-        if name in cols:
-            return cols[name]
+        if name in self.__dict__.get("_raw", {}):
+            return self[name]
         raise AttributeError(name)
 
     def __contains__(self, name: object) -> bool:
-        return name in self._columns
+        return name in self._raw
 
     def __iter__(self) -> Iterator[str]:
-        return iter(self._columns)
+        return iter(self._raw)
 
     def __len__(self) -> int:
         """Number of samples."""
         return len(self.t)
 
     def __repr__(self) -> str:
-        return f"Record({len(self)} samples, {len(self._columns)} channels: {', '.join(self.names[:6])}{', ...' if len(self._columns) > 6 else ''})"
+        return f"Record({len(self)} samples, {len(self._raw)} channels: {', '.join(self.names[:6])}{', ...' if len(self._raw) > 6 else ''})"
 
     def to_dict(self) -> Dict[str, np.ndarray]:
         """The channels as a dict name -> array (the arrays are shared, not copied)."""
-        return dict(self._columns)
+        return {n: self[n] for n in self._raw}
 
     def to_pandas(self) -> Any:
         """A pandas DataFrame of the channels (pandas is optional: ImportError without it)."""
@@ -68,4 +82,4 @@ class Record:
             import pandas as pd
         except ImportError as e:
             raise ImportError("Record.to_pandas() needs pandas (pip install pandas)") from e
-        return pd.DataFrame(self._columns)
+        return pd.DataFrame(self.to_dict())
