@@ -21,6 +21,7 @@ use pyo3::prelude::*;
 use pyo3::types::{PyByteArray, PyDict, PyList, PyTuple};
 
 mod desc;
+mod design;
 mod evaluate;
 mod measures;
 mod models;
@@ -176,5 +177,6 @@ fn _afsv(m: &Bound<'_, PyModule>) -> PyResult<()> {
     vehicles::register(m)?;
     optim::register(m)?;
     evaluate::register(m)?;
+    design::register(m)?;
     Ok(())
 }

@@ -119,12 +119,75 @@ fn options<T: Serialize + DeserializeOwned>(defaults: T, given: Option<&str>) ->
     serde_json::from_value(base).map_err(|e| value_err(format!("options: {e}")))
 }
 
-/// Minimise a Python objective over the box `[lower, upper]` with `n_constraints`
-/// inequality constraints `c_j(x) <= 0`: `method` is `pattern-search` (GPS with an optional
-/// Latin-hypercube search step, extreme barrier), `sqp` (SLSQP with finite-difference
-/// gradients) or `ga` (SBX, polynomial mutation, Deb's rules); `options` a JSON object of
-/// the method's options. Returns JSON: `x`, `f`, `constraints`, `feasible`, `evaluations`,
-/// `status`.
+/// Run `method` on `problem` from `x0` (None: the centre of the box) with the GIL released:
+/// the best point, its evaluation and the stop reason.
+fn run<P: ConstrainedProblem>(
+    py: Python<'_>,
+    problem: &P,
+    method: &str,
+    x0: Option<Vec<f64>>,
+    options_json: Option<&str>,
+) -> PyResult<(Vec<f64>, Evaluation, String)> {
+    let bounds = problem.bounds();
+    let n = bounds.lower().len();
+    let x0 = match x0 {
+        Some(x) if x.len() != n => {
+            return Err(value_err(format!(
+                "x0 has {} values, the bounds {n}",
+                x.len()
+            )))
+        }
+        Some(x) => x,
+        None => bounds.from_unit(&vec![0.5; n]),
+    };
+    let out: Result<_, optimize::OptimizeError> = match method {
+        "pattern-search" => {
+            let o = options(PatternSearchOptions::default(), options_json)?;
+            py.detach(|| {
+                let ps = PatternSearch::new(problem, o)?;
+                let s = ps.start(&x0)?;
+                let s = ps.run(s, &Silent, &mut |_| Ok(()))?;
+                let status = serde_json::to_value(s.stop)
+                    .ok()
+                    .and_then(|v| v.as_str().map(String::from))
+                    .unwrap_or_default();
+                Ok((s.x, s.eval, status))
+            })
+        }
+        "sqp" => {
+            let o = options(SqpOptions::default(), options_json)?;
+            py.detach(|| {
+                let r = sqp(problem, &x0, &o, Vec::new(), &Silent, &mut |_| Ok(()))?;
+                Ok((r.x, r.eval, r.status))
+            })
+        }
+        "ga" => {
+            let o = options(GaOptions::default(), options_json)?;
+            py.detach(|| {
+                let ga = GeneticAlgorithm::new(problem, o)?;
+                let s = ga.start(std::slice::from_ref(&x0))?;
+                let s = ga.run(s, &Silent, &mut |_| Ok(()))?;
+                let best = s.best().clone();
+                Ok((best.x, best.eval, format!("{} generations", s.generation)))
+            })
+        }
+        other => {
+            return Err(value_err(format!(
+                "method `{other}`: expected pattern-search, sqp or ga"
+            )))
+        }
+    };
+    out.map_err(|e| py_err(py, &e))
+}
+
+/// Minimise over the box `[lower, upper]` with `n_constraints` inequality constraints
+/// `c_j(x) <= 0`: `fun` is a Python callable, or a built-in problem (`AfsProblem`, whose
+/// own bounds and constraints are used and which runs without Python in the loop).
+/// `method` is `pattern-search` (GPS with an optional Latin-hypercube search step, extreme
+/// barrier), `sqp` (SLSQP with finite-difference gradients) or `ga` (SBX, polynomial
+/// mutation, Deb's rules); `options` a JSON object of the method's options. Returns JSON:
+/// `x`, `f`, `constraints`, `feasible`, `evaluations` (Python calls; null for a built-in
+/// problem), `status`.
 #[pyfunction]
 #[pyo3(signature = (fun, lower, upper, n_constraints, method, x0, options_json))]
 #[allow(clippy::too_many_arguments)]
@@ -138,23 +201,17 @@ fn minimize(
     x0: Option<Vec<f64>>,
     options_json: Option<&str>,
 ) -> PyResult<String> {
+    if let Ok(builtin) = fun.bind(py).cast::<crate::design::PyAfsProblem>() {
+        let p = builtin.get();
+        let (x, eval, status) = run(py, &p.inner, method, x0, options_json)?;
+        return Ok(result_json(x, eval, None, status));
+    }
     if !fun.bind(py).is_callable() {
         return Err(pyo3::exceptions::PyTypeError::new_err(
             "fun: expected a callable",
         ));
     }
     let bounds = Bounds::new(lower, upper).map_err(|e| py_err(py, &e))?;
-    let x0 = match x0 {
-        Some(x) if x.len() != bounds.lower().len() => {
-            return Err(value_err(format!(
-                "x0 has {} values, the bounds {}",
-                x.len(),
-                bounds.lower().len()
-            )))
-        }
-        Some(x) => x,
-        None => bounds.from_unit(&vec![0.5; bounds.lower().len()]),
-    };
     let problem = PyProblem {
         fun,
         bounds,
@@ -162,49 +219,18 @@ fn minimize(
         error: Mutex::new(None),
         calls: Mutex::new(0),
     };
-    let out: Result<(Vec<f64>, Evaluation, String), optimize::OptimizeError> = match method {
-        "pattern-search" => {
-            let o = options(PatternSearchOptions::default(), options_json)?;
-            py.detach(|| {
-                let ps = PatternSearch::new(&problem, o)?;
-                let s = ps.start(&x0)?;
-                let s = ps.run(s, &Silent, &mut |_| Ok(()))?;
-                let status = serde_json::to_value(s.stop)
-                    .ok()
-                    .and_then(|v| v.as_str().map(String::from))
-                    .unwrap_or_default();
-                Ok((s.x, s.eval, status))
-            })
-        }
-        "sqp" => {
-            let o = options(SqpOptions::default(), options_json)?;
-            py.detach(|| {
-                let r = sqp(&problem, &x0, &o, Vec::new(), &Silent, &mut |_| Ok(()))?;
-                Ok((r.x, r.eval, r.status))
-            })
-        }
-        "ga" => {
-            let o = options(GaOptions::default(), options_json)?;
-            py.detach(|| {
-                let ga = GeneticAlgorithm::new(&problem, o)?;
-                let s = ga.start(std::slice::from_ref(&x0))?;
-                let s = ga.run(s, &Silent, &mut |_| Ok(()))?;
-                let best = s.best().clone();
-                Ok((best.x, best.eval, format!("{} generations", s.generation)))
-            })
-        }
-        other => {
-            return Err(value_err(format!(
-                "method `{other}`: expected pattern-search, sqp or ga"
-            )))
-        }
-    };
+    let out = run(py, &problem, method, x0, options_json);
     if let Some(err) = problem.error.lock().ok().and_then(|mut e| e.take()) {
         return Err(err);
     }
-    let (x, eval, status) = out.map_err(|e| py_err(py, &e))?;
+    let (x, eval, status) = out?;
     let calls = problem.calls.lock().map(|n| *n).unwrap_or(0);
-    Ok(json!({
+    Ok(result_json(x, eval, Some(calls), status))
+}
+
+/// The JSON of a finished run.
+fn result_json(x: Vec<f64>, eval: Evaluation, calls: Option<usize>, status: String) -> String {
+    json!({
         "x": x,
         "f": eval.f,
         "constraints": eval.constraints,
@@ -212,7 +238,7 @@ fn minimize(
         "evaluations": calls,
         "status": status,
     })
-    .to_string())
+    .to_string()
 }
 
 /// Register the optimiser functions.

@@ -147,3 +147,16 @@ def test_evaluate_matches_the_cli(cli) -> None:
     for key, value in out["terrain"].items():
         if key != "note":
             assert got["terrain"][key] == value, key
+
+
+def test_chapter4_optimisation_matches_the_cli(cli) -> None:
+    args = ["--starts", "0", "--search-points", "0", "--screen-mesh", "0.125", "--min-mesh", "0.125", "--sqp-calls", "2"]
+    out = cli("optimize", "afs", "--json", "--no-arm-comparison", *args)["runs"][0]
+    got = afsv.optimize_afs(starts=0, search_points=0, screen_mesh=0.125, min_mesh=0.125, sqp_calls=2)
+    for stage in ("ps", "ps_sqp"):
+        design = {k: v for k, v in out[stage]["design"].items() if k != "table_units"}
+        assert got[stage]["design"] == design, stage
+        assert got[stage]["f"] == out[stage]["f"], stage
+    assert got["evaluations_ps"] == out["evaluations"]["pattern_search"]
+    assert got["evaluations_sqp"] == out["evaluations"]["sqp"]
+    assert got["sqp_status"] == out["sqp_status"]

@@ -58,3 +58,19 @@ def test_errors() -> None:
         afsv.minimize(lambda x: x[0], [(1, 0)])
     with pytest.raises(TypeError, match="callable"):
         afsv._afsv.minimize(3, [0.0], [1.0], 0, "sqp", None, None)
+
+
+def test_chapter4_problem_in_rust() -> None:
+    p = afsv.AfsProblem()
+    lo, hi = p.bounds
+    assert p.variables == ["a0_rad", "l1_m", "l2_m", "valve_av", "bulk_modulus_pa"]
+    assert p.n_constraints == 2 and len(lo) == len(hi) == 5
+    c = p.current()
+    f, cons = p(c)
+    # Eq 4.8 is normalised by the current design: F = 1 there (every ratio 1)
+    assert f == pytest.approx(1.0, abs=1e-12) and all(v <= 0 for v in cons)
+    r = afsv.minimize(p, x0=c, options={"min_mesh": 0.05, "search_points": 0})
+    assert r.feasible and r.f < 0.95 and r.evaluations is None
+    assert all(lo[i] <= r.x[i] <= hi[i] for i in range(5))
+    with pytest.raises(ValueError, match="x has 2 values"):
+        p([1.0, 2.0])

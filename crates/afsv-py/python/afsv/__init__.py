@@ -17,7 +17,7 @@ from .models import (
     simulate_vehicle,
     simulate_yaw,
 )
-from .optimize import OptimizeResult, minimize
+from .optimize import AfsProblem, OptimizeResult, minimize, optimize_afs
 from .record import Record
 from .terrain import CrossSpectrum, Spectrum, cross_spectrum, synthesize, welch_psd
 from .vehicle import Vehicle, builtin_vehicles, load_vehicle
@@ -47,5 +47,7 @@ __all__ = [
     "step",
     "minimize",
     "evaluate",
+    "AfsProblem",
+    "optimize_afs",
     "OptimizeResult",
 ]

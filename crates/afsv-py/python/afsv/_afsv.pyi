@@ -121,3 +121,32 @@ def minimize(
     options_json: Optional[str],
 ) -> str: ...
 def evaluate(vehicle: Optional[DescRef], seed: int, seeds: int, speed_kmh: float) -> str: ...
+
+class AfsProblem:
+    """The Chapter 4 frame-steering design problem (Eq 4.8 with the Eq 4.17 weights; Eq 4.10
+    and a minimum full-lock arm as constraints)."""
+
+    def __init__(
+        self, relaxed: bool = False, min_arm_m: Optional[float] = 0.25, rtol: float = 1e-8, form: str = "energy-consistent"
+    ) -> None: ...
+    @property
+    def bounds(self) -> Tuple[List[float], List[float]]: ...
+    @property
+    def n_constraints(self) -> int: ...
+    @property
+    def variables(self) -> List[str]: ...
+    def current(self) -> List[float]: ...
+    def __call__(self, x: Sequence[float]) -> Tuple[float, List[float]]: ...
+
+def optimize_afs(
+    relaxed: bool,
+    min_arm_m: Optional[float],
+    starts: int,
+    seed: int,
+    search_points: int,
+    screen_mesh: float,
+    min_mesh: float,
+    sqp_calls: int,
+    rtol: float,
+    form: str,
+) -> str: ...
