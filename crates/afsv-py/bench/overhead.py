@@ -1,7 +1,7 @@
 """Overheads of the Python package (docs/python.md, "Overheads"; beside `cargo xtask bench`):
 
 1. `afsv.evaluate()` from Python against `afsv evaluate --json` (the release binary), median
-   wall time of `--repeat` runs each, same seeds;
+   wall time of `--repeat` runs each, interleaved, same seeds;
 2. a sweep of `--points` yaw-plane runs called from a Python loop: the share of the wall
    time spent outside Rust (the loop, argument handling, the Record and its numpy views),
    i.e. 1 - (time inside the native call) / (total).
@@ -30,13 +30,16 @@ from afsv import _afsv
 ROOT = Path(__file__).resolve().parents[3]
 
 
-def median_time(f, repeat: int) -> float:
-    times = []
+def median_times(fs, repeat: int):
+    """Median wall time of each function, the functions run in turn `repeat` times
+    (interleaved, so a change in the machine's load hits both alike)."""
+    times = [[] for _ in fs]
     for _ in range(repeat):
-        t0 = time.perf_counter()
-        f()
-        times.append(time.perf_counter() - t0)
-    return statistics.median(times)
+        for f, ts in zip(fs, times):
+            t0 = time.perf_counter()
+            f()
+            ts.append(time.perf_counter() - t0)
+    return [statistics.median(ts) for ts in times]
 
 
 def main() -> None:
@@ -48,8 +51,10 @@ def main() -> None:
     a = ap.parse_args()
 
     cli = [a.afsv, "--quiet", "evaluate", "--json", "--seeds", str(a.seeds)]
-    t_cli = median_time(lambda: subprocess.run(cli, check=True, capture_output=True), a.repeat)
-    t_py = median_time(lambda: afsv.evaluate(seeds=a.seeds), a.repeat)
+    t_cli, t_py = median_times(
+        [lambda: subprocess.run(cli, check=True, capture_output=True), lambda: afsv.evaluate(seeds=a.seeds)],
+        a.repeat,
+    )
 
     inside = [0.0]
     native = _afsv.simulate_yaw
