@@ -26,16 +26,15 @@ else
     so="$(cargo test --workspace --release --no-run --message-format=json 2>/dev/null \
         | "$venv/bin/python" -c '
 import json, sys
-for line in sys.stdin:
+found = []
+for line in sys.stdin:  # read to the end: cargo must not meet a closed pipe
     try:
         m = json.loads(line)
     except ValueError:
         continue
     if m.get("reason") == "compiler-artifact" and m["target"]["name"] == "_afsv" and "cdylib" in m["target"]["kind"]:
-        so = [f for f in m["filenames"] if f.endswith(".so")]
-        if so:
-            print(so[0])
-            break
+        found += [f for f in m["filenames"] if f.endswith(".so")]
+print(found[0] if found else "")
 ')"
     if [ -z "$so" ] || [ ! -f "$so" ]; then
         echo "python-test: no extension module from the workspace build" >&2

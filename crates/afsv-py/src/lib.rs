@@ -22,6 +22,7 @@ use pyo3::types::{PyByteArray, PyDict, PyList, PyTuple};
 
 mod desc;
 mod design;
+mod discovery;
 mod evaluate;
 mod measures;
 mod models;
@@ -178,5 +179,6 @@ fn _afsv(m: &Bound<'_, PyModule>) -> PyResult<()> {
     optim::register(m)?;
     evaluate::register(m)?;
     design::register(m)?;
+    discovery::register(m)?;
     Ok(())
 }

@@ -139,3 +139,15 @@ def test_runs_release_the_gil() -> None:
     assert elapsed > 0.1, elapsed
     # with the GIL held through the run the thread could not tick at all in between
     assert during >= 20, (during, elapsed)
+
+
+def test_records_from_files_and_arrays(tmp_path: Path) -> None:
+    with pytest.raises(ValueError, match="missing.csv"):
+        afsv.read_record(tmp_path / "missing.csv")
+    (tmp_path / "bad.csv").write_text("time_s,x_m\n0,1\n0.1,zz\n")
+    with pytest.raises(ValueError, match="bad.csv:3"):
+        afsv.read_record(tmp_path / "bad.csv")
+    r = afsv.Record.from_arrays({"time_s": [0.0, 0.1, 0.2], "x_m": np.array([1.0, 2.0, 3.0])}, {"note": "mine"})
+    assert r.names == ["time_s", "x_m"] and r.meta == {"note": "mine"} and r.x_m.dtype == np.float64
+    with pytest.raises(ValueError, match="samples"):
+        afsv.Record.from_arrays({"time_s": [0.0, 0.1], "x_m": [1.0]})

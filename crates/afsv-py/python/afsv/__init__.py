@@ -7,6 +7,7 @@ out. Every run is the Rust library's, with the GIL released; see docs/python.md.
 """
 
 from ._afsv import SolverError, __version__
+from .discovery import discover
 from .evaluate import evaluate
 from .measures import decay, iso2631, ltr, roll_measures, step
 from .models import (
@@ -18,7 +19,7 @@ from .models import (
     simulate_yaw,
 )
 from .optimize import AfsProblem, OptimizeResult, minimize, optimize_afs
-from .record import Record
+from .record import Record, read_record
 from .terrain import CrossSpectrum, Spectrum, cross_spectrum, synthesize, welch_psd
 from .vehicle import Vehicle, builtin_vehicles, load_vehicle
 
@@ -49,5 +50,7 @@ __all__ = [
     "evaluate",
     "AfsProblem",
     "optimize_afs",
+    "read_record",
+    "discover",
     "OptimizeResult",
 ]

@@ -150,3 +150,11 @@ def optimize_afs(
     rtol: float,
     form: str,
 ) -> str: ...
+def read_record(path: str, assume_convention: Optional[str]) -> Tuple[Columns, str]: ...
+def discover_effects(
+    model: str,
+    train: List[Tuple[str, List[Tuple[str, bytes]], str]],
+    holdout: List[Tuple[str, List[Tuple[str, bytes]], str]],
+    effects: Optional[List[str]],
+    max_effects: int,
+) -> str: ...

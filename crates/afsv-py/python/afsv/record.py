@@ -7,7 +7,7 @@ from typing import Any, Dict, Iterator, List, Optional, Tuple
 
 import numpy as np
 
-from ._arrays import from_bytes
+from ._arrays import from_bytes, to_bytes
 
 
 class Record:
@@ -72,6 +72,27 @@ class Record:
     def __repr__(self) -> str:
         return f"Record({len(self)} samples, {len(self._raw)} channels: {', '.join(self.names[:6])}{', ...' if len(self._raw) > 6 else ''})"
 
+    @classmethod
+    def from_arrays(cls, columns: Dict[str, Any], meta: Optional[Dict[str, Any]] = None) -> "Record":
+        """A record of your own arrays (e.g. a measurement), channels named with their unit
+        suffix as in docs/records.md (``time_s`` first), and the sidecar's metadata (the
+        conditions that discovery replays, e.g. ``strut`` and ``excitation``)."""
+        cols = []
+        n = None
+        for name, values in columns.items():
+            b = to_bytes(name, values)
+            if n is not None and len(b) != n:
+                raise ValueError(f"channel `{name}` has {len(b) // 8} samples, the first {n // 8}")
+            n = len(b)
+            cols.append((str(name), bytearray(b)))
+        if not cols:
+            raise ValueError("a record needs at least one channel")
+        return cls(cols, json.dumps(meta or {}))
+
+    def _native(self, name: str) -> Tuple[str, List[Tuple[str, bytes]], str]:
+        """The record as the native module takes it."""
+        return name, [(n, bytes(b)) for n, b in self._raw.items()], self._meta_text
+
     def to_dict(self) -> Dict[str, np.ndarray]:
         """The channels as a dict name -> array (the arrays are shared, not copied)."""
         return {n: self[n] for n in self._raw}
@@ -83,3 +104,16 @@ class Record:
         except ImportError as e:
             raise ImportError("Record.to_pandas() needs pandas (pip install pandas)") from e
         return pd.DataFrame(self.to_dict())
+
+
+def read_record(path: Any, *, assume_convention: Optional[str] = None) -> Record:
+    """A record file (CSV with its JSON sidecar, docs/records.md) as the CLI reads it: sign
+    conventions stated per channel converted to afsv-v1, other units converted, errors with
+    line and column. `assume_convention` = ``"afsv-v1"`` accepts a sidecar that states its
+    convention in words (after you have checked that they mean afsv-v1)."""
+    import os
+
+    from . import _afsv
+
+    cols, meta = _afsv.read_record(os.fspath(path), assume_convention)
+    return Record(cols, meta)
