@@ -182,3 +182,22 @@ fn _afsv(m: &Bound<'_, PyModule>) -> PyResult<()> {
     discovery::register(m)?;
     Ok(())
 }
+
+#[cfg(test)]
+mod tests {
+    use super::named_state;
+
+    #[test]
+    fn named_state_reads_the_yaw_models_divergence_state() {
+        let s = named_state("articulation_rad=3.932865e1, p_c_pa=-1.000000e6").unwrap();
+        assert_eq!(
+            s,
+            vec![
+                ("articulation_rad".to_string(), 39.32865),
+                ("p_c_pa".to_string(), -1e6)
+            ]
+        );
+        assert!(named_state("articulation_rad=oops").is_none());
+        assert!(named_state("no pairs here").is_none());
+    }
+}

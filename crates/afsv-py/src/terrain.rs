@@ -223,3 +223,18 @@ pub(crate) fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(cross, m)?)?;
     Ok(())
 }
+
+#[cfg(test)]
+mod tests {
+    use super::x_column;
+
+    #[test]
+    fn x_column_is_rounded_to_a_nanometre_as_the_cli_writes_it() {
+        let x = x_column(4, 0.05);
+        assert_eq!(x, vec![0.0, 0.05, 0.1, 0.15]);
+        // without the rounding 3 * 0.05 is 0.15000000000000002
+        assert_ne!(3.0 * 0.05, 0.15);
+        // below 1 um the spacing is kept as computed
+        assert_eq!(x_column(2, 1e-7)[1], 1e-7);
+    }
+}
