@@ -12,7 +12,8 @@ use hps_emulsion::{
     HpsExtensions, LabConfig, StrutParams,
 };
 use pyo3::prelude::*;
-use pyo3::types::PyTuple;
+use pyo3::types::{PyBytes, PyTuple};
+use rayon::prelude::*;
 use serde_json::json;
 
 /// Most output samples of one yaw-plane or strut run (the CLI's bounds).
@@ -121,14 +122,21 @@ fn manoeuvre(
     })
 }
 
-/// One manoeuvre of the yaw-plane vehicle (Eqs 3.13-3.17 with the hydraulic frame steering
-/// of Eqs 3.1-3.12): every channel and state as `afsv yaw simulate` writes them.
-#[pyfunction]
-#[pyo3(signature = (vehicle, params_json, load, speed_kmh, input, table_t, table_deg, input_time, duration, dt, solver, rtol, form, rk4_step))]
+/// A yaw-plane run, checked and set up (the parameter set, steering system, manoeuvre and
+/// options of `afsv yaw simulate`), ready to run without the GIL.
+struct YawJob {
+    p: YawPlaneParams,
+    sys: afs_hydraulics::AfsSystem,
+    man: Manoeuvre,
+    opts: SimOptions,
+    input: String,
+}
+
+/// Check the arguments of a yaw-plane run and set it up.
 #[allow(clippy::too_many_arguments)]
-fn simulate_yaw<'py>(
-    py: Python<'py>,
-    vehicle: Option<crate::desc::DescArg>,
+fn yaw_job(
+    py: Python<'_>,
+    vehicle: Option<crate::desc::DescRef<'_>>,
     params_json: Option<&str>,
     load: &str,
     speed_kmh: f64,
@@ -142,7 +150,7 @@ fn simulate_yaw<'py>(
     rtol: f64,
     form: &str,
     rk4_step: f64,
-) -> PyResult<Bound<'py, PyTuple>> {
+) -> PyResult<YawJob> {
     for (name, v) in [("duration", duration), ("dt", dt), ("rtol", rtol)] {
         if !(v.is_finite() && v > 0.0) {
             return Err(value_err(format!(
@@ -187,7 +195,7 @@ fn simulate_yaw<'py>(
         (None, None) => None,
         _ => return Err(value_err("a steering table needs both times and angles")),
     };
-    let p = yaw_params(crate::desc::as_ref(&vehicle), params_json, load)?;
+    let p = yaw_params(vehicle, params_json, load)?;
     let speed = speed_kmh / 3.6;
     let sys = p.afs_system().map_err(|e| py_err(py, &e))?;
     let man = manoeuvre(input, table, speed, input_time, duration)?;
@@ -199,9 +207,21 @@ fn simulate_yaw<'py>(
         form,
         ..SimOptions::default()
     };
-    let rec = py
-        .detach(|| simulate(&p.vehicle, &sys, &man, &opts))
-        .map_err(|e| py_err(py, &e))?;
+    Ok(YawJob {
+        p,
+        sys,
+        man,
+        opts,
+        input: input.to_string(),
+    })
+}
+
+/// The record of a finished run, as the Python `Record` takes it.
+fn yaw_out<'py>(
+    py: Python<'py>,
+    job: &YawJob,
+    rec: &afsv_dynamics::YawRecord,
+) -> PyResult<Bound<'py, PyTuple>> {
     let cols: Columns = rec
         .columns()
         .into_iter()
@@ -209,18 +229,139 @@ fn simulate_yaw<'py>(
         .collect();
     let meta = json!({
         "model": "afsv-dynamics yaw-plane (chapter 3)",
-        "sample_rate_hz": 1.0 / dt,
-        "equation_form": to_json(&form)?,
-        "manoeuvre": man.label,
-        "input": input,
-        "speed_m_s": speed,
-        "load": to_json(&p.load)?,
-        "params": to_json(&p)?,
-        "solver": to_json(&opts.solver)?,
-        "rtol": opts.rtol,
+        "sample_rate_hz": 1.0 / job.opts.output_dt_s,
+        "equation_form": to_json(&job.opts.form)?,
+        "manoeuvre": job.man.label,
+        "input": job.input,
+        "speed_m_s": job.man.speed_m_s,
+        "load": to_json(&job.p.load)?,
+        "params": to_json(&job.p)?,
+        "solver": to_json(&job.opts.solver)?,
+        "rtol": job.opts.rtol,
         "solver_stats": to_json(&rec.stats)?,
     });
     record_out(py, &cols, &meta)
+}
+
+/// One manoeuvre of the yaw-plane vehicle (Eqs 3.13-3.17 with the hydraulic frame steering
+/// of Eqs 3.1-3.12): every channel and state as `afsv yaw simulate` writes them.
+#[pyfunction]
+#[pyo3(signature = (vehicle, params_json, load, speed_kmh, input, table_t, table_deg, input_time, duration, dt, solver, rtol, form, rk4_step))]
+#[allow(clippy::too_many_arguments)]
+fn simulate_yaw<'py>(
+    py: Python<'py>,
+    vehicle: Option<crate::desc::DescArg>,
+    params_json: Option<&str>,
+    load: &str,
+    speed_kmh: f64,
+    input: &str,
+    table_t: Option<&[u8]>,
+    table_deg: Option<&[u8]>,
+    input_time: f64,
+    duration: f64,
+    dt: f64,
+    solver: &str,
+    rtol: f64,
+    form: &str,
+    rk4_step: f64,
+) -> PyResult<Bound<'py, PyTuple>> {
+    let job = yaw_job(
+        py,
+        crate::desc::as_ref(&vehicle),
+        params_json,
+        load,
+        speed_kmh,
+        input,
+        table_t,
+        table_deg,
+        input_time,
+        duration,
+        dt,
+        solver,
+        rtol,
+        form,
+        rk4_step,
+    )?;
+    let rec = py
+        .detach(|| simulate(&job.p.vehicle, &job.sys, &job.man, &job.opts))
+        .map_err(|e| py_err(py, &e))?;
+    yaw_out(py, &job, &rec)
+}
+
+/// The arguments of one run of [`simulate_yaw_batch`], a dict with the keys of
+/// [`simulate_yaw`]'s arguments.
+#[derive(FromPyObject)]
+struct YawArgs {
+    #[pyo3(item)]
+    vehicle: Option<crate::desc::DescArg>,
+    #[pyo3(item)]
+    params_json: Option<String>,
+    #[pyo3(item)]
+    load: String,
+    #[pyo3(item)]
+    speed_kmh: f64,
+    #[pyo3(item)]
+    input: String,
+    #[pyo3(item)]
+    table_t: Option<Py<PyBytes>>,
+    #[pyo3(item)]
+    table_deg: Option<Py<PyBytes>>,
+    #[pyo3(item)]
+    input_time: f64,
+    #[pyo3(item)]
+    duration: f64,
+    #[pyo3(item)]
+    dt: f64,
+    #[pyo3(item)]
+    solver: String,
+    #[pyo3(item)]
+    rtol: f64,
+    #[pyo3(item)]
+    form: String,
+    #[pyo3(item)]
+    rk4_step: f64,
+}
+
+/// Many yaw-plane runs in parallel (rayon, GIL released): every job is checked first (a bad
+/// one raises before anything runs), then the runs share the cores; the records come back
+/// in the order of `jobs`. The first failing run's error is raised.
+#[pyfunction]
+fn simulate_yaw_batch<'py>(
+    py: Python<'py>,
+    jobs: Vec<YawArgs>,
+) -> PyResult<Vec<Bound<'py, PyTuple>>> {
+    let mut prepared = Vec::with_capacity(jobs.len());
+    for a in &jobs {
+        prepared.push(yaw_job(
+            py,
+            crate::desc::as_ref(&a.vehicle),
+            a.params_json.as_deref(),
+            &a.load,
+            a.speed_kmh,
+            &a.input,
+            a.table_t.as_ref().map(|b| b.as_bytes(py)),
+            a.table_deg.as_ref().map(|b| b.as_bytes(py)),
+            a.input_time,
+            a.duration,
+            a.dt,
+            &a.solver,
+            a.rtol,
+            &a.form,
+            a.rk4_step,
+        )?);
+    }
+    let records: Vec<_> = py.detach(|| {
+        prepared
+            .par_iter()
+            .map(|j| simulate(&j.p.vehicle, &j.sys, &j.man, &j.opts))
+            .collect()
+    });
+    let mut out = Vec::with_capacity(records.len());
+    for (job, rec) in prepared.iter().zip(records) {
+        let rec = rec.map_err(|e| py_err(py, &e))?;
+        out.push(yaw_out(py, job, &rec)?);
+    }
+    Ok(out)
 }
 
 /// A strut named as on the command line: `front-axle` (Table 6.3), `lab-1orifice`,
@@ -343,6 +484,7 @@ fn characterize_strut(py: Python<'_>, strut: &str, gamma0: Option<f64>) -> PyRes
 /// Register the yaw-plane and strut functions.
 pub(crate) fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(simulate_yaw, m)?)?;
+    m.add_function(wrap_pyfunction!(simulate_yaw_batch, m)?)?;
     m.add_function(wrap_pyfunction!(simulate_strut, m)?)?;
     m.add_function(wrap_pyfunction!(characterize_strut, m)?)?;
     Ok(())

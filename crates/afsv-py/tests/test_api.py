@@ -151,3 +151,20 @@ def test_records_from_files_and_arrays(tmp_path: Path) -> None:
     assert r.names == ["time_s", "x_m"] and r.meta == {"note": "mine"} and r.x_m.dtype == np.float64
     with pytest.raises(ValueError, match="samples"):
         afsv.Record.from_arrays({"time_s": [0.0, 0.1], "x_m": [1.0]})
+
+
+def test_yaw_batch_runs_in_parallel_and_equals_single_runs() -> None:
+    runs = [{"speed_kmh": v, "input": "step:20", "duration": 3} for v in (20.0, 35.0, 50.0)]
+    batch = afsv.simulate_yaw_batch(runs)
+    assert len(batch) == 3
+    for kw, rec in zip(runs, batch):
+        single = afsv.simulate_yaw(**kw)
+        assert rec.names == single.names
+        assert all(np.array_equal(rec[n], single[n]) for n in rec.names)
+        assert rec.meta["speed_m_s"] == pytest.approx(kw["speed_kmh"] / 3.6)
+    with pytest.raises(ValueError, match="load"):
+        afsv.simulate_yaw_batch([{"speed_kmh": 20.0}, {"load": "half"}])
+    with pytest.raises(TypeError):
+        afsv.simulate_yaw_batch([{"sped_kmh": 20.0}])
+    with pytest.raises(afsv.SolverError):
+        afsv.simulate_yaw_batch([{"duration": 2}, {"solver": "rk4", "rk4_step": 0.1, "dt": 0.1}])

@@ -17,6 +17,7 @@ from .models import (
     simulate_truck,
     simulate_vehicle,
     simulate_yaw,
+    simulate_yaw_batch,
 )
 from .optimize import AfsProblem, OptimizeResult, minimize, optimize_afs
 from .record import Record, read_record
@@ -37,6 +38,7 @@ __all__ = [
     "CrossSpectrum",
     "simulate",
     "simulate_yaw",
+    "simulate_yaw_batch",
     "simulate_strut",
     "characterize_strut",
     "simulate_truck",

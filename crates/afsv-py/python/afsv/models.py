@@ -6,7 +6,7 @@ matching CLI command (``afsv yaw simulate``, ``afsv hps harmonic``, ``afsv roll 
 from __future__ import annotations
 
 import json
-from typing import Any, Dict, Optional, Sequence, Tuple, Union
+from typing import Any, Dict, List, Optional, Sequence, Tuple, Union
 
 from . import _afsv
 from ._arrays import maybe_bytes
@@ -14,6 +14,41 @@ from .record import Record
 from .vehicle import Vehicle, vehicle_ref
 
 VehicleArg = Union[None, str, Vehicle]
+
+
+def _yaw_args(
+    vehicle: VehicleArg = None,
+    *,
+    params: Optional[Dict[str, Any]] = None,
+    load: str = "loaded",
+    speed_kmh: float = 50.0,
+    input: str = "pulse",
+    table: Optional[Tuple[Sequence[float], Sequence[float]]] = None,
+    input_time: float = 0.5,
+    duration: float = 10.0,
+    dt: float = 0.005,
+    solver: str = "dopri",
+    rtol: float = 1e-5,
+    form: str = "energy-consistent",
+    rk4_step: float = 2e-4,
+) -> Dict[str, Any]:
+    """The native arguments of one yaw-plane run."""
+    return dict(
+        vehicle=vehicle_ref(vehicle),
+        params_json=None if params is None else json.dumps(params),
+        load=load,
+        speed_kmh=float(speed_kmh),
+        input=input,
+        table_t=None if table is None else maybe_bytes("table times", table[0]),
+        table_deg=None if table is None else maybe_bytes("table angles", table[1]),
+        input_time=float(input_time),
+        duration=float(duration),
+        dt=float(dt),
+        solver=solver,
+        rtol=float(rtol),
+        form=form,
+        rk4_step=float(rk4_step),
+    )
 
 
 def simulate_yaw(
@@ -41,24 +76,22 @@ def simulate_yaw(
     yaw-plane set (``afsv params dump yaw-plane``) instead of a description. `form`:
     ``energy-consistent`` or ``paper-eq-3-13``. `solver`: dopri, rosenbrock or rk4 (fixed
     step `rk4_step`, s)."""
-    t_b, a_b = (None, None) if table is None else (maybe_bytes("table times", table[0]), maybe_bytes("table angles", table[1]))
-    cols, meta = _afsv.simulate_yaw(
-        vehicle_ref(vehicle),
-        None if params is None else json.dumps(params),
-        load,
-        float(speed_kmh),
-        input,
-        t_b,
-        a_b,
-        float(input_time),
-        float(duration),
-        float(dt),
-        solver,
-        float(rtol),
-        form,
-        float(rk4_step),
+    args = _yaw_args(
+        vehicle, params=params, load=load, speed_kmh=speed_kmh, input=input, table=table,
+        input_time=input_time, duration=duration, dt=dt, solver=solver, rtol=rtol, form=form,
+        rk4_step=rk4_step,
     )
+    cols, meta = _afsv.simulate_yaw(**args)
     return Record(cols, meta)
+
+
+def simulate_yaw_batch(runs: Sequence[Dict[str, Any]]) -> List[Record]:
+    """Many yaw-plane runs in parallel in Rust (all cores, GIL released): `runs` is a list
+    of keyword-argument dicts of :func:`simulate_yaw` (e.g. ``[{"speed_kmh": v} for v in
+    speeds]``); the records come back in that order, each equal to its single run. Every
+    run is checked before any starts."""
+    jobs = [_yaw_args(**kw) for kw in runs]
+    return [Record(cols, meta) for cols, meta in _afsv.simulate_yaw_batch(jobs)]
 
 
 def simulate_strut(
