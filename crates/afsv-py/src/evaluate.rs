@@ -71,9 +71,13 @@ fn evaluate(
         let stable =
             |m: &afsv_dynamics::YawMeasures| m.damping_ratio.is_finite() && m.damping_ratio > 0.0;
         let j = |v: serde_json::Result<serde_json::Value>| v.map_err(|e| e.to_string());
+        let mut measures = j(serde_json::to_value(&design))?;
+        if let Some(c) = hps_changes(&design) {
+            measures["hps_change"] = c;
+        }
         Ok(json!({
             "vehicle": v.name,
-            "design_measures_3d": j(serde_json::to_value(&design))?,
+            "design_measures_3d": measures,
             "speed_kmh": speed_kmh,
             "terrain": j(serde_json::to_value(&terrain))?,
             "yaw_plane": {
@@ -93,6 +97,26 @@ fn evaluate(
         }))
     });
     Ok(out.map_err(value_err)?.to_string())
+}
+
+/// The front-axle strut's relative changes (percent) of a_wz and SP-DRT, each with whether
+/// it is settled over the seeds (`afsv_design::design_3d::settled`), as `afsv evaluate`
+/// reports them; `None` without a strut.
+fn hps_changes(d: &afsv_design::design_3d::DesignMeasures) -> Option<serde_json::Value> {
+    use afsv_design::design_3d::settled;
+    let (h, u) = (d.nominal_hps.as_ref()?, &d.unsuspended);
+    let one = |with: &vehicle_3d::scenarios::Spread, base: &vehicle_3d::scenarios::Spread| {
+        json!({
+            "percent": 100.0 * (with.mean / base.mean - 1.0),
+            "settled_over_seeds": settled(with, base),
+        })
+    };
+    Some(json!({
+        "a_wz_unloaded": one(&h.ride_unloaded.a_wz_m_s2, &u.ride_unloaded.a_wz_m_s2),
+        "a_wz_loaded": one(&h.ride_loaded.a_wz_m_s2, &u.ride_loaded.a_wz_m_s2),
+        "sp_drt": one(&h.sp_drt_m_s2, &u.sp_drt_m_s2),
+        "rule": "settled: the means differ by at least twice the standard error of the difference over the seeds",
+    }))
 }
 
 /// Register `evaluate`.
