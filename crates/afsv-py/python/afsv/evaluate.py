@@ -23,7 +23,8 @@ def evaluate(
       front axle and with its front-axle strut, each over the terrain seeds
       ``seed..seed+seeds-1`` (ISO 8608 class E, m_c = 0.3, Eqs 6.4-6.5) as mean ± SD: D1
       ride a_wz (W_k, ISO 2631-1) with the 8 h HGCZ verdict, D2 SP-DRT (LTR, Eq 2.11), D3
-      yaw-mode omega_z and zeta;
+      yaw-mode omega_z and zeta; ``hps_change``: the strut's relative changes, each marked
+      settled when the means differ by twice the standard error over the seeds;
     * ``yaw_plane``: the Chapter 3 steering measures per load case at `speed_kmh`
       (section 3.3: yaw-mode frequency and damping, gain, rise time, overshoot, Eq 4.7);
     * ``front_axle_strut``: static force and stiffness, 1 Hz loop metrics (Chapter 5);
