@@ -59,10 +59,10 @@ def main() -> None:
     inside = [0.0]
     native = _afsv.simulate_yaw
 
-    def timed(*args):
+    def timed(*args, **kwargs):
         t0 = time.perf_counter()
         try:
-            return native(*args)
+            return native(*args, **kwargs)
         finally:
             inside[0] += time.perf_counter() - t0
 
