@@ -26,6 +26,7 @@ pub mod afs_optimum;
 pub mod afs_problem;
 pub mod afs_resume;
 pub mod ahp;
+pub mod design_3d;
 pub mod error;
 pub mod hps_design;
 pub mod hps_optimum;
