@@ -30,6 +30,7 @@
 //! .unwrap();
 //! ```
 
+use plotters::coord::ranged1d::ValueFormatter;
 use plotters::coord::Shift;
 use plotters::prelude::*;
 use std::path::Path;
@@ -51,12 +52,28 @@ pub struct Axis<'a> {
     pub quantity: &'a str,
     /// Unit, e.g. `kN`; `-` for a dimensionless quantity.
     pub unit: &'a str,
+    /// Logarithmic scale (for quantities that span decades: PSDs, frequencies, α_r); only
+    /// the positive values are drawn.
+    pub log: bool,
 }
 
 impl<'a> Axis<'a> {
-    /// `quantity (unit)`.
+    /// A linear axis, `quantity (unit)`.
     pub const fn new(quantity: &'a str, unit: &'a str) -> Self {
-        Self { quantity, unit }
+        Self {
+            quantity,
+            unit,
+            log: false,
+        }
+    }
+
+    /// A logarithmic axis, `quantity (unit)`.
+    pub const fn log(quantity: &'a str, unit: &'a str) -> Self {
+        Self {
+            quantity,
+            unit,
+            log: true,
+        }
     }
 
     /// The axis label, `quantity (unit)`.
@@ -99,24 +116,25 @@ pub fn figure(path: &Path, fig: &Figure<'_>, series: &[Series<'_>]) -> Result<()
         path,
         fig.title,
         fig.conditions,
-        &fig.x.label(),
-        &fig.y.label(),
+        (&fig.x.label(), fig.x.log),
+        (&fig.y.label(), fig.y.log),
         series,
     )
 }
 
-/// [`figure`] with the axis labels as text and the conditions line `conditions` (may be
-/// empty).
+/// [`figure`] with the axis labels as text (with whether each is logarithmic) and the
+/// conditions line `conditions` (may be empty).
 fn render(
     path: &Path,
     title: &str,
     conditions: &str,
-    x_label: &str,
-    y_label: &str,
+    x_label: (&str, bool),
+    y_label: (&str, bool),
     series: &[Series<'_>],
 ) -> Result<(), String> {
     let err = |e: &dyn std::fmt::Display| format!("{}: {e}", path.display());
-    let ranges = ranges(series).ok_or_else(|| format!("nothing to plot in {}", path.display()))?;
+    let ranges = ranges(series, x_label.1, y_label.1)
+        .ok_or_else(|| format!("nothing to plot in {}", path.display()))?;
     let mut svg = String::new();
     {
         let root = SVGBackend::with_string(&mut svg, (WIDTH, HEIGHT)).into_drawing_area();
@@ -181,7 +199,7 @@ pub fn panels(
         root.fill(&WHITE).map_err(|e| err(&e))?;
         let area = titled(&root, title, conditions).map_err(|e| err(&e))?;
         for (cell, p) in area.split_evenly((rows, columns)).iter().zip(panels) {
-            let ranges = ranges(&p.series).ok_or_else(|| {
+            let ranges = ranges(&p.series, p.x.log, p.y.log).ok_or_else(|| {
                 format!(
                     "nothing to plot in panel `{}` of {}",
                     p.caption,
@@ -208,11 +226,30 @@ pub fn line_plot(
     y_label: &str,
     series: &[Series<'_>],
 ) -> Result<(), String> {
-    render(path, title, "", x_label, y_label, series)
+    render(path, title, "", (x_label, false), (y_label, false), series)
 }
 
-/// Padded (x0, x1, y0, y1) over the finite points of `series`, or `None` without any.
-fn ranges(series: &[Series<'_>]) -> Option<(f64, f64, f64, f64)> {
+/// [`line_plot`] with a logarithmic abscissa, for a study variable that spans decades
+/// (e.g. the road roughness α_r); points with x <= 0 are left out.
+pub fn line_plot_log_x(
+    path: &Path,
+    title: &str,
+    x_label: &str,
+    y_label: &str,
+    series: &[Series<'_>],
+) -> Result<(), String> {
+    render(path, title, "", (x_label, true), (y_label, false), series)
+}
+
+/// Whether the point `(a, b)` is drawn on axes with these scales: finite, and positive on
+/// a logarithmic axis.
+fn drawable(a: f64, b: f64, x_log: bool, y_log: bool) -> bool {
+    a.is_finite() && b.is_finite() && (!x_log || a > 0.0) && (!y_log || b > 0.0)
+}
+
+/// (x0, x1, y0, y1) over the drawable points of `series` (padded on a linear ordinate), or
+/// `None` without any.
+fn ranges(series: &[Series<'_>], x_log: bool, y_log: bool) -> Option<(f64, f64, f64, f64)> {
     let (mut x0, mut x1, mut y0, mut y1) = (
         f64::INFINITY,
         f64::NEG_INFINITY,
@@ -221,7 +258,7 @@ fn ranges(series: &[Series<'_>]) -> Option<(f64, f64, f64, f64)> {
     );
     for s in series {
         for (&a, &b) in s.x.iter().zip(s.y) {
-            if a.is_finite() && b.is_finite() {
+            if drawable(a, b, x_log, y_log) {
                 x0 = x0.min(a);
                 x1 = x1.max(a);
                 y0 = y0.min(b);
@@ -233,7 +270,13 @@ fn ranges(series: &[Series<'_>]) -> Option<(f64, f64, f64, f64)> {
         return None;
     }
     if x0 >= x1 {
-        x1 = x0 + 1.0;
+        x1 = if x_log { 10.0 * x0 } else { x0 + 1.0 };
+    }
+    if y_log {
+        if y0 >= y1 {
+            y1 = 10.0 * y0;
+        }
+        return Some((x0, x1, y0, y1));
     }
     if y0 >= y1 {
         y0 -= 0.5;
@@ -262,14 +305,21 @@ fn draw_panel(
     ranges: (f64, f64, f64, f64),
     series: &[Series<'_>],
 ) -> Result<(), String> {
-    draw_labelled(area, caption, &x.label(), &y.label(), ranges, series)
+    draw_labelled(
+        area,
+        caption,
+        (&x.label(), x.log),
+        (&y.label(), y.log),
+        ranges,
+        series,
+    )
 }
 
 fn draw_labelled(
     area: &DrawingArea<SVGBackend<'_>, Shift>,
     caption: Option<&str>,
-    x_label: &str,
-    y_label: &str,
+    (x_label, x_log): (&str, bool),
+    (y_label, y_log): (&str, bool),
     (x0, x1, y0, y1): (f64, f64, f64, f64),
     series: &[Series<'_>],
 ) -> Result<(), String> {
@@ -278,12 +328,59 @@ fn draw_labelled(
     if let Some(c) = caption {
         builder.caption(c, ("sans-serif", 16));
     }
-    let mut chart = builder
+    builder
         .margin(12)
         .x_label_area_size(45)
-        .y_label_area_size(75)
-        .build_cartesian_2d(x0..x1, y0..y1)
-        .map_err(|x| e(&x))?;
+        .y_label_area_size(75);
+    let labels = (x_label, y_label);
+    let scales = (x_log, y_log);
+    match scales {
+        (false, false) => draw_on(
+            builder.build_cartesian_2d(x0..x1, y0..y1),
+            labels,
+            scales,
+            series,
+        ),
+        (true, false) => draw_on(
+            builder.build_cartesian_2d((x0..x1).log_scale(), y0..y1),
+            labels,
+            scales,
+            series,
+        ),
+        (false, true) => draw_on(
+            builder.build_cartesian_2d(x0..x1, (y0..y1).log_scale()),
+            labels,
+            scales,
+            series,
+        ),
+        (true, true) => draw_on(
+            builder.build_cartesian_2d((x0..x1).log_scale(), (y0..y1).log_scale()),
+            labels,
+            scales,
+            series,
+        ),
+    }
+    .map_err(|x| e(&x))
+}
+
+/// The mesh and the curves on a chart of any scale. The first six curves differ by colour;
+/// later ones repeat the colours with markers (circle, triangle, cross in turn), so no two
+/// curves look alike.
+fn draw_on<'b, X, Y>(
+    chart: Result<
+        ChartContext<'b, SVGBackend<'b>, Cartesian2d<X, Y>>,
+        DrawingAreaErrorKind<std::io::Error>,
+    >,
+    (x_label, y_label): (&str, &str),
+    (x_log, y_log): (bool, bool),
+    series: &[Series<'_>],
+) -> Result<(), String>
+where
+    X: Ranged<ValueType = f64> + ValueFormatter<f64>,
+    Y: Ranged<ValueType = f64> + ValueFormatter<f64>,
+{
+    let e = |e: &dyn std::fmt::Display| e.to_string();
+    let mut chart = chart.map_err(|x| e(&x))?;
     chart
         .configure_mesh()
         .x_desc(x_label)
@@ -295,14 +392,53 @@ fn draw_labelled(
         let pts: Vec<(f64, f64)> =
             s.x.iter()
                 .zip(s.y)
-                .filter(|(a, b)| a.is_finite() && b.is_finite())
+                .filter(|(a, b)| drawable(**a, **b, x_log, y_log))
                 .map(|(a, b)| (*a, *b))
                 .collect();
         chart
-            .draw_series(LineSeries::new(pts, color.stroke_width(2)))
+            .draw_series(LineSeries::new(pts.clone(), color.stroke_width(2)))
             .map_err(|x| e(&x))?;
+        // Markers on at most ~25 points per curve, so dense curves stay readable.
+        let every = (pts.len() / 25).max(1);
+        let marked = pts.iter().step_by(every).copied();
+        match marker(i) {
+            Marker::None => {}
+            Marker::Circle => {
+                chart
+                    .draw_series(marked.map(|p| Circle::new(p, 4, color.stroke_width(2))))
+                    .map_err(|x| e(&x))?;
+            }
+            Marker::Triangle => {
+                chart
+                    .draw_series(marked.map(|p| TriangleMarker::new(p, 5, color.stroke_width(2))))
+                    .map_err(|x| e(&x))?;
+            }
+            Marker::Cross => {
+                chart
+                    .draw_series(marked.map(|p| Cross::new(p, 4, color.stroke_width(2))))
+                    .map_err(|x| e(&x))?;
+            }
+        }
     }
     Ok(())
+}
+
+/// The marker of curve `i` (see [`draw_on`]).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Marker {
+    None,
+    Circle,
+    Triangle,
+    Cross,
+}
+
+fn marker(i: usize) -> Marker {
+    match (i / COLORS.len()) % 4 {
+        0 => Marker::None,
+        1 => Marker::Circle,
+        2 => Marker::Triangle,
+        _ => Marker::Cross,
+    }
 }
 
 /// The legend in its own column: a line sample and the label per series, top down.
@@ -318,6 +454,14 @@ fn draw_legend(
             vec![(8, y), (30, y)],
             color.stroke_width(2),
         ))
+        .map_err(|x| e(&x))?;
+        let style = color.stroke_width(2);
+        match marker(i) {
+            Marker::None => Ok(()),
+            Marker::Circle => area.draw(&Circle::new((19, y), 4, style)),
+            Marker::Triangle => area.draw(&TriangleMarker::new((19, y), 5, style)),
+            Marker::Cross => area.draw(&Cross::new((19, y), 4, style)),
+        }
         .map_err(|x| e(&x))?;
         area.draw(&Text::new(
             s.label.to_string(),
@@ -423,6 +567,59 @@ mod tests {
             x_attr >= legend_x as f64,
             "legend at x = {x_attr}, plot ends at {legend_x}"
         );
+    }
+
+    #[test]
+    fn log_axes_span_decades_and_later_curves_get_markers() {
+        let p = scratch("log.svg");
+        // alpha_r from 1.6e-7 to 4.1e-5 in x4 steps, as the roughness study runs it.
+        let x: Vec<f64> = (0..5).map(|k| 1.6e-7 * 4f64.powi(k)).collect();
+        let ys: Vec<Vec<f64>> = (0..8)
+            .map(|c| x.iter().map(|a| (c as f64 + 1.0) * a.sqrt()).collect())
+            .collect();
+        let labels: Vec<String> = (0..8).map(|c| format!("curve {c}")).collect();
+        let series: Vec<Series<'_>> = ys
+            .iter()
+            .zip(&labels)
+            .map(|(y, label)| Series { label, x: &x, y })
+            .collect();
+        figure(
+            &p,
+            &Figure {
+                title: "log-log",
+                conditions: "",
+                x: Axis::log("road roughness alpha_r", "m^3"),
+                y: Axis::log("response", "-"),
+            },
+            &series,
+        )
+        .unwrap();
+        let svg = std::fs::read_to_string(&p).unwrap();
+        // Curves 7 and 8 repeat the first two colours with circles (on the data and in
+        // the legend); the first six have none.
+        let circles = svg.matches("<circle").count();
+        assert_eq!(circles, 2 * (x.len() + 1), "{circles}");
+        // Every curve is drawn although the abscissa spans 2.4 decades, and non-positive
+        // values are left out on a log axis instead of failing.
+        let zero = [0.0, 1e-6, 1e-5];
+        let y = [1.0, 2.0, 3.0];
+        figure(
+            &p,
+            &Figure {
+                title: "t",
+                conditions: "",
+                x: Axis::log("x", "-"),
+                y: Axis::new("y", "-"),
+            },
+            &[Series {
+                label: "a",
+                x: &zero,
+                y: &y,
+            }],
+        )
+        .unwrap();
+        assert!(!drawable(0.0, 1.0, true, false));
+        assert!(drawable(0.0, 1.0, false, false));
     }
 
     #[test]

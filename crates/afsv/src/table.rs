@@ -162,8 +162,9 @@ pub fn text(rec: &Record, ends: usize) -> String {
     out
 }
 
-/// A number with 6 significant digits, in plain notation between 1e-3 and 1e6.
-fn number(v: f64) -> String {
+/// A number with 6 significant digits, in plain notation between 1e-3 and 1e6 (tables and
+/// study variables on a terminal: α_r = 1.6e-7 must not print as 0.0000).
+pub fn number(v: f64) -> String {
     let a = v.abs();
     if v == 0.0 {
         "0".into()

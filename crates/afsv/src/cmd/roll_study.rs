@@ -160,9 +160,9 @@ fn study_text(r: &StudyResult) -> String {
     );
     for p in &r.points {
         s += &format!(
-            "{:<22} {:>10.4} {:>10} {:>16} {:>14} {:>16} {:>7.3}\n",
+            "{:<22} {:>10} {:>10} {:>16} {:>14} {:>16} {:>7.3}\n",
             p.group,
-            p.x,
+            afsv::table::number(p.x),
             p.smooth_drt_g.map_or("n/a".into(), |v| format!("{v:.3}")),
             pm(&p.sp_drt_g, 3),
             pm(&p.sustained_period_s, 2),
@@ -253,7 +253,16 @@ fn plot_study(path: &Path, r: &StudyResult) -> CmdResult {
         .iter()
         .map(|(label, x, y)| afsv_plot::Series { label, x, y })
         .collect();
-    afsv_plot::line_plot(
+    // A study variable that spans decades (α_r in ×4 steps) reads on a log axis.
+    let (lo, hi) = r.points.iter().fold((f64::INFINITY, 0.0_f64), |(a, b), p| {
+        (a.min(p.x), b.max(p.x))
+    });
+    let plot = if lo > 0.0 && hi / lo > 20.0 {
+        afsv_plot::line_plot_log_x
+    } else {
+        afsv_plot::line_plot
+    };
+    plot(
         path,
         &format!("rough-terrain SP-DRT over {} seeds", r.seeds.len()),
         r.study.x_label(),

@@ -50,6 +50,12 @@ pub(super) fn plot_ride(
             .collect()
     };
     let (vert, pitch) = (mean(1), mean(2));
+    // The ISO 2631-1 W_k-weighted PSD |W_k(f)|² G(f): its integral is a_wz² (the D1 measure).
+    let weighted: Vec<f64> = freq
+        .iter()
+        .zip(&vert)
+        .map(|(&f, &g)| perf_measures::Weighting::Wk.magnitude(f).powi(2) * g)
+        .collect();
     let conditions = format!(
         "{}, {}, {} km/h, class {}, m_c {}, mean of {} seed(s) from {}",
         spec.load,
@@ -68,18 +74,25 @@ pub(super) fn plot_ride(
         &[
             afsv_plot::Panel {
                 caption: "vertical acceleration at the cab point",
-                x: afsv_plot::Axis::new("frequency", "Hz"),
-                y: afsv_plot::Axis::new("PSD", "(m/s²)²/Hz"),
-                series: vec![afsv_plot::Series {
-                    label: "a_z",
-                    x: freq,
-                    y: &vert,
-                }],
+                x: afsv_plot::Axis::log("frequency", "Hz"),
+                y: afsv_plot::Axis::log("PSD", "(m/s²)²/Hz"),
+                series: vec![
+                    afsv_plot::Series {
+                        label: "a_z",
+                        x: freq,
+                        y: &vert,
+                    },
+                    afsv_plot::Series {
+                        label: "a_z weighted by W_k (ISO 2631-1)",
+                        x: freq,
+                        y: &weighted,
+                    },
+                ],
             },
             afsv_plot::Panel {
                 caption: "pitch acceleration",
-                x: afsv_plot::Axis::new("frequency", "Hz"),
-                y: afsv_plot::Axis::new("PSD", "(rad/s²)²/Hz"),
+                x: afsv_plot::Axis::log("frequency", "Hz"),
+                y: afsv_plot::Axis::log("PSD", "(rad/s²)²/Hz"),
                 series: vec![afsv_plot::Series {
                     label: "pitch",
                     x: freq,
