@@ -389,7 +389,7 @@ pub fn read_strut_file(file: &Path) -> Result<StrutParams, String> {
     }
     let text = afsv_records::provenance::read_input(file).map_err(|e| format!("{shown}: {e}"))?;
     let mut de = serde_json::Deserializer::from_str(&text);
-    serde_path_to_error::deserialize::<_, StrutParams>(&mut de).map_err(|e| {
+    let p = serde_path_to_error::deserialize::<_, StrutParams>(&mut de).map_err(|e| {
         let inner = e.inner();
         format!(
             "{shown}:{}:{}: `{}`: {inner}",
@@ -397,7 +397,9 @@ pub fn read_strut_file(file: &Path) -> Result<StrutParams, String> {
             inner.column(),
             e.path()
         )
-    })
+    })?;
+    vehicle_components::within_ranges(&p).map_err(|e| format!("{shown}: {e}"))?;
+    Ok(p)
 }
 
 fn part(p: &crate::schema::Part) -> vehicle_3d::RigidPart {

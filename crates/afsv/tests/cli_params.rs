@@ -63,3 +63,34 @@ fn strut_dump_offers_every_built_in_strut() {
     assert_ne!(front["a_hc"], lab["a_hc"]);
     assert_eq!(lab["n_b"], 1);
 }
+
+#[test]
+fn a_value_outside_its_registry_range_is_refused_where_the_file_is_read() {
+    // The bleed area x 1e6 passes the strut's own validation but would make every run
+    // stiff and slow: `params check` and every command that reads the file refuse it at
+    // once, naming the parameter and its range.
+    let path = scratch("params", "wide-bleed.json");
+    json(&afsv(&[
+        "params",
+        "dump",
+        "strut",
+        "-o",
+        path.to_str().unwrap(),
+    ]));
+    let mut v: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(&path).unwrap()).unwrap();
+    v["a_b"] = serde_json::json!(v["a_b"].as_f64().unwrap() * 1e6);
+    std::fs::write(&path, v.to_string()).unwrap();
+    for args in [
+        vec!["params", "check", "strut", path.to_str().unwrap()],
+        vec!["hps", "harmonic", "--strut", path.to_str().unwrap()],
+    ] {
+        let out = afsv(&args);
+        assert_eq!(out.status.code(), Some(1), "{args:?}");
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert!(
+            err.contains("`a_b` = 11 is outside [0, 0.001]"),
+            "{args:?}: {err}"
+        );
+    }
+}

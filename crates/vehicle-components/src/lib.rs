@@ -31,7 +31,7 @@ pub mod terrain;
 pub use component::{ChannelInfo, Component, StateInfo};
 pub use error::{ComponentError, ParamError};
 pub use layout::{BlockId, StateLayout, MAX_STATES};
-pub use params::{check_specs, ParamSet, ParamSpec};
+pub use params::{check_specs, within_ranges, ParamSet, ParamSpec};
 pub use recorder::{Channels, Recorder, MAX_CELLS, MAX_ROWS};
 pub use terrain::{
     gradient_normal, FlatTerrain, Terrain, TerrainPoint, DEFAULT_FRICTION, NORMAL_STEP_M,

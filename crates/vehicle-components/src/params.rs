@@ -88,6 +88,27 @@ pub fn check_specs(specs: &[ParamSpec]) -> Result<(), ParamError> {
     Ok(())
 }
 
+/// `Ok` when every parameter of `p` lies in its registry range; otherwise one message
+/// naming each parameter outside it with the range and unit (see
+/// [`ParamSet::out_of_range`]).
+pub fn within_ranges(p: &dyn ParamSet) -> Result<(), String> {
+    let out = p.out_of_range();
+    if out.is_empty() {
+        return Ok(());
+    }
+    let list: Vec<String> = out.iter().map(ToString::to_string).collect();
+    Err(format!(
+        "{} outside the plausible range of the {} registry (`afsv params list` shows the ranges): {}",
+        if out.len() == 1 {
+            "a parameter lies".to_string()
+        } else {
+            format!("{} parameters lie", out.len())
+        },
+        p.set_name(),
+        list.join("; ")
+    ))
+}
+
 /// A parameter set addressed by name.
 pub trait ParamSet {
     /// Name of the set in messages (e.g. `tire`).
@@ -125,6 +146,18 @@ pub trait ParamSet {
     fn get(&self, name: &str) -> Result<f64, ParamError> {
         let (i, _) = self.find(name)?;
         Ok(self.value(i))
+    }
+
+    /// Every parameter whose value lies outside its `[lower, upper]` (or is NaN), in list
+    /// order: a file that passes the set's own validation may still hold a value no fit or
+    /// design would explore, e.g. an orifice area scaled by 1e6, which makes a run stiff
+    /// and slow instead of failing at once.
+    fn out_of_range(&self) -> Vec<ParamError> {
+        self.specs()
+            .iter()
+            .enumerate()
+            .filter_map(|(i, s)| s.admit(self.value(i)).err())
+            .collect()
     }
 
     /// Set parameter `name` to `value`: the value must lie within the bounds and the whole
@@ -188,6 +221,25 @@ mod tests {
                 ))
             }
         }
+    }
+
+    #[test]
+    fn values_outside_their_ranges_are_all_listed() {
+        let f = Friction {
+            u_max: 8e5,
+            u_min: 0.0,
+        };
+        let out = f.out_of_range();
+        assert_eq!(out.len(), 2);
+        assert!(out[0].to_string().contains("u_max"), "{}", out[0]);
+        let ok = Friction {
+            u_max: 0.8,
+            u_min: 0.6,
+        };
+        assert!(ok.out_of_range().is_empty());
+        let e = within_ranges(&f).unwrap_err();
+        assert!(e.starts_with("2 parameters lie outside"), "{e}");
+        assert!(within_ranges(&ok).is_ok());
     }
 
     #[test]

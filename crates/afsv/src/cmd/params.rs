@@ -140,6 +140,8 @@ pub fn run(cmd: Command) -> CmdResult {
                     let p: VehicleParams = read(&file)?;
                     p.validate()
                         .map_err(|e| format!("{}: {e}", file.display()))?;
+                    vehicle_components::within_ranges(&p)
+                        .map_err(|e| format!("{}: {e}", file.display()))?;
                     json!({ "parameters": p })
                 }
                 ParamSet::Vehicle => check_vehicle(&file)?,
@@ -277,6 +279,7 @@ pub(super) fn read<T: serde::de::DeserializeOwned>(path: &Path) -> Result<T, Str
 fn checked<T: serde::de::DeserializeOwned + Named>(path: &Path) -> Result<Value, String> {
     let p: T = read(path)?;
     p.check().map_err(|e| format!("{}: {e}", path.display()))?;
+    vehicle_components::within_ranges(&p).map_err(|e| format!("{}: {e}", path.display()))?;
     Ok(named(&p))
 }
 

@@ -169,8 +169,11 @@ fn load_params(args: &SweepArgs) -> Result<TireParams, Box<dyn std::error::Error
         Some(path) => {
             let text = afsv_records::provenance::read_input(path)
                 .map_err(|e| format!("{}: {e}", path.display()))?;
-            serde_json::from_str::<TireParams>(&text)
-                .map_err(|e| format!("{}: {e}", path.display()))?
+            let p = serde_json::from_str::<TireParams>(&text)
+                .map_err(|e| format!("{}: {e}", path.display()))?;
+            vehicle_components::within_ranges(&p)
+                .map_err(|e| format!("{}: {e}", path.display()))?;
+            p
         }
         None => TireParams::nominal(),
     };

@@ -193,6 +193,7 @@ pub fn read_params(path: &Path) -> Result<YawPlaneParams, Box<dyn std::error::Er
         serde_json::from_str(&text).map_err(|e| format!("{}: {e}", path.display()))?;
     p.validate()
         .map_err(|e| format!("{}: {e}", path.display()))?;
+    vehicle_components::within_ranges(&p).map_err(|e| format!("{}: {e}", path.display()))?;
     Ok(p)
 }
 
