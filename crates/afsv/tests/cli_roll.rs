@@ -89,6 +89,12 @@ fn truck_parameters_dump_and_check() {
 #[test]
 fn bad_input_is_a_one_line_error() {
     for (args, needle) in [
+        (
+            vec![
+                "roll", "measures", "--smooth", "--seed", "7", "--class", "A",
+            ],
+            "--seed",
+        ),
         (vec!["roll", "study", "cg", "--seeds", "0"], "--seeds"),
         (vec!["roll", "study", "sideways"], "sideways"),
         (vec!["roll", "measures", "--waviness", "nan"], "finite"),

@@ -91,8 +91,9 @@ pub struct CaseArgs {
     /// Ramp direction: `left` (rolls to the right) or `right`.
     #[arg(long, default_value = "left")]
     pub direction: SteerDirection,
-    /// Level ground instead of the synthesized rough terrain.
-    #[arg(long)]
+    /// Level ground instead of the synthesized rough terrain (the terrain options then
+    /// have nothing to act on and are refused).
+    #[arg(long, conflicts_with_all = ["class", "waviness", "band", "mc", "seed"])]
     pub smooth: bool,
     /// ISO 8608 class of the rough terrain (Table 2.4), A to E.
     #[arg(long, default_value = "E")]
