@@ -112,16 +112,13 @@ impl Progress {
             format!(" ({detail})")
         };
         match self.total {
-            Some(total) => {
-                let eta = elapsed / n as f64 * total.saturating_sub(n) as f64;
-                format!(
-                    "{}: {n}/{total} {}{detail}, {} elapsed, ETA {}",
-                    self.what,
-                    self.unit,
-                    seconds(elapsed),
-                    seconds(eta)
-                )
-            }
+            Some(total) => format!(
+                "{}: {n}/{total} {}{detail}, {} elapsed, ETA {}",
+                self.what,
+                self.unit,
+                seconds(elapsed),
+                eta(n, total, elapsed)
+            ),
             None => format!(
                 "{}: {n} {}{detail}, {} elapsed",
                 self.what,
@@ -156,10 +153,31 @@ fn bar(what: &str, unit: &str, total: Option<usize>) -> indicatif::ProgressBar {
         ),
     };
     if let Ok(style) = indicatif::ProgressStyle::with_template(&template) {
-        b.set_style(style);
+        // indicatif's own ETA reads 0 s before the first step and swings with its moving
+        // average after; the mean pace so far is steadier and says when it cannot tell.
+        b.set_style(style.with_key(
+            "eta",
+            |s: &indicatif::ProgressState, w: &mut dyn std::fmt::Write| {
+                let total = s.len().unwrap_or(0) as usize;
+                let _ = write!(
+                    w,
+                    "{}",
+                    eta(s.pos() as usize, total, s.elapsed().as_secs_f64())
+                );
+            },
+        ));
     }
     b.enable_steady_tick(std::time::Duration::from_millis(200));
     b
+}
+
+/// The time left after `done` of `total` steps in `elapsed` seconds, at the mean pace so
+/// far; `estimating` until the first step has finished (no pace to go by yet).
+fn eta(done: usize, total: usize, elapsed: f64) -> String {
+    if done == 0 {
+        return "estimating".into();
+    }
+    seconds(elapsed / done as f64 * total.saturating_sub(done) as f64)
 }
 
 /// `s` seconds as `0.12 s`, `12 s`, `3 min 20 s`.
@@ -178,6 +196,13 @@ fn seconds(s: f64) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn the_eta_waits_for_the_first_step_then_follows_the_mean_pace() {
+        assert_eq!(eta(0, 10, 3.0), "estimating");
+        assert_eq!(eta(1, 10, 3.2), "29 s");
+        assert_eq!(eta(10, 10, 32.0), "0.00 s");
+    }
 
     #[test]
     fn lines_carry_count_elapsed_and_eta() {
