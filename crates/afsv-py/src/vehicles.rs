@@ -174,6 +174,10 @@ fn simulate_truck<'py>(
                 .map(|b| f64::from(u8::from(*b)))
                 .collect(),
         ),
+        (
+            "airborne".into(),
+            r.airborne.iter().map(|b| f64::from(u8::from(*b))).collect(),
+        ),
     ];
     for (name, values) in roll_truck::model::TIRE_NAMES.iter().zip(&r.normal_force_n) {
         cols.push((format!("normal_force_{name}_n"), values.clone()));

@@ -94,7 +94,9 @@ def test_measures_on_arrays(cli, tmp_path: Path) -> None:
     assert got == {k: out[k] for k in got}
     cli("yaw", "simulate", "--input", "pulse", "--duration", "6", "-o", "p.csv")
     p = read_csv(tmp_path / "p.csv")
-    out = cli("measures", "decay", "-i", "p.csv", "--column", "articulation_deg")
+    # The pulse response is not one decaying mode (the fit says so, exit 3); parity holds
+    # for the numbers, so accept the fit here.
+    out = cli("measures", "decay", "-i", "p.csv", "--column", "articulation_deg", "--accept-poor-fit")
     got = afsv.decay(p["time_s"], p["articulation_deg"])
     assert got["fit"] == out["fit"] and got["start_s"] == out["start_s"]
 
