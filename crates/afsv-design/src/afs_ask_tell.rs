@@ -334,7 +334,7 @@ impl<'a> AfsAskTell<'a> {
 }
 
 #[cfg(test)]
-mod tests {
+pub(crate) mod tests {
     use super::*;
     use crate::{AfsProblemSpec, AhpHierarchy, Objective};
     use optimize::pattern_search::PatternSearchOptions;
@@ -342,7 +342,7 @@ mod tests {
 
     /// A run small enough for a unit test: two starts, a 5-point search step, screening to
     /// mesh 1/8, refinement to 1/16, three SQP calls.
-    fn small() -> AfsOptimisationSettings {
+    pub(crate) fn small() -> AfsOptimisationSettings {
         AfsOptimisationSettings {
             extra_starts: 1,
             seed: 3,

@@ -143,30 +143,9 @@ mod tests {
     use super::*;
     use crate::afs_optimum::optimise;
     use crate::{AfsProblemSpec, AhpHierarchy, Objective};
-    use optimize::sqp::SqpOptions;
     use optimize::Silent;
 
-    /// Two starts, a 5-point search step, screening to 1/8, refinement to 1/16, three
-    /// SLSQP calls (as afs_ask_tell's tests).
-    fn small() -> AfsOptimisationSettings {
-        AfsOptimisationSettings {
-            extra_starts: 1,
-            seed: 3,
-            pattern: PatternSearchOptions {
-                initial_mesh: 0.25,
-                min_mesh: 1.0 / 16.0,
-                search_points: 5,
-                max_evaluations: 400,
-                ..PatternSearchOptions::default()
-            },
-            screen_min_mesh: 1.0 / 8.0,
-            sqp: SqpOptions {
-                max_calls: 3,
-                fd_step: 1e-2,
-                ..SqpOptions::default()
-            },
-        }
-    }
+    use crate::afs_ask_tell::tests::small;
 
     #[test]
     fn every_checkpoint_of_a_run_passes_and_tampered_ones_are_refused() {

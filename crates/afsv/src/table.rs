@@ -12,13 +12,16 @@ use std::path::PathBuf;
 /// Rows shown at each end of a table on a terminal.
 pub const TERMINAL_ROWS: usize = 8;
 
-/// Where a tabular result goes (the `--json` and `-o` options of a command; the command's
-/// `--force` reaches the CSV through the [`OutputGuard`] it is declared to).
-#[derive(Debug, Clone, Default)]
+/// Where a tabular result goes: the `--json` and `-o` options a command flattens into its
+/// own (the command's `--force` reaches the CSV through the [`OutputGuard`] it is declared
+/// to).
+#[derive(clap::Args, Debug, Clone, Default)]
 pub struct TableOutput {
-    /// `--json`: the whole result as JSON, even on a terminal.
+    /// Print the whole result as JSON, also on a terminal (a pipe always gets JSON).
+    #[arg(long)]
     pub json: bool,
-    /// `-o FILE.csv`: every row as CSV (with its sidecar).
+    /// Write every row as CSV here (a JSON sidecar is written beside it) and print a summary.
+    #[arg(short = 'o', long = "output", value_name = "CSV")]
     pub csv: Option<PathBuf>,
 }
 

@@ -7,6 +7,7 @@
 //! (fourth differences, robust spread): a fit whose residual RMS is several times that noise
 //! leaves something the model does not describe, whatever the optimiser's convergence says.
 
+use optimize::noise::NOISE_FLOOR_OF_RANGE;
 use serde::{Deserialize, Serialize};
 
 /// Standard atmosphere (Pa): the offset between a gauge and an absolute pressure reading.
@@ -17,10 +18,6 @@ pub const STANDARD_ATMOSPHERE_PA: f64 = 101_325.0;
 /// variance), so a faithful fit stays under about 1.5 times; 3 leaves room for that.
 pub const RESIDUAL_NOISE_LIMIT: f64 = 3.0;
 
-/// The noise RMS is floored at this fraction of the channel's range, so a noiseless record
-/// (a simulation) does not make a 0.1 % residual look like a poor fit.
-pub const NOISE_FLOOR_OF_RANGE: f64 = 1e-3;
-
 /// A differentiated velocity whose noise RMS exceeds this fraction of its range biases the
 /// friction and damping laws, which switch and scale on the velocity.
 pub const VELOCITY_NOISE_LIMIT: f64 = 0.02;
@@ -30,8 +27,9 @@ pub const VELOCITY_NOISE_LIMIT: f64 = 0.02;
 pub struct ChannelCheck {
     /// RMS of `simulated - measured` over the compared samples.
     pub residual_rms: f64,
-    /// Measurement-noise RMS read from the record, floored at [`NOISE_FLOOR_OF_RANGE`] of
-    /// its range.
+    /// Measurement-noise RMS read from the record, floored at
+    /// `optimize::noise::NOISE_FLOOR_OF_RANGE` (0.1 %) of its range, so a noiseless record
+    /// (a simulation) does not make a 0.1 % residual look like a poor fit.
     pub noise_rms: f64,
     /// Mean of `measured - simulated`: a constant the model cannot produce.
     pub mean_offset: f64,
@@ -46,15 +44,9 @@ impl ChannelCheck {
             sq += (s - m) * (s - m);
             sum += m - s;
         }
-        let (lo, hi) = measured
-            .iter()
-            .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), v| {
-                (a.min(*v), b.max(*v))
-            });
-        let noise = optimize::noise::measurement_noise_variance(measured).sqrt();
         Self {
             residual_rms: (sq / n).sqrt(),
-            noise_rms: noise.max(NOISE_FLOOR_OF_RANGE * (hi - lo).max(0.0)),
+            noise_rms: optimize::noise::measurement_noise_rms(measured, NOISE_FLOOR_OF_RANGE),
             mean_offset: sum / n,
         }
     }

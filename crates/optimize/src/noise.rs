@@ -50,6 +50,25 @@ pub fn noise_level(values: &[f64]) -> Option<f64> {
     })
 }
 
+/// The usual floor of [`measurement_noise_rms`]: 0.1 % of the record's range.
+pub const NOISE_FLOOR_OF_RANGE: f64 = 1e-3;
+
+/// The noise RMS that a fit compares its residual with: [`measurement_noise_variance`]'s
+/// square root, floored at `floor_of_range` of the record's range (max - min), so a
+/// noiseless record (a simulation) does not make a residual of that size look like a poor
+/// fit.
+pub fn measurement_noise_rms(y: &[f64], floor_of_range: f64) -> f64 {
+    let (lo, hi) = y
+        .iter()
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), v| {
+            (a.min(*v), b.max(*v))
+        });
+    let range = if hi >= lo { hi - lo } else { 0.0 };
+    measurement_noise_variance(y)
+        .sqrt()
+        .max(floor_of_range * range)
+}
+
 /// Measurement-noise variance of a densely sampled smooth signal, from its fourth
 /// differences `d[i] = y[i-2] - 4y[i-1] + 6y[i] - 4y[i+1] + y[i+2]`: white noise of variance
 /// `s^2` gives `var(d) = 70 s^2`, while a smooth signal contributes `(2 pi f dt)^4` of its

@@ -382,18 +382,6 @@ pub fn decay_window(
     Ok(i0..i1)
 }
 
-/// The record's noise RMS, floored at 0.1 % of its range (see [`DecayFit::noise_rms`]).
-fn noise_rms(y: &[f64]) -> f64 {
-    let (lo, hi) = y
-        .iter()
-        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), v| {
-            (a.min(*v), b.max(*v))
-        });
-    optimize::noise::measurement_noise_variance(y)
-        .sqrt()
-        .max(1e-3 * (hi - lo))
-}
-
 /// Fit the single-DOF free decay `y = offset + A exp(-zeta wn t) cos(wd t + phi)` to a
 /// history `(t, y)` that starts at the free-decay onset (see the module documentation).
 /// Needs at least 8 samples covering at least half a damped cycle.
@@ -539,7 +527,7 @@ pub fn fit_free_decay(t: &[f64], y: &[f64]) -> Result<DecayFit, MeasureError> {
         damping_ratio_std: var(g_z).max(0.0).sqrt(),
         r_squared: 1.0 - r.rss / sst,
         cycles,
-        noise_rms: noise_rms(y),
+        noise_rms: optimize::noise::measurement_noise_rms(y, optimize::noise::NOISE_FLOOR_OF_RANGE),
         iterations: r.iterations,
         converged: r.converged,
     })

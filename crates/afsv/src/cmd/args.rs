@@ -162,25 +162,3 @@ mod tests {
         }
     }
 }
-
-/// The output options of a command with a tabular result (`afsv::table`): a terminal gets
-/// a short table, `--json` or a pipe the whole result, `-o FILE.csv` every row as CSV.
-#[derive(clap::Args, Debug, Clone)]
-pub struct TableArgs {
-    /// Print the whole result as JSON, also on a terminal (a pipe always gets JSON).
-    #[arg(long)]
-    pub json: bool,
-    /// Write every row as CSV here (a JSON sidecar is written beside it) and print a summary.
-    #[arg(short = 'o', long = "output", value_name = "CSV")]
-    pub output: Option<std::path::PathBuf>,
-}
-
-impl TableArgs {
-    /// Where the table goes.
-    pub fn output(&self) -> afsv::table::TableOutput {
-        afsv::table::TableOutput {
-            json: self.json,
-            csv: self.output.clone(),
-        }
-    }
-}

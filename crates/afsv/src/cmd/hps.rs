@@ -189,7 +189,7 @@ pub struct CharacterizeArgs {
     #[arg(long)]
     pub force: bool,
     #[command(flatten)]
-    pub table: args::TableArgs,
+    pub table: afsv::table::TableOutput,
 }
 
 /// Options of `afsv hps identify`.
@@ -316,7 +316,7 @@ fn characterize_cmd(a: CharacterizeArgs) -> CmdResult {
     if let Some(f) = a.strut.file() {
         guard.input("--strut", f)?;
     }
-    let out = a.table.output();
+    let out = &a.table;
     out.declare(&mut guard)?;
     let params = with_gamma0(a.strut.params()?, a.gamma0)?;
     let tests = lab_programme(params.travel);

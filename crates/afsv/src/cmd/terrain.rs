@@ -135,7 +135,7 @@ pub struct PsdArgs {
     #[arg(long)]
     pub force: bool,
     #[command(flatten)]
-    pub table: args::TableArgs,
+    pub table: afsv::table::TableOutput,
 }
 
 /// Run `afsv terrain ...`.
@@ -304,7 +304,7 @@ fn select(v: &[f64], keep: &[usize]) -> Vec<f64> {
 fn psd(a: PsdArgs) -> CmdResult {
     let mut guard = OutputGuard::new(a.force);
     guard.record_input("--input", &a.input)?;
-    let table_out = a.table.output();
+    let table_out = &a.table;
     table_out.declare(&mut guard)?;
     let rec = Record::read(&a.input)?;
     let x = rec.require("x_m", &a.input)?;

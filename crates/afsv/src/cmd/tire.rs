@@ -65,7 +65,7 @@ pub struct SweepArgs {
     #[arg(long)]
     pub force: bool,
     #[command(flatten)]
-    pub table: args::TableArgs,
+    pub table: afsv::table::TableOutput,
 }
 
 /// Which profile column a wheel runs on.
@@ -113,7 +113,7 @@ pub struct EnvelopeArgs {
     #[arg(long)]
     pub force: bool,
     #[command(flatten)]
-    pub table: args::TableArgs,
+    pub table: afsv::table::TableOutput,
 }
 
 /// Run `afsv tire ...`.
@@ -169,11 +169,8 @@ fn load_params(args: &SweepArgs) -> Result<TireParams, Box<dyn std::error::Error
         Some(path) => {
             let text = afsv_records::provenance::read_input(path)
                 .map_err(|e| format!("{}: {e}", path.display()))?;
-            let p = serde_json::from_str::<TireParams>(&text)
-                .map_err(|e| format!("{}: {e}", path.display()))?;
-            vehicle_components::within_ranges(&p)
-                .map_err(|e| format!("{}: {e}", path.display()))?;
-            p
+            serde_json::from_str::<TireParams>(&text)
+                .map_err(|e| format!("{}: {e}", path.display()))?
         }
         None => TireParams::nominal(),
     };
@@ -194,6 +191,12 @@ fn load_params(args: &SweepArgs) -> Result<TireParams, Box<dyn std::error::Error
         p.width_m = v;
     }
     p.validate()?;
+    // The file and the options together must lie in the registry's ranges.
+    let source = args
+        .params
+        .as_ref()
+        .map_or("the tire".to_string(), |f| f.display().to_string());
+    vehicle_components::within_ranges(&p).map_err(|e| format!("{source}: {e}"))?;
     Ok(p)
 }
 
@@ -216,7 +219,7 @@ fn sweep(args: SweepArgs) -> CmdResult {
     if let Some(p) = &args.plot {
         guard.output("--plot", p, OutputKind::Svg)?;
     }
-    let out = args.table.output();
+    let out = &args.table;
     out.declare(&mut guard)?;
     let fzs = parse_range(&args.fz, "--fz")?;
     if let Some(bad) = fzs.iter().find(|&&f| f <= 0.0) {
@@ -401,7 +404,7 @@ struct EnvelopeRow {
 fn envelope(args: EnvelopeArgs) -> CmdResult {
     let mut guard = OutputGuard::new(args.force);
     guard.record_input("--profile", &args.profile)?;
-    let out = args.table.output();
+    let out = &args.table;
     out.declare(&mut guard)?;
     let rec = afsv_records::Record::read(&args.profile)?;
     let xs = rec.require("x_m", &args.profile)?.to_vec();
