@@ -198,6 +198,8 @@ fn articulated(a: &Articulated, o: &Origin<'_>) -> Result<ArticulatedVehicle, De
         steering: a.steering.clone(),
         hps: front_strut.unwrap_or_else(StrutParams::front_axle),
         drive: a.drive,
+        // a description is a vehicle, not a model form: the CLI's --paper-form sets it
+        yaw_inertia_form: vehicle_3d::YawInertiaForm::EnergyConsistent,
     };
     in_ranges(&params, o, articulated_path)?;
     let tire_path = format!("tire.{}", quoted_key(&front.tire));

@@ -28,7 +28,7 @@ pub mod yaw_mode;
 
 pub use error::VehicleError;
 pub use model::FrontAxle;
-pub use params::{DriveParams, Load, RigidPart, VehicleParams};
+pub use params::{DriveParams, Load, RigidPart, VehicleParams, YawInertiaForm};
 pub use simulate::{simulate, RunOptions, RunRecord};
 pub use statics::Statics;
 pub use tires::TireTracks;

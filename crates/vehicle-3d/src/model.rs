@@ -21,6 +21,10 @@
 //! their wheel ends, with cg and inertia corrected so that unit plus wheels is exactly the
 //! Table 6.1 part.
 //!
+//! With [`YawInertiaForm::PaperEq313`] each unit's yaw inertia about its cg (the rear
+//! unit's with the payload of the load case) grows by its mass times its cg's squared
+//! distance from the joint: the printed Eq 3.13, kept to show the gap to the paper.
+//!
 //! Articulation sign: the hitch joint turns the rear unit about the front unit's +z, which
 //! is the paper's positive theta (right-hand turn: the front unit yawed clockwise relative to
 //! the rear), in which the left strut extends (Eq 3.8).
@@ -29,7 +33,7 @@ use multibody::{Body, Joint, Model, ModelBuilder};
 use nalgebra::{Isometry3, Matrix3, Vector3};
 
 use crate::error::{rejected, VehicleError};
-use crate::params::{Load, RigidPart, VehicleParams};
+use crate::params::{Load, RigidPart, VehicleParams, YawInertiaForm};
 use crate::statics::Statics;
 
 /// Body indices of the tree.
@@ -199,6 +203,10 @@ pub fn build_tree(
         Vector3::new(x_fw, -half_f, z_fw),
     ];
     let mut front = MassProps::of_part(f, Vector3::zeros());
+    let paper_form = p.yaw_inertia_form == YawInertiaForm::PaperEq313;
+    if paper_form {
+        front.inertia[(2, 2)] += f.mass_kg * d_f * d_f;
+    }
     for c in front_wheels {
         front = front.combine(&at(c), -1.0);
     }
@@ -216,6 +224,10 @@ pub fn build_tree(
     let mut rear_all = rear_parts[0];
     for part in &rear_parts[1..] {
         rear_all = rear_all.combine(part, 1.0);
+    }
+    if paper_form {
+        // the horizontal distance of the combined cg from the joint is |x| (y = 0)
+        rear_all.inertia[(2, 2)] += rear_all.mass * rear_all.com.x * rear_all.com.x;
     }
     let z_rw = r - statics.rear_tire_deflection_m - h_j;
     let half_r = 0.5 * p.rear_track_m;

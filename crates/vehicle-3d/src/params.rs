@@ -64,6 +64,33 @@ impl std::fmt::Display for Load {
     }
 }
 
+/// How the units' yaw inertias enter the equations of motion.
+///
+/// The multibody tree derives its own equations, so the default is the energy-consistent
+/// form. `PaperEq313` reproduces the dissertation's printed Eq 3.13 (and Eq 4.1), which adds
+/// `m_f L_f2²` and `m_r L_r2²` to the units' yaw inertias although the moments of the cg
+/// inertial forces about the joint already hold them: each unit's yaw inertia about its cg
+/// grows by its mass times the square of its cg's horizontal distance from the articulation
+/// joint (the rear unit's with the payload of the load case). It exists to show the fidelity
+/// gap to the paper's 2.81 Hz yaw mode, never for design (docs/vehicle-3d.md).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum YawInertiaForm {
+    /// The tree's own, energy-consistent equations (default).
+    #[default]
+    EnergyConsistent,
+    /// The printed Eq 3.13: `m L²` counted twice in the yaw inertias.
+    #[serde(rename = "paper_eq_3_13")]
+    PaperEq313,
+}
+
+impl YawInertiaForm {
+    /// Whether this is the default form (a parameter file leaves it out).
+    pub fn is_energy_consistent(&self) -> bool {
+        *self == Self::EnergyConsistent
+    }
+}
+
 /// The speed controller: one drive torque for all four wheels (L1576), a PI law on the
 /// error of the mean wheel-centre speed, `T = T_rr + k_p e + k_i integral(e)` with the
 /// rolling-resistance torque `T_rr` of the static loads as feed-forward.
@@ -123,6 +150,9 @@ pub struct VehicleParams {
     pub hps: StrutParams,
     /// The speed controller.
     pub drive: DriveParams,
+    /// The yaw-inertia form ([`YawInertiaForm`]); left out of a file, energy-consistent.
+    #[serde(skip_serializing_if = "YawInertiaForm::is_energy_consistent")]
+    pub yaw_inertia_form: YawInertiaForm,
 }
 
 impl Default for VehicleParams {
@@ -177,6 +207,7 @@ impl VehicleParams {
                 ki_n_m_per_m: 2_000.0,
                 max_torque_n_m: 60_000.0,
             },
+            yaw_inertia_form: YawInertiaForm::EnergyConsistent,
         }
     }
 

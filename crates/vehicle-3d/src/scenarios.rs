@@ -367,6 +367,34 @@ pub struct YawMeasures {
     pub damping_ratio: f64,
     /// Largest articulation magnitude (deg).
     pub peak_articulation_deg: f64,
+    /// Standard error of the fitted damping ratio (-), from the fit covariance.
+    pub damping_ratio_std: f64,
+    /// RMS residual of the fit over the noise RMS the record shows (floored at 0.1 % of the
+    /// articulation's range; `perf_measures::DecayFit::noise_rms`): above
+    /// [`perf_measures::DECAY_RESIDUAL_NOISE_LIMIT`] the free response is not one decaying
+    /// mode, and omega_z and zeta depend on the fitted window.
+    pub fit_residual_to_noise: f64,
+}
+
+impl YawMeasures {
+    /// Why the single-mode fit's numbers need a caveat, one sentence (None when the response
+    /// is one decaying mode within the record's noise and zeta is determined).
+    pub fn fit_caveat(&self) -> Option<String> {
+        let mut parts = Vec::new();
+        if self.fit_residual_to_noise > perf_measures::DECAY_RESIDUAL_NOISE_LIMIT {
+            parts.push(format!(
+                "the single-mode fit leaves a residual {:.0}x the record's noise, so the free yaw response is not one decaying mode and omega_z and zeta depend on the fitted window",
+                self.fit_residual_to_noise
+            ));
+        }
+        if self.damping_ratio_std > 0.5 * self.damping_ratio.abs() {
+            parts.push(format!(
+                "zeta {:.3} has a standard error of {:.3}",
+                self.damping_ratio, self.damping_ratio_std
+            ));
+        }
+        (!parts.is_empty()).then(|| parts.join("; "))
+    }
 }
 
 /// Settings of a yaw (pulse) run.
@@ -477,6 +505,8 @@ pub fn yaw_measures(
         damped_frequency_hz: fit.damped_frequency_hz,
         damping_ratio: fit.damping_ratio,
         peak_articulation_deg: deg.iter().fold(0.0, |m, v| m.max(v.abs())),
+        damping_ratio_std: fit.damping_ratio_std,
+        fit_residual_to_noise: fit.rmse / fit.noise_rms,
     })
 }
 

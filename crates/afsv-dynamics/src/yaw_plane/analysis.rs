@@ -67,6 +67,10 @@ pub struct YawMeasures {
     pub decay_fit_rmse_deg: f64,
     /// Coefficient of determination of the decay fit.
     pub decay_fit_r_squared: f64,
+    /// Noise RMS the decay window shows (deg; floored at 0.1 % of its range,
+    /// `perf_measures::DecayFit::noise_rms`); 0 in states written before it was recorded.
+    #[serde(default)]
+    pub decay_fit_noise_rms_deg: f64,
     /// Peak articulation after the pulse (deg).
     pub pulse_peak_articulation_deg: f64,
     /// Steering gain Gamma: steady articulation / steering-wheel step (deg/deg).
@@ -83,6 +87,22 @@ pub struct YawMeasures {
     pub power_efficiency: f64,
     /// Initial strut length L (m), the sixth objective of section 4.3.2.
     pub strut_length_m: f64,
+}
+
+impl YawMeasures {
+    /// Why the single-mode decay fit's frequency and damping need a caveat (None when its
+    /// residual lies within [`perf_measures::DECAY_RESIDUAL_NOISE_LIMIT`] times the noise):
+    /// the hydraulic steering's damping is not linear, so the free response is not one
+    /// decaying mode and the fitted numbers depend on the window.
+    pub fn decay_fit_caveat(&self) -> Option<String> {
+        let ratio = self.decay_fit_rmse_deg / self.decay_fit_noise_rms_deg;
+        (self.decay_fit_noise_rms_deg > 0.0 && ratio > perf_measures::DECAY_RESIDUAL_NOISE_LIMIT)
+            .then(|| {
+                format!(
+                    "the single-mode decay fit leaves a residual {ratio:.0}x the noise, so the free yaw response is not one decaying mode and its frequency and damping depend on the fitted window"
+                )
+            })
+    }
 }
 
 fn measure_err(measure: &'static str) -> impl Fn(perf_measures::MeasureError) -> DynError {
@@ -210,6 +230,7 @@ pub fn measures_for(
         damping_ratio: fit.damping_ratio,
         decay_fit_rmse_deg: fit.rmse,
         decay_fit_r_squared: fit.r_squared,
+        decay_fit_noise_rms_deg: fit.noise_rms,
         pulse_peak_articulation_deg: peak,
         steering_gain: sm.gain,
         steady_articulation_deg: sm.steady_value,

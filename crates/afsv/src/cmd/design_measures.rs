@@ -124,5 +124,9 @@ pub fn to_text(d: &DesignMeasures) -> String {
     } else {
         s += "  (the description gives the front axle no strut: no HPS column)\n";
     }
+    let yaws: Vec<_> = cols.iter().map(|(_, a)| a.yaw).collect();
+    if let Some(c) = super::vehicle::yaw_fit_caveat(&yaws) {
+        s += &super::evaluate::wrap_note(&format!("note on omega_z and zeta (D3): {c}"));
+    }
     s + "\n"
 }

@@ -32,7 +32,7 @@ use vehicle_3d::scenarios::{
     self, RideMeasures, RideSpec, RollMeasures, RollSpec, Spread, TerrainSpec, YawMeasures,
     YawSpec, RUN_IN_M,
 };
-use vehicle_3d::{FrontAxle, Load, RunRecord, VehicleParams};
+use vehicle_3d::{FrontAxle, Load, RunRecord, VehicleParams, YawInertiaForm};
 
 /// Why a rigid front axle has no strut travel.
 const NO_STRUT: &str = "rigid front axle (--hps off): no strut";
@@ -67,7 +67,12 @@ pub struct CaseArgs {
     /// description; its front axle is rigid unless `--hps` says otherwise.
     #[arg(long)]
     pub params: Option<PathBuf>,
+    #[arg(long, help = PAPER_FORM_HELP)]
+    pub paper_form: bool,
 }
+
+/// Help of `--paper-form` (the vehicle commands and `afsv evaluate`).
+pub(crate) const PAPER_FORM_HELP: &str = "Use the printed Eq 3.13 yaw inertias (m L² counted twice) instead of the energy-consistent equations, to reproduce the dissertation's lower yaw frequency; for comparison with the paper, never for design (docs/vehicle-3d.md)";
 
 /// Seeds, output format and plot of the scenario subcommands.
 #[derive(clap::Args, Debug)]
@@ -173,6 +178,8 @@ pub enum Command {
         /// The 3-D model's raw parameter set (JSON, `afsv params dump vehicle-3d`).
         #[arg(long)]
         params: Option<PathBuf>,
+        #[arg(long, help = PAPER_FORM_HELP)]
+        paper_form: bool,
         /// Run the terrain seeds 1..=N (1 to 100; default 10).
         #[arg(long, conflicts_with = "seed")]
         seeds: Option<usize>,
@@ -252,6 +259,7 @@ pub fn run(cmd: Command) -> CmdResult {
             hps,
             vehicle,
             params,
+            paper_form,
             seeds,
             seed,
             json,
@@ -263,9 +271,19 @@ pub fn run(cmd: Command) -> CmdResult {
                 hps,
                 vehicle,
                 params,
+                paper_form,
             };
             measures_cmd(&case, seeds, seed, json)
         }
+    }
+}
+
+/// The yaw-inertia form of `--paper-form`.
+fn yaw_inertia_form(case: &CaseArgs) -> YawInertiaForm {
+    if case.paper_form {
+        YawInertiaForm::PaperEq313
+    } else {
+        YawInertiaForm::EnergyConsistent
     }
 }
 
@@ -323,6 +341,7 @@ fn vehicle_params(case: &CaseArgs) -> Result<(VehicleParams, FrontAxle), String>
             FrontAxle::Suspended
         }
     };
+    p.yaw_inertia_form = yaw_inertia_form(case);
     p.validate().map_err(|e| match &case.params {
         Some(path) => format!("{}: {e}", path.display()),
         None => e.to_string(),
@@ -458,13 +477,22 @@ fn spread_text(label: &str, s: &Spread, unit: &str) -> String {
     }
 }
 
-fn header_text(title: &str, load: Load, axle: FrontAxle, speed: f64, seeds: usize) -> String {
+fn header_text(title: &str, case: &CaseArgs, axle: FrontAxle, speed: f64, seeds: usize) -> String {
     let runs = if seeds > 1 {
         format!(", mean ± SD over {seeds} seeds")
     } else {
         String::new()
     };
-    format!("{title}: {load}, {}, {speed} km/h{runs}\n", axle_name(axle))
+    let form = if case.paper_form {
+        "; yaw inertias of the printed Eq 3.13 (--paper-form: m L² counted twice, not for design)"
+    } else {
+        ""
+    };
+    format!(
+        "{title}: {}, {}, {speed} km/h{runs}{form}\n",
+        case.load,
+        axle_name(axle)
+    )
 }
 
 fn print_result(json_out: bool, value: &Value, text: &str) -> CmdResult {
@@ -580,6 +608,7 @@ fn ride_report(
         "scenario": "ride (D1, section 6.4)",
         "load": case.load,
         "front_axle": axle,
+        "yaw_inertia_form": yaw_inertia_form(case),
         "speed_kmh": speed,
         "run_in_m": RUN_IN_M,
         "length_m": length_m,
@@ -609,7 +638,7 @@ fn ride_report(
         perf_measures::iso2631::HgczZone::Within => "within the zone (caution)",
         perf_measures::iso2631::HgczZone::Above => "above the zone (health risk likely)",
     };
-    let mut text = header_text("ride D1", case.load, axle, speed, measures.len());
+    let mut text = header_text("ride D1", case, axle, speed, measures.len());
     text += &format!(
         "{}, {length_m} m after a {RUN_IN_M} m run-in\n",
         ground.text
@@ -670,6 +699,7 @@ fn roll_cmd(case: &CaseArgs, study: &StudyArgs, ramp_deg_s: f64, duration: f64) 
         "scenario": "roll (D2, section 6.4)",
         "load": case.load,
         "front_axle": axle,
+        "yaw_inertia_form": yaw_inertia_form(case),
         "speed_kmh": speed,
         "ramp_deg_s": ramp_deg_s,
         "ramp_start_s": spec.ramp_start_s,
@@ -687,7 +717,7 @@ fn roll_cmd(case: &CaseArgs, study: &StudyArgs, ramp_deg_s: f64, duration: f64) 
     if let Some(plot) = &study.plot {
         v["plot"] = json!(plot);
     }
-    let mut text = header_text("roll D2", case.load, axle, speed, seeds.len());
+    let mut text = header_text("roll D2", case, axle, speed, seeds.len());
     text += &format!(
         "ramp steer {ramp_deg_s} deg/s from t = {} s\n",
         spec.ramp_start_s
@@ -743,6 +773,7 @@ fn yaw_cmd(case: &CaseArgs, study: &StudyArgs, pulse_deg: f64) -> CmdResult {
         "scenario": "yaw (D3, section 6.4)",
         "load": case.load,
         "front_axle": axle,
+        "yaw_inertia_form": yaw_inertia_form(case),
         "speed_kmh": speed,
         "pulse_deg": pulse_deg,
         "pulse_s": spec.pulse_s,
@@ -758,7 +789,7 @@ fn yaw_cmd(case: &CaseArgs, study: &StudyArgs, pulse_deg: f64) -> CmdResult {
     if let Some(plot) = &study.plot {
         v["plot"] = json!(plot);
     }
-    let mut text = header_text("yaw D3", case.load, axle, speed, seeds.len());
+    let mut text = header_text("yaw D3", case, axle, speed, seeds.len());
     text += &format!(
         "steering-wheel pulse {pulse_deg} deg, {} s, at t = {} s\n",
         spec.pulse_s, spec.pulse_start_s
@@ -767,7 +798,19 @@ fn yaw_cmd(case: &CaseArgs, study: &StudyArgs, pulse_deg: f64) -> CmdResult {
     text += &spread_text("damped frequency", &damped, "Hz");
     text += &spread_text("damping ratio zeta", &zeta, "-");
     text += &spread_text("peak articulation", &peak, "deg");
+    if let Some(caveat) = yaw_fit_caveat(&measures) {
+        text += &format!("note: {caveat}\n");
+        v["fit_caveat"] = json!(caveat);
+    }
     print_result(study.json, &v, &text)
+}
+
+/// The caveat of the runs' single-mode yaw fits: the worst seed's ([`YawMeasures::fit_caveat`]).
+pub(crate) fn yaw_fit_caveat(measures: &[YawMeasures]) -> Option<String> {
+    measures
+        .iter()
+        .max_by(|a, b| a.fit_residual_to_noise.total_cmp(&b.fit_residual_to_noise))
+        .and_then(YawMeasures::fit_caveat)
 }
 
 #[cfg(test)]

@@ -57,6 +57,7 @@ pub(super) fn measures_cmd(
     let mut v = json!({
         "measures": "design measures D1-D3 (section 6.4)",
         "front_axle": axle,
+        "yaw_inertia_form": p.yaw_inertia_form,
         "ride_load": case.load,
         "seeds": seeds,
         "terrain": "class E, m_c 0.3 (D1, D2); smooth ground (D3)",
@@ -76,8 +77,13 @@ pub(super) fn measures_cmd(
             "damping_ratio": c.yaw.damping_ratio,
             "damped_frequency_hz": c.yaw.damped_frequency_hz,
             "peak_articulation_deg": c.yaw.peak_articulation_deg,
+            "damping_ratio_std": c.yaw.damping_ratio_std,
+            "fit_residual_to_noise": c.yaw.fit_residual_to_noise,
         },
     });
+    if let Some(caveat) = c.yaw.fit_caveat() {
+        v["d3_yaw"]["fit_caveat"] = json!(caveat);
+    }
     if ride.strut_travel_m.is_none() {
         v["d1_ride"]["strut_travel_p2p_m_reason"] = json!(no_strut);
     }
@@ -128,6 +134,12 @@ pub(super) fn measures_cmd(
         format!("{:.3}", c.yaw.damping_ratio),
         "-",
     );
+    if case.paper_form {
+        text += "(--paper-form: yaw inertias of the printed Eq 3.13, m L² counted twice; not for design)\n";
+    }
+    if let Some(caveat) = c.yaw.fit_caveat() {
+        text += &format!("note on omega_z and zeta: {caveat}\n");
+    }
     print_result(json_out, &v, &text)
 }
 

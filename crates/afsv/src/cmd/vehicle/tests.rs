@@ -9,6 +9,7 @@ fn case(terrain: Option<&str>) -> CaseArgs {
         hps: Some("off".into()),
         vehicle: None,
         params: None,
+        paper_form: false,
     }
 }
 
