@@ -419,7 +419,11 @@ pub fn run(cmd: Command) -> CmdResult {
             let speed = kmh(vehicle.speed_kmh)?;
             let spec = measures_spec(vehicle.form);
             let m = measures_for(&p.vehicle, &p.afs, p.load, speed, &spec)?;
-            afsv::output::print_json(&m)?;
+            let mut v = serde_json::json!(m);
+            if let Some(caveat) = m.decay_fit_caveat() {
+                v["decay_fit_caveat"] = serde_json::json!(caveat);
+            }
+            afsv::output::print_json(&v)?;
         }
         Command::Sensitivity {
             speed_kmh,
@@ -432,9 +436,12 @@ pub fn run(cmd: Command) -> CmdResult {
             progress.finish();
             let t = t?;
             if table {
+                let form = match spec.options.form {
+                    EquationForm::EnergyConsistent => "energy-consistent Eq 3.13",
+                    EquationForm::PaperEq313 => "Eq 3.13 as printed",
+                };
                 println!(
-                    "Percent change of the measures (section 3.4.3), {speed_kmh} km/h, {:?}",
-                    spec.options.form
+                    "Percent change of the measures (section 3.4.3), {speed_kmh} km/h, {form}"
                 );
                 print!("{}", t.to_text());
             } else {
