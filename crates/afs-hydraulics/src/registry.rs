@@ -37,7 +37,7 @@ pub const AFS_PARAMS: [ParamSpec; 25] = [
     // laminar-turbulent coefficient a_0 (<= 0)
     ParamSpec::new("valve_a0_per_pa", "1/Pa", -1.0e-6, 0.0, 7.4e-8),
     // turbulent valve coefficient a_m
-    ParamSpec::new("valve_am", "m³/(s·Pa^0.5)", 0.0, 1.0e-5, 4.95e-8),
+    ParamSpec::new("valve_am", "m³/(s·Pa^0.5)", 1.0e-10, 1.0e-5, 4.95e-8),
     // laminar valve coefficient a_v
     ParamSpec::new("valve_av", "m³/(s·Pa)", 0.0, 1.0e-7, 8.0e-10),
     // valve dead band X_0

@@ -89,8 +89,64 @@ fn a_value_outside_its_registry_range_is_refused_where_the_file_is_read() {
         assert_eq!(out.status.code(), Some(1), "{args:?}");
         let err = String::from_utf8_lossy(&out.stderr);
         assert!(
-            err.contains("`a_b` = 11 is outside [0, 0.001]"),
+            err.contains("`a_b` = 11 is outside [0.0000001, 0.001]"),
             "{args:?}: {err}"
+        );
+    }
+}
+
+/// The nominal `set` as printed by `params dump SET` on stdout, with `field` (a JSON
+/// pointer) set to `value` (none: as printed), written to a scratch file.
+fn dumped_with(set: &str, field: &str, value: Option<f64>) -> std::path::PathBuf {
+    let out = afsv(&["params", "dump", set]);
+    assert!(out.status.success());
+    let mut v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    if let Some(value) = value {
+        *v.pointer_mut(field).unwrap() = serde_json::json!(value);
+    }
+    let path = scratch("params", &format!("{set}{}.json", field.replace('/', "-")));
+    std::fs::write(&path, v.to_string()).unwrap();
+    path
+}
+
+#[test]
+fn a_printed_dump_reads_back_and_meaningless_zeros_are_refused() {
+    // `params dump SET > file` is a parameter file as it stands
+    for set in ["strut", "tire", "yaw-plane", "vehicle-3d", "truck"] {
+        let path = dumped_with(set, "", None);
+        let out = afsv(&["params", "check", set, path.to_str().unwrap()]);
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert!(out.status.success(), "{set}: {err}");
+    }
+    // values that would mean no orifice, no gas, no tire pressure, no valve, no tire
+    for (set, field, name) in [
+        ("strut", "/c_b", "c_b"),
+        ("strut", "/v_c0", "v_c0"),
+        ("strut", "/a_b", "a_b"),
+        ("strut", "/p_amb", "p_amb"),
+        ("tire", "/charge_pressure_pa", "charge_pressure_pa"),
+        ("yaw-plane", "/afs/valve_am", "valve_am"),
+        (
+            "yaw-plane",
+            "/vehicle/c_alpha_f_n_per_rad",
+            "c_alpha_f_n_per_rad",
+        ),
+        ("yaw-plane", "/vehicle/half_track_m", "half_track_m"),
+        ("vehicle-3d", "/steering/valve_am", "valve_am"),
+        ("vehicle-3d", "/hps/v_c0", "v_c0"),
+        (
+            "vehicle-3d",
+            "/tire/charge_pressure_pa",
+            "charge_pressure_pa",
+        ),
+    ] {
+        let path = dumped_with(set, field, Some(0.0));
+        let out = afsv(&["params", "check", set, path.to_str().unwrap()]);
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(1), "{set}{field}: {err}");
+        assert!(
+            err.contains(&format!("`{name}` = 0 is outside")),
+            "{set}{field}: {err}"
         );
     }
 }

@@ -14,14 +14,15 @@ pub const STRUT_PARAMS: [ParamSpec; 25] = [
     ParamSpec::new("a_hc", "m²", 0.0001, 0.2, 0.038),
     // rod area A_hr (< A_hc)
     ParamSpec::new("a_hr", "m²", 1.0e-5, 0.2, 0.0254),
-    // one bleed orifice's area A_b (Eq 5.12)
-    ParamSpec::new("a_b", "m²", 0.0, 0.001, 1.1e-5),
-    // bleed discharge coefficient C_b
-    ParamSpec::new("c_b", "-", 0.0, 1.0, 0.7),
+    // one bleed orifice's area A_b (Eq 5.12); the lower bound is a 0.36 mm bore, below
+    // which the strut is locked (leakage alone carries the flow) and its runs turn stiff
+    ParamSpec::new("a_b", "m²", 1.0e-7, 0.001, 1.1e-5),
+    // bleed discharge coefficient C_b (sharp-edged orifices 0.6-0.8; 0 is no orifice)
+    ParamSpec::new("c_b", "-", 0.05, 1.0, 0.7),
     // one check valve's area A_v
     ParamSpec::new("a_v", "m²", 0.0, 0.001, 8.0e-6),
-    // check-valve discharge coefficient C_v
-    ParamSpec::new("c_v", "-", 0.0, 1.0, 0.6),
+    // check-valve discharge coefficient C_v (0 is no valve: use a_v = 0 or n_v = 0)
+    ParamSpec::new("c_v", "-", 0.05, 1.0, 0.6),
     // piston leakage k_l
     ParamSpec::new("k_l", "m³/(Pa·s)", 0.0, 1.0e-9, 5.0e-12),
     // oil bulk modulus beta_h (Eqs 5.8, 5.11)
@@ -33,7 +34,7 @@ pub const STRUT_PARAMS: [ParamSpec; 25] = [
     // static free gas volume V_g0
     ParamSpec::new("v_g0", "m³", 1.0e-6, 0.1, 4.5e-3),
     // static piston-side emulsion volume V_c0 (Eq 5.7)
-    ParamSpec::new("v_c0", "m³", 0.0, 0.1, 1.0e-2),
+    ParamSpec::new("v_c0", "m³", 1.0e-6, 0.1, 1.0e-2),
     // static rod-side emulsion volume V_r0
     ParamSpec::new("v_r0", "m³", 1.0e-7, 0.1, 1.7e-3),
     // gas volume fraction gamma_0 (Eq 5.9)
@@ -54,8 +55,8 @@ pub const STRUT_PARAMS: [ParamSpec; 25] = [
     ParamSpec::new("friction.vh_min", "m/s", 1.0e-6, 1.0, 1.0e-3),
     // travel each side of the static position
     ParamSpec::new("travel", "m", 0.001, 1.0, 0.12),
-    // ambient pressure on the rod end
-    ParamSpec::new("p_amb", "Pa", 0.0, 200000.0, 101325.0),
+    // ambient pressure on the rod end (50 kPa: about 5 500 m above sea level)
+    ParamSpec::new("p_amb", "Pa", 50000.0, 200000.0, 101325.0),
     // vapour / gas-release pressure
     ParamSpec::new("p_vap", "Pa", 0.0, 100000.0, 2000.0),
     // orifice square-root regularisation

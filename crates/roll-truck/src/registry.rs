@@ -54,7 +54,7 @@ pub const TRUCK_PARAMS: [ParamSpec; 36] = [
     ),
     ParamSpec::new("cornering_stiffness_n_per_deg", "N/deg", 1.0, 1.0e6, 4.0e3),
     ParamSpec::new("cornering_reference_load_n", "N", 1.0, 1.0e7, 140.0e3),
-    ParamSpec::new("relaxation_length_m", "m", 0.01, 1.0e9, 1.0),
+    ParamSpec::new("relaxation_length_m", "m", 0.01, 100.0, 1.0),
     ParamSpec::new("target_speed_m_s", "m/s", 0.1, 50.0, 11.1),
     ParamSpec::new("speed_kp_n_per_m_s", "N s/m", 0.0, 1.0e8, 4.2e5),
     ParamSpec::new("speed_ki_n_per_m", "N/m", 0.0, 1.0e8, 8.4e4),

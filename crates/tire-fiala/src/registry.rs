@@ -11,7 +11,7 @@ use crate::params::TireParams;
 const SPECS: [ParamSpec; 11] = [
     ParamSpec::new("unloaded_radius_m", "m", 0.2, 3.0, 1.0),
     ParamSpec::new("width_m", "m", 0.05, 2.0, 0.7),
-    ParamSpec::new("charge_pressure_pa", "Pa", 0.0, 2e6, 5e5),
+    ParamSpec::new("charge_pressure_pa", "Pa", 5e4, 2e6, 5e5),
     ParamSpec::new("vertical_damping_n_s_per_m", "N s/m", 0.0, 5e5, 35e3),
     ParamSpec::new("lateral_relaxation_length_m", "m", 0.01, 10.0, 1.2),
     ParamSpec::new("longitudinal_relaxation_length_m", "m", 0.01, 10.0, 1.2),

@@ -29,9 +29,9 @@ pub const VEHICLE_PARAMS: [ParamSpec; 14] = [
     // rear cg to joint L_r2
     ParamSpec::new("l_r2_m", "m", 0.1, 10.0, 2.31),
     // front cornering stiffness per tire (Eq 3.15)
-    ParamSpec::new("c_alpha_f_n_per_rad", "N/rad", 0.0, 10000000.0, 2.58e5),
+    ParamSpec::new("c_alpha_f_n_per_rad", "N/rad", 1000.0, 10000000.0, 2.58e5),
     // rear cornering stiffness per tire
-    ParamSpec::new("c_alpha_r_n_per_rad", "N/rad", 0.0, 10000000.0, 2.81e5),
+    ParamSpec::new("c_alpha_r_n_per_rad", "N/rad", 1000.0, 10000000.0, 2.81e5),
     // front aligning-moment coefficient
     ParamSpec::new("k_mz_f_nm_per_rad", "N·m/rad", 0.0, 10000000.0, 2.18e5),
     // rear aligning-moment coefficient
@@ -39,7 +39,7 @@ pub const VEHICLE_PARAMS: [ParamSpec; 14] = [
     // tire relaxation length sigma_y (Eq 3.16; 0 = no lag)
     ParamSpec::new("relaxation_length_m", "m", 0.0, 5.0, 0.4),
     // half-track T (Eq 3.17)
-    ParamSpec::new("half_track_m", "m", 0.0, 3.0, 1.14),
+    ParamSpec::new("half_track_m", "m", 0.3, 3.0, 1.14),
 ];
 
 /// Number of parameters of the whole yaw-plane set.

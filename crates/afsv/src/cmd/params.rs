@@ -122,7 +122,9 @@ pub fn run(cmd: Command) -> CmdResult {
                         .map_err(|e| format!("{}: {e}", path.display()))?;
                     afsv::output::print_json(&json!({ "written": path }))?;
                 }
-                None => afsv::output::print_json(&value)?,
+                // a parameter file, read back as it is printed (`params dump strut > s.json`
+                // then `--hps s.json`): no provenance key, which the reader would refuse
+                None => println!("{}", serde_json::to_string_pretty(&value)?),
             }
         }
         Command::Check { set, file } => {
@@ -140,8 +142,7 @@ pub fn run(cmd: Command) -> CmdResult {
                     let p: VehicleParams = read(&file)?;
                     p.validate()
                         .map_err(|e| format!("{}: {e}", file.display()))?;
-                    vehicle_components::within_ranges(&p)
-                        .map_err(|e| format!("{}: {e}", file.display()))?;
+                    vehicle_3d_in_ranges(&p).map_err(|e| format!("{}: {e}", file.display()))?;
                     json!({ "parameters": p })
                 }
                 ParamSet::Vehicle => check_vehicle(&file)?,
@@ -272,6 +273,27 @@ pub(super) fn read<T: serde::de::DeserializeOwned>(path: &Path) -> Result<T, Str
     let text = afsv_records::provenance::read_input(path)
         .map_err(|e| format!("{}: {e}", path.display()))?;
     serde_json::from_str(&text).map_err(|e| format!("{}: {e}", path.display()))
+}
+
+/// Every value of a 3-D vehicle set within its registry range: the vehicle's own, its tire's
+/// (`tire.`), its steering's (`steering.`) and its strut's (`hps.`).
+pub(super) fn vehicle_3d_in_ranges(p: &VehicleParams) -> Result<(), String> {
+    let sets: [(&str, &dyn Named); 4] = [
+        ("", p),
+        ("tire.", &p.tire),
+        ("steering.", &p.steering),
+        ("hps.", &p.hps),
+    ];
+    for (prefix, set) in sets {
+        vehicle_components::within_ranges(set).map_err(|e| {
+            if prefix.is_empty() {
+                e
+            } else {
+                format!("under `{prefix}`: {e}")
+            }
+        })?;
+    }
+    Ok(())
 }
 
 /// The parameter file `path` read as `T` and validated by the set's own check; its named

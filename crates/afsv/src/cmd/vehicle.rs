@@ -346,6 +346,9 @@ fn vehicle_params(case: &CaseArgs) -> Result<(VehicleParams, FrontAxle), String>
         Some(path) => format!("{}: {e}", path.display()),
         None => e.to_string(),
     })?;
+    if let Some(path) = &case.params {
+        super::params::vehicle_3d_in_ranges(&p).map_err(|e| format!("{}: {e}", path.display()))?;
+    }
     Ok((p, axle))
 }
 
