@@ -6,10 +6,27 @@ use crate::event::{locate, Event};
 use crate::kernel::{initial_step, Kernel};
 use crate::rk4::Rk4Kernel;
 use crate::rosenbrock::Rosenbrock23Kernel;
-use crate::{Atol, Control, OdeError, OdeSystem, Solver, Stats, Workspace};
+use crate::{
+    Atol, Control, OdeError, OdeSystem, Solver, Stats, Workspace, COLLAPSE_FACTOR,
+    COLLAPSE_MIN_STEPS,
+};
 
 /// Smallest step relative to `max(|t|, 1)` before a run is declared diverged.
 const H_MIN_REL: f64 = 1e-13;
+
+/// The state with the largest scaled error `|e_i| / (atol_i + rtol max(|y_i|, |y_new_i|))`
+/// in the last step attempt (the adaptive kernels keep the error estimate in `aux[0]`).
+fn dominant_state(ws: &Workspace, rtol: f64) -> usize {
+    let mut best = (0, f64::NEG_INFINITY);
+    for i in 0..ws.dim {
+        let scale = ws.atol[i] + rtol * ws.y[i].abs().max(ws.y_new[i].abs());
+        let q = (ws.aux[0][i] / scale).abs();
+        if q > best.1 {
+            best = (i, q);
+        }
+    }
+    best.0
+}
 
 /// One integration request: initial value, output times, breakpoints, events.
 pub struct Problem<'a> {
@@ -355,6 +372,9 @@ impl<'r, S: OdeSystem + ?Sized, K: Kernel> Drive<'r, S, K> {
                     state: ws.y.to_vec(),
                 });
             }
+            if fixed.is_none() {
+                self.check_pace(t0, t_end, h, ws)?;
+            }
             let t = self.t;
             let lands = match fixed {
                 Some(step) => {
@@ -419,6 +439,29 @@ impl<'r, S: OdeSystem + ?Sized, K: Kernel> Drive<'r, S, K> {
             }
         }
         Ok(self.stats)
+    }
+
+    /// [`OdeError::StepSizeCollapsed`] when, every 1024 steps from [`COLLAPSE_MIN_STEPS`]
+    /// on, the run's mean pace `(t - t0) / steps` projects more than [`COLLAPSE_FACTOR`]
+    /// times the step budget for the whole span.
+    fn check_pace(&self, t0: f64, t_end: f64, h: f64, ws: &Workspace) -> Result<(), OdeError> {
+        let steps = self.stats.accepted + self.stats.rejected;
+        if steps < COLLAPSE_MIN_STEPS || steps % 1024 != 0 {
+            return Ok(());
+        }
+        let pace = (self.t - t0) / steps as f64;
+        let projected = steps as f64 + (t_end - self.t) / pace;
+        if projected <= COLLAPSE_FACTOR * self.cfg.max_steps as f64 {
+            return Ok(());
+        }
+        Err(OdeError::StepSizeCollapsed {
+            t: self.t,
+            h,
+            projected_steps: projected,
+            max_steps: self.cfg.max_steps,
+            dominant_state: dominant_state(ws, self.cfg.rtol),
+            state: ws.y.to_vec(),
+        })
     }
 
     fn diverged(&self, h: f64, ws: &Workspace) -> OdeError {

@@ -79,10 +79,38 @@ pub enum OdeError {
         /// State at that time.
         state: Vec<f64>,
     },
+    /// The step size collapsed early: at the run's mean pace so far the step budget would
+    /// be exceeded [`COLLAPSE_FACTOR`] times over, so the run ends now instead of at the
+    /// budget. Typical of a stiff state (a near-rigid hydraulic chamber, an absurd
+    /// stiffness) under an explicit method; `dominant_state` is the state with the largest
+    /// scaled error in the last step attempt, the one to look at.
+    #[error("step size collapsed to {h:.3e} s at t = {t:.6} s: finishing at this pace would take about {projected_steps:.1e} steps (limit {max_steps}); state {dominant_state} dominates the error (stiff?); last state: {state:?}")]
+    StepSizeCollapsed {
+        /// Time reached.
+        t: f64,
+        /// Step size of the last attempt (s).
+        h: f64,
+        /// Steps the whole run would take at its mean pace so far.
+        projected_steps: f64,
+        /// The configured step budget.
+        max_steps: usize,
+        /// Index of the state with the largest scaled error estimate.
+        dominant_state: usize,
+        /// State at `t`.
+        state: Vec<f64>,
+    },
     /// Bad call: wrong state length, non-finite initial state, unordered output times, bad settings.
     #[error("invalid integration request: {0}")]
     InvalidInput(String),
 }
+
+/// An adaptive run whose projected step count exceeds this multiple of its budget, after
+/// [`COLLAPSE_MIN_STEPS`] steps, ends with [`OdeError::StepSizeCollapsed`].
+pub const COLLAPSE_FACTOR: f64 = 10.0;
+
+/// Steps an adaptive run takes before its pace is judged ([`COLLAPSE_FACTOR`]): start-up
+/// transients and kinks may take many small steps without the run being stiff.
+pub const COLLAPSE_MIN_STEPS: usize = 4096;
 
 /// Counters of one integration run.
 #[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]

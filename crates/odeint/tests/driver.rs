@@ -419,3 +419,58 @@ fn solver_serialises_in_snake_case() {
         assert_eq!(serde_json::from_str::<Solver>(json).unwrap(), s);
     }
 }
+
+/// A slow state and a stiff one: `y0' = -y0`, `y1' = -k (y1 - cos t)`.
+struct StiffPair {
+    k: f64,
+}
+
+impl OdeSystem for StiffPair {
+    fn dim(&self) -> usize {
+        2
+    }
+    fn rhs(&self, t: f64, y: &[f64], dydt: &mut [f64]) {
+        dydt[0] = -y[0];
+        dydt[1] = -self.k * (y[1] - t.cos());
+    }
+}
+
+#[test]
+fn a_collapsed_step_size_ends_the_run_early_naming_the_stiff_state() {
+    // Dopri5's stability bound is h < 3.3 / k: 100 s at k = 1e7 would take about 3e8 steps,
+    // 300 times the budget; the run ends after a few thousand steps instead of 10^6
+    let sys = StiffPair { k: 1e7 };
+    let r = Integrator::new(Solver::Dopri5, 1e-6, 1e-9).integrate(
+        &sys,
+        0.0,
+        &[1.0, 1.0],
+        &[100.0],
+        |_, _| Control::Continue,
+    );
+    match r {
+        Err(OdeError::StepSizeCollapsed {
+            t,
+            h,
+            projected_steps,
+            max_steps,
+            dominant_state,
+            state,
+        }) => {
+            assert_eq!(dominant_state, 1);
+            assert_eq!(max_steps, 1_000_000);
+            assert!(projected_steps > 1e8, "{projected_steps}");
+            assert!(h < 1e-6 && t < 0.01, "h = {h}, t = {t}");
+            assert_eq!(state.len(), 2);
+        }
+        other => panic!("expected the collapse, got {other:?}"),
+    }
+    // the same problem with the linearly implicit method is not stiff for it: no collapse
+    let mut end = 0.0;
+    Integrator::new(Solver::Rosenbrock23, 1e-6, 1e-9)
+        .integrate(&sys, 0.0, &[1.0, 1.0], &[100.0], |_, y| {
+            end = y[1];
+            Control::Continue
+        })
+        .unwrap();
+    assert!((end - 100f64.cos()).abs() < 1e-4, "{end}");
+}

@@ -28,6 +28,15 @@ pub enum VehicleError {
     /// The integrator failed (a divergence carries time and state).
     #[error("integration failed: {0}")]
     Integration(#[from] odeint::OdeError),
+    /// The step size collapsed early ([`odeint::OdeError::StepSizeCollapsed`]): `state` is
+    /// the name of the state that dominates the error, stiff or with absurd parameters.
+    #[error("integration failed: the {state} state is stiff or its parameters absurd: {source}")]
+    Stiff {
+        /// Name of the dominant state ([`crate::Vehicle::state_name`]).
+        state: String,
+        /// The integrator's error, with time and state vector.
+        source: odeint::OdeError,
+    },
     /// The terrain could not be built.
     #[error("terrain: {0}")]
     Terrain(#[from] terrain_psd::TerrainError),

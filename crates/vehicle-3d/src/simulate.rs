@@ -264,12 +264,20 @@ pub fn simulate(vehicle: &Vehicle, options: &RunOptions) -> Result<RunRecord, Ve
     .with_max_step(options.max_step_s);
     let mut ws = odeint::Workspace::with_events(vehicle.offsets.dim, 1);
     let mut rec = RunRecord::default();
-    integrator.run(vehicle, &problem, &mut ws, |s| {
-        push_sample(vehicle, s.t, s.y, &mut rec);
-        if let SampleKind::Event(_) = s.kind {
-            rec.rollover_s = Some(s.t);
-        }
-        Control::Continue
-    })?;
+    integrator
+        .run(vehicle, &problem, &mut ws, |s| {
+            push_sample(vehicle, s.t, s.y, &mut rec);
+            if let SampleKind::Event(_) = s.kind {
+                rec.rollover_s = Some(s.t);
+            }
+            Control::Continue
+        })
+        .map_err(|e| match e {
+            odeint::OdeError::StepSizeCollapsed { dominant_state, .. } => VehicleError::Stiff {
+                state: vehicle.state_name(dominant_state),
+                source: e,
+            },
+            other => VehicleError::Integration(other),
+        })?;
     Ok(rec)
 }

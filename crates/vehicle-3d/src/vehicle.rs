@@ -419,6 +419,82 @@ impl Vehicle {
         &self.afs
     }
 
+    /// Name of state `i` in messages: the joint coordinate or velocity it is, a steering
+    /// pressure, a tire lag, an HPS state (left or right strut) or a controller state.
+    pub fn state_name(&self, i: usize) -> String {
+        let o = &self.offsets;
+        let j = &self.joints;
+        let joint = |k: usize| -> Option<String> {
+            let spin = ["front-left", "front-right", "rear-left", "rear-right"];
+            if k == j.articulation.0 {
+                return Some("articulation".into());
+            }
+            if j.rear_roll.is_some_and(|r| r.0 == k) {
+                return Some("rear-unit roll".into());
+            }
+            if let Some(w) = j.spin.iter().position(|s| s.0 == k) {
+                return Some(format!("{} wheel spin", spin[w]));
+            }
+            let carrier = j.carrier?.iter().position(|c| c.0 == k)?;
+            Some(format!(
+                "{} carrier travel",
+                ["front-left", "front-right"][carrier]
+            ))
+        };
+        let q_of_v = |k: usize| {
+            [Some(j.articulation), j.rear_roll]
+                .into_iter()
+                .flatten()
+                .chain(j.spin)
+                .chain(j.carrier.into_iter().flatten())
+                .find(|p| p.1 == k)
+                .map(|p| p.0)
+        };
+        if i < o.v {
+            let k = i - o.q;
+            joint(k).unwrap_or_else(|| format!("floating-base coordinate q[{k}]"))
+        } else if i < o.afs {
+            let k = i - o.v;
+            match q_of_v(k).and_then(joint) {
+                Some(n) => format!("{n} rate"),
+                None => format!("floating-base velocity v[{k}]"),
+            }
+        } else if i < o.tires {
+            [
+                "steering pressure P_c",
+                "steering pressure P_r",
+                "valve housing angle theta_h",
+                "valve spool x_v",
+            ]
+            .get(i - o.afs)
+            .map_or_else(
+                || format!("steering state {}", i - o.afs),
+                |n| (*n).to_string(),
+            )
+        } else if i < o.hps {
+            let k = i - o.tires;
+            let tire = crate::model::TIRE_NAMES.get(k / 2).copied().unwrap_or("?");
+            format!("{tire} tire {} lag", ["slip ratio", "slip angle"][k % 2])
+        } else if i < o.hps + 2 * o.hps_states {
+            let k = i - o.hps;
+            let side = ["left", "right"][k / o.hps_states];
+            let state = self
+                .hps
+                .as_ref()
+                .and_then(|h| h.states().get(k % o.hps_states))
+                .map_or("?", |s| s.name);
+            format!("{side} HPS strut {state}")
+        } else if i == o.pi {
+            "speed-error integral".into()
+        } else if i == o.path {
+            "path coordinate".into()
+        } else if Some(i) == o.driver {
+            "driver steering-wheel angle".into()
+        } else {
+            format!("state {i}")
+        }
+    }
+
     /// The static equilibrium at the target speed: the front unit's cg at its Table 6.1
     /// height, level, moving along +x; wheels rolling without slip; joints at zero; AFS at
     /// its standby pressures; struts at their static travel; PI integral at zero.

@@ -586,6 +586,21 @@ fn map_ode_error(e: OdeError, names: &[String]) -> DynError {
             reason: format!("step limit of {max_steps} reached"),
             state: describe_state(names, &state),
         },
+        OdeError::StepSizeCollapsed {
+            t,
+            h,
+            projected_steps,
+            dominant_state,
+            state,
+            ..
+        } => DynError::Diverged {
+            t,
+            reason: format!(
+                "step size collapsed (h = {h:.3e} s, about {projected_steps:.1e} steps to finish); state `{}` dominates the error: it is stiff or its parameters are absurd",
+                names.get(dominant_state).map_or("?", String::as_str)
+            ),
+            state: describe_state(names, &state),
+        },
         OdeError::InvalidInput(m) => DynError::InvalidInput(m),
     }
 }
