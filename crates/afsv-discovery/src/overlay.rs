@@ -1,5 +1,7 @@
 //! SVG overlays and residuals of the held-out records in a discovery report (feature
-//! `plots`): measured, calibrated baseline and model with the named effects, per channel.
+//! `plots`): measured, calibrated baseline and model with the named effects, per channel,
+//! each axis a readable quantity in engineering units (MPa, kN, mm;
+//! `afsv_records::units::plot_axis`).
 
 use crate::report::MAX_PLOTTED_RECORDS;
 use crate::{ActiveEffect, Discovery, DiscoveryError, DiscoveryModel};
@@ -56,41 +58,45 @@ pub(crate) fn write_overlays<M: DiscoveryModel + ?Sized>(
                 continue;
             };
             let stem = sanitize(&format!("{label}_{ch}"));
+            let axis = afsv_records::units::plot_axis(ch);
+            let scaled = |v: &[f64]| -> Vec<f64> { v.iter().map(|x| x * axis.scale).collect() };
+            let (meas, b, a) = (scaled(meas), scaled(b), scaled(a));
+            let quantity = axis.label.split(" (").next().unwrap_or(ch);
             let p = dir.join(format!("overlay_{stem}.svg"));
             line_plot(
                 &p,
-                &format!("{label}: {ch}"),
+                &format!("{label}: {quantity} ({ch})"),
                 "time (s)",
-                ch,
+                &axis.label,
                 &[
                     Series {
                         label: "measured",
                         x: &t,
-                        y: meas,
+                        y: &meas,
                     },
                     Series {
                         label: "calibrated baseline",
                         x: &t,
-                        y: b,
+                        y: &b,
                     },
                     Series {
                         label: "with named effects",
                         x: &t,
-                        y: a,
+                        y: &a,
                     },
                 ],
             )
             .map_err(DiscoveryError::Plot)?;
             plots.push(p.clone());
             written.push(p);
-            let rb: Vec<f64> = b.iter().zip(meas).map(|(x, y)| x - y).collect();
-            let ra: Vec<f64> = a.iter().zip(meas).map(|(x, y)| x - y).collect();
+            let rb: Vec<f64> = b.iter().zip(&meas).map(|(x, y)| x - y).collect();
+            let ra: Vec<f64> = a.iter().zip(&meas).map(|(x, y)| x - y).collect();
             let p = dir.join(format!("residual_{stem}.svg"));
             line_plot(
                 &p,
-                &format!("{label}: {ch} residual (model - measured)"),
+                &format!("{label}: {quantity} residual, model - measured ({ch})"),
                 "time (s)",
-                ch,
+                &format!("residual {}", axis.label),
                 &[
                     Series {
                         label: "calibrated baseline",

@@ -193,6 +193,81 @@ pub fn classify(name: &str) -> ChannelUnit {
     ChannelUnit::Keep
 }
 
+/// How a channel reads on a plot axis: a readable quantity with an engineering unit, and
+/// the factor from the channel's SI values to that unit ([`plot_axis`]).
+#[derive(Debug, Clone, PartialEq)]
+pub struct PlotAxis {
+    /// Axis label, e.g. `rod-side pressure (MPa)`.
+    pub label: String,
+    /// Multiply the channel's values by this to plot them in the label's unit.
+    pub scale: f64,
+}
+
+/// SI unit suffixes of channel names, longest first, with the engineering unit a plot uses
+/// and the factor to it. Lengths are plotted in mm only for displacements (`disp` in the
+/// name); other lengths stay in m.
+const PLOT_UNITS: &[(&str, &str, f64)] = &[
+    ("m_s2", "m/s²", 1.0),
+    ("deg_s", "deg/s", 1.0),
+    ("rad_s", "rad/s", 1.0),
+    ("m_s", "m/s", 1.0),
+    ("pa", "MPa", 1e-6),
+    ("deg", "deg", 1.0),
+    ("rad", "rad", 1.0),
+    ("n", "kN", 1e-3),
+    ("m", "m", 1.0),
+    ("s", "s", 1.0),
+];
+
+/// Readable names of the record formats' quantities (docs/records.md).
+const PLOT_NAMES: &[(&str, &str)] = &[
+    ("p_piston", "piston-side pressure"),
+    ("p_rod", "rod-side pressure"),
+    ("p_c", "chamber-group pressure P_c"),
+    ("p_r", "chamber-group pressure P_r"),
+    ("force", "strut force"),
+    ("displacement", "strut displacement"),
+    ("velocity", "strut velocity"),
+    ("steer_wheel", "steering-wheel angle"),
+    ("articulation", "articulation angle"),
+    ("yaw_rate_front", "front-unit yaw rate"),
+    ("strut_left_disp", "left steering-strut displacement"),
+    ("speed", "speed"),
+    ("time", "time"),
+];
+
+/// The plot axis of channel `name`: its quantity in words and its SI values in an
+/// engineering unit (pressures in MPa, forces in kN, displacements in mm). A name without a
+/// known unit suffix is kept as it is, unscaled.
+pub fn plot_axis(name: &str) -> PlotAxis {
+    for (suffix, unit, scale) in PLOT_UNITS {
+        let Some(quantity) = name
+            .strip_suffix(suffix)
+            .and_then(|q| q.strip_suffix('_'))
+            .filter(|q| !q.is_empty())
+        else {
+            continue;
+        };
+        let (unit, scale) = if *suffix == "m" && (quantity.contains("disp")) {
+            ("mm", 1e3)
+        } else {
+            (*unit, *scale)
+        };
+        let words = PLOT_NAMES
+            .iter()
+            .find(|(q, _)| *q == quantity)
+            .map_or_else(|| quantity.replace('_', " "), |(_, w)| (*w).to_string());
+        return PlotAxis {
+            label: format!("{words} ({unit})"),
+            scale,
+        };
+    }
+    PlotAxis {
+        label: name.to_string(),
+        scale: 1.0,
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -254,5 +329,28 @@ mod tests {
                 other => panic!("{name}: {other:?}"),
             }
         }
+    }
+
+    #[test]
+    fn plot_axes_read_in_engineering_units() {
+        let a = plot_axis("p_rod_pa");
+        assert_eq!(a.label, "rod-side pressure (MPa)");
+        assert_eq!(a.scale, 1e-6);
+        assert_eq!(plot_axis("force_n").label, "strut force (kN)");
+        assert_eq!(plot_axis("force_n").scale, 1e-3);
+        let d = plot_axis("strut_left_disp_m");
+        assert_eq!(
+            (d.label.as_str(), d.scale),
+            ("left steering-strut displacement (mm)", 1e3)
+        );
+        assert_eq!(
+            plot_axis("yaw_rate_front_deg_s").label,
+            "front-unit yaw rate (deg/s)"
+        );
+        assert_eq!(plot_axis("az_m_s2").label, "az (m/s²)");
+        assert_eq!(plot_axis("x_m").label, "x (m)");
+        let odd = plot_axis("counts");
+        assert_eq!((odd.label.as_str(), odd.scale), ("counts", 1.0));
+        assert_eq!(plot_axis("_pa").label, "_pa");
     }
 }
