@@ -116,6 +116,9 @@ pub struct FitOutcome {
     pub baseline: Vec<f64>,
     /// Their standard errors (`None` for parameters held fixed or not estimable).
     pub baseline_se: Vec<Option<f64>>,
+    /// Per baseline parameter: it was fitted and sits on a bound of its range (the data
+    /// push it there; its value is not an estimate).
+    pub baseline_at_bound: Vec<bool>,
     /// Per active effect: its fitted parameters.
     pub effect_params: Vec<Vec<EffectParam>>,
     /// Normalised residual mean square on the training records.
@@ -207,6 +210,10 @@ pub struct Discovery {
     pub excess_over_noise: f64,
     /// What was found: effects named, a model-form discrepancy, or nothing missing.
     pub outcome: Outcome,
+    /// Why the final model's baseline is not an estimate, one sentence each (empty when it
+    /// earned its values): a parameter still on its bound, a full final fit that did not
+    /// converge (`calibration::problems`).
+    pub calibration_problems: Vec<String>,
 }
 
 /// Per-channel error of a configuration given as baseline values and active effects,
@@ -298,8 +305,8 @@ pub fn discover<M: DiscoveryModel + ?Sized>(
     let wrapped = WithPlacebos::new(model);
     let real = wrapped.real;
     let model = &wrapped;
-    let train_names = labels(train_names, train.len(), "train");
-    let holdout_names = labels(holdout_names, holdout.len(), "holdout");
+    let train_names = super::layout::labels(train_names, train.len(), "train");
+    let holdout_names = super::layout::labels(holdout_names, holdout.len(), "holdout");
     let tp = prepare_all(model, train, &train_names)?;
     let hp = prepare_all(model, holdout, &holdout_names)?;
     let ctx = context(model, train, &tp, holdout, &hp, opts, real)?;
@@ -382,6 +389,7 @@ pub fn discover<M: DiscoveryModel + ?Sized>(
         .zip(hb.into_iter().zip(ha))
         .map(|((a, b), (c, d))| (a, b, c, d))
         .collect();
+    let calibration_problems = super::calibration::problems(&current.0, &ctx.base_specs);
     Ok(Discovery {
         model: model.name().to_string(),
         channels: ctx.train.channels.clone(),
@@ -399,18 +407,8 @@ pub fn discover<M: DiscoveryModel + ?Sized>(
         best_unnamed_shrink,
         excess_over_noise,
         outcome,
+        calibration_problems,
     })
-}
-
-fn labels(names: &[String], n: usize, set: &str) -> Vec<String> {
-    (0..n)
-        .map(|i| {
-            names
-                .get(i)
-                .cloned()
-                .unwrap_or_else(|| format!("{set} record {}", i + 1))
-        })
-        .collect()
 }
 
 fn check_candidates<M: DiscoveryModel + ?Sized>(

@@ -232,8 +232,10 @@ impl<M: DiscoveryModel + ?Sized> Context<'_, M> {
         let n_eff = n_eff.unwrap_or(n_eff_here);
         let k = fitted.pack().len();
         let mut baseline_se = vec![None; fitted.baseline.len()];
+        let mut baseline_at_bound = vec![false; fitted.baseline.len()];
         for (j, &i) in fitted.free_baseline.iter().enumerate() {
             baseline_se[i] = se.get(j).copied().filter(|v| v.is_finite());
+            baseline_at_bound[i] = at_bound(fitted.baseline[i], &self.base_specs[i]);
         }
         let mut off = fitted.free_baseline.len();
         let mut effect_params = Vec::new();
@@ -263,6 +265,7 @@ impl<M: DiscoveryModel + ?Sized> Context<'_, M> {
             baseline_names: self.base_specs.iter().map(|s| s.name.clone()).collect(),
             baseline: fitted.baseline.clone(),
             baseline_se,
+            baseline_at_bound,
             effect_params,
             train_mse: rss / n,
             holdout_mse: sum_sq(&rh) / self.holdout.n as f64,

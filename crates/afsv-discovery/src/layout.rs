@@ -235,3 +235,15 @@ pub(crate) fn channel_scales(records: &[Record], channels: &[String]) -> Vec<f64
         })
         .collect()
 }
+
+/// The names of `n` records: `names` where given, else `"{set} record k"` (1-based).
+pub(crate) fn labels(names: &[String], n: usize, set: &str) -> Vec<String> {
+    (0..n)
+        .map(|i| {
+            names
+                .get(i)
+                .cloned()
+                .unwrap_or_else(|| format!("{set} record {}", i + 1))
+        })
+        .collect()
+}

@@ -40,6 +40,7 @@
 //! // The whole workflow: afsv_discovery::discover(&model, &train, &holdout, ..., &()).
 //! ```
 
+mod calibration;
 mod engine;
 mod error;
 pub mod evidence;

@@ -90,6 +90,16 @@ fn summary(s: &mut String, d: &Discovery) {
         d.outcome.describe(),
         d.outcome.exit_code()
     );
+    if !d.calibration_problems.is_empty() {
+        let _ = writeln!(
+            s,
+            "**The final model did not earn its baseline** (`afsv discover` exits 3 unless `--accept-poor-fit`):\n"
+        );
+        for p in &d.calibration_problems {
+            let _ = writeln!(s, "- {p}");
+        }
+        let _ = writeln!(s);
+    }
     if d.named.is_empty() {
         let _ = writeln!(s, "**No missing effect named.** The calibrated baseline explains the records as well as any candidate of the catalogue does, within the significance rule.");
         if let Some((name, shrink)) = &d.best_unnamed_shrink {

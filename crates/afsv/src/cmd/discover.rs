@@ -61,6 +61,11 @@ pub struct DiscoverArgs {
     /// Print the catalogue of the model and exit.
     #[arg(long)]
     pub list_effects: bool,
+    /// Keep the outcome's exit code even when the final model did not earn its baseline (a
+    /// baseline parameter still on its bound, a final fit that did not converge); the
+    /// problems are still printed.
+    #[arg(long)]
+    pub accept_poor_fit: bool,
 }
 
 /// Options of `afsv synth`.
@@ -242,7 +247,8 @@ impl Progress for FitProgress {
 }
 
 /// The exit code of `afsv discover` on success: 0 effects named (or `--list-effects`), 3 a
-/// model-form discrepancy, 4 nothing missing (`afsv_discovery::Outcome::exit_code`,
+/// model-form discrepancy or a calibration that did not earn its baseline (unless
+/// `--accept-poor-fit`), 4 nothing missing (`afsv_discovery::Outcome::exit_code`,
 /// docs/discovery.md); errors exit with 1 as for every command.
 pub type DiscoverResult = Result<u8, Box<dyn std::error::Error>>;
 
@@ -282,11 +288,17 @@ fn run_discover<M: DiscoveryModel>(model: &M, args: &DiscoverArgs) -> DiscoverRe
     )?;
     spinner.0.finish();
     let written = write_report(model, &d, &hold, &hold_names, output)?;
+    let earned = d.calibration_problems.is_empty() || args.accept_poor_fit;
+    let code = if earned {
+        d.outcome.exit_code()
+    } else {
+        afsv::output::EXIT_NOT_EARNED
+    };
     afsv::output::print_json(&serde_json::json!({
         "model": d.model,
         "summary": afsv_discovery::report::headline(&d),
         "outcome": d.outcome,
-        "exit_code": d.outcome.exit_code(),
+        "exit_code": code,
         "excess_over_noise": d.excess_over_noise,
         "named": d.named,
         "effect_params": d.final_model.effect_params,
@@ -298,8 +310,16 @@ fn run_discover<M: DiscoveryModel>(model: &M, args: &DiscoverArgs) -> DiscoverRe
             "holdout_before": hb.nrmse, "holdout_after": ha.nrmse})).collect::<Vec<_>>(),
         "report": output.join("report.md"),
         "files_written": written.len(),
+        "calibration_problems": d.calibration_problems,
+        "accepted_despite_problems": args.accept_poor_fit && !d.calibration_problems.is_empty(),
     }))?;
-    Ok(d.outcome.exit_code())
+    if !earned {
+        eprintln!(
+            "afsv: not earned: the final model's baseline: {} (the outcome stands in report.md; --accept-poor-fit keeps its exit code)",
+            d.calibration_problems.join("; ")
+        );
+    }
+    Ok(code)
 }
 
 /// Run `afsv discover`.
