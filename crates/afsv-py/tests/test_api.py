@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import subprocess
 import threading
 import time
 from pathlib import Path
@@ -104,6 +105,27 @@ def test_diverging_solver_raises_solver_error_with_time_and_state() -> None:
     assert isinstance(err.state, dict) and "articulation_rad" in err.state
     assert all(isinstance(v, float) for v in err.state.values())
     assert "diverged" in str(err) and "articulation" in err.reason
+
+
+@pytest.mark.parametrize("solver", ["dopri", "rosenbrock"])
+def test_diverging_strut_raises_solver_error_with_time_and_state(afsv_bin: Path, tmp_path: Path, solver: str) -> None:
+    # 100 mm at 100 Hz (peak velocity 63 m/s): the orifice flow of Eqs 5.1-5.12 drives the
+    # chamber pressure past 1 GPa within 7 ms and the step size to 1e-13 s
+    with pytest.raises(afsv.SolverError) as e:
+        afsv.simulate_strut(freq=100, amp_mm=100, solver=solver)
+    err = e.value
+    assert 0.0 < err.t < 0.01
+    # the strut's states are unnamed: the last finite state as a list (z, P, v)
+    assert isinstance(err.state, list) and len(err.state) == 3
+    assert all(isinstance(v, float) and np.isfinite(v) for v in err.state)
+    assert err.state[1] > 1e9
+    assert "solver diverged at t = " in err.reason and err.reason == str(err)
+    # the CLI fails on the same run with the same message (time and state to the digit)
+    p = subprocess.run(
+        [str(afsv_bin), "--quiet", "hps", "harmonic", "--freq", "100", "--amp-mm", "100", "--solver", solver],
+        cwd=tmp_path, capture_output=True, text=True,
+    )
+    assert p.returncode != 0 and p.stderr.strip() == f"afsv: error: {err}"
 
 
 def test_psd_of_synthesized_terrain_follows_eq_2_8_in_band() -> None:
