@@ -190,3 +190,36 @@ def test_yaw_batch_runs_in_parallel_and_equals_single_runs() -> None:
         afsv.simulate_yaw_batch([{"sped_kmh": 20.0}])
     with pytest.raises(afsv.SolverError):
         afsv.simulate_yaw_batch([{"duration": 2}, {"solver": "rk4", "rk4_step": 0.1, "dt": 0.1}])
+
+
+@pytest.mark.parametrize(
+    "call",
+    [
+        lambda **kw: afsv.evaluate(**kw),
+        lambda **kw: afsv.simulate_truck(**kw),
+        lambda **kw: afsv.simulate_vehicle(terrain_class="E", **kw),
+        lambda **kw: afsv.synthesize(iso_class="E", **kw),
+        lambda **kw: afsv.optimize_afs(**kw),
+    ],
+)
+def test_seeds_are_whole_numbers(call) -> None:
+    # checked before any run: a negative seed is a ValueError (not OverflowError), a
+    # fractional one a TypeError (not truncated)
+    with pytest.raises(ValueError, match="seed -1: must be a whole number from 0 to 18446744073709551615"):
+        call(seed=-1)
+    with pytest.raises(TypeError, match="seed: expected an int, got float"):
+        call(seed=1.5)
+    with pytest.raises(ValueError, match="seed 18446744073709551616"):
+        call(seed=2**64)
+
+
+def test_counts_are_whole_numbers() -> None:
+    with pytest.raises(ValueError, match="seeds -1"):
+        afsv.evaluate(seeds=-1)
+    with pytest.raises(ValueError, match="starts -1"):
+        afsv.optimize_afs(starts=-1)
+    with pytest.raises(TypeError, match="sqp_calls: expected an int, got str"):
+        afsv.optimize_afs(sqp_calls="4")
+    with pytest.raises(TypeError, match="n_constraints"):
+        afsv.minimize(lambda x: x[0], [(0, 1)], n_constraints=0.5)
+    assert afsv.simulate_truck(seed=np.uint64(3), duration=0.5).meta["rollover_s"] is None
