@@ -24,6 +24,7 @@ mod desc;
 mod design;
 mod discovery;
 mod evaluate;
+mod hps;
 mod measures;
 mod models;
 mod optim;
@@ -179,13 +180,15 @@ fn _afsv(m: &Bound<'_, PyModule>) -> PyResult<()> {
     optim::register(m)?;
     evaluate::register(m)?;
     design::register(m)?;
+    hps::register(m)?;
     discovery::register(m)?;
     Ok(())
 }
 
 #[cfg(test)]
 mod tests {
-    use super::named_state;
+    use super::{named_state, py_err, SolverError};
+    use pyo3::prelude::*;
 
     #[test]
     fn named_state_reads_the_yaw_models_divergence_state() {
@@ -199,5 +202,57 @@ mod tests {
         );
         assert!(named_state("articulation_rad=oops").is_none());
         assert!(named_state("no pairs here").is_none());
+    }
+
+    /// The truck and the 3-D vehicle cannot be driven to divergence through the Python API
+    /// (their step limit is not an option and no parameter set within the registry ranges
+    /// was found that diverges), so their error types are checked here: an integrator
+    /// failure anywhere in a model's error chain becomes a `SolverError` with `t`, `state`
+    /// and `reason`, anything else a `ValueError`.
+    #[test]
+    fn every_models_integrator_failure_becomes_a_solver_error() {
+        let state = vec![0.5, -2.0, 1e9];
+        let diverged = || odeint::OdeError::Diverged {
+            t: 1.25,
+            h: 1e-14,
+            state: state.clone(),
+        };
+        let limit = || odeint::OdeError::TooManySteps {
+            max_steps: 10,
+            t: 1.25,
+            state: state.clone(),
+        };
+        let failures: Vec<Box<dyn std::error::Error>> = vec![
+            Box::new(hps_emulsion::HpsError::Integration(diverged())),
+            Box::new(roll_truck::TruckError::Integration(diverged())),
+            Box::new(roll_truck::TruckError::Integration(limit())),
+            Box::new(vehicle_3d::VehicleError::Integration(diverged())),
+            Box::new(vehicle_3d::VehicleError::Integration(limit())),
+            Box::new(vehicle_3d::VehicleError::Suspension(
+                hps_emulsion::HpsError::Integration(diverged()),
+            )),
+        ];
+        Python::initialize();
+        Python::attach(|py| {
+            for e in &failures {
+                let err = py_err(py, e.as_ref());
+                assert!(err.is_instance_of::<SolverError>(py), "{e}");
+                let v = err.value(py);
+                assert_eq!(v.getattr("t").unwrap().extract::<f64>().unwrap(), 1.25);
+                assert_eq!(
+                    v.getattr("state").unwrap().extract::<Vec<f64>>().unwrap(),
+                    state
+                );
+                let reason: String = v.getattr("reason").unwrap().extract().unwrap();
+                assert_eq!(reason, e.to_string());
+            }
+            let other = vehicle_3d::VehicleError::Measure {
+                measure: "a_wz",
+                reason: "too short".into(),
+            };
+            let err = py_err(py, &other);
+            assert!(err.is_instance_of::<pyo3::exceptions::PyValueError>(py));
+            assert!(!err.is_instance_of::<SolverError>(py));
+        });
     }
 }

@@ -54,3 +54,10 @@ def assert_same_record(rec: Any, cols: Dict[str, np.ndarray]) -> None:
         assert got.dtype == np.float64 and got.shape == want.shape, name
         # array_equal is exact; NaN never appears in a record (the CLI refuses it)
         assert np.array_equal(got, want), f"{name}: max diff {np.max(np.abs(got - want))}"
+
+
+def without_reasons(v: Any) -> Any:
+    """The CLI's JSON without its `*_reason` explanations of nulls (presentation only)."""
+    if isinstance(v, dict):
+        return {k: without_reasons(x) for k, x in v.items() if not k.endswith("_reason")}
+    return v

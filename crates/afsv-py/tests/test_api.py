@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import subprocess
 import threading
 import time
 from pathlib import Path
@@ -106,6 +107,27 @@ def test_diverging_solver_raises_solver_error_with_time_and_state() -> None:
     assert "diverged" in str(err) and "articulation" in err.reason
 
 
+@pytest.mark.parametrize("solver", ["dopri", "rosenbrock"])
+def test_diverging_strut_raises_solver_error_with_time_and_state(afsv_bin: Path, tmp_path: Path, solver: str) -> None:
+    # 100 mm at 100 Hz (peak velocity 63 m/s): the orifice flow of Eqs 5.1-5.12 drives the
+    # chamber pressure past 1 GPa within 7 ms and the step size to 1e-13 s
+    with pytest.raises(afsv.SolverError) as e:
+        afsv.simulate_strut(freq=100, amp_mm=100, solver=solver)
+    err = e.value
+    assert 0.0 < err.t < 0.01
+    # the strut's states are unnamed: the last finite state as a list (z, P, v)
+    assert isinstance(err.state, list) and len(err.state) == 3
+    assert all(isinstance(v, float) and np.isfinite(v) for v in err.state)
+    assert err.state[1] > 1e9
+    assert "solver diverged at t = " in err.reason and err.reason == str(err)
+    # the CLI fails on the same run with the same message (time and state to the digit)
+    p = subprocess.run(
+        [str(afsv_bin), "--quiet", "hps", "harmonic", "--freq", "100", "--amp-mm", "100", "--solver", solver],
+        cwd=tmp_path, capture_output=True, text=True,
+    )
+    assert p.returncode != 0 and p.stderr.strip() == f"afsv: error: {err}"
+
+
 def test_psd_of_synthesized_terrain_follows_eq_2_8_in_band() -> None:
     rec = afsv.synthesize(iso_class="E", length=2000, dx=0.05, seed=4, coherence="none")
     s = afsv.welch_psd(rec.left_m, 0.05, segment_m=51.2)
@@ -168,3 +190,36 @@ def test_yaw_batch_runs_in_parallel_and_equals_single_runs() -> None:
         afsv.simulate_yaw_batch([{"sped_kmh": 20.0}])
     with pytest.raises(afsv.SolverError):
         afsv.simulate_yaw_batch([{"duration": 2}, {"solver": "rk4", "rk4_step": 0.1, "dt": 0.1}])
+
+
+@pytest.mark.parametrize(
+    "call",
+    [
+        lambda **kw: afsv.evaluate(**kw),
+        lambda **kw: afsv.simulate_truck(**kw),
+        lambda **kw: afsv.simulate_vehicle(terrain_class="E", **kw),
+        lambda **kw: afsv.synthesize(iso_class="E", **kw),
+        lambda **kw: afsv.optimize_afs(**kw),
+    ],
+)
+def test_seeds_are_whole_numbers(call) -> None:
+    # checked before any run: a negative seed is a ValueError (not OverflowError), a
+    # fractional one a TypeError (not truncated)
+    with pytest.raises(ValueError, match="seed -1: must be a whole number from 0 to 18446744073709551615"):
+        call(seed=-1)
+    with pytest.raises(TypeError, match="seed: expected an int, got float"):
+        call(seed=1.5)
+    with pytest.raises(ValueError, match="seed 18446744073709551616"):
+        call(seed=2**64)
+
+
+def test_counts_are_whole_numbers() -> None:
+    with pytest.raises(ValueError, match="seeds -1"):
+        afsv.evaluate(seeds=-1)
+    with pytest.raises(ValueError, match="starts -1"):
+        afsv.optimize_afs(starts=-1)
+    with pytest.raises(TypeError, match="sqp_calls: expected an int, got str"):
+        afsv.optimize_afs(sqp_calls="4")
+    with pytest.raises(TypeError, match="n_constraints"):
+        afsv.minimize(lambda x: x[0], [(0, 1)], n_constraints=0.5)
+    assert afsv.simulate_truck(seed=np.uint64(3), duration=0.5).meta["rollover_s"] is None

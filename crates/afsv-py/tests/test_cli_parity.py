@@ -9,7 +9,7 @@ import numpy as np
 import pytest
 
 import afsv
-from conftest import assert_same_record, read_csv
+from conftest import assert_same_record, read_csv, without_reasons
 
 
 def test_terrain_synthesis_and_welch(cli, tmp_path: Path) -> None:
@@ -127,13 +127,6 @@ def test_ltr_and_roll_measures() -> None:
     assert (sp["start_s"], sp["end_s"], sp["duration_s"]) == (
         truck["sustained_start_s"], truck["sustained_end_s"], truck["sustained_period_s"])
     assert sp["sp_drt_m_s2"] / 9.80665 == pytest.approx(truck["sp_drt_g"], rel=1e-12)
-
-
-def without_reasons(v):
-    """The CLI's JSON without its `*_reason` explanations of nulls (presentation only)."""
-    if isinstance(v, dict):
-        return {k: without_reasons(x) for k, x in v.items() if not k.endswith("_reason")}
-    return v
 
 
 def test_evaluate_matches_the_cli(cli) -> None:

@@ -9,6 +9,7 @@ out. Every run is the Rust library's, with the GIL released; see docs/python.md.
 from ._afsv import SolverError, __version__
 from .discovery import discover
 from .evaluate import evaluate
+from .hps import HpsAssessment, HpsDesign, HpsGaSettings, HpsOptimum, RideValues, Spread, optimize_hps
 from .measures import decay, iso2631, ltr, roll_measures, step
 from .models import (
     characterize_strut,
@@ -52,6 +53,13 @@ __all__ = [
     "evaluate",
     "AfsProblem",
     "optimize_afs",
+    "optimize_hps",
+    "HpsOptimum",
+    "HpsDesign",
+    "HpsGaSettings",
+    "HpsAssessment",
+    "RideValues",
+    "Spread",
     "read_record",
     "discover",
     "OptimizeResult",

@@ -151,6 +151,19 @@ def optimize_afs(
     rtol: float,
     form: str,
 ) -> str: ...
+def optimize_hps(
+    vehicle: Optional[DescRef],
+    population: int,
+    generations: int,
+    seed: int,
+    terrain_seed: int,
+    reevaluation_seeds: int,
+    roll: bool,
+    speed_sweep: bool,
+) -> str:
+    """The Chapter 6 HPS design GA of `afsv optimize hps` (Eqs 6.19-6.20, Table 6.4): the
+    CLI's JSON plus `strut_json` (the --strut-out text) and `speed_sweep` (D4, or null)."""
+    ...
 def read_record(path: str, assume_convention: Optional[str]) -> Tuple[Columns, str]: ...
 def discover_effects(
     model: str,

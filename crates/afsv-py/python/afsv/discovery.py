@@ -7,6 +7,7 @@ import json
 from typing import Any, Dict, List, Mapping, Optional, Sequence, Union
 
 from . import _afsv
+from ._arrays import whole
 from .record import Record
 
 Records = Union[Mapping[str, Record], Sequence[Record]]
@@ -43,5 +44,5 @@ def discover(
     model-form discrepancy, 4 nothing missing)."""
     return json.loads(_afsv.discover_effects(
         model, _named(train, "train"), _named(holdout, "holdout"),
-        None if effects is None else [str(e) for e in effects], int(max_effects),
+        None if effects is None else [str(e) for e in effects], whole("max_effects", max_effects),
     ))

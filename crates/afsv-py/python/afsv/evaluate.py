@@ -6,6 +6,7 @@ import json
 from typing import Any, Dict, Optional, Union
 
 from . import _afsv
+from ._arrays import whole
 from .vehicle import Vehicle, vehicle_ref
 
 
@@ -31,4 +32,4 @@ def evaluate(
     * ``terrain``: the synthesis summary of the nominal terrain from `seed`.
 
     The runs go in parallel in Rust with the GIL released (10 seeds: 62 vehicle runs)."""
-    return json.loads(_afsv.evaluate(vehicle_ref(vehicle), int(seed), int(seeds), float(speed_kmh)))
+    return json.loads(_afsv.evaluate(vehicle_ref(vehicle), whole("seed", seed), whole("seeds", seeds), float(speed_kmh)))

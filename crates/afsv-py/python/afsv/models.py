@@ -9,7 +9,7 @@ import json
 from typing import Any, Dict, List, Optional, Sequence, Tuple, Union
 
 from . import _afsv
-from ._arrays import maybe_bytes
+from ._arrays import maybe_bytes, whole
 from .record import Record
 from .vehicle import Vehicle, vehicle_ref
 
@@ -149,7 +149,7 @@ def simulate_truck(
         None if cg_height_m is None else float(cg_height_m),
         None if ramp_rate is None else float(ramp_rate),
         bool(no_bump_stops), direction, terrain_class, float(waviness),
-        (float(band[0]), float(band[1])), float(mc), int(seed),
+        (float(band[0]), float(band[1])), float(mc), whole("seed", seed),
         None if duration is None else float(duration), float(dt),
         None if sp_threshold is None else float(sp_threshold),
         None if sp_max_dip is None else float(sp_max_dip),
@@ -178,7 +178,7 @@ def simulate_vehicle(
     if isinstance(steer, str) or not steer:
         raise TypeError("steer: expected a tuple such as ('none',) or ('pulse', 30, 0.2, 1.0)")
     cols, meta = _afsv.simulate_vehicle(
-        vehicle_ref(vehicle), load, float(speed_kmh), terrain_class, float(mc), int(seed),
+        vehicle_ref(vehicle), load, float(speed_kmh), terrain_class, float(mc), whole("seed", seed),
         hps, str(steer[0]), [float(v) for v in steer[1:]], float(duration), float(dt),
     )
     return Record(cols, meta)

@@ -11,6 +11,7 @@ from typing import Any, Callable, Dict, List, Optional, Sequence, Tuple, Union
 import numpy as np
 
 from . import _afsv
+from ._arrays import whole
 
 Objective = Callable[[np.ndarray], Union[float, Tuple[float, Sequence[float]]]]
 
@@ -64,7 +65,7 @@ def minimize(
             return fun(np.array(x, dtype=np.float64))
 
     out = json.loads(_afsv.minimize(
-        target, lo_hi[0], lo_hi[1], int(n_constraints), method,
+        target, lo_hi[0], lo_hi[1], whole("n_constraints", n_constraints), method,
         None if x0 is None else [float(v) for v in x0],
         None if options is None else json.dumps(options),
     ))
@@ -98,6 +99,6 @@ def optimize_afs(
     optimum: ``starts``, ``ps`` and ``ps_sqp`` (design, measures, ratios to the current
     design), evaluations."""
     return json.loads(_afsv.optimize_afs(
-        bool(relaxed), None if min_arm_m is None else float(min_arm_m), int(starts), int(seed),
-        int(search_points), float(screen_mesh), float(min_mesh), int(sqp_calls), float(rtol), form,
+        bool(relaxed), None if min_arm_m is None else float(min_arm_m), whole("starts", starts), whole("seed", seed),
+        whole("search_points", search_points), float(screen_mesh), float(min_mesh), whole("sqp_calls", sqp_calls), float(rtol), form,
     ))

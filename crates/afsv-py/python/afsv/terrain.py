@@ -9,7 +9,7 @@ from typing import Any, Dict, NamedTuple, Optional, Tuple
 import numpy as np
 
 from . import _afsv
-from ._arrays import from_bytes, to_bytes
+from ._arrays import from_bytes, to_bytes, whole
 from .record import Record
 
 
@@ -42,7 +42,7 @@ def synthesize(
         (float(band[0]), float(band[1])), coherence,
         None if half_track is None else float(half_track),
         None if speed is None else float(speed),
-        float(length), float(dx), int(seed),
+        float(length), float(dx), whole("seed", seed),
     )
     return Record(cols, meta)
 
