@@ -126,7 +126,8 @@ pub(crate) fn py_err(py: Python<'_>, e: &(dyn std::error::Error + 'static)) -> P
     while let Some(err) = cur {
         if let Some(
             odeint::OdeError::Diverged { t, state, .. }
-            | odeint::OdeError::TooManySteps { t, state, .. },
+            | odeint::OdeError::TooManySteps { t, state, .. }
+            | odeint::OdeError::StepSizeCollapsed { t, state, .. },
         ) = err.downcast_ref::<odeint::OdeError>()
         {
             let list = PyList::new(py, state).ok().map(|l| l.into_any());
@@ -228,6 +229,17 @@ mod tests {
             Box::new(roll_truck::TruckError::Integration(limit())),
             Box::new(vehicle_3d::VehicleError::Integration(diverged())),
             Box::new(vehicle_3d::VehicleError::Integration(limit())),
+            Box::new(vehicle_3d::VehicleError::Stiff {
+                state: "steering pressure P_c".into(),
+                source: odeint::OdeError::StepSizeCollapsed {
+                    t: 1.25,
+                    h: 1e-12,
+                    projected_steps: 1e9,
+                    max_steps: 1_000_000,
+                    dominant_state: 2,
+                    state: state.clone(),
+                },
+            }),
             Box::new(vehicle_3d::VehicleError::Suspension(
                 hps_emulsion::HpsError::Integration(diverged()),
             )),
