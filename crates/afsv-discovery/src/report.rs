@@ -10,18 +10,22 @@ use std::path::{Path, PathBuf};
 pub const REPORT_FILES: [&str; 2] = ["report.md", "report.json"];
 
 /// Write `report.md`, `report.json` and (with the `plots` feature) SVG overlays and
-/// residuals of the held-out records for `d` into `dir` (created if needed). Returns the
-/// paths written.
+/// residuals of the held-out records for `d` into `dir` (created if needed). `provenance`
+/// (what made the report: tool, version, commit, the input files with their SHA-256) goes
+/// into both as it is given. Returns the paths written.
 pub fn write_report<M: DiscoveryModel + ?Sized>(
     model: &M,
     d: &Discovery,
     holdout: &[Record],
     holdout_names: &[String],
     dir: &Path,
+    provenance: &serde_json::Value,
 ) -> Result<Vec<PathBuf>, DiscoveryError> {
     std::fs::create_dir_all(dir).map_err(|e| DiscoveryError::io(dir, e))?;
     let mut written = Vec::new();
-    let json = serde_json::to_string_pretty(d)?;
+    let mut value = serde_json::to_value(d)?;
+    value["provenance"] = provenance.clone();
+    let json = serde_json::to_string_pretty(&value)?;
     let p = dir.join("report.json");
     afsv_records::atomic::write(&p, json + "\n").map_err(|e| DiscoveryError::io(&p, e))?;
     written.push(p);
@@ -39,11 +43,35 @@ pub fn write_report<M: DiscoveryModel + ?Sized>(
         let _ = (model, holdout, holdout_names);
         Vec::new()
     };
-    let md = markdown(d, &plots, dir);
+    let mut md = markdown(d, &plots, dir);
+    provenance_section(&mut md, provenance);
     let p = dir.join("report.md");
     afsv_records::atomic::write(&p, md).map_err(|e| DiscoveryError::io(&p, e))?;
     written.push(p);
     Ok(written)
+}
+
+/// The report's last section: what made it, as `provenance` states it.
+fn provenance_section(s: &mut String, provenance: &serde_json::Value) {
+    let text = |k: &str| provenance[k].as_str().unwrap_or("not stated").to_string();
+    let _ = writeln!(
+        s,
+        "\n## Provenance\n\n{} {}, commit {}.\n",
+        text("tool"),
+        text("version"),
+        text("commit")
+    );
+    if let Some(inputs) = provenance["inputs"].as_array().filter(|a| !a.is_empty()) {
+        let _ = writeln!(s, "| input file | SHA-256 |\n|---|---|");
+        for i in inputs {
+            let _ = writeln!(
+                s,
+                "| `{}` | `{}` |",
+                i["file"].as_str().unwrap_or("?"),
+                i["sha256"].as_str().unwrap_or("?")
+            );
+        }
+    }
 }
 
 /// Most held-out records plotted (two SVGs per record and channel).
@@ -462,7 +490,24 @@ pub fn headline(d: &Discovery) -> String {
 
 #[cfg(test)]
 mod tests {
-    use super::sig3;
+    use super::{provenance_section, sig3};
+
+    #[test]
+    fn the_provenance_names_the_tool_and_every_input() {
+        let mut s = String::new();
+        provenance_section(
+            &mut s,
+            &serde_json::json!({
+                "tool": "afsv", "version": "0.1.0", "commit": "abc123",
+                "inputs": [{"file": "train/a.csv", "sha256": "00ff"}],
+            }),
+        );
+        assert!(s.contains("## Provenance") && s.contains("afsv 0.1.0, commit abc123."));
+        assert!(s.contains("| `train/a.csv` | `00ff` |"));
+        let mut bare = String::new();
+        provenance_section(&mut bare, &serde_json::json!({}));
+        assert!(bare.contains("not stated") && !bare.contains("SHA-256"));
+    }
 
     #[test]
     fn three_significant_digits() {

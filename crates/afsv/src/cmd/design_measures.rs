@@ -120,7 +120,7 @@ pub fn to_text(d: &DesignMeasures) -> String {
             change(&h.sp_drt_m_s2, &u.sp_drt_m_s2),
             100.0 * (h.yaw.omega_z_hz / u.yaw.omega_z_hz - 1.0),
         );
-        s += "  (\"within the seed spread\": the change is less than twice its standard error over\n   the seeds, so its sign is not settled; run more --seeds)\n";
+        s += "  (\"within the seed spread\": the change is less than twice its standard error over\n   the seeds, so its sign is not settled; run more --seeds. D3 runs once, on smooth\n   ground: omega_z and zeta have no seed spread)\n";
     } else {
         s += "  (the description gives the front axle no strut: no HPS column)\n";
     }

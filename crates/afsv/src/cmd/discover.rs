@@ -287,7 +287,8 @@ fn run_discover<M: DiscoveryModel>(model: &M, args: &DiscoverArgs) -> DiscoverRe
         &spinner,
     )?;
     spinner.0.finish();
-    let written = write_report(model, &d, &hold, &hold_names, output)?;
+    let provenance = afsv::provenance::stamp();
+    let written = write_report(model, &d, &hold, &hold_names, output, &provenance)?;
     let earned = d.calibration_problems.is_empty() || args.accept_poor_fit;
     let code = if earned {
         d.outcome.exit_code()
