@@ -33,17 +33,21 @@
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
+mod crba;
 mod dynamics;
 mod energy;
 mod error;
 mod inertia;
 pub mod joint;
 mod kinematics;
+mod ltdl;
 mod model;
 pub mod spatial;
 mod workspace;
 
-pub use dynamics::{bias_forces, forward_dynamics, inverse_dynamics, mass_matrix};
+pub use dynamics::{
+    bias_forces, forward_dynamics, inverse_dynamics, mass_matrix, solve_mass_matrix,
+};
 pub use energy::{centre_of_mass, kinetic_energy, potential_energy, spatial_momentum};
 pub use error::{DynamicsError, ModelError};
 pub use joint::Joint;
