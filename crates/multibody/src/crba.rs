@@ -14,13 +14,18 @@
 //!   (no transform per edge);
 //! - `H[k, j] = S̄_j^T Ī^c_i S̄_k` for every dof `j` on the ancestor chain of `k`
 //!   (including `k`): one product `F = Ī^c_i S̄_k` per dof and one 6-vector dot product
-//!   per structural non-zero, no transform per ancestor.
+//!   per structural non-zero, no transform per ancestor; for a floating root,
+//!   `S̄ = 1` and the entry is a component of `F`.
+//!
+//! The body inertias enter by the parallel-axis theorem about their transformed centres of
+//! mass ([`RigidInertia::body_in`]); massless bodies are skipped.
 //!
 //! The root frame (rather than the world frame) keeps the lever arms short, so no precision
 //! is lost to large positions, and makes `S̄ = S` for the root joint itself. The result
 //! fills the packed rows of the tree-sparse factorisation ([`crate::ltdl`]) and the dense
 //! matrix returned by [`crate::mass_matrix`].
 
+use crate::inertia::RigidInertia;
 use crate::joint::Joint;
 use crate::model::Model;
 use crate::spatial::{spatial, SpatialTransform};
@@ -48,7 +53,11 @@ pub(crate) fn crba(model: &Model, ws: &mut Workspace) {
                     ws.x_up[i].after(&ws.x_root[p])
                 };
                 ws.x_root[i] = x;
-                ws.ic[i] = link.rigid_inertia.in_parent(&x);
+                ws.ic[i] = if body.mass == 0.0 {
+                    RigidInertia::zero()
+                } else {
+                    RigidInertia::body_in(body.mass, &body.com, &body.inertia, &x)
+                };
                 subspace_in_root(&body.joint, &x, &mut ws.cdof[dofs]);
             }
         }
@@ -63,8 +72,14 @@ pub(crate) fn crba(model: &Model, ws: &mut Workspace) {
     for (i, link) in model.links.iter().enumerate() {
         for k in link.v_offset..link.v_offset + link.nv {
             let f = ws.ic[i].apply(&ws.cdof[k]);
-            for (h, &j) in ws.hs[tree.row(k)].iter_mut().zip(tree.cols(k)) {
+            let (start, general, unit) = tree.split_row(k);
+            let (h_general, h_unit) = ws.hs[start..].split_at_mut(general.len());
+            for (h, &j) in h_general.iter_mut().zip(general) {
                 *h = ws.cdof[j].dot(&f);
+            }
+            // A floating root's S̄_j = e_m: the entry is a component of F.
+            for (h, &j) in h_unit.iter_mut().zip(unit) {
+                *h = f[tree.unit_axis[j]];
             }
         }
     }

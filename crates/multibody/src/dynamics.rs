@@ -40,9 +40,9 @@ fn rnea(model: &Model, ws: &mut Workspace, vdot: Option<&[f64]>) {
         if let Some(vd) = vdot {
             a += subspace_times(link, vd);
         }
-        let iv = link.inertia * ws.vel[i];
+        let iv = link.rigid_inertia.apply(&ws.vel[i]);
         ws.acc[i] = a;
-        ws.force[i] = link.inertia * a + cross_force(&ws.vel[i], &iv) - ws.f_ext[i];
+        ws.force[i] = link.rigid_inertia.apply(&a) + cross_force(&ws.vel[i], &iv) - ws.f_ext[i];
     }
     for (i, body) in model.bodies().iter().enumerate().rev() {
         if let Some(p) = body.parent {

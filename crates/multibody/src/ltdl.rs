@@ -13,6 +13,7 @@
 //! suffix of `k`'s, so the elimination step `H[i, j] -= a H[k, j]` for all `j` in the chain
 //! of `i` is one contiguous loop over two slices.
 
+use crate::joint::Joint;
 use crate::model::{Body, Link};
 
 /// Marks a dof with no parent dof (a chain root).
@@ -28,6 +29,12 @@ pub(crate) struct DofTree {
     row: Vec<usize>,
     /// Column of every packed entry: row `k` holds the chain `k, λ(k), λ(λ(k)), ...`.
     col: Vec<usize>,
+    /// `m` for the dofs of a floating root joint, whose motion subspace column in the
+    /// root frame is the unit vector `e_m` (so `H[k, j] = (I^c S̄_k)[m]`), else [`NONE`].
+    pub(crate) unit_axis: Vec<usize>,
+    /// Number of leading entries of each row that are not such unit-axis dofs (those
+    /// come last: they belong to the tree's root).
+    split: Vec<usize>,
 }
 
 impl DofTree {
@@ -53,12 +60,23 @@ impl DofTree {
                 inherited
             };
         }
-        Self::from_parents(parent)
+        let mut unit_axis = vec![NONE; parent.len()];
+        for (body, link) in bodies.iter().zip(links) {
+            if body.parent.is_none() && body.joint == Joint::Floating {
+                for (m, axis) in unit_axis[link.v_offset..link.v_offset + 6]
+                    .iter_mut()
+                    .enumerate()
+                {
+                    *axis = m;
+                }
+            }
+        }
+        Self::from_parents(parent, unit_axis)
     }
 
     /// The packed rows of the ancestor chains of the parent array `parent`
-    /// (`parent[k] < k` or [`NONE`]).
-    fn from_parents(parent: Vec<usize>) -> Self {
+    /// (`parent[k] < k` or [`NONE`]), with the unit-axis dofs `unit_axis`.
+    fn from_parents(parent: Vec<usize>, unit_axis: Vec<usize>) -> Self {
         let mut row = vec![0];
         let mut col = Vec::new();
         for k in 0..parent.len() {
@@ -69,7 +87,19 @@ impl DofTree {
             }
             row.push(col.len());
         }
-        Self { parent, row, col }
+        let split = (0..parent.len())
+            .map(|k| {
+                let cols = &col[row[k]..row[k + 1]];
+                cols.iter().take_while(|&&j| unit_axis[j] == NONE).count()
+            })
+            .collect();
+        Self {
+            parent,
+            row,
+            col,
+            unit_axis,
+            split,
+        }
     }
 
     /// Number of degrees of freedom.
@@ -90,6 +120,14 @@ impl DofTree {
     /// Columns of row `k`: `k` itself, then its ancestors, nearest first.
     pub(crate) fn cols(&self, k: usize) -> &[usize] {
         &self.col[self.row(k)]
+    }
+
+    /// Row `k`'s packed range and columns, split into the entries of general dofs and
+    /// the trailing entries of unit-axis dofs (see [`Self::unit_axis`]).
+    pub(crate) fn split_row(&self, k: usize) -> (usize, &[usize], &[usize]) {
+        let start = self.row[k];
+        let (general, unit) = self.cols(k).split_at(self.split[k]);
+        (start, general, unit)
     }
 
     /// Factorises in place the packed rows of `H` into `L^T D L` (Featherstone 2008,
@@ -161,7 +199,8 @@ mod tests {
             .enumerate()
             .map(|(k, s)| if s % (k + 1) == k { NONE } else { s % (k + 1) })
             .collect();
-        DofTree::from_parents(parent)
+        let n = parent.len();
+        DofTree::from_parents(parent, vec![NONE; n])
     }
 
     /// `H = L^T D L` for a random unit lower-triangular `L` with the tree's pattern and
@@ -234,7 +273,6 @@ mod tests {
 
     #[test]
     fn chains_skip_fixed_joints_and_split_branches() {
-        use crate::joint::Joint;
         use crate::spatial::SpatialTransform;
         use nalgebra::{Isometry3, Matrix3, Vector3};
         let body = |parent, joint: Joint| Body {
