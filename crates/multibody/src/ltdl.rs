@@ -29,6 +29,8 @@ pub(crate) struct DofTree {
     row: Vec<usize>,
     /// Column of every packed entry: row `k` holds the chain `k, λ(k), λ(λ(k)), ...`.
     col: Vec<usize>,
+    /// Start of the row of every packed entry's column, `row[col[e]]`.
+    col_row: Vec<usize>,
     /// `m` for the dofs of a floating root joint, whose motion subspace column in the
     /// root frame is the unit vector `e_m` (so `H[k, j] = (I^c S̄_k)[m]`), else [`NONE`].
     pub(crate) unit_axis: Vec<usize>,
@@ -93,10 +95,12 @@ impl DofTree {
                 cols.iter().take_while(|&&j| unit_axis[j] == NONE).count()
             })
             .collect();
+        let col_row = col.iter().map(|&j| row[j]).collect();
         Self {
             parent,
             row,
             col,
+            col_row,
             unit_axis,
             split,
         }
@@ -113,17 +117,20 @@ impl DofTree {
     }
 
     /// Packed range of row `k`.
+    #[inline]
     pub(crate) fn row(&self, k: usize) -> std::ops::Range<usize> {
         self.row[k]..self.row[k + 1]
     }
 
     /// Columns of row `k`: `k` itself, then its ancestors, nearest first.
+    #[inline]
     pub(crate) fn cols(&self, k: usize) -> &[usize] {
         &self.col[self.row(k)]
     }
 
     /// Row `k`'s packed range and columns, split into the entries of general dofs and
     /// the trailing entries of unit-axis dofs (see [`Self::unit_axis`]).
+    #[inline]
     pub(crate) fn split_row(&self, k: usize) -> (usize, &[usize], &[usize]) {
         let start = self.row[k];
         let (general, unit) = self.cols(k).split_at(self.split[k]);
@@ -136,21 +143,21 @@ impl DofTree {
     /// soon as a pivot `D[k]` is not finite and positive, i.e. `H` is not positive definite.
     pub(crate) fn factor(&self, packed: &mut [f64]) -> bool {
         for k in (0..self.nv()).rev() {
-            let rk = self.row(k);
-            let (head, tail) = packed.split_at_mut(rk.start);
-            let row_k = &mut tail[..rk.len()];
+            let (start, end) = (self.row[k], self.row[k + 1]);
+            let (head, tail) = packed.split_at_mut(start);
+            let row_k = &mut tail[..end - start];
             let d = row_k[0];
             if !(d.is_finite() && d > 0.0) {
                 return false;
             }
-            for p in 1..row_k.len() {
-                let i = self.col[rk.start + p];
-                let a = row_k[p] / d;
-                // The chain of ancestor `i` is the suffix of `k`'s from position `p`.
-                let row_i = &mut head[self.row(i)];
-                for (hij, hkj) in row_i.iter_mut().zip(&row_k[p..]) {
-                    *hij -= a * hkj;
-                }
+            let inv_d = 1.0 / d;
+            // Entry `p` of row `k` is `H[k, i]` for the ancestor `i`, whose row holds the
+            // columns of row `k` from position `p` on.
+            for (p, &ri) in self.col_row[start + 1..end].iter().enumerate() {
+                let p = p + 1;
+                let n = row_k.len() - p;
+                let a = row_k[p] * inv_d;
+                sub_scaled(&mut head[ri..ri + n], a, &row_k[p..]);
                 row_k[p] = a;
             }
         }
@@ -182,6 +189,15 @@ impl DofTree {
             }
             x[k] = xk;
         }
+    }
+}
+
+/// `y -= a x` over the common length (two distinct slices, so the loop needs no overlap
+/// check).
+#[inline(always)]
+fn sub_scaled(y: &mut [f64], a: f64, x: &[f64]) {
+    for (yi, xi) in y.iter_mut().zip(x) {
+        *yi -= a * xi;
     }
 }
 
