@@ -137,12 +137,39 @@ impl DofTree {
         (start, general, unit)
     }
 
+    /// End of the entries of row `k` that the general loops handle: the row's end, or, for
+    /// a row below a floating root (not of the root itself), the start of the root's six
+    /// trailing entries, which the fixed-size code handles.
+    #[inline]
+    fn general_end(&self, k: usize) -> usize {
+        let (start, end) = (self.row[k], self.row[k + 1]);
+        let split = self.split[k];
+        if split > 0 && end - start - split == 6 {
+            start + split
+        } else {
+            end
+        }
+    }
+
     /// Factorises in place the packed rows of `H` into `L^T D L` (Featherstone 2008,
     /// Table 6.3): afterwards the first entry of row `k` is `D[k]` and the others are
     /// `L[k, j]` along the chain. Returns `false`, leaving `packed` partly factorised, as
     /// soon as a pivot `D[k]` is not finite and positive, i.e. `H` is not positive definite.
     pub(crate) fn factor(&self, packed: &mut [f64]) -> bool {
-        for k in (0..self.nv()).rev() {
+        let mut next = self.nv();
+        while next > 0 {
+            let k = next - 1;
+            next = k;
+            if self.unit_axis[k] == 5 {
+                // The last dof of a floating root: its six rows are the 21 entries from
+                // the row of its first dof, factorised by fixed-size code.
+                next = k - 5;
+                let base = self.row[next];
+                if !factor_root_block(&mut packed[base..base + 21]) {
+                    return false;
+                }
+                continue;
+            }
             let (start, end) = (self.row[k], self.row[k + 1]);
             let (head, tail) = packed.split_at_mut(start);
             let row_k = &mut tail[..end - start];
@@ -151,14 +178,23 @@ impl DofTree {
                 return false;
             }
             let inv_d = 1.0 / d;
+            // A row below a floating root ends with that root's six dofs, whose rows are
+            // the 21 packed entries from the root's first row on: eliminated by
+            // `eliminate_into_root`, the general loop stops before them.
+            let general_end = self.general_end(k);
+            let split = general_end - start;
             // Entry `p` of row `k` is `H[k, i]` for the ancestor `i`, whose row holds the
             // columns of row `k` from position `p` on.
-            for (p, &ri) in self.col_row[start + 1..end].iter().enumerate() {
+            for (p, &ri) in self.col_row[start + 1..general_end].iter().enumerate() {
                 let p = p + 1;
                 let n = row_k.len() - p;
                 let a = row_k[p] * inv_d;
                 sub_scaled(&mut head[ri..ri + n], a, &row_k[p..]);
                 row_k[p] = a;
+            }
+            if general_end < end {
+                let base = self.col_row[end - 1];
+                eliminate_into_root(&mut head[base..base + 21], &mut row_k[split..], inv_d);
             }
         }
         true
@@ -169,27 +205,66 @@ impl DofTree {
     /// inwards, then `L x = D^-1 z` from the roots outwards.
     pub(crate) fn solve(&self, packed: &[f64], x: &mut [f64]) {
         for k in (0..self.nv()).rev() {
-            let rk = self.row(k);
+            let (start, end) = (self.row[k], self.row[k + 1]);
             let xk = x[k];
-            for (l, &j) in packed[rk.start + 1..rk.end]
-                .iter()
-                .zip(&self.col[rk.start + 1..rk.end])
-            {
+            for (l, &j) in packed[start + 1..end].iter().zip(&self.col[start + 1..end]) {
                 x[j] -= l * xk;
             }
         }
         for k in 0..self.nv() {
-            let rk = self.row(k);
-            let mut xk = x[k] / packed[rk.start];
-            for (l, &j) in packed[rk.start + 1..rk.end]
-                .iter()
-                .zip(&self.col[rk.start + 1..rk.end])
-            {
+            let (start, end) = (self.row[k], self.row[k + 1]);
+            let mut xk = x[k] / packed[start];
+            for (l, &j) in packed[start + 1..end].iter().zip(&self.col[start + 1..end]) {
                 xk -= l * x[j];
             }
             x[k] = xk;
         }
     }
+}
+
+/// The elimination steps of [`DofTree::factor`] for the six trailing entries `h` of a row
+/// (pivot `1 / inv_d`) whose columns are the dofs `5, 4, ..., 0` of a floating root, whose
+/// rows are packed in `block` (row `m` at `m (m + 1) / 2`, length `m + 1`). Fixed sizes, so
+/// the loops unroll.
+#[inline(always)]
+fn eliminate_into_root(block: &mut [f64], h: &mut [f64], inv_d: f64) {
+    let block: &mut [f64; 21] = block.try_into().expect("a floating root has 21 entries");
+    let h: &mut [f64; 6] = h.try_into().expect("a floating root has 6 dofs");
+    for t in 0..6 {
+        let m = 5 - t;
+        let a = h[t] * inv_d;
+        let row = m * (m + 1) / 2;
+        for u in 0..=m {
+            block[row + u] -= a * h[t + u];
+        }
+        h[t] = a;
+    }
+}
+
+/// [`DofTree::factor`] on the 21 packed entries of a floating root's rows (row `m` at
+/// `m (m + 1) / 2`, columns `m, m - 1, ..., 0`): the same operations in the same order,
+/// with fixed sizes so the loops unroll. `false` if a pivot is not finite and positive.
+#[inline(always)]
+fn factor_root_block(block: &mut [f64]) -> bool {
+    let block: &mut [f64; 21] = block.try_into().expect("a floating root has 21 entries");
+    for m in (0..6).rev() {
+        let row = m * (m + 1) / 2;
+        let d = block[row];
+        if !(d.is_finite() && d > 0.0) {
+            return false;
+        }
+        let inv_d = 1.0 / d;
+        for t in 1..=m {
+            let i = m - t;
+            let a = block[row + t] * inv_d;
+            let row_i = i * (i + 1) / 2;
+            for u in 0..=i {
+                block[row_i + u] -= a * block[row + t + u];
+            }
+            block[row + t] = a;
+        }
+    }
+    true
 }
 
 /// `y -= a x` over the common length (two distinct slices, so the loop needs no overlap
@@ -208,15 +283,25 @@ mod tests {
     use proptest::prelude::*;
 
     /// A tree from parent seeds: dof `k`'s parent is `seed % (k + 1)`, or none when that
-    /// equals `k`.
-    fn tree(seeds: &[usize]) -> DofTree {
+    /// equals `k`; with `floating`, dofs 0 to 5 are instead a floating root's chain (unit
+    /// axes) below whose last dof every other parent in it is moved, so the fixed-size root
+    /// code runs.
+    fn tree(seeds: &[usize], floating: bool) -> DofTree {
+        let floating = floating && seeds.len() >= 6;
         let parent: Vec<usize> = seeds
             .iter()
             .enumerate()
-            .map(|(k, s)| if s % (k + 1) == k { NONE } else { s % (k + 1) })
+            .map(|(k, s)| match (floating && k < 6, s % (k + 1)) {
+                (true, _) => k.checked_sub(1).unwrap_or(NONE),
+                (false, p) if p == k => NONE,
+                (false, p) if floating && p < 6 => 5, // joints hang below the whole root
+                (false, p) => p,
+            })
             .collect();
-        let n = parent.len();
-        DofTree::from_parents(parent, vec![NONE; n])
+        let unit_axis = (0..parent.len())
+            .map(|k| if floating && k < 6 { k } else { NONE })
+            .collect();
+        DofTree::from_parents(parent, unit_axis)
     }
 
     /// `H = L^T D L` for a random unit lower-triangular `L` with the tree's pattern and
@@ -247,10 +332,11 @@ mod tests {
         #[test]
         fn sparse_ltdl_solves_like_dense_cholesky(
             seeds in prop::collection::vec(0..1000usize, 1..20),
+            floating in any::<bool>(),
             values in prop::collection::vec(-2.0..2.0_f64, 210),
             rhs in prop::collection::vec(-5.0..5.0_f64, 20),
         ) {
-            let t = tree(&seeds);
+            let t = tree(&seeds, floating);
             let n = t.nv();
             let (h, mut packed) = random_h(&t, &values);
             // Entries off the ancestor chains are structural zeros of H.
@@ -279,8 +365,8 @@ mod tests {
 
     #[test]
     fn an_indefinite_matrix_is_refused() {
-        let t = tree(&[0, 0, 1]); // chain 0 <- 1 <- 2
-                                  // H = [[1, 2, 0], [2, 1, 0], [0, 0, 1]] has eigenvalue -1.
+        let t = tree(&[0, 0, 1], false); // chain 0 <- 1 <- 2
+                                         // H = [[1, 2, 0], [2, 1, 0], [0, 0, 1]] has eigenvalue -1.
         let mut packed = vec![1.0, 1.0, 2.0, 1.0, 0.0, 0.0];
         assert!(!t.factor(&mut packed));
         let mut nan = vec![1.0, f64::NAN, 0.0, 1.0, 0.0, 0.0];
