@@ -73,13 +73,18 @@ pub(crate) fn crba(model: &Model, ws: &mut Workspace) {
         for k in link.v_offset..link.v_offset + link.nv {
             let f = ws.ic[i].apply(&ws.cdof[k]);
             let (start, general, unit) = tree.split_row(k);
-            let (h_general, h_unit) = ws.hs[start..].split_at_mut(general.len());
+            let row = &mut ws.hs[start..start + general.len() + unit.len()];
+            let (h_general, h_unit) = row.split_at_mut(general.len());
             for (h, &j) in h_general.iter_mut().zip(general) {
                 *h = ws.cdof[j].dot(&f);
             }
-            // A floating root's S̄_j = e_m: the entry is a component of F.
-            for (h, &j) in h_unit.iter_mut().zip(unit) {
-                *h = f[tree.unit_axis[j]];
+            // A floating root's S̄_j = e_m: the entry is a component of F. Its dofs come
+            // last in the chain, in descending order.
+            if let Some(&first) = unit.first() {
+                let m0 = tree.unit_axis[first];
+                for (t, h) in h_unit.iter_mut().enumerate() {
+                    *h = f[m0 - t];
+                }
             }
         }
     }
@@ -88,11 +93,10 @@ pub(crate) fn crba(model: &Model, ws: &mut Workspace) {
         ws.h.fill(0.0);
         ws.h_pattern.copy_from_slice(&tree.parent);
     }
-    for k in 0..tree.nv() {
-        for (&h, &j) in ws.hs[tree.row(k)].iter().zip(tree.cols(k)) {
-            ws.h[(k, j)] = h;
-            ws.h[(j, k)] = h;
-        }
+    let dense = ws.h.as_mut_slice();
+    for (&h, &(lower, upper)) in ws.hs.iter().zip(&tree.dense) {
+        dense[lower] = h;
+        dense[upper] = h;
     }
     ws.h_current = true;
 }

@@ -53,14 +53,27 @@ impl RigidInertia {
         inertia_com: &Matrix3<f64>,
         x: &SpatialTransform,
     ) -> Self {
-        let et = x.rot.transpose();
-        let c = x.pos + et * com;
+        let e = &x.rot;
+        let c = x.pos + e.tr_mul(com);
         let mc = mass * c;
-        let mut ibar = et * inertia_com * x.rot - mc * c.transpose();
+        // E^T I_c E is symmetric: one product M = I_c E, then the six entries of E^T M.
+        let m = inertia_com * e;
+        let entry = |a: usize, b: usize| {
+            e[(0, a)] * m[(0, b)] + e[(1, a)] * m[(1, b)] + e[(2, a)] * m[(2, b)] - mc[a] * c[b]
+        };
         let diagonal = mc.dot(&c);
-        for k in 0..3 {
-            ibar[(k, k)] += diagonal;
-        }
+        let (xy, xz, yz) = (entry(0, 1), entry(0, 2), entry(1, 2));
+        let ibar = Matrix3::new(
+            entry(0, 0) + diagonal,
+            xy,
+            xz,
+            xy,
+            entry(1, 1) + diagonal,
+            yz,
+            xz,
+            yz,
+            entry(2, 2) + diagonal,
+        );
         Self { mass, h: mc, ibar }
     }
 

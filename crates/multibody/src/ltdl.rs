@@ -31,6 +31,9 @@ pub(crate) struct DofTree {
     col: Vec<usize>,
     /// Start of the row of every packed entry's column, `row[col[e]]`.
     col_row: Vec<usize>,
+    /// Column-major offsets `(k + nv j, j + nv k)` of every packed entry `(k, j)` and its
+    /// mirror in the dense `nv x nv` matrix.
+    pub(crate) dense: Vec<(usize, usize)>,
     /// `m` for the dofs of a floating root joint, whose motion subspace column in the
     /// root frame is the unit vector `e_m` (so `H[k, j] = (I^c S̄_k)[m]`), else [`NONE`].
     pub(crate) unit_axis: Vec<usize>,
@@ -96,11 +99,17 @@ impl DofTree {
             })
             .collect();
         let col_row = col.iter().map(|&j| row[j]).collect();
+        let nv = parent.len();
+        let dense = (0..nv)
+            .flat_map(|k| col[row[k]..row[k + 1]].iter().map(move |&j| (k, j)))
+            .map(|(k, j)| (k + nv * j, j + nv * k))
+            .collect();
         Self {
             parent,
             row,
             col,
             col_row,
+            dense,
             unit_axis,
             split,
         }
