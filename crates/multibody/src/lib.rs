@@ -1,7 +1,8 @@
 //! Small multibody core in minimal (joint) coordinates for ODE-integrated vehicle models,
 //! after Featherstone, "Rigid Body Dynamics Algorithms", Springer 2008: spatial algebra
-//! (chapter 2), kinematic trees (chapter 4), recursive Newton-Euler (Table 5.1) and the
-//! composite-rigid-body algorithm (Table 6.2).
+//! (chapter 2), kinematic trees (chapter 4), recursive Newton-Euler (Table 5.1), the
+//! composite-rigid-body algorithm (section 6.2, evaluated in one frame per tree) and the
+//! tree-sparse `L^T D L` factorisation of the mass matrix (section 6.5, Tables 6.3-6.4).
 //!
 //! Usage per ODE right-hand-side evaluation, with state `[q, v]`:
 //!
