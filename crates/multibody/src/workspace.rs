@@ -32,7 +32,7 @@ pub struct Workspace {
     pub(crate) force: Vec<Vector6<f64>>,
     /// External forces on each body, body coordinates, about the body origin.
     pub(crate) f_ext: Vec<Vector6<f64>>,
-    /// CRBA composite inertias, body coordinates.
+    /// CRBA composite inertias, in the coordinates of each tree's root body.
     pub(crate) ic: Vec<RigidInertia>,
     /// Joint velocities of the last kinematics update.
     pub(crate) v: DVector<f64>,
