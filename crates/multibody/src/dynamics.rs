@@ -18,8 +18,10 @@ use crate::workspace::Workspace;
 use nalgebra::{DMatrix, Vector3, Vector6};
 
 /// Composite-rigid-body algorithm (Featherstone 2008, section 6.2) in one common frame
-/// per tree (see [`crate::crba`]): fills and returns the symmetric joint-space mass matrix
-/// `H(q)` at the configuration of the last [`crate::update_kinematics`].
+/// per tree, the root body's: body inertias and motion subspaces are expressed there once,
+/// composite inertias are plain sums, and `H[k, j] = S̄_j^T (Ī^c S̄_k)` along each ancestor
+/// chain (docs/numerics.md, "Multibody core"). Fills and returns the symmetric joint-space
+/// mass matrix `H(q)` at the configuration of the last [`crate::update_kinematics`].
 pub fn mass_matrix<'w>(
     model: &Model,
     ws: &'w mut Workspace,
