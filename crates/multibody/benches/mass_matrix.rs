@@ -1,10 +1,13 @@
-//! Cost of one forward-dynamics evaluation (kinematics + CRBA + RNEA + Cholesky solve)
-//! for the 14-DOF truck tree, and of CRBA and RNEA alone.
+//! Cost of one forward-dynamics evaluation (kinematics + CRBA + RNEA + sparse L^T D L
+//! solve) for the 14-DOF truck tree, and of CRBA, RNEA and the factorisation and solve
+//! alone.
 #[path = "../tests/support/vehicle.rs"]
 mod vehicle;
 
 use criterion::{criterion_group, criterion_main, Criterion};
-use multibody::{bias_forces, forward_dynamics, mass_matrix, update_kinematics, Workspace};
+use multibody::{
+    bias_forces, forward_dynamics, mass_matrix, solve_mass_matrix, update_kinematics, Workspace,
+};
 use nalgebra::{UnitQuaternion, Vector3};
 use std::hint::black_box;
 use vehicle::{springs, truck, TRUCK_SPRINGS};
@@ -33,6 +36,15 @@ fn bench(c: &mut Criterion) {
     });
     c.bench_function("truck14_rnea_bias", |b| {
         b.iter(|| bias_forces(&model, black_box(&mut ws)).unwrap()[0])
+    });
+    mass_matrix(&model, &mut ws).unwrap();
+    let mut x = [0.0; 14];
+    c.bench_function("truck14_ltdl_solve", |b| {
+        b.iter(|| {
+            x.copy_from_slice(black_box(&tau));
+            solve_mass_matrix(&model, &mut ws, &mut x).unwrap();
+            x[0]
+        })
     });
 }
 

@@ -1,22 +1,27 @@
 //! Joint-space dynamics `H(q) vdot + C(q, v) = tau`: the composite-rigid-body algorithm
 //! for `H` (Featherstone, "Rigid Body Dynamics Algorithms", 2008, Table 6.2), the
 //! recursive Newton-Euler algorithm for `C` and inverse dynamics (Table 5.1), and forward
-//! dynamics by a Cholesky solve of the joint-space equation (ch. 6).
+//! dynamics by the tree-sparse `L^T D L` solve of the joint-space equation (section 6.5,
+//! Tables 6.3 and 6.4).
 //!
 //! Gravity enters RNEA as a fictitious base acceleration `a_0 = -a_g` (ch. 5);
 //! external forces are those accumulated in the [`Workspace`] since the last
 //! [`crate::update_kinematics`]. None of these functions allocate.
 
+use crate::crba::crba;
 use crate::error::DynamicsError;
 use crate::kinematics::{check_len, subspace_times};
-use crate::model::{Link, Model};
+use crate::ltdl::DofTree;
+use crate::model::Model;
 use crate::spatial::{cross_force, cross_motion, spatial};
 use crate::workspace::Workspace;
-use nalgebra::{Cholesky, DMatrix, Vector3, Vector6};
+use nalgebra::{DMatrix, Vector3, Vector6};
 
-/// Composite-rigid-body algorithm (Featherstone 2008, Table 6.2): fills and returns the
-/// symmetric joint-space mass matrix `H(q)` at the configuration of the last
-/// [`crate::update_kinematics`].
+/// Composite-rigid-body algorithm (Featherstone 2008, section 6.2) in one common frame
+/// per tree, the root body's: body inertias and motion subspaces are expressed there once,
+/// composite inertias are plain sums, and `H[k, j] = S̄_j^T (Ī^c S̄_k)` along each ancestor
+/// chain (docs/numerics.md, "Multibody core"). Fills and returns the symmetric joint-space
+/// mass matrix `H(q)` at the configuration of the last [`crate::update_kinematics`].
 pub fn mass_matrix<'w>(
     model: &Model,
     ws: &'w mut Workspace,
@@ -24,47 +29,6 @@ pub fn mass_matrix<'w>(
     ws.check(model)?;
     crba(model, ws);
     Ok(&ws.h)
-}
-
-fn crba(model: &Model, ws: &mut Workspace) {
-    for (ic, link) in ws.ic.iter_mut().zip(&model.links) {
-        *ic = link.rigid_inertia;
-    }
-    for (i, body) in model.bodies().iter().enumerate().rev() {
-        if let Some(p) = body.parent {
-            let ic_parent = ws.ic[i].in_parent(&ws.x_up[i]);
-            ws.ic[p] += ic_parent;
-        }
-    }
-    ws.h.fill(0.0);
-    for (i, link) in model.links.iter().enumerate() {
-        let mut f_store = [Vector6::zeros(); 6];
-        let f = &mut f_store[..link.nv];
-        for (k, fk) in f.iter_mut().enumerate() {
-            *fk = ws.ic[i].apply(&link.subspace.column(k).into_owned());
-        }
-        set_block(&mut ws.h, link, link, f);
-        let mut j = i;
-        while let Some(p) = model.bodies()[j].parent {
-            for fk in f.iter_mut() {
-                *fk = ws.x_up[j].transpose_apply_force(fk);
-            }
-            j = p;
-            set_block(&mut ws.h, &model.links[j], link, f);
-        }
-    }
-}
-
-/// `H[row, col] = S_row^T F` and its mirror `H[col, row]`, where `F` holds the columns
-/// of `I^c_col S_col` expressed in the row body's coordinates.
-fn set_block(h: &mut DMatrix<f64>, row: &Link, col: &Link, f: &[Vector6<f64>]) {
-    for a in 0..row.nv {
-        for (k, fk) in f.iter().enumerate() {
-            let hij = row.subspace.column(a).dot(fk);
-            h[(row.v_offset + a, col.v_offset + k)] = hij;
-            h[(col.v_offset + k, row.v_offset + a)] = hij;
-        }
-    }
 }
 
 /// RNEA passes (Featherstone 2008, Table 5.1) at the state of the last kinematics update
@@ -78,9 +42,9 @@ fn rnea(model: &Model, ws: &mut Workspace, vdot: Option<&[f64]>) {
         if let Some(vd) = vdot {
             a += subspace_times(link, vd);
         }
-        let iv = link.inertia * ws.vel[i];
+        let iv = link.rigid_inertia.apply(&ws.vel[i]);
         ws.acc[i] = a;
-        ws.force[i] = link.inertia * a + cross_force(&ws.vel[i], &iv) - ws.f_ext[i];
+        ws.force[i] = link.rigid_inertia.apply(&a) + cross_force(&ws.vel[i], &iv) - ws.f_ext[i];
     }
     for (i, body) in model.bodies().iter().enumerate().rev() {
         if let Some(p) = body.parent {
@@ -128,8 +92,10 @@ pub fn inverse_dynamics(
     Ok(())
 }
 
-/// Forward dynamics: solves `H vdot = tau - C` with a Cholesky factorisation of the CRBA
-/// mass matrix (Featherstone 2008, ch. 6) and returns `vdot` (length `nv`).
+/// Forward dynamics: solves `H vdot = tau - C` with the CRBA mass matrix (Featherstone
+/// 2008, section 6.2) factorised as `H = L^T D L` along the tree (section 6.5, Tables 6.3
+/// and 6.4; see [`crate::solve_mass_matrix`]) and returns `vdot` (length `nv`). Also leaves
+/// `H` and `C` in the workspace ([`Workspace::mass_matrix`], [`Workspace::bias_forces`]).
 ///
 /// `tau` are the caller's joint forces (springs, dampers, drive torques); floating-joint
 /// entries are a body-coordinate wrench `[moment; force]` about the body origin.
@@ -146,22 +112,42 @@ pub fn forward_dynamics<'w>(
     for ((vd, t), c) in ws.vdot.iter_mut().zip(tau).zip(ws.c.iter()) {
         *vd = t - c;
     }
-    // The factor borrows the preallocated buffer; `take` leaves an empty matrix
-    // (no allocation) and the buffer is handed back below. A dense factorisation: with
-    // the floating base, 6 of this crate's typical 10-14 degrees of freedom form one chain,
-    // so Featherstone's sparse L^T L (Table 6.3) saves few operations and, with its
-    // index-chasing loops, measured slower than nalgebra's Cholesky (docs/multibody.md).
-    let mut buffer = std::mem::take(&mut ws.chol);
-    buffer.copy_from(&ws.h);
-    let chol = Cholesky::new_unchecked(buffer);
-    let l = chol.l_dirty();
-    let definite = (0..l.nrows()).all(|j| l[(j, j)].is_finite() && l[(j, j)] > 0.0);
-    if definite {
-        chol.solve_mut(&mut ws.vdot);
+    ltdl_solve(&model.dofs, &ws.hs, &mut ws.ldl, ws.vdot.as_mut_slice())?;
+    Ok(&ws.vdot)
+}
+
+/// Solves `H(q) x = b` in place (`x` holds `b` on entry, length `nv`) at the configuration
+/// of the last [`crate::update_kinematics`], by the tree-sparse factorisation
+/// `H = L^T D L` (Featherstone 2008, section 6.5, Tables 6.3 and 6.4): `L` keeps the
+/// sparsity of the expanded parent array, so the factor costs one multiply-add per pair of
+/// dofs on a common ancestor chain instead of the dense `nv^3 / 6`. Computes `H` first
+/// unless [`mass_matrix`] or [`forward_dynamics`] already did at this configuration;
+/// factorises on every call. Allocation free.
+pub fn solve_mass_matrix(
+    model: &Model,
+    ws: &mut Workspace,
+    x: &mut [f64],
+) -> Result<(), DynamicsError> {
+    ws.check(model)?;
+    check_len("x", x, model.nv())?;
+    if !ws.h_current {
+        crba(model, ws);
     }
-    ws.chol = chol.unpack_dirty();
-    if definite {
-        Ok(&ws.vdot)
+    ltdl_solve(&model.dofs, &ws.hs, &mut ws.ldl, x)
+}
+
+/// Copies the packed `H` into the factor buffer, factorises it and solves in place.
+fn ltdl_solve(
+    tree: &DofTree,
+    hs: &[f64],
+    ldl: &mut [f64],
+    x: &mut [f64],
+) -> Result<(), DynamicsError> {
+    let ldl = &mut ldl[..tree.nnz()];
+    ldl.copy_from_slice(&hs[..tree.nnz()]);
+    if tree.factor(ldl) {
+        tree.solve(ldl, x);
+        Ok(())
     } else {
         Err(DynamicsError::MassMatrixNotPositiveDefinite)
     }

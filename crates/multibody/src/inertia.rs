@@ -41,6 +41,42 @@ impl RigidInertia {
         }
     }
 
+    /// The rigid body of `mass` with centre of mass `com` and rotational inertia
+    /// `inertia_com` about it (B coordinates) expressed in A coordinates, `x = B X A`: the
+    /// same as `RigidInertia::new(mass, com, inertia_com).in_parent(x)`, by the
+    /// parallel-axis theorem about the transformed centre of mass (Featherstone 2008,
+    /// ch. 2): `c_A = r + E^T c`, `h_A = m c_A`, `Ī_A = E^T I_c E + m (|c_A|² 1 - c_A c_A^T)`.
+    /// Two 3x3 products instead of the four of [`Self::in_parent`].
+    pub(crate) fn body_in(
+        mass: f64,
+        com: &Vector3<f64>,
+        inertia_com: &Matrix3<f64>,
+        x: &SpatialTransform,
+    ) -> Self {
+        let e = &x.rot;
+        let c = x.pos + e.tr_mul(com);
+        let mc = mass * c;
+        // E^T I_c E is symmetric: one product M = I_c E, then the six entries of E^T M.
+        let m = inertia_com * e;
+        let entry = |a: usize, b: usize| {
+            e[(0, a)] * m[(0, b)] + e[(1, a)] * m[(1, b)] + e[(2, a)] * m[(2, b)] - mc[a] * c[b]
+        };
+        let diagonal = mc.dot(&c);
+        let (xy, xz, yz) = (entry(0, 1), entry(0, 2), entry(1, 2));
+        let ibar = Matrix3::new(
+            entry(0, 0) + diagonal,
+            xy,
+            xz,
+            xy,
+            entry(1, 1) + diagonal,
+            yz,
+            xz,
+            yz,
+            entry(2, 2) + diagonal,
+        );
+        Self { mass, h: mc, ibar }
+    }
+
     /// `I m`: the momentum `[Ī ω + h × v; m v - h × ω]` of motion `m = [ω; v]`.
     pub(crate) fn apply(&self, m: &Vector6<f64>) -> Vector6<f64> {
         let (w, v) = (angular(m), linear(m));
@@ -52,7 +88,9 @@ impl RigidInertia {
 
     /// `X^T I X` for `x = B X A` and `self` in B coordinates: the same inertia in A
     /// coordinates (Featherstone 2008, ch. 2): with `h' = E^T h`,
-    /// `h_A = h' + m r` and `Ī_A = E^T Ī E - m r× r× - r× h'× - h'× r×`.
+    /// `h_A = h' + m r` and `Ī_A = E^T Ī E - m r× r× - r× h'× - h'× r×`. The reference for
+    /// [`Self::body_in`], which CRBA uses.
+    #[cfg(test)]
     pub(crate) fn in_parent(&self, x: &SpatialTransform) -> Self {
         let et = x.rot.transpose();
         let hp = et * self.h;
@@ -124,6 +162,8 @@ mod tests {
         let mut sum = i;
         sum += RigidInertia::new(0.0, &Vector3::zeros(), &Matrix3::zeros());
         sum += RigidInertia::new(1.0, &Vector3::new(-0.5, 0.0, 0.1), &Matrix3::identity());
+        let direct = RigidInertia::body_in(m, &c, &ic, &x).matrix();
+        assert!((direct - i.in_parent(&x).matrix()).norm() < 1e-12 * expected.norm());
         let expected = xm.transpose() * sum.matrix() * xm;
         assert!((sum.in_parent(&x).matrix() - expected).norm() < 1e-12 * expected.norm());
     }

@@ -52,6 +52,7 @@ pub fn update_kinematics(
     ws.v.copy_from_slice(v);
     ws.clear_external_forces();
     ws.kinematics_ready = true;
+    ws.h_current = false;
     Ok(())
 }
 

@@ -1,7 +1,8 @@
 //! Small multibody core in minimal (joint) coordinates for ODE-integrated vehicle models,
 //! after Featherstone, "Rigid Body Dynamics Algorithms", Springer 2008: spatial algebra
-//! (chapter 2), kinematic trees (chapter 4), recursive Newton-Euler (Table 5.1) and the
-//! composite-rigid-body algorithm (Table 6.2).
+//! (chapter 2), kinematic trees (chapter 4), recursive Newton-Euler (Table 5.1), the
+//! composite-rigid-body algorithm (section 6.2, evaluated in one frame per tree) and the
+//! tree-sparse `L^T D L` factorisation of the mass matrix (section 6.5, Tables 6.3-6.4).
 //!
 //! Usage per ODE right-hand-side evaluation, with state `[q, v]`:
 //!
@@ -33,17 +34,21 @@
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
+mod crba;
 mod dynamics;
 mod energy;
 mod error;
 mod inertia;
 pub mod joint;
 mod kinematics;
+mod ltdl;
 mod model;
 pub mod spatial;
 mod workspace;
 
-pub use dynamics::{bias_forces, forward_dynamics, inverse_dynamics, mass_matrix};
+pub use dynamics::{
+    bias_forces, forward_dynamics, inverse_dynamics, mass_matrix, solve_mass_matrix,
+};
 pub use energy::{centre_of_mass, kinetic_energy, potential_energy, spatial_momentum};
 pub use error::{DynamicsError, ModelError};
 pub use joint::Joint;

@@ -5,6 +5,7 @@
 use crate::error::ModelError;
 use crate::inertia::RigidInertia;
 use crate::joint::Joint;
+use crate::ltdl::DofTree;
 use crate::spatial::{rigid_body_inertia, SpatialTransform};
 use nalgebra::{DVector, Isometry3, Matrix3, Matrix6, SymmetricEigen, Vector3};
 
@@ -47,6 +48,8 @@ pub(crate) struct Link {
 pub struct Model {
     bodies: Vec<Body>,
     pub(crate) links: Vec<Link>,
+    /// Expanded parent array and packed mass-matrix structure, computed once.
+    pub(crate) dofs: DofTree,
     gravity: Vector3<f64>,
     nq: usize,
     nv: usize,
@@ -116,10 +119,12 @@ impl ModelBuilder {
                 nv += b.joint.nv();
                 link
             })
-            .collect();
+            .collect::<Vec<_>>();
+        let dofs = DofTree::new(&bodies, &links);
         Ok(Model {
             bodies,
             links,
+            dofs,
             gravity: self.gravity,
             nq,
             nv,

@@ -11,7 +11,8 @@ use crate::spatial::{spatial, SpatialTransform};
 use nalgebra::{DMatrix, DVector, Vector3, Vector6};
 
 /// Per-evaluation state of one [`Model`]: transforms, velocities, accelerations, forces,
-/// composite inertias, mass matrix, bias vector, accelerations and the Cholesky buffer.
+/// composite inertias, mass matrix (dense and packed), bias vector, accelerations and the
+/// factor buffer.
 #[derive(Debug, Clone)]
 pub struct Workspace {
     /// `i X lambda(i)`: parent-to-body transforms.
@@ -31,7 +32,7 @@ pub struct Workspace {
     pub(crate) force: Vec<Vector6<f64>>,
     /// External forces on each body, body coordinates, about the body origin.
     pub(crate) f_ext: Vec<Vector6<f64>>,
-    /// CRBA composite inertias, body coordinates.
+    /// CRBA composite inertias, in the coordinates of each tree's root body.
     pub(crate) ic: Vec<RigidInertia>,
     /// Joint velocities of the last kinematics update.
     pub(crate) v: DVector<f64>,
@@ -41,8 +42,20 @@ pub struct Workspace {
     pub(crate) c: DVector<f64>,
     /// Joint accelerations of the last forward-dynamics call.
     pub(crate) vdot: DVector<f64>,
-    /// Cholesky factor storage (lent to nalgebra during the solve).
-    pub(crate) chol: DMatrix<f64>,
+    /// Transforms `i X r` from each body's tree-root body frame (CRBA in one frame per tree).
+    pub(crate) x_root: Vec<SpatialTransform>,
+    /// Motion subspace columns of every dof in its tree-root body frame.
+    pub(crate) cdof: Vec<Vector6<f64>>,
+    /// Packed rows of `H` along the ancestor chains (length `nv (nv + 1) / 2`, the
+    /// model's [`crate::ltdl::DofTree`] uses the front).
+    pub(crate) hs: Vec<f64>,
+    /// Packed `L^T D L` factor of the last solve, same layout as `hs`.
+    pub(crate) ldl: Vec<f64>,
+    /// Dof parent array of the model whose sparsity pattern `h` holds (its other entries
+    /// are zero).
+    pub(crate) h_pattern: Vec<usize>,
+    /// Whether `h` and `hs` hold the mass matrix at the current kinematics.
+    pub(crate) h_current: bool,
     /// Whether `update_kinematics` has filled the pose and velocity buffers.
     pub(crate) kinematics_ready: bool,
 }
@@ -66,7 +79,12 @@ impl Workspace {
             h: DMatrix::zeros(nv, nv),
             c: DVector::zeros(nv),
             vdot: DVector::zeros(nv),
-            chol: DMatrix::zeros(nv, nv),
+            x_root: vec![SpatialTransform::identity(); nb],
+            cdof: vec![Vector6::zeros(); nv],
+            hs: vec![0.0; nv * (nv + 1) / 2],
+            ldl: vec![0.0; nv * (nv + 1) / 2],
+            h_pattern: model.dofs.parent.clone(),
+            h_current: false,
             kinematics_ready: false,
         }
     }

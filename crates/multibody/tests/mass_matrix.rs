@@ -4,109 +4,16 @@
 //! the power balance v^T C = d/dt(potential) + 1/2 v^T Hdot v (Hdot by central differences);
 //! forward dynamics inverts inverse dynamics on branched trees with fixed joints and
 //! agrees with a direct Cholesky solve of H.
+#[path = "support/random_tree.rs"]
+mod random_tree;
+
 use multibody::{
     bias_forces, forward_dynamics, inverse_dynamics, kinetic_energy, mass_matrix, potential_energy,
-    update_kinematics, Body, Joint, Model, ModelBuilder, Workspace,
+    update_kinematics, Model, Workspace,
 };
-use nalgebra::{
-    Isometry3, Matrix3, Rotation3, SymmetricEigen, Translation3, UnitQuaternion, Vector3,
-};
+use nalgebra::{SymmetricEigen, Vector3};
 use proptest::prelude::*;
-use std::f64::consts::PI;
-
-/// Random parameters of one body plus its joint state.
-#[derive(Debug, Clone)]
-struct RandomBody {
-    parent_seed: usize,
-    kind: u8,
-    axis: [f64; 3],
-    offset: [f64; 3],
-    tilt: [f64; 3],
-    mass: f64,
-    com: [f64; 3],
-    moments: [f64; 3],
-    q: [f64; 3],
-    v: [f64; 6],
-}
-
-fn random_body() -> impl Strategy<Value = RandomBody> {
-    let unit = || [-1.0..1.0_f64, -1.0..1.0, -1.0..1.0];
-    let angles = || [-PI..PI, -PI..PI, -PI..PI];
-    (
-        (0..1000usize, 0..4u8, unit(), unit(), angles()),
-        (0.1..10.0_f64, unit(), [0.1..2.0_f64, 0.1..2.0, 0.1..2.0]),
-        (
-            angles(),
-            [
-                -2.0..2.0_f64,
-                -2.0..2.0,
-                -2.0..2.0,
-                -2.0..2.0,
-                -2.0..2.0,
-                -2.0..2.0,
-            ],
-        ),
-    )
-        .prop_map(|(a, b, c)| RandomBody {
-            parent_seed: a.0,
-            kind: a.1,
-            axis: a.2,
-            offset: a.3,
-            tilt: a.4,
-            mass: b.0,
-            com: b.1,
-            moments: b.2,
-            q: c.0,
-            v: c.1,
-        })
-}
-
-fn joint(r: &RandomBody, index: usize) -> Joint {
-    let axis = Vector3::from(r.axis) + Vector3::new(0.0, 0.0, 1.5); // never zero
-    match (index, r.kind) {
-        (0, _) | (_, 0) => Joint::Floating,
-        (_, 1) => Joint::Revolute { axis },
-        (_, 2) => Joint::Prismatic { axis },
-        _ => Joint::Fixed,
-    }
-}
-
-/// Tree (body 0 floating, so nv > 0), configuration and velocity.
-fn random_tree(bodies: &[RandomBody]) -> (Model, Vec<f64>, Vec<f64>) {
-    let mut b = ModelBuilder::new(Vector3::new(0.3, -0.2, -9.81));
-    for (i, r) in bodies.iter().enumerate() {
-        let rot = Rotation3::from_euler_angles(r.tilt[2], r.tilt[0], r.tilt[1]).into_inner();
-        b.add_body(Body {
-            name: format!("b{i}"),
-            parent: (i > 0 && r.parent_seed % (i + 1) < i).then(|| r.parent_seed % (i + 1)),
-            joint: joint(r, i),
-            placement: Isometry3::from_parts(
-                Translation3::from(Vector3::from(r.offset)),
-                UnitQuaternion::from_euler_angles(r.tilt[0], r.tilt[1], r.tilt[2]),
-            ),
-            mass: r.mass,
-            com: Vector3::from(r.com),
-            inertia: rot * Matrix3::from_diagonal(&Vector3::from(r.moments)) * rot.transpose(),
-        });
-    }
-    let model = b.build().expect("random tree is valid");
-    let (mut q, mut v) = (Vec::new(), Vec::new());
-    for (body, r) in model.bodies().iter().zip(bodies) {
-        match body.joint {
-            Joint::Floating => {
-                let c = UnitQuaternion::from_euler_angles(r.q[0], r.q[1], r.q[2]).into_inner();
-                q.extend_from_slice(&[r.offset[0], r.offset[1], r.offset[2], c.w, c.i, c.j, c.k]);
-                v.extend_from_slice(&r.v);
-            }
-            Joint::Revolute { .. } | Joint::Prismatic { .. } => {
-                q.push(r.q[0]);
-                v.push(r.v[0]);
-            }
-            Joint::Fixed => {}
-        }
-    }
-    (model, q, v)
-}
+use random_tree::{random_body, random_tree};
 
 proptest! {
     #![proptest_config(ProptestConfig::with_cases(300))]

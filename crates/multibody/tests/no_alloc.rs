@@ -1,12 +1,12 @@
 //! The hot path (kinematics, external forces, point kinematics, CRBA, RNEA, forward
-//! dynamics, energies, qdot) performs no heap allocation once the workspace exists:
-//! counted by a global allocator wrapper, per thread.
+//! dynamics, the sparse mass-matrix solve, energies, qdot) performs no heap allocation once
+//! the workspace exists: counted by a global allocator wrapper, per thread.
 #[path = "support/vehicle.rs"]
 mod vehicle;
 
 use multibody::{
     bias_forces, forward_dynamics, inverse_dynamics, kinetic_energy, mass_matrix, potential_energy,
-    spatial_momentum, update_kinematics, Workspace,
+    solve_mass_matrix, spatial_momentum, update_kinematics, Workspace,
 };
 use nalgebra::{UnitQuaternion, Vector3};
 use std::alloc::{GlobalAlloc, Layout, System};
@@ -69,6 +69,7 @@ fn right_hand_side_evaluation_does_not_allocate() {
         mass_matrix(&model, &mut ws).unwrap();
         bias_forces(&model, &mut ws).unwrap();
         inverse_dynamics(&model, &mut ws, &tau, &mut out).unwrap();
+        solve_mass_matrix(&model, &mut ws, &mut out).unwrap();
         kinetic_energy(&model, &ws).unwrap();
         potential_energy(&model, &ws).unwrap();
         spatial_momentum(&model, &ws).unwrap();
