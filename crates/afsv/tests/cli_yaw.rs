@@ -245,3 +245,32 @@ fn simulate_writes_only_the_chosen_columns() {
         assert!(!ok && err.contains(msg), "{err}");
     }
 }
+
+#[test]
+fn sensitivity_varies_a_described_vehicle() {
+    let table = |args: &[&str]| -> serde_json::Value {
+        let (ok, stdout, err) = afsv(args);
+        assert!(ok, "{err}");
+        let mut v: serde_json::Value = serde_json::from_str(&stdout).unwrap();
+        v.as_object_mut().unwrap().remove("provenance");
+        v
+    };
+    // the built-in prototype's yaw-plane data are Table 3.1's: the same table, bit for bit
+    let nominal = table(&["yaw", "sensitivity"]);
+    assert_eq!(
+        table(&["yaw", "sensitivity", "--vehicle", "prototype"]),
+        nominal
+    );
+    // a 28 t truck of its own: other nominal measures, every row about them
+    let own = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("../../samples/vehicles/adt-28t.toml");
+    let t = table(&["yaw", "sensitivity", "--vehicle", own.to_str().unwrap()]);
+    assert_eq!(t["rows"].as_array().unwrap().len(), 32);
+    let f = |v: &serde_json::Value| v["nominal"][0]["natural_frequency_hz"].as_f64().unwrap();
+    assert!(
+        (f(&t) / f(&nominal) - 1.0).abs() > 0.01,
+        "{} vs {}",
+        f(&t),
+        f(&nominal)
+    );
+}

@@ -461,6 +461,17 @@ pub fn sensitivity_with_progress(
     spec: &MeasureSpec,
     progress: &(dyn Fn(usize, usize) + Sync),
 ) -> Result<SensitivityTable, DynError> {
+    sensitivity_of(&YawPlaneParams::nominal, speed_m_s, spec, progress)
+}
+
+/// [`sensitivity_with_progress`] about the parameters `base(load)` of each load (a
+/// vehicle description's yaw-plane data and steering) instead of Table 3.1's.
+pub fn sensitivity_of(
+    base: &(dyn Fn(Load) -> YawPlaneParams + Sync),
+    speed_m_s: f64,
+    spec: &MeasureSpec,
+    progress: &(dyn Fn(usize, usize) + Sync),
+) -> Result<SensitivityTable, DynError> {
     let mut cases: Vec<StudyCase> = Vec::new();
     for load in Load::ALL {
         cases.push((load, None));
@@ -475,7 +486,7 @@ pub fn sensitivity_with_progress(
     let measured: Vec<YawMeasures> = cases
         .par_iter()
         .map(|&(load, variation)| {
-            let nominal = YawPlaneParams::nominal(load);
+            let nominal = base(load);
             let p = match variation {
                 None => nominal,
                 Some((param, pctv)) => param.try_scaled(&nominal, 1.0 + pctv / 100.0)?,

@@ -6,8 +6,7 @@ use super::{args, CmdResult};
 use afsv::output::{OutputGuard, OutputKind};
 use afsv::progress::Progress;
 use afsv_dynamics::yaw_plane::analysis::{
-    gain_efficiency_correlation, measures_for, sensitivity_with_progress, steady_turn_decay,
-    MeasureSpec,
+    gain_efficiency_correlation, measures_for, sensitivity_of, steady_turn_decay, MeasureSpec,
 };
 use afsv_dynamics::yaw_plane::simulate::Recording;
 use afsv_dynamics::{
@@ -147,6 +146,10 @@ pub enum Command {
         /// Print a readable table instead of JSON.
         #[arg(long)]
         table: bool,
+        /// Vary the parameters about this vehicle description's yaw-plane data and steering
+        /// (both loads) instead of Table 3.1's.
+        #[arg(long, help = super::described::HELP)]
+        vehicle: Option<PathBuf>,
     },
     /// Leakage effects: steady-turning articulation decay at the Table 3.2 speeds
     /// (section 3.4.1) and the gain-efficiency correlation over a leakage sweep (Fig 4.7).
@@ -429,10 +432,23 @@ pub fn run(cmd: Command) -> CmdResult {
             speed_kmh,
             form,
             table,
+            vehicle,
         } => {
             let spec = measures_spec(form);
+            let d = super::described::articulated(vehicle.as_deref())?;
+            let base = |load: Load| {
+                let case = match load {
+                    Load::Loaded => vehicle_3d::Load::Loaded,
+                    Load::Unloaded => vehicle_3d::Load::Unloaded,
+                };
+                YawPlaneParams {
+                    load: Some(load),
+                    vehicle: d.yaw_plane(case).clone(),
+                    afs: d.steering().clone(),
+                }
+            };
             let progress = Progress::new("afsv yaw sensitivity", "configurations", Some(34));
-            let t = sensitivity_with_progress(kmh(speed_kmh)?, &spec, &|_, _| progress.step(""));
+            let t = sensitivity_of(&base, kmh(speed_kmh)?, &spec, &|_, _| progress.step(""));
             progress.finish();
             let t = t?;
             if table {
