@@ -104,7 +104,10 @@ fn dumped_with(set: &str, field: &str, value: Option<f64>) -> std::path::PathBuf
     if let Some(value) = value {
         *v.pointer_mut(field).unwrap() = serde_json::json!(value);
     }
-    let path = scratch("params", &format!("{set}{}.json", field.replace('/', "-")));
+    let path = scratch(
+        "params",
+        &format!("printed-{set}{}.json", field.replace('/', "-")),
+    );
     std::fs::write(&path, v.to_string()).unwrap();
     path
 }
