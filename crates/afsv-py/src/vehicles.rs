@@ -185,7 +185,7 @@ fn simulate_truck<'py>(
     let meta = json!({
         "model": "roll-truck rigid mining truck (chapter 2)",
         "sample_rate_hz": 1.0 / dt,
-        "manoeuvre": format!("ramp steer ({direction:?})"),
+        "manoeuvre": format!("ramp steer ({direction})"),
         "params": to_json(&p)?,
         "rollover_s": r.rollover_s,
         "measures": to_json(&run.measures)?,

@@ -19,6 +19,17 @@ pub enum SteerDirection {
     Straight,
 }
 
+impl std::fmt::Display for SteerDirection {
+    /// `left`, `right` or `straight`, as in a parameter file.
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(match self {
+            Self::Left => "left",
+            Self::Right => "right",
+            Self::Straight => "straight",
+        })
+    }
+}
+
 impl SteerDirection {
     /// +1, -1 or 0.
     pub fn sign(self) -> f64 {
@@ -107,6 +118,17 @@ impl SpeedController {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn directions_print_as_their_file_names() {
+        for d in [
+            SteerDirection::Left,
+            SteerDirection::Right,
+            SteerDirection::Straight,
+        ] {
+            assert_eq!(serde_json::to_value(d).unwrap(), d.to_string());
+        }
+    }
 
     #[test]
     fn ramp_is_zero_before_the_start_and_mirrors() {

@@ -313,7 +313,7 @@ fn simulate(case: &CaseArgs, dt: f64, output: &Path, force: bool) -> CmdResult {
         "written_by": "afsv roll simulate",
         "sample_rate_hz": 1.0 / dt,
         "model": "roll-truck rigid mining truck (chapter 2)",
-        "manoeuvre": format!("ramp steer ({:?})", case.direction),
+        "manoeuvre": format!("ramp steer ({})", case.direction),
         "terrain": terrain_json(case),
         "params": p,
         "rollover_s": run.record.rollover_s,
