@@ -274,3 +274,30 @@ fn sensitivity_varies_a_described_vehicle() {
         f(&nominal)
     );
 }
+
+#[test]
+fn leakage_runs_a_described_vehicle() {
+    let run = |args: &[&str]| -> serde_json::Value {
+        let (ok, stdout, err) = afsv(args);
+        assert!(ok, "{err}");
+        let mut v: serde_json::Value = serde_json::from_str(&stdout).unwrap();
+        v.as_object_mut().unwrap().remove("provenance");
+        v
+    };
+    let nominal = run(&["yaw", "leakage"]);
+    assert_eq!(run(&["yaw", "leakage", "--vehicle", "prototype"]), nominal);
+    let own = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("../../samples/vehicles/adt-28t.toml");
+    let t = run(&["yaw", "leakage", "--vehicle", own.to_str().unwrap()]);
+    let r2 = |v: &serde_json::Value| v["gain_efficiency_fig_4_7"]["r_squared"].as_f64().unwrap();
+    assert!(
+        r2(&t) > 0.9 && r2(&t) != r2(&nominal),
+        "{} vs {}",
+        r2(&t),
+        r2(&nominal)
+    );
+    assert_eq!(
+        t["steady_turn_decay"].as_array().unwrap().len(),
+        nominal["steady_turn_decay"].as_array().unwrap().len()
+    );
+}

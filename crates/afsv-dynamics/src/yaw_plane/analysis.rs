@@ -548,9 +548,22 @@ pub fn steady_turn_decay(
     window_s: f64,
     options: &SimOptions,
 ) -> Result<SteadyTurnDecay, DynError> {
-    let sys =
-        AfsSystem::new(AfsParams::nominal()).map_err(|e| DynError::Steering(e.to_string()))?;
-    let v = VehicleParams::nominal(load);
+    let p = YawPlaneParams::nominal(load);
+    steady_turn_decay_of(&p, load, speed_m_s, steer_wheel_deg, window_s, options)
+}
+
+/// [`steady_turn_decay`] of the vehicle and steering `p` (a description's), reported as
+/// `load`.
+pub fn steady_turn_decay_of(
+    p: &YawPlaneParams,
+    load: Load,
+    speed_m_s: f64,
+    steer_wheel_deg: f64,
+    window_s: f64,
+    options: &SimOptions,
+) -> Result<SteadyTurnDecay, DynError> {
+    let sys = AfsSystem::new(p.afs.clone()).map_err(|e| DynError::Steering(e.to_string()))?;
+    let v = &p.vehicle;
     let t_settle = 10.0;
     let man = Manoeuvre::open_loop(
         speed_m_s,
@@ -562,7 +575,7 @@ pub fn steady_turn_decay(
         },
         "steady_turn",
     );
-    let r = simulate(&v, &sys, &man, options)?;
+    let r = simulate(v, &sys, &man, options)?;
     let i0 = index_at(&r.time_s, t_settle);
     let n = r.time_s.len() - 1;
     let (a0, a1) = (r.articulation_deg[i0], r.articulation_deg[n]);
@@ -615,8 +628,17 @@ pub fn gain_efficiency_correlation(
     speed_m_s: f64,
     spec: &MeasureSpec,
 ) -> Result<GainEfficiency, DynError> {
-    let v = VehicleParams::nominal(load);
-    let base = AfsParams::nominal();
+    gain_efficiency_correlation_of(&YawPlaneParams::nominal(load), speed_m_s, spec)
+}
+
+/// [`gain_efficiency_correlation`] of the vehicle and steering `p` (a description's).
+pub fn gain_efficiency_correlation_of(
+    p: &YawPlaneParams,
+    speed_m_s: f64,
+    spec: &MeasureSpec,
+) -> Result<GainEfficiency, DynError> {
+    let v = &p.vehicle;
+    let base = &p.afs;
     let vars = [-30.0, -15.0, 0.0, 15.0, 30.0];
     let mut gains = Vec::new();
     let mut effs = Vec::new();
@@ -631,7 +653,7 @@ pub fn gain_efficiency_correlation(
             SteerInput::step_deg(spec.step_amplitude_deg, spec.input_time_s),
             "step",
         );
-        let r = simulate(&v, &sys, &step, &spec.options)?;
+        let r = simulate(v, &sys, &step, &spec.options)?;
         let (m, eta) = step_measures(&r, spec.input_time_s, spec.step_amplitude_deg)?;
         gains.push(m.gain);
         effs.push(eta);

@@ -6,7 +6,7 @@ use super::{args, CmdResult};
 use afsv::output::{OutputGuard, OutputKind};
 use afsv::progress::Progress;
 use afsv_dynamics::yaw_plane::analysis::{
-    gain_efficiency_correlation, measures_for, sensitivity_of, steady_turn_decay, MeasureSpec,
+    gain_efficiency_correlation_of, measures_for, sensitivity_of, steady_turn_decay_of, MeasureSpec,
 };
 use afsv_dynamics::yaw_plane::simulate::Recording;
 use afsv_dynamics::{
@@ -157,6 +157,10 @@ pub enum Command {
         /// Steering-wheel angle held in the steady turn (deg).
         #[arg(long, default_value_t = 300.0, value_parser = args::finite_f64, allow_hyphen_values = true)]
         steer_wheel_deg: f64,
+        /// Run this vehicle description's yaw-plane data and steering instead of Table
+        /// 3.1's (at the Table 3.2 speeds).
+        #[arg(long, help = super::described::HELP)]
+        vehicle: Option<PathBuf>,
     },
 }
 
@@ -175,17 +179,26 @@ fn load_params(v: &VehicleArgs) -> Result<YawPlaneParams, Box<dyn std::error::Er
         return read_params(path);
     }
     let d = super::described::articulated(v.vehicle.as_deref())?;
-    let (load, case) = match v.load {
-        LoadChoice::Loaded => (Load::Loaded, vehicle_3d::Load::Loaded),
-        LoadChoice::Unloaded => (Load::Unloaded, vehicle_3d::Load::Unloaded),
+    let load = match v.load {
+        LoadChoice::Loaded => Load::Loaded,
+        LoadChoice::Unloaded => Load::Unloaded,
     };
-    let p = YawPlaneParams {
+    let p = described_yaw_plane(&d, load);
+    p.validate()?;
+    Ok(p)
+}
+
+/// The yaw-plane data and steering of the described vehicle `d` for `load`.
+fn described_yaw_plane(d: &afsv_vehicle::ArticulatedVehicle, load: Load) -> YawPlaneParams {
+    let case = match load {
+        Load::Loaded => vehicle_3d::Load::Loaded,
+        Load::Unloaded => vehicle_3d::Load::Unloaded,
+    };
+    YawPlaneParams {
         load: Some(load),
         vehicle: d.yaw_plane(case).clone(),
         afs: d.steering().clone(),
-    };
-    p.validate()?;
-    Ok(p)
+    }
 }
 
 /// Read and validate a yaw-plane parameter file.
@@ -436,17 +449,7 @@ pub fn run(cmd: Command) -> CmdResult {
         } => {
             let spec = measures_spec(form);
             let d = super::described::articulated(vehicle.as_deref())?;
-            let base = |load: Load| {
-                let case = match load {
-                    Load::Loaded => vehicle_3d::Load::Loaded,
-                    Load::Unloaded => vehicle_3d::Load::Unloaded,
-                };
-                YawPlaneParams {
-                    load: Some(load),
-                    vehicle: d.yaw_plane(case).clone(),
-                    afs: d.steering().clone(),
-                }
-            };
+            let base = |load: Load| described_yaw_plane(&d, load);
             let progress = Progress::new("afsv yaw sensitivity", "configurations", Some(34));
             let t = sensitivity_of(&base, kmh(speed_kmh)?, &spec, &|_, _| progress.step(""));
             progress.finish();
@@ -464,10 +467,15 @@ pub fn run(cmd: Command) -> CmdResult {
                 afsv::output::print_json(&t)?;
             }
         }
-        Command::Leakage { steer_wheel_deg } => {
+        Command::Leakage {
+            steer_wheel_deg,
+            vehicle,
+        } => {
             if !steer_wheel_deg.is_finite() {
                 return Err("--steer-wheel-deg must be finite".into());
             }
+            let d = super::described::articulated(vehicle.as_deref())?;
+            let of = |load: Load| described_yaw_plane(&d, load);
             let opts = SimOptions::default();
             let mut decay = Vec::new();
             for load in Load::ALL {
@@ -475,7 +483,8 @@ pub fn run(cmd: Command) -> CmdResult {
                     afsv_dynamics::FieldCourse::SteadyTurn,
                     load,
                 ) {
-                    decay.push(steady_turn_decay(
+                    decay.push(steady_turn_decay_of(
+                        &of(load),
                         load,
                         v / 3.6,
                         steer_wheel_deg,
@@ -484,8 +493,11 @@ pub fn run(cmd: Command) -> CmdResult {
                     )?);
                 }
             }
-            let ge =
-                gain_efficiency_correlation(Load::Loaded, 50.0 / 3.6, &MeasureSpec::default())?;
+            let ge = gain_efficiency_correlation_of(
+                &of(Load::Loaded),
+                50.0 / 3.6,
+                &MeasureSpec::default(),
+            )?;
             afsv::output::print_json(&serde_json::json!({
                 "steady_turn_decay": decay,
                 "gain_efficiency_fig_4_7": ge,
