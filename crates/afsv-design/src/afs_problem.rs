@@ -117,6 +117,12 @@ pub struct AfsProblemSpec {
     pub measure: MeasureSpec,
     /// Forward speed (m/s), 50 km/h.
     pub speed_m_s: f64,
+    /// The loaded vehicle the measures run on: Table 3.1's, or a vehicle description's
+    /// yaw-plane data.
+    pub vehicle: VehicleParams,
+    /// The current steering system, whose five design variables are varied: Table 3.1's, or
+    /// a description's.
+    pub steering: AfsParams,
 }
 
 impl Default for AfsProblemSpec {
@@ -134,6 +140,8 @@ impl Default for AfsProblemSpec {
             interference: None,
             measure,
             speed_m_s: 50.0 / 3.6,
+            vehicle: VehicleParams::nominal(Load::Loaded),
+            steering: AfsParams::nominal(),
         }
     }
 }
@@ -247,8 +255,8 @@ pub struct AfsProblem {
 
 impl AfsProblem {
     /// The problem of `spec` with the objective `objective` (e.g. the Eq 4.17 weights of
-    /// [`crate::AhpHierarchy::chapter4`]); simulates the current design
-    /// ([`AfsParams::nominal`], loaded vehicle) once.
+    /// [`crate::AhpHierarchy::chapter4`]); simulates the current design (`spec.steering` on
+    /// the loaded `spec.vehicle`) once.
     pub fn new(spec: AfsProblemSpec, objective: Objective) -> Result<Self, DesignError> {
         positive("speed_m_s", spec.speed_m_s)?;
         if !(spec.max_articulation_rad > 0.0 && spec.max_articulation_rad < 90.0 * DEG) {
@@ -268,8 +276,13 @@ impl AfsProblem {
                 reason: "A_0 + theta_max must stay below 180 deg",
             });
         }
-        let base = AfsParams::nominal();
-        let vehicle = VehicleParams::nominal(Load::Loaded);
+        spec.vehicle
+            .validate()
+            .map_err(|e| DesignError::Simulation(format!("vehicle: {e}")))?;
+        let base = spec.steering.clone();
+        AfsSystem::new(base.clone())
+            .map_err(|e| DesignError::Simulation(format!("steering: {e}")))?;
+        let vehicle = spec.vehicle.clone();
         let current = measures_for(
             &vehicle,
             &base,

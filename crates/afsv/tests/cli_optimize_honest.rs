@@ -330,3 +330,42 @@ fn a_wide_csv_header_is_refused_at_once_with_a_short_message() {
     let out = afsv(&["measures", "decay", "-i", s(&wide), "--column", "c1_x"]);
     refused(&out, &["no column `time_s`", "c9_x, ... and 4086 more"]);
 }
+
+#[test]
+fn a_described_vehicle_is_optimised_and_stored_in_the_state() {
+    let without_clock = |out: &std::process::Output| {
+        let mut v = json(out);
+        v.as_object_mut().unwrap().remove("provenance");
+        for r in v["runs"].as_array_mut().unwrap() {
+            r.as_object_mut().unwrap().remove("seconds");
+        }
+        v
+    };
+    // the built-in prototype's yaw-plane data and steering are Table 3.1's: the same run
+    let nominal = without_clock(&optimize(&[]));
+    assert_eq!(
+        without_clock(&optimize(&["--vehicle", "prototype"])),
+        nominal
+    );
+    // a 28 t truck of its own starts from its own steering and loaded vehicle
+    let adt = cli_support::repo_root().join("samples/vehicles/adt-28t.toml");
+    let own = without_clock(&optimize(&["--vehicle", s(&adt)]));
+    assert_ne!(own["current"], nominal["current"]);
+    // an ask/tell state carries the whole description, so shards need no file
+    let state = scratch("honest", "vehicle-state.json");
+    let batch = scratch("honest", "vehicle-batch.jsonl");
+    let out = optimize(&[
+        "--vehicle",
+        s(&adt),
+        "--state",
+        s(&state),
+        "--ask",
+        s(&batch),
+    ]);
+    assert!(out.status.success(), "{}", stderr(&out));
+    let text = std::fs::read_to_string(&batch).unwrap();
+    assert!(
+        text.contains("\"vehicle\"") && text.contains("\"steering\""),
+        "{text}"
+    );
+}

@@ -43,6 +43,11 @@ pub enum Command {
 /// Options of `afsv optimize afs`.
 #[derive(clap::Args)]
 pub struct AfsArgs {
+    /// Optimise this vehicle description's steering on its loaded yaw-plane data (the
+    /// description is stored whole in checkpoints, states and batches, so a resume or a
+    /// shard needs no file).
+    #[arg(long, help = super::described::HELP)]
+    pub vehicle: Option<PathBuf>,
     /// Relax the upper B_eff bound to 2.08 GPa (Table 4.4) instead of 1.7 GPa (Table 4.3).
     #[arg(long)]
     pub relaxed: bool,
@@ -179,6 +184,22 @@ pub struct ProblemDesc {
     pub form: String,
     /// The Eq 4.9 geometry, if given.
     pub eq_4_9: Option<Eq49Desc>,
+    /// A described vehicle (`--vehicle`); absent: Table 3.1's.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub vehicle: Option<VehicleDesc>,
+}
+
+/// The vehicle of `--vehicle` as a problem stores it: its name, its loaded yaw-plane data
+/// and its steering.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct VehicleDesc {
+    /// The description's name.
+    pub name: String,
+    /// Its loaded yaw-plane data.
+    pub yaw_plane: afsv_dynamics::VehicleParams,
+    /// Its steering system (the current design).
+    pub steering: afs_hydraulics::AfsParams,
 }
 
 /// The Eq 4.9 options as given on the command line.
@@ -203,7 +224,25 @@ fn form_name(f: FormArg) -> &'static str {
     }
 }
 
-fn desc_of(a: &AfsArgs, label: &str, min_arm: Option<f64>) -> ProblemDesc {
+/// The `--vehicle` of `a` as a problem stores it.
+fn vehicle_desc(a: &AfsArgs) -> Result<Option<VehicleDesc>, String> {
+    let Some(path) = &a.vehicle else {
+        return Ok(None);
+    };
+    let v = super::described::articulated(Some(path))?;
+    Ok(Some(VehicleDesc {
+        name: v.name.clone(),
+        yaw_plane: v.yaw_plane(vehicle_3d::Load::Loaded).clone(),
+        steering: v.steering().clone(),
+    }))
+}
+
+fn desc_of(
+    a: &AfsArgs,
+    label: &str,
+    min_arm: Option<f64>,
+    vehicle: &Option<VehicleDesc>,
+) -> ProblemDesc {
     let eq_4_9 = match (a.front_mount_dir_deg, a.tire_point, a.engine_point) {
         (Some(dir), Some(t), Some(e)) => Some(Eq49Desc {
             front_mount_dir_deg: dir,
@@ -220,6 +259,7 @@ fn desc_of(a: &AfsArgs, label: &str, min_arm: Option<f64>) -> ProblemDesc {
         rtol: a.rtol,
         form: form_name(a.form).into(),
         eq_4_9,
+        vehicle: vehicle.clone(),
     }
 }
 
@@ -248,6 +288,10 @@ fn spec_of(d: &ProblemDesc) -> Result<AfsProblemSpec, String> {
         "paper_eq_3_13" => EquationForm::PaperEq313,
         other => return Err(format!("unknown equation form {other:?}")),
     };
+    if let Some(v) = &d.vehicle {
+        spec.vehicle = v.yaw_plane.clone();
+        spec.steering = v.steering.clone();
+    }
     if let Some(g) = &d.eq_4_9 {
         spec.interference = Some(
             InterferenceGeometry::new(
@@ -349,16 +393,21 @@ fn run_afs(a: &AfsArgs) -> CmdResult {
     if !a.no_arm_comparison {
         configs.push(("without the steering-arm constraint", None));
     }
-    let settings_json = json!({
+    let vehicle = vehicle_desc(a)?;
+    let mut settings_json = json!({
         "relaxed": a.relaxed, "min_arm_m": a.min_arm_m, "arm_comparison": !a.no_arm_comparison,
         "starts": a.starts, "seed": a.seed, "rtol": a.rtol,
         "form": form_name(a.form),
         "eq_4_9": {"front_mount_dir_deg": a.front_mount_dir_deg, "tire_point": a.tire_point, "engine_point": a.engine_point},
         "solver": settings,
     });
+    if let Some(v) = &vehicle {
+        // only when given, so a checkpoint of the built-in vehicle still resumes
+        settings_json["vehicle"] = json!(v);
+    }
     let descs: Vec<ProblemDesc> = configs
         .iter()
-        .map(|(label, arm)| desc_of(a, label, *arm))
+        .map(|(label, arm)| desc_of(a, label, *arm, &vehicle))
         .collect();
     if let Some(state) = &a.state {
         let problems: Vec<AfsProblem> = descs.iter().map(problem_of).collect::<Result<_, _>>()?;
