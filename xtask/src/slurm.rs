@@ -10,7 +10,10 @@
 //! 2 s), creates a munge key, starts munged (as the `munge` user), slurmctld and slurmd in
 //! the foreground as its own children, waits for the node to be idle, runs the script,
 //! compares, and stops the three daemons by their process ids. Without root, apt-get or
-//! the network it prints why and "skipped", and succeeds.
+//! the network it prints why and "skipped", and succeeds. `--bin PATH` runs that `afsv`
+//! binary instead of building one with `cargo build -p afsv --release` (CI passes the
+//! binary of its one release build: `-p afsv` resolves dependency features apart from the
+//! workspace build and would compile the whole dependency tree a second time).
 
 use std::path::{Path, PathBuf};
 use std::process::{Child, Command, Stdio};
@@ -190,14 +193,25 @@ fn without_seconds(text: &str, what: &str) -> Result<String, String> {
     Ok(v.to_string())
 }
 
-/// The task.
-pub fn slurm_test(root: &Path) -> Result<(), String> {
-    let start = Instant::now();
-    if let Some(why) = install() {
-        println!("slurm-test: skipped: {why}");
-        return Ok(());
+/// The `afsv` binary given as `--bin PATH` (CI passes the one its single release build
+/// made), or `None` (no arguments): build it with `cargo build -p afsv --release`.
+fn given_binary(args: &[String]) -> Result<Option<PathBuf>, String> {
+    match args {
+        [] => Ok(None),
+        [flag, path] if flag == "--bin" => {
+            let bin = PathBuf::from(path);
+            std::fs::canonicalize(&bin)
+                .map(Some)
+                .map_err(|e| format!("slurm-test: {}: {e}", bin.display()))
+        }
+        _ => Err(format!(
+            "slurm-test: unknown arguments {args:?} (only --bin PATH)"
+        )),
     }
-    let installed = start.elapsed().as_secs_f64();
+}
+
+/// `target/release/afsv`, built by `cargo build -p afsv --release`.
+fn build_afsv(root: &Path) -> Result<PathBuf, String> {
     let cargo = std::env::var("CARGO").unwrap_or_else(|_| "cargo".into());
     let built = Command::new(cargo)
         .current_dir(root)
@@ -207,7 +221,22 @@ pub fn slurm_test(root: &Path) -> Result<(), String> {
     if !built.success() {
         return Err("cargo build -p afsv --release failed".into());
     }
-    let afsv = root.join("target").join("release").join("afsv");
+    Ok(root.join("target").join("release").join("afsv"))
+}
+
+/// The task; `args` may name the `afsv` binary to run (`--bin PATH`).
+pub fn slurm_test(args: &[String], root: &Path) -> Result<(), String> {
+    let given = given_binary(args)?;
+    let start = Instant::now();
+    if let Some(why) = install() {
+        println!("slurm-test: skipped: {why}");
+        return Ok(());
+    }
+    let installed = start.elapsed().as_secs_f64();
+    let afsv = match given {
+        Some(bin) => bin,
+        None => build_afsv(root)?,
+    };
     let dir: PathBuf = std::env::temp_dir().join(format!("afsv-slurm-test-{}", std::process::id()));
     let _ = std::fs::remove_dir_all(&dir);
     for sub in ["munge", "state", "spool", "log", "run"] {

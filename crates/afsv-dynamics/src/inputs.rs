@@ -3,6 +3,7 @@
 
 use crate::error::DynError;
 use serde::{Deserialize, Serialize};
+use std::cmp::Ordering;
 
 /// A steering-wheel angle time history theta_sw(t).
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
@@ -207,7 +208,7 @@ impl SteerInput {
                 // time_s[i-1] <= t < time_s[i]; a NaN t (a diverging solver) finds no
                 // interval, and the clamp keeps it in the table so the NaN reaches the
                 // solver's divergence check instead of an index panic
-                let i = time_s.partition_point(|&x| x <= t).clamp(1, n - 1);
+                let i = samples_at_or_before(time_s, t).clamp(1, n - 1);
                 let (t0, t1) = (time_s[i - 1], time_s[i]);
                 let h = t1 - t0;
                 let w = (t - t0) / h;
@@ -254,9 +255,58 @@ impl SteerInput {
     }
 }
 
+/// The number of samples of `ts` (strictly increasing, as [`SteerInput::validate`]
+/// requires) at or before `t`: `ts.partition_point(|&x| x <= t)`, looked for first within a
+/// few samples of the index on the mean grid, so that a uniformly sampled table needs two or
+/// three comparisons instead of a binary search at every right-hand side.
+#[inline]
+fn samples_at_or_before(ts: &[f64], t: f64) -> usize {
+    let n = ts.len();
+    let guess = (t - ts[0]) * (n - 1) as f64 / (ts[n - 1] - ts[0]);
+    let mut i = if guess > 0.0 {
+        (guess as usize).min(n)
+    } else {
+        0
+    };
+    // `x <= t` fails for x > t and for a NaN t alike.
+    let after = |x: f64| !matches!(x.partial_cmp(&t), Some(Ordering::Less | Ordering::Equal));
+    for _ in 0..4 {
+        if i > 0 && after(ts[i - 1]) {
+            i -= 1;
+        } else if i < n && !after(ts[i]) {
+            i += 1;
+        } else {
+            return i;
+        }
+    }
+    ts.partition_point(|&x| x <= t)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn the_table_interval_is_the_binary_search_one() {
+        let uniform: Vec<f64> = (0..300).map(|i| 1000.0 + i as f64 / 100.0).collect();
+        let jittered: Vec<f64> = (0..300)
+            .map(|i| i as f64 * 0.01 + 0.004 * ((i * 7919 % 13) as f64 / 13.0))
+            .collect();
+        let uneven: Vec<f64> = (0..100)
+            .map(|i| i as f64 * 1e-3)
+            .chain((1..100).map(|i| 0.1 + i as f64))
+            .collect();
+        for ts in [&uniform, &jittered, &uneven] {
+            let n = ts.len();
+            let mut queries: Vec<f64> = ts.to_vec();
+            queries.extend(ts.windows(2).map(|w| 0.5 * (w[0] + w[1])));
+            queries.extend([ts[0] - 1.0, ts[n - 1] + 1.0, f64::NAN]);
+            for &t in &queries {
+                let want = ts.partition_point(|&x| x <= t);
+                assert_eq!(samples_at_or_before(ts, t), want, "t {t}");
+            }
+        }
+    }
 
     #[test]
     fn pulse_step_ramp_table_values() {

@@ -8,6 +8,7 @@
 
 mod cli_support;
 use cli_support::{afsv, json, repo_root, scratch};
+use std::sync::OnceLock;
 
 fn adt() -> String {
     repo_root()
@@ -23,8 +24,41 @@ fn without_provenance(mut v: serde_json::Value) -> serde_json::Value {
     v
 }
 
+/// `afsv evaluate --vehicle adt-28t.toml --seeds 1`, run once for the tests that compare
+/// with it (the chain of commands is split into tests so that libtest runs them side by
+/// side; each command runs once, as before).
+fn evaluated() -> &'static serde_json::Value {
+    static E: OnceLock<serde_json::Value> = OnceLock::new();
+    E.get_or_init(|| json(&afsv(&["evaluate", "--vehicle", &adt(), "--seeds", "1"])))
+}
+
+/// `a_wz` of the D1 ride in [`evaluated`]: (unsuspended, nominal HPS).
+fn evaluated_a_wz() -> (f64, f64) {
+    let d = &evaluated()["design_measures_3d"];
+    let of = |case: &str| {
+        d[case]["ride_loaded"]["a_wz_m_s2"]["mean"]
+            .as_f64()
+            .unwrap()
+    };
+    (of("unsuspended"), of("nominal_hps"))
+}
+
+/// `afsv vehicle ride --vehicle adt-28t.toml --seeds 1 --json` plus `extra`.
+fn ride(extra: &[&str]) -> serde_json::Value {
+    let f = adt();
+    let mut args = vec!["vehicle", "ride", "--vehicle", &f, "--seeds", "1", "--json"];
+    args.extend_from_slice(extra);
+    json(&afsv(&args))
+}
+
+/// [`ride`] with the described front axle (HPS), run once for the tests that compare with it.
+fn suspended_ride() -> &'static serde_json::Value {
+    static R: OnceLock<serde_json::Value> = OnceLock::new();
+    R.get_or_init(|| ride(&[]))
+}
+
 #[test]
-fn an_own_truck_runs_through_the_commands_with_numbers_of_its_own() {
+fn an_own_truck_is_checked_and_evaluated_with_its_own_strut() {
     let f = adt();
     let check = json(&afsv(&["params", "check", "vehicle", &f]));
     assert_eq!(check["kind"], "articulated");
@@ -36,27 +70,20 @@ fn an_own_truck_runs_through_the_commands_with_numbers_of_its_own() {
     );
 
     // The main job: both front axles, the strut from the description's file.
-    let e = json(&afsv(&["evaluate", "--vehicle", &f, "--seeds", "1"]));
+    let e = evaluated();
     assert!(e["vehicle"].as_str().unwrap().contains("28 t"), "{e}");
     let src = e["front_axle_strut"]["source"].as_str().unwrap();
     assert!(src.ends_with("adt-28t-front-strut.json"), "{src}");
-    let d = &e["design_measures_3d"];
-    let rigid = d["unsuspended"]["ride_loaded"]["a_wz_m_s2"]["mean"]
-        .as_f64()
-        .unwrap();
-    let hps = d["nominal_hps"]["ride_loaded"]["a_wz_m_s2"]["mean"]
-        .as_f64()
-        .unwrap();
+    let (rigid, hps) = evaluated_a_wz();
     assert!(hps < rigid, "the strut lowers a_wz: {hps} vs {rigid}");
+}
 
-    // `vehicle ride` (loaded by default) takes the described front axle (HPS) unless told
-    // otherwise.
-    let ride = |extra: &[&str]| {
-        let mut args = vec!["vehicle", "ride", "--vehicle", &f, "--seeds", "1", "--json"];
-        args.extend_from_slice(extra);
-        json(&afsv(&args))
-    };
-    let suspended = ride(&[]);
+/// `vehicle ride` (loaded by default) takes the described front axle (HPS) unless told
+/// otherwise.
+#[test]
+fn an_own_truck_rides_the_evaluated_case_with_and_without_its_strut() {
+    let (rigid, hps) = evaluated_a_wz();
+    let suspended = suspended_ride();
     let off = ride(&["--hps", "off"]);
     assert_eq!(
         suspended["a_wz_m_s2"]["mean"].as_f64().unwrap(),
@@ -64,22 +91,28 @@ fn an_own_truck_runs_through_the_commands_with_numbers_of_its_own() {
         "evaluate and vehicle ride run the same D1 case: {suspended}"
     );
     assert_eq!(off["a_wz_m_s2"]["mean"].as_f64().unwrap(), rigid);
+}
 
-    // The yaw-plane model takes the derived data: another vehicle, another yaw mode.
-    let own = json(&afsv(&["yaw", "measures", "--vehicle", &f]));
+/// The yaw-plane model takes the derived data: another vehicle, another yaw mode.
+#[test]
+fn an_own_truck_has_a_yaw_mode_of_its_own() {
+    let own = json(&afsv(&["yaw", "measures", "--vehicle", &adt()]));
     let proto = json(&afsv(&["yaw", "measures"]));
     let (fo, fp) = (
         own["natural_frequency_hz"].as_f64().unwrap(),
         proto["natural_frequency_hz"].as_f64().unwrap(),
     );
     assert!(fo.is_finite() && (fo - fp).abs() > 0.1, "{fo} vs {fp}");
+}
 
-    // The design studies take it, with its strut as the nominal design.
+/// The design studies take it, with its strut as the nominal design.
+#[test]
+fn an_own_truck_runs_the_speed_sweep() {
     let sweep = json(&afsv(&[
         "study",
         "speed-sweep",
         "--vehicle",
-        &f,
+        &adt(),
         "--speeds",
         "20",
         "--seeds",
@@ -88,8 +121,12 @@ fn an_own_truck_runs_through_the_commands_with_numbers_of_its_own() {
     ]));
     let points = sweep["points"].as_array().unwrap();
     assert_eq!(points.len(), 2, "{sweep}");
+}
 
-    // On a measured road (a two-track CSV in mm): the file's profile, read and converted.
+/// On a measured road (a two-track CSV in mm): the file's profile, read and converted.
+#[test]
+fn an_own_truck_rides_a_measured_road_in_mm() {
+    let f = adt();
     let road = scratch("own", "road.csv");
     json(&afsv(&[
         "terrain",
@@ -126,17 +163,20 @@ fn an_own_truck_runs_through_the_commands_with_numbers_of_its_own() {
     assert!(conv.contains("left_mm"), "{conv}");
     let a = on_road["a_wz_m_s2"]["mean"].as_f64().unwrap();
     assert!(
-        a > 0.05 && a < suspended["a_wz_m_s2"]["mean"].as_f64().unwrap(),
+        a > 0.05 && a < suspended_ride()["a_wz_m_s2"]["mean"].as_f64().unwrap(),
         "class D is smoother than E: {a}"
     );
+}
 
-    // The HPS GA on it: this truck's strut cannot meet a_wz <= 0.85 m/s² in one
-    // generation, so the best found is printed and the exit status says it is no optimum.
+/// The HPS GA on it: this truck's strut cannot meet a_wz <= 0.85 m/s² in one generation, so
+/// the best found is printed and the exit status says it is no optimum.
+#[test]
+fn an_own_truck_runs_the_hps_ga() {
     let out = afsv(&[
         "optimize",
         "hps",
         "--vehicle",
-        &f,
+        &adt(),
         "--population",
         "4",
         "--generations",
@@ -154,8 +194,11 @@ fn an_own_truck_runs_through_the_commands_with_numbers_of_its_own() {
         assert!(String::from_utf8_lossy(&out.stderr).contains("not earned"));
     }
     assert!(v["nominal_ride"]["a_wz_m_s2"].as_f64().unwrap() > 0.0);
+}
 
-    // The strut file works wherever a built-in strut does.
+/// The strut file works wherever a built-in strut does.
+#[test]
+fn an_own_strut_file_is_characterized() {
     let strut = repo_root().join("samples/vehicles/adt-28t-front-strut.json");
     let c = json(&afsv(&[
         "hps",
