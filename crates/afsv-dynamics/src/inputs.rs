@@ -3,7 +3,6 @@
 
 use crate::error::DynError;
 use serde::{Deserialize, Serialize};
-use std::cmp::Ordering;
 
 /// A steering-wheel angle time history theta_sw(t).
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
@@ -263,23 +262,8 @@ impl SteerInput {
 fn samples_at_or_before(ts: &[f64], t: f64) -> usize {
     let n = ts.len();
     let guess = (t - ts[0]) * (n - 1) as f64 / (ts[n - 1] - ts[0]);
-    let mut i = if guess > 0.0 {
-        (guess as usize).min(n)
-    } else {
-        0
-    };
-    // `x <= t` fails for x > t and for a NaN t alike.
-    let after = |x: f64| !matches!(x.partial_cmp(&t), Some(Ordering::Less | Ordering::Equal));
-    for _ in 0..4 {
-        if i > 0 && after(ts[i - 1]) {
-            i -= 1;
-        } else if i < n && !after(ts[i]) {
-            i += 1;
-        } else {
-            return i;
-        }
-    }
-    ts.partition_point(|&x| x <= t)
+    // `x <= t` is false for x > t and for a NaN t alike
+    vehicle_components::sampled::partition_point_near(ts, guess, |x| x <= t)
 }
 
 #[cfg(test)]
@@ -288,23 +272,13 @@ mod tests {
 
     #[test]
     fn the_table_interval_is_the_binary_search_one() {
-        let uniform: Vec<f64> = (0..300).map(|i| 1000.0 + i as f64 / 100.0).collect();
-        let jittered: Vec<f64> = (0..300)
-            .map(|i| i as f64 * 0.01 + 0.004 * ((i * 7919 % 13) as f64 / 13.0))
-            .collect();
-        let uneven: Vec<f64> = (0..100)
-            .map(|i| i as f64 * 1e-3)
-            .chain((1..100).map(|i| 0.1 + i as f64))
-            .collect();
-        for ts in [&uniform, &jittered, &uneven] {
-            let n = ts.len();
-            let mut queries: Vec<f64> = ts.to_vec();
-            queries.extend(ts.windows(2).map(|w| 0.5 * (w[0] + w[1])));
-            queries.extend([ts[0] - 1.0, ts[n - 1] + 1.0, f64::NAN]);
-            for &t in &queries {
-                let want = ts.partition_point(|&x| x <= t);
-                assert_eq!(samples_at_or_before(ts, t), want, "t {t}");
-            }
+        // the lookup itself is tested in vehicle_components::sampled; here its guess
+        let ts: Vec<f64> = (0..100).map(|i| 2.0 + i as f64 * 0.05).collect();
+        for t in [1.0, 2.0, 2.025, 4.5, 6.95, 7.0, f64::NAN] {
+            assert_eq!(
+                samples_at_or_before(&ts, t),
+                ts.partition_point(|&x| x <= t)
+            );
         }
     }
 

@@ -212,23 +212,9 @@ enum Input<'a> {
 /// that a uniformly sampled record needs two or three comparisons instead of a dozen.
 #[inline]
 fn samples_before(ts: &[f64], t: f64, guess: f64) -> usize {
-    let n = ts.len();
-    let below = |i: usize| ts[i].total_cmp(&t) == std::cmp::Ordering::Less;
-    let mut i = if guess > 0.0 {
-        (guess as usize).min(n)
-    } else {
-        0
-    };
-    for _ in 0..4 {
-        if i > 0 && !below(i - 1) {
-            i -= 1;
-        } else if i < n && below(i) {
-            i += 1;
-        } else {
-            return i;
-        }
-    }
-    ts.partition_point(|x| x.total_cmp(&t) == std::cmp::Ordering::Less)
+    vehicle_components::sampled::partition_point_near(ts, guess, |x| {
+        x.total_cmp(&t) == std::cmp::Ordering::Less
+    })
 }
 
 impl Input<'_> {
@@ -507,38 +493,4 @@ pub fn simulate_strut_from(
         });
     }
     Ok(rec)
-}
-
-#[cfg(test)]
-mod tests {
-    use super::samples_before;
-
-    #[test]
-    fn samples_before_is_the_binary_search_index() {
-        // Uniform, jittered and very uneven grids; queries on, between and outside samples,
-        // with guesses from the mean grid and far-off ones.
-        let uniform: Vec<f64> = (0..200).map(|i| 0.25 + i as f64 / 120.0).collect();
-        let jittered: Vec<f64> = (0..200)
-            .map(|i| i as f64 * 0.01 + 0.004 * ((i * 7919 % 13) as f64 / 13.0))
-            .collect();
-        let uneven: Vec<f64> = (0..100)
-            .map(|i| i as f64 * 1e-3)
-            .chain((1..100).map(|i| 0.1 + i as f64))
-            .collect();
-        for ts in [&uniform, &jittered, &uneven] {
-            let n = ts.len();
-            let rate = (n - 1) as f64 / (ts[n - 1] - ts[0]);
-            let mut queries: Vec<f64> = ts.to_vec();
-            queries.extend(ts.windows(2).map(|w| 0.5 * (w[0] + w[1])));
-            queries.extend([ts[0] - 1.0, ts[n - 1] + 1.0, f64::MAX]);
-            for &t in &queries {
-                let want = match ts.binary_search_by(|x| x.total_cmp(&t)) {
-                    Ok(i) | Err(i) => i,
-                };
-                for guess in [(t - ts[0]) * rate, 0.0, -5.0, 1e9, f64::NAN] {
-                    assert_eq!(samples_before(ts, t, guess), want, "t {t} guess {guess}");
-                }
-            }
-        }
-    }
 }

@@ -26,6 +26,7 @@ pub mod error;
 pub mod layout;
 pub mod params;
 pub mod recorder;
+pub mod sampled;
 pub mod terrain;
 
 pub use component::{ChannelInfo, Component, StateInfo};
