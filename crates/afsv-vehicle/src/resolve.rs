@@ -11,7 +11,7 @@ use afsv_dynamics::VehicleParams as YawParams;
 use hps_emulsion::StrutParams;
 use roll_truck::TruckParams;
 use tire_fiala::{Fiala, TireParams};
-use vehicle_3d::{Load, Statics, VehicleParams};
+use vehicle_3d::{FrontAxle, Load, Statics, VehicleParams};
 use vehicle_components::ParamSet;
 
 use crate::error::DescriptionError;
@@ -227,7 +227,7 @@ fn articulated(a: &Articulated, o: &Origin<'_>) -> Result<ArticulatedVehicle, De
         }
     })?;
     for load in [Load::Unloaded, Load::Loaded] {
-        Statics::of(&params, load).map_err(|e| {
+        let statics = Statics::of(&params, load).map_err(|e| {
             let e = e.to_string();
             // The cg outside the axles is the axles' (or the parts') fault, a load beyond
             // the tire's table the tire's.
@@ -238,6 +238,18 @@ fn articulated(a: &Articulated, o: &Origin<'_>) -> Result<ArticulatedVehicle, De
             };
             o.err(path, format!("no static equilibrium {load}: {e} ({hint})"))
         })?;
+        // The bodies as the model builds them: a unit less its wheel ends (placed by the
+        // tire radius and the static deflection) must keep a positive definite inertia.
+        vehicle_3d::model::build_tree(&params, load, &statics, FrontAxle::Rigid, false)
+            .map_err(|e| {
+                let msg = format!("{load}: {e} (check the wheel ends' mass and the tire radius against the unit's inertias)");
+                match &e {
+                    vehicle_3d::VehicleError::InvalidParameter { field, .. } => {
+                        o.err(&articulated_path(field), msg)
+                    }
+                    _ => o.err("", msg),
+                }
+            })?;
     }
     let (yaw_plane, yaw_plane_derived) = match &a.yaw_plane {
         Some(y) => {

@@ -135,6 +135,14 @@ fn malformed_descriptions_name_the_field_line_and_column() {
         "{e}"
     );
 
+    // a 3 m tire radius puts the wheel ends so far from the unit's cg that the unit less
+    // its wheels has no positive definite inertia: refused when read, not when run
+    let e = error_of("unloaded_radius_m = 1.0", "unloaded_radius_m = 3.0");
+    assert!(
+        e.contains("front_unit.roll_inertia_kg_m2") && e.contains("not positive definite"),
+        "{e}"
+    );
+
     let e = error_of("strut = \"front-axle\"", "strut = \"no-such-strut.json\"");
     assert!(
         e.contains("axle[0].strut") && e.contains("built-in strut"),
