@@ -8,8 +8,9 @@
 //!   [`statics`]: the hand tire loads; [`model`]: the tree (14 DOF, 16 with the HPS);
 //! - [`steering`]: the struts between their 3-D mounts; [`tires`]: one tire on its cached
 //!   track; [`vehicle`]: the ODE system; [`simulate`](mod@simulate): a recorded run;
-//! - [`scenarios`]: the design runs D1 (ride), D2 (roll), D3 (yaw) and their measures, and
-//!   the V3 path change (section 6.3) with the path-following driver;
+//! - [`scenarios`]: the design runs D1 (ride), D2 (roll), D3 (yaw) and their measures;
+//!   [`path_change`](mod@path_change): the V3 path change (section 6.3) with the
+//!   path-following driver (re-exported by `scenarios`);
 //!   [`yaw_mode`]: which addition of the 3-D model moves the yaw mode.
 //!
 //! Model notes: `docs/vehicle-3d.md`.
@@ -17,6 +18,7 @@
 pub mod error;
 pub mod model;
 pub mod params;
+pub mod path_change;
 pub mod registry;
 pub mod scenarios;
 pub mod simulate;

@@ -16,6 +16,8 @@ use afsv::output::{OutputGuard, OutputKind};
 use afsv::progress::Progress;
 use hps_emulsion::StrutParams;
 use measures::measures_cmd;
+pub(crate) use measures::yaw_fit_caveat;
+pub(crate) use options::PAPER_FORM_HELP;
 use options::{
     duration_s, ramp_rate, seed_count, speed_kmh, steer_peak, terrain_arg, TerrainArg,
     MAX_DURATION_S,
@@ -32,7 +34,7 @@ use vehicle_3d::scenarios::{
     self, RideMeasures, RideSpec, RollMeasures, RollSpec, Spread, TerrainSpec, YawMeasures,
     YawSpec, RUN_IN_M,
 };
-use vehicle_3d::{FrontAxle, Load, RunRecord, VehicleParams, YawInertiaForm};
+use vehicle_3d::{FrontAxle, Load, RunRecord, VehicleParams};
 
 /// Why a rigid front axle has no strut travel.
 const NO_STRUT: &str = "rigid front axle (--hps off): no strut";
@@ -70,9 +72,6 @@ pub struct CaseArgs {
     #[arg(long, help = PAPER_FORM_HELP)]
     pub paper_form: bool,
 }
-
-/// Help of `--paper-form` (the vehicle commands and `afsv evaluate`).
-pub(crate) const PAPER_FORM_HELP: &str = "Use the printed Eq 3.13 yaw inertias (m L² counted twice) instead of the energy-consistent equations, to reproduce the dissertation's lower yaw frequency; for comparison with the paper, never for design (docs/vehicle-3d.md)";
 
 /// Seeds, output format and plot of the scenario subcommands.
 #[derive(clap::Args, Debug)]
@@ -278,23 +277,6 @@ pub fn run(cmd: Command) -> CmdResult {
     }
 }
 
-/// The yaw-inertia form of `--paper-form`.
-fn yaw_inertia_form(case: &CaseArgs) -> YawInertiaForm {
-    if case.paper_form {
-        YawInertiaForm::PaperEq313
-    } else {
-        YawInertiaForm::EnergyConsistent
-    }
-}
-
-/// The strut file `--hps` names, if it names one.
-fn hps_file(hps: Option<&str>) -> Option<&Path> {
-    match hps {
-        None | Some("off" | "nominal") => None,
-        Some(file) => Some(Path::new(file)),
-    }
-}
-
 /// Declare the input files of `case` to `guard`.
 fn declare_inputs(case: &CaseArgs, guard: &mut OutputGuard) -> Result<(), String> {
     if let Some(p) = &case.params {
@@ -307,7 +289,7 @@ fn declare_inputs(case: &CaseArgs, guard: &mut OutputGuard) -> Result<(), String
     {
         guard.input("--vehicle", v)?;
     }
-    if let Some(file) = hps_file(case.hps.as_deref()) {
+    if let Some(file) = options::hps_file(case.hps.as_deref()) {
         guard.input("--hps", file)?;
     }
     Ok(())
@@ -341,7 +323,7 @@ fn vehicle_params(case: &CaseArgs) -> Result<(VehicleParams, FrontAxle), String>
             FrontAxle::Suspended
         }
     };
-    p.yaw_inertia_form = yaw_inertia_form(case);
+    p.yaw_inertia_form = options::yaw_inertia_form(case.paper_form);
     p.validate().map_err(|e| match &case.params {
         Some(path) => format!("{}: {e}", path.display()),
         None => e.to_string(),
@@ -611,7 +593,7 @@ fn ride_report(
         "scenario": "ride (D1, section 6.4)",
         "load": case.load,
         "front_axle": axle,
-        "yaw_inertia_form": yaw_inertia_form(case),
+        "yaw_inertia_form": options::yaw_inertia_form(case.paper_form),
         "speed_kmh": speed,
         "run_in_m": RUN_IN_M,
         "length_m": length_m,
@@ -702,7 +684,7 @@ fn roll_cmd(case: &CaseArgs, study: &StudyArgs, ramp_deg_s: f64, duration: f64) 
         "scenario": "roll (D2, section 6.4)",
         "load": case.load,
         "front_axle": axle,
-        "yaw_inertia_form": yaw_inertia_form(case),
+        "yaw_inertia_form": options::yaw_inertia_form(case.paper_form),
         "speed_kmh": speed,
         "ramp_deg_s": ramp_deg_s,
         "ramp_start_s": spec.ramp_start_s,
@@ -776,7 +758,7 @@ fn yaw_cmd(case: &CaseArgs, study: &StudyArgs, pulse_deg: f64) -> CmdResult {
         "scenario": "yaw (D3, section 6.4)",
         "load": case.load,
         "front_axle": axle,
-        "yaw_inertia_form": yaw_inertia_form(case),
+        "yaw_inertia_form": options::yaw_inertia_form(case.paper_form),
         "speed_kmh": speed,
         "pulse_deg": pulse_deg,
         "pulse_s": spec.pulse_s,
@@ -806,14 +788,6 @@ fn yaw_cmd(case: &CaseArgs, study: &StudyArgs, pulse_deg: f64) -> CmdResult {
         v["fit_caveat"] = json!(caveat);
     }
     print_result(study.json, &v, &text)
-}
-
-/// The caveat of the runs' single-mode yaw fits: the worst seed's ([`YawMeasures::fit_caveat`]).
-pub(crate) fn yaw_fit_caveat(measures: &[YawMeasures]) -> Option<String> {
-    measures
-        .iter()
-        .max_by(|a, b| a.fit_residual_to_noise.total_cmp(&b.fit_residual_to_noise))
-        .and_then(YawMeasures::fit_caveat)
 }
 
 #[cfg(test)]

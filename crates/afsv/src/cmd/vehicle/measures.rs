@@ -143,6 +143,14 @@ pub(super) fn measures_cmd(
     print_result(json_out, &v, &text)
 }
 
+/// The caveat of the runs' single-mode yaw fits: the worst seed's ([`vehicle_3d::scenarios::YawMeasures::fit_caveat`]).
+pub(crate) fn yaw_fit_caveat(measures: &[vehicle_3d::scenarios::YawMeasures]) -> Option<String> {
+    measures
+        .iter()
+        .max_by(|a, b| a.fit_residual_to_noise.total_cmp(&b.fit_residual_to_noise))
+        .and_then(vehicle_3d::scenarios::YawMeasures::fit_caveat)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -6,6 +6,27 @@ use super::super::args;
 use afsv_dynamics::SteerInput;
 use terrain_psd::IsoClass;
 use vehicle_3d::scenarios::TerrainSpec;
+use vehicle_3d::YawInertiaForm;
+
+/// Help of `--paper-form` (the vehicle commands and `afsv evaluate`).
+pub(crate) const PAPER_FORM_HELP: &str = "Use the printed Eq 3.13 yaw inertias (m L² counted twice) instead of the energy-consistent equations, to reproduce the dissertation's lower yaw frequency; for comparison with the paper, never for design (docs/vehicle-3d.md)";
+
+/// The yaw-inertia form of `--paper-form`.
+pub(super) fn yaw_inertia_form(paper_form: bool) -> YawInertiaForm {
+    if paper_form {
+        YawInertiaForm::PaperEq313
+    } else {
+        YawInertiaForm::EnergyConsistent
+    }
+}
+
+/// The strut file `--hps` names, if it names one (not `off` or `nominal`).
+pub(super) fn hps_file(hps: Option<&str>) -> Option<&std::path::Path> {
+    match hps {
+        None | Some("off" | "nominal") => None,
+        Some(file) => Some(std::path::Path::new(file)),
+    }
+}
 
 /// Largest number of terrain seeds of one command.
 pub(super) const MAX_SEEDS: usize = 1000;
