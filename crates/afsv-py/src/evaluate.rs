@@ -47,13 +47,10 @@ fn evaluate(
         let design =
             afsv_design::design_3d::assess(&p, v.front_strut.is_some(), &seed_list, &|_| {})?;
         let yaw = |load: Load| {
-            let case = match load {
-                Load::Loaded => vehicle_3d::Load::Loaded,
-                Load::Unloaded => vehicle_3d::Load::Unloaded,
-            };
+            let yp = v.yaw_plane_params(load);
             measures_for(
-                v.yaw_plane(case),
-                v.steering(),
+                &yp.vehicle,
+                &yp.afs,
                 Some(load),
                 speed,
                 &MeasureSpec::default(),

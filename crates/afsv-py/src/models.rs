@@ -45,15 +45,7 @@ fn yaw_params(
         return Ok(p);
     }
     let d = crate::desc::articulated(vehicle)?;
-    let case = match load {
-        Load::Loaded => vehicle_3d::Load::Loaded,
-        Load::Unloaded => vehicle_3d::Load::Unloaded,
-    };
-    let p = YawPlaneParams {
-        load: Some(load),
-        vehicle: d.yaw_plane(case).clone(),
-        afs: d.steering().clone(),
-    };
+    let p = d.yaw_plane_params(load);
     p.validate().map_err(|e| value_err(e.to_string()))?;
     Ok(p)
 }

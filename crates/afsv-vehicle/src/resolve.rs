@@ -53,6 +53,20 @@ impl ArticulatedVehicle {
         }
     }
 
+    /// The yaw-plane model's whole parameter set for its load `load`: this vehicle's
+    /// yaw-plane data of that load and its steering.
+    pub fn yaw_plane_params(&self, load: afsv_dynamics::Load) -> afsv_dynamics::YawPlaneParams {
+        let case = match load {
+            afsv_dynamics::Load::Loaded => Load::Loaded,
+            afsv_dynamics::Load::Unloaded => Load::Unloaded,
+        };
+        afsv_dynamics::YawPlaneParams {
+            load: Some(load),
+            vehicle: self.yaw_plane(case).clone(),
+            afs: self.steering().clone(),
+        }
+    }
+
     /// The steering system (the same in both models).
     pub fn steering(&self) -> &AfsParams {
         &self.params.steering

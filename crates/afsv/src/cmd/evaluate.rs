@@ -92,13 +92,10 @@ fn yaw_of(
     speed: f64,
     form: EquationForm,
 ) -> Result<YawMeasures, String> {
-    let case = match load {
-        Load::Loaded => vehicle_3d::Load::Loaded,
-        Load::Unloaded => vehicle_3d::Load::Unloaded,
-    };
+    let p = v.yaw_plane_params(load);
     let mut spec = MeasureSpec::default();
     spec.options.form = form;
-    measures_for(v.yaw_plane(case), v.steering(), Some(load), speed, &spec)
+    measures_for(&p.vehicle, &p.afs, Some(load), speed, &spec)
         .map_err(|e| format!("yaw-plane measures, {load:?} case: {e}").to_lowercase())
 }
 

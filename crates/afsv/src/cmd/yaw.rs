@@ -183,22 +183,9 @@ fn load_params(v: &VehicleArgs) -> Result<YawPlaneParams, Box<dyn std::error::Er
         LoadChoice::Loaded => Load::Loaded,
         LoadChoice::Unloaded => Load::Unloaded,
     };
-    let p = described_yaw_plane(&d, load);
+    let p = d.yaw_plane_params(load);
     p.validate()?;
     Ok(p)
-}
-
-/// The yaw-plane data and steering of the described vehicle `d` for `load`.
-fn described_yaw_plane(d: &afsv_vehicle::ArticulatedVehicle, load: Load) -> YawPlaneParams {
-    let case = match load {
-        Load::Loaded => vehicle_3d::Load::Loaded,
-        Load::Unloaded => vehicle_3d::Load::Unloaded,
-    };
-    YawPlaneParams {
-        load: Some(load),
-        vehicle: d.yaw_plane(case).clone(),
-        afs: d.steering().clone(),
-    }
 }
 
 /// Read and validate a yaw-plane parameter file.
@@ -449,7 +436,7 @@ pub fn run(cmd: Command) -> CmdResult {
         } => {
             let spec = measures_spec(form);
             let d = super::described::articulated(vehicle.as_deref())?;
-            let base = |load: Load| described_yaw_plane(&d, load);
+            let base = |load: Load| d.yaw_plane_params(load);
             let progress = Progress::new("afsv yaw sensitivity", "configurations", Some(34));
             let t = sensitivity_of(&base, kmh(speed_kmh)?, &spec, &|_, _| progress.step(""));
             progress.finish();
@@ -475,7 +462,7 @@ pub fn run(cmd: Command) -> CmdResult {
                 return Err("--steer-wheel-deg must be finite".into());
             }
             let d = super::described::articulated(vehicle.as_deref())?;
-            let of = |load: Load| described_yaw_plane(&d, load);
+            let of = |load: Load| d.yaw_plane_params(load);
             let opts = SimOptions::default();
             let mut decay = Vec::new();
             for load in Load::ALL {
