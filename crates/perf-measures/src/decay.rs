@@ -65,6 +65,18 @@ pub struct DecayFit {
 /// wrong window).
 pub const DECAY_RESIDUAL_NOISE_LIMIT: f64 = 3.0;
 
+/// The caveat of a fit whose RMS residual is `residual_to_noise` times the record's noise
+/// (None within [`DECAY_RESIDUAL_NOISE_LIMIT`], or when the ratio is not finite): the
+/// response is not one decaying mode, so the fitted frequency and damping depend on the
+/// window. For design measures of a model's own response, which keep their numbers.
+pub fn not_one_mode(residual_to_noise: f64) -> Option<String> {
+    (residual_to_noise.is_finite() && residual_to_noise > DECAY_RESIDUAL_NOISE_LIMIT).then(|| {
+        format!(
+            "the single-mode decay fit leaves a residual {residual_to_noise:.0}x the record's noise, so the free response is not one decaying mode and the fitted frequency and damping depend on the window"
+        )
+    })
+}
+
 /// Fewer damped cycles than this leave the damping ratio poorly determined.
 pub const DECAY_MIN_CYCLES: f64 = 1.5;
 
@@ -535,7 +547,18 @@ pub fn fit_free_decay(t: &[f64], y: &[f64]) -> Result<DecayFit, MeasureError> {
 
 #[cfg(test)]
 mod phasor_tests {
-    use super::{for_each_phasor, uniform_spacing};
+    use super::{for_each_phasor, not_one_mode, uniform_spacing};
+
+    #[test]
+    fn only_a_residual_far_above_the_noise_gets_the_caveat() {
+        assert!(not_one_mode(2.9).is_none());
+        assert!(not_one_mode(f64::INFINITY).is_none() && not_one_mode(f64::NAN).is_none());
+        let c = not_one_mode(12.4).unwrap();
+        assert!(
+            c.contains("12x") && c.contains("not one decaying mode"),
+            "{c}"
+        );
+    }
 
     #[test]
     fn the_recurrence_matches_the_exact_phasor() {

@@ -384,13 +384,9 @@ impl YawMeasures {
     /// Why the single-mode fit's numbers need a caveat, one sentence (None when the response
     /// is one decaying mode within the record's noise and zeta is determined).
     pub fn fit_caveat(&self) -> Option<String> {
-        let mut parts = Vec::new();
-        if self.fit_residual_to_noise > perf_measures::DECAY_RESIDUAL_NOISE_LIMIT {
-            parts.push(format!(
-                "the single-mode fit leaves a residual {:.0}x the record's noise, so the free yaw response is not one decaying mode and omega_z and zeta depend on the fitted window",
-                self.fit_residual_to_noise
-            ));
-        }
+        let mut parts: Vec<String> = perf_measures::not_one_mode(self.fit_residual_to_noise)
+            .into_iter()
+            .collect();
         if self.damping_ratio_std > 0.5 * self.damping_ratio.abs() {
             parts.push(format!(
                 "zeta {:.3} has a standard error of {:.3}",

@@ -95,13 +95,7 @@ impl YawMeasures {
     /// the hydraulic steering's damping is not linear, so the free response is not one
     /// decaying mode and the fitted numbers depend on the window.
     pub fn decay_fit_caveat(&self) -> Option<String> {
-        let ratio = self.decay_fit_rmse_deg / self.decay_fit_noise_rms_deg;
-        (self.decay_fit_noise_rms_deg > 0.0 && ratio > perf_measures::DECAY_RESIDUAL_NOISE_LIMIT)
-            .then(|| {
-                format!(
-                    "the single-mode decay fit leaves a residual {ratio:.0}x the noise, so the free yaw response is not one decaying mode and its frequency and damping depend on the fitted window"
-                )
-            })
+        perf_measures::not_one_mode(self.decay_fit_rmse_deg / self.decay_fit_noise_rms_deg)
     }
 }
 
