@@ -6,6 +6,7 @@ use crate::event::{locate, Event};
 use crate::kernel::{initial_step, Kernel};
 use crate::rk4::Rk4Kernel;
 use crate::rosenbrock::Rosenbrock23Kernel;
+use crate::rosenbrock_w::RosenbrockWKernel;
 use crate::{
     Atol, Control, OdeError, OdeSystem, Solver, Stats, Workspace, COLLAPSE_FACTOR,
     COLLAPSE_MIN_STEPS,
@@ -182,6 +183,11 @@ impl Integrator {
         match self.solver.resolve(sys) {
             Solver::Rosenbrock23 => Drive::new(self, sys, problem, Rosenbrock23Kernel::default())
                 .run(None, ws, &mut observe),
+            Solver::Ros34pw2 => Drive::new(self, sys, problem, RosenbrockWKernel::default()).run(
+                None,
+                ws,
+                &mut observe,
+            ),
             Solver::Rk4 { step } => Drive::new(self, sys, problem, Rk4Kernel::default()).run(
                 Some(step),
                 ws,
@@ -263,6 +269,23 @@ fn check_request<S: OdeSystem + ?Sized>(sys: &S, p: &Problem<'_>) -> Result<(), 
             )));
         }
         prev = t;
+    }
+    let mut seen = 0;
+    for (i, b) in sys.stiff_blocks().iter().enumerate() {
+        let n = sys.dim();
+        let repeated = |k: usize| b[..k].contains(&b[k]);
+        let earlier = |j: usize| sys.stiff_blocks()[..i].iter().any(|o| o.contains(&j));
+        if b.is_empty() || (0..b.len()).any(|k| b[k] >= n || repeated(k) || earlier(b[k])) {
+            return Err(OdeError::InvalidInput(format!(
+                "stiff block {i} ({b:?}) is empty, repeats a state, shares one with an earlier block or names one past the {n} states"
+            )));
+        }
+        seen += b.len();
+    }
+    if seen > sys.dim() {
+        return Err(OdeError::InvalidInput(
+            "stiff blocks hold more states than the system".into(),
+        ));
     }
     let mut prev = f64::NEG_INFINITY;
     for (i, &b) in p.breakpoints.iter().enumerate() {

@@ -4,7 +4,8 @@
 //! One [`Integrator`] value (a [`Solver`] plus tolerances and step limits) advances it: a
 //! single driver loop ([`Integrator::run`]) owns the output grid, the observer, breakpoints,
 //! event location, the step limit and the divergence error, and calls one of three
-//! single-step kernels (Dormand-Prince 5(4), Rosenbrock 2(3), fixed-step RK4).
+//! single-step kernels (Dormand-Prince 5(4), Rosenbrock 2(3), the Rosenbrock-W 3(2)
+//! ROS34PW2 on a model's stiff blocks, fixed-step RK4).
 //!
 //! Work buffers live in a caller-supplied [`Workspace`]: a caller that runs thousands of
 //! short simulations creates one and passes it to every run, and the runs allocate nothing.
@@ -19,6 +20,7 @@ mod kernel;
 mod linalg;
 mod rk4;
 mod rosenbrock;
+mod rosenbrock_w;
 mod solver;
 mod tolerance;
 mod workspace;
@@ -41,6 +43,22 @@ pub trait OdeSystem {
     fn is_stiff(&self) -> bool {
         false
     }
+    /// The stiff diagonal blocks that [`Solver::Ros34pw2`] treats implicitly: disjoint sets
+    /// of state indices whose rows, differentiated with respect to the block's own states,
+    /// hold the fast eigenvalues (e.g. each HPS strut's states with the velocity of the
+    /// carrier it acts on). Every other state is advanced explicitly by that method. Empty
+    /// (the default): that method is then explicit in every state.
+    fn stiff_blocks(&self) -> &[Vec<usize>] {
+        &[]
+    }
+    /// Jacobian of stiff block `block`'s rows with respect to its own states at `(t, y)`,
+    /// row-major in the block's index order into `jac` (`len²` entries). Return `true` when filled; the default returns
+    /// `false`, and the integrator then differences the whole right-hand side over the
+    /// block's states (one call per state). A model whose block is cheap to evaluate on its
+    /// own (a strut beside a multibody vehicle) fills it far more cheaply. Must not allocate.
+    fn block_jacobian(&self, _t: f64, _y: &[f64], _block: usize, _jac: &mut [f64]) -> bool {
+        false
+    }
 }
 
 impl<S: OdeSystem + ?Sized> OdeSystem for &S {
@@ -52,6 +70,12 @@ impl<S: OdeSystem + ?Sized> OdeSystem for &S {
     }
     fn is_stiff(&self) -> bool {
         (**self).is_stiff()
+    }
+    fn stiff_blocks(&self) -> &[Vec<usize>] {
+        (**self).stiff_blocks()
+    }
+    fn block_jacobian(&self, t: f64, y: &[f64], block: usize, jac: &mut [f64]) -> bool {
+        (**self).block_jacobian(t, y, block, jac)
     }
 }
 

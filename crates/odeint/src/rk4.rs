@@ -93,18 +93,15 @@ impl Kernel for Rk4Kernel {
 
     /// Cubic Hermite interpolation between (y, k1) and (y_new, f(t+h, y_new)).
     fn dense(&self, theta: f64, h: f64, ws: &mut Workspace) {
-        let s = theta;
-        let h00 = (1.0 + 2.0 * s) * (1.0 - s) * (1.0 - s);
-        let h10 = s * (1.0 - s) * (1.0 - s);
-        let h01 = s * s * (3.0 - 2.0 * s);
-        let h11 = s * s * (s - 1.0);
-        let Workspace {
-            y, y_new, y_out, k, ..
-        } = ws;
-        let [f0, .., f1, _, _] = k;
-        for i in 0..y.len() {
-            y_out[i] = h00 * y[i] + h * h10 * f0[i] + h01 * y_new[i] + h * h11 * f1[i];
-        }
+        hermite(
+            theta,
+            h,
+            &ws.y,
+            &ws.k[0],
+            &ws.y_new,
+            &ws.k[4],
+            &mut ws.y_out,
+        );
     }
 
     fn accept<S: OdeSystem + ?Sized>(
@@ -120,5 +117,26 @@ impl Kernel for Rk4Kernel {
             k1.copy_from_slice(f_end);
         }
         0
+    }
+}
+
+/// Cubic Hermite interpolation at `t + theta h` between `(y0, f0)` at `t` and `(y1, f1)` at
+/// `t + h` into `out`: third-order accurate, the dense output of RK4 and ROS34PW2.
+pub(crate) fn hermite(
+    theta: f64,
+    h: f64,
+    y0: &[f64],
+    f0: &[f64],
+    y1: &[f64],
+    f1: &[f64],
+    out: &mut [f64],
+) {
+    let s = theta;
+    let h00 = (1.0 + 2.0 * s) * (1.0 - s) * (1.0 - s);
+    let h10 = s * (1.0 - s) * (1.0 - s);
+    let h01 = s * s * (3.0 - 2.0 * s);
+    let h11 = s * s * (s - 1.0);
+    for i in 0..out.len() {
+        out[i] = h00 * y0[i] + h * h10 * f0[i] + h01 * y1[i] + h * h11 * f1[i];
     }
 }

@@ -4,6 +4,8 @@
 //! - `d1_ride_{rigid,hps}_{loaded,unloaded}_sim21p6s`: D1, 120 m (20 m run-in + 100 m) of
 //!   class E terrain at 20 km/h, seed 1, the terrain and enveloping cache built outside;
 //! - `d3_yaw_pulse_rigid_sim5s`: D3, the 0.2 s pulse at 50 km/h on smooth ground;
+//! - `d1_ride_hps_loaded_ros34pw2_sim21p6s`: the same HPS run with the Rosenbrock-W method
+//!   on the struts' stiff blocks instead of Dormand-Prince (docs/numerics.md);
 //! - `rhs_{rigid,hps}`: one right-hand-side evaluation;
 //! - `d1_terrain_and_cache`: synthesis of the terrain and the four tandem-cam caches, paid
 //!   once per seed.
@@ -47,6 +49,15 @@ fn bench(c: &mut Criterion) {
             });
         }
         let v = ride(Load::Loaded, axle);
+        if axle == FrontAxle::Suspended {
+            let w = RunOptions {
+                solver: odeint::Solver::Ros34pw2,
+                ..run
+            };
+            group.bench_function("d1_ride_hps_loaded_ros34pw2_sim21p6s", |b| {
+                b.iter(|| simulate(&v, &w).unwrap().len())
+            });
+        }
         let y = v.initial_state();
         let mut d = vec![0.0; y.len()];
         group.bench_function(format!("rhs_{a}"), |b| {

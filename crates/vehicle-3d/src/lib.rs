@@ -24,6 +24,7 @@ pub mod scenarios;
 pub mod simulate;
 pub mod statics;
 pub mod steering;
+mod stiff_block;
 pub mod tires;
 pub mod vehicle;
 pub mod yaw_mode;

@@ -219,6 +219,8 @@ pub struct Vehicle {
     l0: f64,
     hps: Option<HpsStrut>,
     hps_static_m: f64,
+    /// Each strut's states: the blocks the Rosenbrock-W method treats implicitly.
+    stiff_blocks: Vec<Vec<usize>>,
     /// Effective tracks per tire in [`crate::model::TIRE_NAMES`] order.
     tracks: Arc<TireTracks>,
     vertical: VerticalContact,
@@ -356,6 +358,7 @@ impl Vehicle {
             l0,
             hps,
             hps_static_m,
+            stiff_blocks: crate::stiff_block::strut_blocks(&offsets),
             tracks,
             vertical,
             fiala: Fiala::new(&params.tire)?,
@@ -747,5 +750,13 @@ impl odeint::OdeSystem for Vehicle {
         if self.evaluate(t, y, &mut ws, dydt).is_err() {
             dydt.fill(f64::NAN);
         }
+    }
+
+    fn stiff_blocks(&self) -> &[Vec<usize>] {
+        &self.stiff_blocks
+    }
+
+    fn block_jacobian(&self, _t: f64, y: &[f64], block: usize, jac: &mut [f64]) -> bool {
+        self.strut_block_jacobian(y, block, jac)
     }
 }

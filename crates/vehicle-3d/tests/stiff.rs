@@ -56,3 +56,45 @@ fn a_stiff_steering_circuit_ends_the_run_early_and_is_named() {
         Err(e) => panic!("expected the stiff-state error, got {e}"),
     }
 }
+
+/// The Rosenbrock-W method on the struts' stiff blocks (`odeint::Solver::Ros34pw2`) gives
+/// the Dormand-Prince run at tight tolerance: 3 s of the loaded D1 ride with the nominal
+/// HPS on class E ground.
+#[test]
+fn the_rosenbrock_w_run_agrees_with_dopri5_at_tight_tolerance() {
+    use vehicle_3d::scenarios::{RideSpec, OUTPUT_DT_S};
+    let p = VehicleParams::nominal();
+    let terrain = RideSpec::d1(Load::Loaded, FrontAxle::Suspended)
+        .terrain
+        .build(&p, 60.0, 1)
+        .unwrap();
+    let options = VehicleOptions {
+        front_axle: FrontAxle::Suspended,
+        speed_m_s: 20.0 / 3.6,
+        path_length_m: 40.0,
+        start_s_m: 15.0,
+        ..VehicleOptions::default()
+    };
+    let v = Vehicle::new(&p, Load::Loaded, options, &terrain, 0.5 * p.front_track_m).unwrap();
+    let run = |solver, rtol| RunOptions {
+        t_end_s: 3.0,
+        output_dt_s: OUTPUT_DT_S,
+        rtol,
+        solver,
+        ..RunOptions::default()
+    };
+    let reference = simulate(&v, &run(odeint::Solver::Dopri5, 1e-8)).unwrap();
+    let w = simulate(&v, &run(odeint::Solver::Ros34pw2, 1e-6)).unwrap();
+    let worst = |a: &[f64], b: &[f64]| {
+        a.iter()
+            .zip(b)
+            .map(|(x, y)| (x - y).abs())
+            .fold(0.0, f64::max)
+    };
+    for k in 0..2 {
+        let travel = worst(&w.hps_travel_m[k], &reference.hps_travel_m[k]);
+        assert!(travel < 2e-5, "strut {k}: travel differs by {travel} m");
+    }
+    let a = worst(&w.cab_accel_m_s2[2], &reference.cab_accel_m_s2[2]);
+    assert!(a < 5e-3, "vertical acceleration differs by {a} m/s2");
+}

@@ -1,0 +1,82 @@
+//! The stiff part of the suspended vehicle, for the Rosenbrock-W integrator
+//! ([`odeint::Solver::Ros34pw2`]): each front strut's own states (gas volume, rod-side
+//! pressure, velocity amplitude and any extension states of Eqs 6.9-6.18).
+//!
+//! The rod-side pressure relaxes through the orifices with a rate `β/V_r · ∂Q/∂Δp` that
+//! reaches about 3·10⁴ s⁻¹ near zero flow (nominal strut, loaded D1 ride; 150-700 s⁻¹
+//! while the strut moves), while the rest of the vehicle's eigenvalues stay below about
+//! 200 s⁻¹ (docs/vehicle-3d.md, "Speed"). An explicit method's steps are held to that
+//! fast relaxation; the Rosenbrock-W method inverts `I/(hγ) − J` on these 3 × 3 blocks
+//! only. Their Jacobian is differenced through the strut's own evaluate at the carrier's
+//! current travel and rate: four strut evaluations per strut, no vehicle right-hand side.
+
+use crate::vehicle::{Offsets, Vehicle};
+
+/// One block per strut, its states in order; none for a rigid front axle.
+pub(crate) fn strut_blocks(offsets: &Offsets) -> Vec<Vec<usize>> {
+    let n = offsets.hps_states;
+    (0..2)
+        .filter(|_| n > 0)
+        .map(|side| (offsets.hps + side * n..offsets.hps + (side + 1) * n).collect())
+        .collect()
+}
+
+impl Vehicle {
+    /// ∂(strut `side`'s state rates)/∂(its states) at `y`, row-major into `jac`, by forward
+    /// differences of `HpsStrut::evaluate` with the carrier's travel and rate held. `false`
+    /// for a rigid front axle (no block).
+    pub(crate) fn strut_block_jacobian(&self, y: &[f64], side: usize, jac: &mut [f64]) -> bool {
+        let (Some(strut), Some(carrier)) = (self.hps_strut(), self.joints.carrier) else {
+            return false;
+        };
+        const MAX_STATES: usize = 8;
+        let o = &self.offsets;
+        let n = o.hps_states;
+        if n > MAX_STATES {
+            return false;
+        }
+        let (qi, vi) = carrier[side];
+        let z = self.hps_static_travel_m() + y[o.q + qi];
+        let zdot = y[o.v + vi];
+        let at = o.hps + side * n;
+        let mut s = [0.0; MAX_STATES];
+        s[..n].copy_from_slice(&y[at..at + n]);
+        let (mut f0, mut f1) = ([0.0; MAX_STATES], [0.0; MAX_STATES]);
+        strut.evaluate(z, zdot, &s[..n], &mut f0[..n]);
+        for c in 0..n {
+            let base = s[c];
+            let d = f64::EPSILON.sqrt() * base.abs().max(strut.state_typical(c));
+            s[c] = base + d;
+            strut.evaluate(z, zdot, &s[..n], &mut f1[..n]);
+            s[c] = base;
+            for r in 0..n {
+                jac[r * n + c] = (f1[r] - f0[r]) / d;
+            }
+        }
+        true
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn one_block_per_strut_and_none_without() {
+        let mut o = Offsets {
+            q: 0,
+            v: 16,
+            afs: 30,
+            tires: 33,
+            hps: 41,
+            hps_states: 3,
+            pi: 47,
+            path: 48,
+            driver: None,
+            dim: 49,
+        };
+        assert_eq!(strut_blocks(&o), vec![vec![41, 42, 43], vec![44, 45, 46]]);
+        o.hps_states = 0;
+        assert!(strut_blocks(&o).is_empty());
+    }
+}
