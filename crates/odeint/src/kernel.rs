@@ -46,6 +46,12 @@ pub(crate) trait Kernel {
     /// Commit the step (`ws.y <- ws.y_new`) and carry what the next step can reuse.
     /// Returns RHS calls.
     fn accept<S: OdeSystem + ?Sized>(&mut self, sys: &S, t_new: f64, ws: &mut Workspace) -> usize;
+
+    /// Has the method found the problem stiff (its steps held by stability, not accuracy)?
+    /// Only Dormand-Prince tells; the others answer `false`.
+    fn stiff(&self) -> bool {
+        false
+    }
 }
 
 /// Hairer's starting-step heuristic (HNW I, II.4) for a method of order `order`, from

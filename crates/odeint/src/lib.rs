@@ -22,6 +22,7 @@ mod rk4;
 mod rosenbrock;
 mod rosenbrock_w;
 mod solver;
+mod switching;
 mod tolerance;
 mod workspace;
 
@@ -147,6 +148,9 @@ pub struct Stats {
     pub rejected: usize,
     /// Event crossings located and reported.
     pub events: usize,
+    /// Method switches of a switching [`Solver::Auto`] run (Dormand-Prince to ROS34PW2 and
+    /// back); 0 for every other solver.
+    pub switches: usize,
 }
 
 /// What the observer wants after seeing an output.

@@ -22,12 +22,13 @@
 //! with Rang & Angermann's α, Γ (γ = 0.4358665215 on the diagonal), b and the order-2
 //! embedding b̂; the transformed coefficients are computed from them once per run
 //! ([`Tableau::ros34pw2`]). Dense output: cubic Hermite between `(y, f(t, y))` and
-//! `(y_1, f(t + h, y_1))`, of the method's order; `f(t + h, y_1)` is the next step's first
-//! stage, so an accepted step costs four right-hand sides and a rejected one three.
+//! `(y_1, f(t + h, y_1))` in the explicit states, linear in the stiff ones;
+//! `f(t + h, y_1)` is the next step's first stage, so an accepted step costs four
+//! right-hand sides and a rejected one three.
 //!
 //! Workspace use: `k[0]` f(t, y), `k[1..5]` the stage increments u_1..u_4, `k[5]` the stage
 //! derivative, `k[6]` f(t + h, y_1); `aux[0]` the error, `aux[1]` solve scratch, `aux[2]`
-//! the blocks' gathered entries; `jac` the packed block Jacobians, `w` their factored
+//! the blocks' gathered entries, `aux[3]` the mask of block states for the dense output; `jac` the packed block Jacobians, `w` their factored
 //! iteration matrices, `piv` their pivots (packed).
 
 use crate::kernel::Kernel;
@@ -360,22 +361,35 @@ impl Kernel for RosenbrockWKernel {
         if self.end_ready {
             return 0;
         }
+        let mask = &mut ws.aux[3];
+        mask.fill(0.0);
+        for &i in sys.stiff_blocks().iter().flatten() {
+            mask[i] = 1.0;
+        }
         sys.rhs(t + h, &ws.y_new, &mut ws.k[6]);
         self.end_ready = true;
         1
     }
 
-    /// Cubic Hermite interpolation between (y, f(t, y)) and (y_1, f(t + h, y_1)).
+    /// Cubic Hermite interpolation between (y, f(t, y)) and (y_1, f(t + h, y_1)), linear in
+    /// the stiff blocks' states (`aux[3]` marks them): there `f` multiplies the step's error
+    /// by the stiffness, while the linear form's error is `h² |y''| / 8` of the slow motion
+    /// the stiff state follows.
     fn dense(&self, theta: f64, h: f64, ws: &mut Workspace) {
-        crate::rk4::hermite(
-            theta,
-            h,
-            &ws.y,
-            &ws.k[0],
-            &ws.y_new,
-            &ws.k[6],
-            &mut ws.y_out,
-        );
+        let Workspace {
+            y,
+            y_new,
+            y_out,
+            k,
+            aux,
+            ..
+        } = ws;
+        crate::rk4::hermite(theta, h, y, &k[0], y_new, &k[6], y_out);
+        for (i, m) in aux[3].iter().enumerate() {
+            if *m != 0.0 {
+                y_out[i] = (1.0 - theta) * y[i] + theta * y_new[i];
+            }
+        }
     }
 
     fn accept<S2: OdeSystem + ?Sized>(

@@ -28,16 +28,18 @@ pub enum Solver {
         /// Largest step (s).
         step: f64,
     },
-    /// Let the model choose through [`OdeSystem::is_stiff`]: [`Solver::Rosenbrock23`] when
-    /// it answers `true`, [`Solver::Dopri5`] otherwise. It never picks
-    /// [`Solver::Ros34pw2`]: measured, that method is faster on none of the toolkit's
-    /// models (docs/numerics.md).
+    /// Let the model choose: [`Solver::Rosenbrock23`] when [`OdeSystem::is_stiff`] answers
+    /// `true`; otherwise [`Solver::Dopri5`], which on a model with stiff blocks
+    /// ([`OdeSystem::stiff_blocks`]) hands the run to [`Solver::Ros34pw2`] when it finds the
+    /// problem stiff and the implicit method proves faster on trial (docs/numerics.md,
+    /// "Switching").
     Auto,
 }
 
 impl Solver {
-    /// The concrete method for `sys` ([`Solver::Auto`] asks [`OdeSystem::is_stiff`]; the
-    /// others are returned as they are).
+    /// The concrete method `sys` starts with ([`Solver::Auto`] asks [`OdeSystem::is_stiff`];
+    /// the others are returned as they are). A switching `Auto` run starts with
+    /// [`Solver::Dopri5`].
     pub fn resolve<S: OdeSystem + ?Sized>(self, sys: &S) -> Solver {
         match self {
             Solver::Auto if sys.is_stiff() => Solver::Rosenbrock23,

@@ -35,9 +35,9 @@ pub struct RunOptions {
     pub max_step_s: f64,
     /// End the run at the rear unit's absolute rollover.
     pub stop_at_rollover: bool,
-    /// Integration method. Default [`Solver::Dopri5`]; [`Solver::Ros34pw2`] treats each
-    /// HPS strut's states implicitly (`stiff_block`), measured slower on the D1 ride
-    /// (docs/numerics.md).
+    /// Integration method. Default [`Solver::Auto`]: Dormand-Prince, handing the run to
+    /// [`Solver::Ros34pw2`] (implicit in each HPS strut's states) when it finds the struts
+    /// stiff and the implicit method proves faster (docs/numerics.md, "Switching").
     pub solver: Solver,
 }
 
@@ -49,7 +49,7 @@ impl Default for RunOptions {
             rtol: 3e-5,
             max_step_s: 0.03,
             stop_at_rollover: false,
-            solver: Solver::Dopri5,
+            solver: Solver::Auto,
         }
     }
 }
