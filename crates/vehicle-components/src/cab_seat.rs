@@ -33,12 +33,21 @@
 //! point (kinematic, gravity not included) and `g` along the frame's -z.
 //!
 //! **One-way coupling.** The frame's motion drives the cab and seat; their reaction on the
-//! frame is left out. The vehicle model's front unit already carries the cab's mass
-//! rigidly, so the neglected force is only the difference between a mounted and a rigid
-//! cab, `m_cab a_frame (T - 1)` with `T` the cab's transmissibility: the frame's
-//! acceleration is then in error by about `mu |T - 1|`, `mu = (m_cab + m_seat) / m_unit`
-//! (1 180 kg over the prototype's 21 t front unit: `mu = 0.056`; below the cab's 6.9 Hz
-//! bounce `|T - 1| < 0.3` up to 3 Hz, so under 2 % there, and never above `mu (|T| + 1)`).
+//! frame is left out. The vehicle model's front unit already carries the cab's mass and
+//! inertia rigidly, so the neglected load is only the difference between a mounted and a
+//! rigid cab, `m (a_cab - a_frame) = m a_frame (T - 1)` with `T` the cab's transmissibility
+//! at that frequency (and the same with the cab's rocking inertia about the mount plane for
+//! pitch and roll). The frame's acceleration is then in error by about `mu |T - 1|`, with
+//! `mu` the ratio of the cab-and-seat mass (or rocking inertia) to the front unit's:
+//! for the generic cab on the prototype, `mu = 1 180 kg / 21 t = 0.056` in bounce and
+//! `1 510 kg m² / 41 000 kg m² = 0.037` in pitch (a seat on the centreline does not feel
+//! the cab's roll). Far below the cab's modes `T -> 1` and the error vanishes. Near them
+//! it does not: with the generic, lightly damped mounts the cab's pitch transmissibility
+//! peaks at `|T| = 5.3` (4.7 Hz) and its bounce at 3.5 (7.1 Hz), where the neglected
+//! reaction reaches `mu |T - 1|`, about 0.16 of the frame's motion, and the one-way model
+//! overstates the cab's resonant motion (a real frame would be loaded and the resonance
+//! damped). Over a D1 ride the floor's a_wz is 1.4-1.7 times the frame's, an average
+//! `|T - 1|` of 0.4-0.7 and an error of a few percent (`docs/layouts.md`).
 //!
 //! Other assumptions: small relative motion (linear kinematics); gravity along the frame's
 //! z (the frame's tilt, a few degrees on rough ground, changes the vertical gravity term by
