@@ -325,3 +325,6 @@ pub fn ride_with_seat_over_seeds(
         .map(|&s| ride_with_seat(p, spec, s, layout))
         .collect()
 }
+
+#[cfg(test)]
+mod tests;

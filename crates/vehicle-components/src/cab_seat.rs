@@ -573,3 +573,6 @@ impl Component for CabSeat {
         ]);
     }
 }
+
+#[cfg(test)]
+mod tests;

@@ -1,12 +1,12 @@
-//! The cab and seat driven through time (`vehicle_3d::cab_ride`): the seat's transmissibility
+//! The cab and seat driven through time: the seat's transmissibility
 //! against the closed-form base-excitation formula, the power balance over a run, mirrored
 //! runs, and the seat measures of a synthetic ride record. The measured D1 numbers of
 //! `docs/layouts.md` come from the ignored test at the end:
-//! `cargo test --release -p vehicle-3d --test cab_ride -- --ignored --nocapture`.
+//! `cargo test --release -p vehicle-3d --lib cab_ride -- --ignored --nocapture`.
 
+use super::{cab_seat_run, seat_ride_measures, CabSeatLayout};
+use crate::{RunRecord, VehicleParams};
 use std::f64::consts::PI;
-use vehicle_3d::cab_ride::{cab_seat_run, seat_ride_measures, CabSeatLayout};
-use vehicle_3d::{RunRecord, VehicleParams};
 use vehicle_components::{CabSeat, FrameMotion, SeatParams};
 
 /// Uniform times of `secs` seconds at `fs` Hz.
@@ -186,11 +186,11 @@ fn vehicle_3d_wk(f: f64) -> f64 {
 /// the generic seat on a stiffly mounted cab (mounts 100 times stiffer, 10 times more
 /// damped: the cab moves with the frame and only the seat acts).
 #[test]
-#[ignore = "measurement for docs/layouts.md (twenty ride runs, about a minute)"]
+#[ignore = "measurement for docs/layouts.md (twenty ride runs, about 15 s on two cores)"]
 fn d1_with_the_generic_cab_and_seat() {
-    use vehicle_3d::cab_ride::{ride_with_seat_over_seeds, SeatRideMeasures};
-    use vehicle_3d::scenarios::{RideSpec, Spread};
-    use vehicle_3d::{FrontAxle, Load};
+    use super::{ride_with_seat_over_seeds, SeatRideMeasures};
+    use crate::scenarios::{RideSpec, Spread};
+    use crate::{FrontAxle, Load};
     let p = VehicleParams::nominal();
     let generic = CabSeatLayout::generic();
     let mut stiff = generic;

@@ -1,15 +1,14 @@
-//! Physics of the cab on mounts and the suspension seat (`vehicle_components::cab_seat`):
-//! statics and linear modes against hand calculation, the power balance and mirror symmetry
+//! Physics of the cab on mounts and the suspension seat: statics and linear modes against hand calculation, the power balance and mirror symmetry
 //! at arbitrary states. The run-level checks (transmissibility against the closed-form
 //! base-excitation formula, energy over a run, mirrored runs) are in
-//! `crates/vehicle-3d/tests/cab_ride.rs`, which integrates the component.
+//! `crates/vehicle-3d/src/cab_ride/tests.rs`, which integrates the component.
 
+use super::{
+    CabParams, CabSeat, Cushion, FrameMotion, SeatParams, BOUNCE, CUSHION, PITCH, ROLL, SEAT,
+};
+use crate::{Component, ComponentError};
 use proptest::prelude::*;
 use std::f64::consts::PI;
-use vehicle_components::cab_seat::{BOUNCE, CUSHION, PITCH, ROLL, SEAT};
-use vehicle_components::{
-    CabParams, CabSeat, Component, ComponentError, Cushion, FrameMotion, SeatParams,
-};
 
 const G: f64 = 9.81;
 
