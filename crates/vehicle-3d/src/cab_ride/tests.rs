@@ -184,9 +184,10 @@ fn vehicle_3d_wk(f: f64) -> f64 {
 /// The D1 numbers of `docs/layouts.md`: the prototype loaded at 20 km/h on class E, rigid
 /// and with the nominal front HPS, over seeds 1-5, with the generic cab and seat, and with
 /// the generic seat on a stiffly mounted cab (mounts 100 times stiffer, 10 times more
-/// damped: the cab moves with the frame and only the seat acts).
+/// damped: the cab moves with the frame and only the seat acts), and with a softer seat on
+/// the generic cab (1.0 Hz, damping ratio 0.4, 150 mm travel).
 #[test]
-#[ignore = "measurement for docs/layouts.md (twenty ride runs, about 15 s on two cores)"]
+#[ignore = "measurement for docs/layouts.md (thirty ride runs, about 20 s on two cores)"]
 fn d1_with_the_generic_cab_and_seat() {
     use super::{ride_with_seat_over_seeds, SeatRideMeasures};
     use crate::scenarios::{RideSpec, Spread};
@@ -198,13 +199,25 @@ fn d1_with_the_generic_cab_and_seat() {
         m.stiffness_n_per_m *= 100.0;
         m.damping_n_s_per_m *= 10.0;
     }
-    for (name, layout) in [("generic cab", generic), ("stiff cab", stiff)] {
+    let mut soft = generic;
+    soft.seat.stiffness_n_per_m = 80.0 * (2.0 * PI * 1.0f64).powi(2);
+    soft.seat.damping_n_s_per_m = 2.0 * 0.4 * (soft.seat.stiffness_n_per_m * 80.0).sqrt();
+    soft.seat.travel_m = 0.15;
+    for (name, layout) in [
+        ("generic cab", generic),
+        ("stiff cab", stiff),
+        ("soft seat", soft),
+    ] {
         let cs = layout.build(&p).unwrap();
         println!("{name}: modes (Hz) {:?}", cs.linear_modes_hz());
     }
     let seeds: Vec<u64> = (1..=5).collect();
     for axle in [FrontAxle::Rigid, FrontAxle::Suspended] {
-        for (name, layout) in [("generic cab", generic), ("stiff cab", stiff)] {
+        for (name, layout) in [
+            ("generic cab", generic),
+            ("stiff cab", stiff),
+            ("soft seat", soft),
+        ] {
             let spec = RideSpec::d1(Load::Loaded, axle);
             let runs = ride_with_seat_over_seeds(&p, &spec, &seeds, &layout).unwrap();
             let col = |f: &dyn Fn(&SeatRideMeasures) -> f64| {
