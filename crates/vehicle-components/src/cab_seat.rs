@@ -237,7 +237,13 @@ impl CabSeat {
     ) -> Result<Self, ComponentError> {
         cab.validate()?;
         seat.validate()?;
-        in_range("gravity_m_s2", gravity_m_s2, 0.1, 20.0)?;
+        in_range(
+            "gravity_m_s2",
+            gravity_m_s2,
+            0.1,
+            20.0,
+            "must be finite and within [0.1, 20] m/s²",
+        )?;
         let n = if seat.cushion.is_some() { 5 } else { 4 };
         let floor = |extra: [f64; 2]| {
             let mut j = [0.0; N_MAX];

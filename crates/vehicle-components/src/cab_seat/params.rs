@@ -64,20 +64,63 @@ impl CabParams {
 
     /// Every field finite and in its plausible range; the field is named in the error.
     pub fn validate(&self) -> Result<(), ComponentError> {
-        in_range("cab.mass_kg", self.mass_kg, 50.0, 20_000.0)?;
-        in_range("cab.roll_inertia_kg_m2", self.roll_inertia_kg_m2, 1.0, 1e5)?;
+        in_range(
+            "cab.mass_kg",
+            self.mass_kg,
+            50.0,
+            20_000.0,
+            "must be finite and within [50, 20000] kg",
+        )?;
+        in_range(
+            "cab.roll_inertia_kg_m2",
+            self.roll_inertia_kg_m2,
+            1.0,
+            1e5,
+            "must be finite and within [1, 1e5] kg m²",
+        )?;
         in_range(
             "cab.pitch_inertia_kg_m2",
             self.pitch_inertia_kg_m2,
             1.0,
             1e5,
+            "must be finite and within [1, 1e5] kg m²",
         )?;
-        in_range("cab.cg_height_m", self.cg_height_m, 0.0, 5.0)?;
+        in_range(
+            "cab.cg_height_m",
+            self.cg_height_m,
+            0.0,
+            5.0,
+            "must be finite and within [0, 5] m",
+        )?;
         for (m, names) in self.mounts.iter().zip(MOUNT_FIELDS) {
-            in_range(names[0], m.x_m, -5.0, 5.0)?;
-            in_range(names[1], m.y_m, -5.0, 5.0)?;
-            in_range(names[2], m.stiffness_n_per_m, 1e3, 1e9)?;
-            in_range(names[3], m.damping_n_s_per_m, 0.0, 1e7)?;
+            in_range(
+                names[0],
+                m.x_m,
+                -5.0,
+                5.0,
+                "must be finite and within [-5, 5] m",
+            )?;
+            in_range(
+                names[1],
+                m.y_m,
+                -5.0,
+                5.0,
+                "must be finite and within [-5, 5] m",
+            )?;
+            in_range(
+                names[2],
+                m.stiffness_n_per_m,
+                1e3,
+                1e9,
+                "must be finite and within [1000, 1e9] N/m",
+            )?;
+            in_range(
+                names[3],
+                m.damping_n_s_per_m,
+                0.0,
+                1e7,
+                "must be finite and within [0, 1e7] N s/m",
+            )?;
         }
         Ok(())
     }
@@ -196,37 +239,78 @@ impl SeatParams {
             self.suspended_mass_kg,
             10.0,
             500.0,
+            "must be finite and within [10, 500] kg",
         )?;
-        in_range("seat.stiffness_n_per_m", self.stiffness_n_per_m, 100.0, 1e7)?;
-        in_range("seat.damping_n_s_per_m", self.damping_n_s_per_m, 0.0, 1e6)?;
-        in_range("seat.travel_m", self.travel_m, 0.01, 0.5)?;
+        in_range(
+            "seat.stiffness_n_per_m",
+            self.stiffness_n_per_m,
+            100.0,
+            1e7,
+            "must be finite and within [100, 1e7] N/m",
+        )?;
+        in_range(
+            "seat.damping_n_s_per_m",
+            self.damping_n_s_per_m,
+            0.0,
+            1e6,
+            "must be finite and within [0, 1e6] N s/m",
+        )?;
+        in_range(
+            "seat.travel_m",
+            self.travel_m,
+            0.01,
+            0.5,
+            "must be finite and within [0.01, 0.5] m",
+        )?;
         in_range(
             "seat.stop_stiffness_n_per_m",
             self.stop_stiffness_n_per_m,
             self.stiffness_n_per_m,
             1e9,
+            "must be finite, at least the seat's stiffness_n_per_m and at most 1e9 N/m",
         )?;
-        in_range("seat.x_m", self.x_m, -5.0, 5.0)?;
-        in_range("seat.y_m", self.y_m, -5.0, 5.0)?;
-        in_range("seat.height_m", self.height_m, 0.0, 5.0)?;
+        in_range(
+            "seat.x_m",
+            self.x_m,
+            -5.0,
+            5.0,
+            "must be finite and within [-5, 5] m",
+        )?;
+        in_range(
+            "seat.y_m",
+            self.y_m,
+            -5.0,
+            5.0,
+            "must be finite and within [-5, 5] m",
+        )?;
+        in_range(
+            "seat.height_m",
+            self.height_m,
+            0.0,
+            5.0,
+            "must be finite and within [0, 5] m",
+        )?;
         if let Some(c) = &self.cushion {
             in_range(
                 "seat.cushion.occupant_mass_kg",
                 c.occupant_mass_kg,
                 10.0,
                 300.0,
+                "must be finite and within [10, 300] kg",
             )?;
             in_range(
                 "seat.cushion.stiffness_n_per_m",
                 c.stiffness_n_per_m,
                 1e3,
                 1e7,
+                "must be finite and within [1000, 1e7] N/m",
             )?;
             in_range(
                 "seat.cushion.damping_n_s_per_m",
                 c.damping_n_s_per_m,
                 0.0,
                 1e6,
+                "must be finite and within [0, 1e6] N s/m",
             )?;
         }
         Ok(())
@@ -239,12 +323,14 @@ fn spring_damper(m: f64, f_hz: f64, zeta: f64) -> (f64, f64) {
     (k, 2.0 * zeta * (k * m).sqrt())
 }
 
-/// `value` finite and within `[lo, hi]`, else an error naming `field`.
+/// `value` finite and within `[lo, hi]`, else an error naming `field` with `reason` (the
+/// range in words).
 pub(crate) fn in_range(
     field: &'static str,
     value: f64,
     lo: f64,
     hi: f64,
+    reason: &'static str,
 ) -> Result<(), ComponentError> {
     if value.is_finite() && (lo..=hi).contains(&value) {
         Ok(())
@@ -252,7 +338,7 @@ pub(crate) fn in_range(
         Err(ComponentError::InvalidParameter {
             field,
             value,
-            reason: "not finite or outside its plausible range (docs/layouts.md)",
+            reason,
         })
     }
 }
