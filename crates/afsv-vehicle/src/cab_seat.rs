@@ -188,9 +188,11 @@ pub(crate) fn layout(
         mount_centre_from_cab_point_m: body.mount_centre_from_point_m,
     };
     layout.build(params).map_err(|e| match &e {
-        vehicle_3d::VehicleError::InvalidParameter { field, .. } => {
-            o.err(&path_of(field), e.to_string())
-        }
+        vehicle_3d::VehicleError::InvalidParameter {
+            field,
+            value,
+            reason,
+        } => o.err(&path_of(field), format!("{value}: {reason}")),
         _ => o.err("cab.body", e.to_string()),
     })?;
     Ok(Some(layout))
@@ -249,7 +251,10 @@ mod tests {
         let e = load_str(&text, "v.toml", Path::new("."))
             .unwrap_err()
             .to_string();
-        assert!(e.contains("`cab.body.mount[0].stiffness_n_per_m`"), "{e}");
+        assert!(
+            e.contains("`cab.body.mount[0].stiffness_n_per_m`: -1: must be finite and within [1000, 1e9] N/m"),
+            "{e}"
+        );
         let line = text
             .lines()
             .position(|l| l.contains("stiffness_n_per_m = -1.0"))
