@@ -96,9 +96,21 @@ fn component(e: ComponentError) -> VehicleError {
 }
 
 /// The frame's motion at O for every sample of `rec` (module docs), O being `offset_m` from
-/// the a_wz point.
-pub fn frame_motion(rec: &RunRecord, offset_m: [f64; 3]) -> Vec<FrameMotion> {
-    (0..rec.len())
+/// the a_wz point. Errors when a channel it reads is not as long as the record's time.
+pub fn frame_motion(rec: &RunRecord, offset_m: [f64; 3]) -> Result<Vec<FrameMotion>, VehicleError> {
+    let n = rec.t_s.len();
+    let channels = [
+        &rec.cab_accel_m_s2,
+        &rec.front_angular_accel_rad_s2,
+        &rec.front_rate_rad_s,
+    ];
+    if channels.iter().any(|c| c.iter().any(|v| v.len() != n)) {
+        return Err(measure(
+            "cab_seat",
+            "the record's cab acceleration, angular acceleration and rate channels must each hold one value per time",
+        ));
+    }
+    Ok((0..n)
         .map(|i| {
             let at_cab = FrameMotion {
                 accel_m_s2: [0, 1, 2].map(|k| rec.cab_accel_m_s2[k][i]),
@@ -110,7 +122,7 @@ pub fn frame_motion(rec: &RunRecord, offset_m: [f64; 3]) -> Vec<FrameMotion> {
                 ..at_cab
             }
         })
-        .collect()
+        .collect())
 }
 
 /// The recorded response of the cab and seat, one row per input sample.
@@ -267,7 +279,7 @@ pub fn seat_ride_measures(
     layout: &CabSeatLayout,
 ) -> Result<SeatRideMeasures, VehicleError> {
     let cs = layout.build(p)?;
-    let frame = frame_motion(rec, layout.mount_centre_from_cab_point_m);
+    let frame = frame_motion(rec, layout.mount_centre_from_cab_point_m)?;
     let out = cab_seat_run(&cs, &rec.t_s, &frame)?;
     let i0 = rec.t_s.partition_point(|&t| t < t_start_s);
     if rec.len() < i0 + 64 {

@@ -166,6 +166,10 @@ fn the_seat_measures_of_a_heaving_frame_have_their_closed_forms() {
     let expect = base_excitation(4.0, 1.5, 0.3);
     assert!((m.seat.seat / expect - 1.0).abs() < 0.01, "{m:?}");
     assert!(m.a_wz_seat_m_s2 < m.a_wz_floor_m_s2 && m.stop_fraction == 0.0);
+    // a record missing a channel is an error, not a panic
+    let mut short = rec.clone();
+    short.front_rate_rad_s[1].pop();
+    assert!(seat_ride_measures(&p, &short, 5.0, &layout).is_err());
     // a seat that cannot move is refused by its ranges, not run
     let stiff = CabSeatLayout {
         seat: SeatParams {
