@@ -37,9 +37,9 @@ impl CabParams {
     /// The generic cab (assumptions, `docs/layouts.md`): 1 100 kg, a 1.8 m long, 1.6 m
     /// wide, 2.0 m high uniform box for the inertias (`m (b² + c²) / 12`: roll 601 kg m²,
     /// pitch 664 kg m²), centre of mass 0.9 m above the mounts, four mounts at
-    /// x = ±0.8 m, y = ±0.65 m of 550 kN/m and 3.5 kN s/m each: with the generic seat a
-    /// 6.9 Hz bounce, 5.2 mm static deflection and a damping ratio near 0.14 (an elastomer
-    /// loss factor of about 0.3).
+    /// x = ±0.8 m, y = ±0.65 m of 550 kN/m and 3.5 kN s/m each: a 7.1 Hz bounce (the seat
+    /// on its soft suspension hardly adds to it), 5.3 mm static deflection under cab and
+    /// seat, and a bounce damping ratio near 0.14 (an elastomer loss factor of about 0.3).
     pub fn generic() -> Self {
         let m = 1_100.0;
         let mount = |x_m, y_m| CabMount {
