@@ -82,6 +82,7 @@ pub fn prototype() -> Articulated {
         },
         cab: Cab {
             point_m: p.cab_point_m,
+            body: None,
         },
         axle: vec![
             axle(
@@ -106,6 +107,7 @@ pub fn prototype() -> Articulated {
             loaded: afsv_dynamics::VehicleParams::loaded(),
             unloaded: afsv_dynamics::VehicleParams::unloaded(),
         }),
+        seat: None,
     }
 }
 

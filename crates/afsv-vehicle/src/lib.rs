@@ -15,6 +15,7 @@
 //!   truck; [`dump`]: a description as commented TOML.
 
 pub mod builtin;
+pub mod cab_seat;
 pub mod dump;
 pub mod error;
 pub mod read;

@@ -42,6 +42,8 @@ pub struct ArticulatedVehicle {
     pub yaw_plane: YawPlaneCases,
     /// Whether `yaw_plane` was derived from the 3-D data (no `[yaw_plane]` tables).
     pub yaw_plane_derived: bool,
+    /// The cab on mounts and the seat (`[cab.body]`, `[seat]`), when described.
+    pub cab_seat: Option<vehicle_3d::cab_ride::CabSeatLayout>,
 }
 
 impl ArticulatedVehicle {
@@ -114,7 +116,7 @@ pub(crate) struct Origin<'a> {
 }
 
 impl Origin<'_> {
-    fn err(&self, path: &str, message: impl Into<String>) -> DescriptionError {
+    pub(crate) fn err(&self, path: &str, message: impl Into<String>) -> DescriptionError {
         match self.text {
             Some(text) => at_path(text, self.name, path, message.into()),
             None => DescriptionError::Field {
@@ -283,7 +285,9 @@ fn articulated(a: &Articulated, o: &Origin<'_>) -> Result<ArticulatedVehicle, De
             true,
         ),
     };
+    let cab_seat = crate::cab_seat::layout(a, &params, o)?;
     Ok(ArticulatedVehicle {
+        cab_seat,
         name: a.name.clone(),
         params,
         front_suspension: front.suspension,

@@ -20,6 +20,8 @@ use serde::{Deserialize, Deserializer, Serialize, Serializer};
 use tire_fiala::TireParams;
 use vehicle_3d::DriveParams;
 
+pub use crate::cab_seat::{CabBody, CushionSection, MountSection, SeatSection};
+
 /// The `format` value of this version of the description.
 pub const FORMAT: &str = "afsv-vehicle-1";
 
@@ -126,6 +128,10 @@ pub struct WheelEnd {
 pub struct Cab {
     /// A point of the front unit: `[x ahead of the joint, y left, height above ground]` (m).
     pub point_m: [f64; 3],
+    /// The cab as a body on mounts (with `[seat]`): ISO 2631-1 is then also read on the
+    /// cab floor and the seat ([`crate::cab_seat`]).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub body: Option<CabBody>,
 }
 
 /// Which unit an axle hangs on.
@@ -263,6 +269,9 @@ pub struct Articulated {
     /// Table 3.1 data of the yaw-plane model, when measured apart from the 3-D data.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub yaw_plane: Option<YawPlaneCases>,
+    /// The operator's suspension seat on the cab (with `[cab.body]`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub seat: Option<SeatSection>,
 }
 
 /// A rigid two-axle truck (Chapter 2).

@@ -11,6 +11,8 @@
 //! * [`step`]: step detection in an input record, step-steer gain, 0-100 % rise time,
 //!   overshoot (section 3.3).
 //! * [`steering`]: steering power efficiency (Eq 4.7).
+//! * [`seat`]: the SEAT value of a suspension seat (ISO 10326-1, EN ISO 7096), seat-pan over
+//!   floor W_k-weighted RMS.
 //!
 //! Units are SI throughout; `docs/perf-measures.md` maps every equation to its code.
 
@@ -18,6 +20,7 @@ pub mod decay;
 pub mod error;
 pub mod iso2631;
 pub mod roll;
+pub mod seat;
 pub mod signal;
 pub mod steering;
 pub mod step;
@@ -29,6 +32,7 @@ pub use roll::{
     ltr, ltr_two_axle, smooth_road_drt, static_stability_factor, sustained_period, RollPoint,
     SustainedPeriod, SustainedPeriodParams,
 };
+pub use seat::{seat_value, SeatValue};
 pub use steering::steering_power_efficiency;
 pub use step::{
     step_amplitude, step_metrics, step_metrics_with, step_time, StepMetrics, StepOptions,

@@ -11,10 +11,13 @@
 //! - [`scenarios`]: the design runs D1 (ride), D2 (roll), D3 (yaw) and their measures;
 //!   [`path_change`](mod@path_change): the V3 path change (section 6.3) with the
 //!   path-following driver (re-exported by `scenarios`);
-//!   [`yaw_mode`]: which addition of the 3-D model moves the yaw mode.
+//!   [`yaw_mode`]: which addition of the 3-D model moves the yaw mode;
+//! - [`cab_ride`]: the cab on mounts and the suspension seat driven by a ride run's frame
+//!   motion: a_wz on the frame and at the seat, SEAT (`docs/layouts.md`).
 //!
 //! Model notes: `docs/vehicle-3d.md`.
 
+pub mod cab_ride;
 pub mod error;
 pub mod model;
 pub mod params;

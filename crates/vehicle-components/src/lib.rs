@@ -11,7 +11,9 @@
 //! - [`layout`]: [`StateLayout`], contiguous blocks of one global state vector;
 //! - [`recorder`]: [`Channels`] declared from components and the bounded, column-major
 //!   [`Recorder`];
-//! - [`params`]: [`ParamSet`] / [`ParamSpec`], parameters by name with bounds.
+//! - [`params`]: [`ParamSet`] / [`ParamSpec`], parameters by name with bounds;
+//! - [`cab_seat`]: [`CabSeat`], the cab on elastomer mounts with the operator's suspension
+//!   seat, driven by the frame's motion (`docs/layouts.md`).
 //!
 //! Details and conventions: `docs/vehicle-components.md`.
 //!
@@ -21,6 +23,7 @@
 //! assert_eq!(ground.normal(10.0, -2.0), [0.0, 0.0, 1.0]);
 //! ```
 
+pub mod cab_seat;
 pub mod component;
 pub mod error;
 pub mod layout;
@@ -29,6 +32,7 @@ pub mod recorder;
 pub mod sampled;
 pub mod terrain;
 
+pub use cab_seat::{CabMount, CabParams, CabSeat, CabSeatOutput, Cushion, FrameMotion, SeatParams};
 pub use component::{ChannelInfo, Component, StateInfo};
 pub use error::{ComponentError, ParamError};
 pub use layout::{BlockId, StateLayout, MAX_STATES};
