@@ -169,6 +169,13 @@ fn read_header(lines: &[&[u8]]) -> Result<Header> {
         if raw.first() == Some(&b'$') {
             section = section_line(&text_of(raw), n)?;
             h.saw_ct |= section == Section::Ct;
+            if !h.saw_ct {
+                return Err(at(
+                    n,
+                    1,
+                    "an OpenCRG file starts with its `$CT` section (§3.2)",
+                ));
+            }
             if section == Section::Kd {
                 h.kd_line = Some(n);
             }
@@ -196,13 +203,6 @@ fn read_header(lines: &[&[u8]]) -> Result<Header> {
             Section::Kd => definition(&text, n, &mut h)?,
             Section::Ct => {}
         }
-    }
-    if !h.saw_ct {
-        return Err(at(
-            1,
-            1,
-            "an OpenCRG file starts with its `$CT` section (§3.2)",
-        ));
     }
     Ok(h)
 }

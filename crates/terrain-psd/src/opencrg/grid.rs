@@ -324,8 +324,9 @@ pub(super) fn grid(h: &Header, data: &[&[u8]], first: usize, half: f64) -> Resul
     check_options(&h.opts)?;
     let m = modifiers(&h.mods)?;
     let channels = h.channels.len();
+    let v = sections(h, kd_line)?;
     let per_row = channels.div_ceil(format.per_record);
-    if data.is_empty() || per_row == 0 {
+    if data.is_empty() {
         return Err(at(first, 1, "no road data"));
     }
     if data.len() % per_row != 0 {
@@ -354,7 +355,6 @@ pub(super) fn grid(h: &Header, data: &[&[u8]], first: usize, half: f64) -> Resul
             return Err(at(end.line, 1, format!("REFERENCE_LINE_END_U = {} but {rows} rows from {u0} m at {du} m end at {expected} m", end.value)));
         }
     }
-    let v = sections(h, kd_line)?;
     let v: Vec<f64> = v.iter().map(|x| x * m.scale_v).collect();
     let long: Vec<usize> = (0..channels)
         .filter(|&j| h.channels[j].0 != Channel::U)
