@@ -3,7 +3,7 @@
 //! (§3.4.7). What is applied and what is refused: the parent module's documentation.
 
 use super::{at, Channel, CrgRoad, Entry, Format, Header, MAX_ROWS, MAX_VALUES};
-use crate::error::{positive, Result, TerrainError};
+use crate::error::{Result, TerrainError};
 use crate::synth::TwoTrackProfile;
 
 fn find<'a>(list: &'a [Entry], key: &str) -> Option<&'a Entry> {
@@ -76,7 +76,9 @@ fn reference_line(road: &[Entry]) -> Result<f64> {
     );
     if let (Some(a), Some(b)) = phi {
         if a.value != b.value {
-            return Err(at(b.line, 1, "REFERENCE_LINE_END_PHI differs from the start: a curved reference line, not supported"));
+            let curved =
+                "REFERENCE_LINE_END_PHI differs from the start: a curved line, not supported";
+            return Err(at(b.line, 1, curved));
         }
     }
     Ok(start_z + find(road, "REFERENCE_LINE_OFFSET_Z").map_or(0.0, |e| e.value))
@@ -138,13 +140,23 @@ fn modifiers(mods: &[Entry]) -> Result<Modifiers> {
             "SCALE_WIDTH" => m.scale_v = factor,
             "REFLINE_OFFSET_Z" => m.offset_z = v,
             "GRID_NAN_MODE" if v != 0.0 => {
-                return Err(at(e.line, 1, "GRID_NAN_MODE 1 or 2 is not supported (missing values are refused where the tracks need them)"))
+                let nan =
+                    "GRID_NAN_MODE 1 or 2 is not supported (a needed missing value is refused)";
+                return Err(at(e.line, 1, nan));
             }
-            "REFLINE_ROTCENTER_X" | "REFLINE_ROTCENTER_Y" | "REFLINE_OFFSET_X" | "REFLINE_OFFSET_Y"
-            | "REFLINE_OFFSET_PHI" | "SCALE_SLOPE" | "SCALE_BANKING" | "SCALE_CURVATURE"
-            | "GRID_NAN_MODE" | "GRID_NAN_OFFSET" => {}
+            "REFLINE_ROTCENTER_X"
+            | "REFLINE_ROTCENTER_Y"
+            | "REFLINE_OFFSET_X"
+            | "REFLINE_OFFSET_Y"
+            | "REFLINE_OFFSET_PHI"
+            | "SCALE_SLOPE"
+            | "SCALE_BANKING"
+            | "SCALE_CURVATURE"
+            | "GRID_NAN_MODE"
+            | "GRID_NAN_OFFSET" => {}
             _ if k.starts_with("REFPOINT_") => {
-                return Err(at(e.line, 1, format!("the modifier {k} (re-location by reference point) is not supported")))
+                let what = "(re-location by reference point) is not supported";
+                return Err(at(e.line, 1, format!("the modifier {k} {what}")));
             }
             _ => return Err(at(e.line, 1, format!("unknown modifier {k}"))),
         }
@@ -188,7 +200,14 @@ fn sections(h: &Header, kd_line: usize) -> Result<Vec<f64>> {
             (Some(r), None, Some(d)) => (r.value, d.value),
             (None, Some(l), Some(d)) => (l.value - last * d.value, d.value),
             (None, None, Some(d)) => (-0.5 * last * d.value, d.value),
-            _ => return Err(at(kd_line, 1, "long sections by number need LONG_SECTION_V_INCREMENT or LONG_SECTION_V_RIGHT and _LEFT")),
+            _ => {
+                let need = "LONG_SECTION_V_INCREMENT or LONG_SECTION_V_RIGHT and _LEFT";
+                return Err(at(
+                    kd_line,
+                    1,
+                    format!("long sections by number need {need}"),
+                ));
+            }
         };
         (0..long.len()).map(|j| r + j as f64 * dv).collect()
     } else {
@@ -338,7 +357,12 @@ pub(super) fn grid(h: &Header, data: &[&[u8]], first: usize, half: f64) -> Resul
     }
     let rows = data.len() / per_row;
     if rows > MAX_ROWS || rows.saturating_mul(channels) > MAX_VALUES {
-        return Err(at(first, 1, format!("{rows} rows of {channels} channels: more than {MAX_ROWS} rows or {MAX_VALUES} values")));
+        let limit = format!("more than {MAX_ROWS} rows or {MAX_VALUES} values");
+        return Err(at(
+            first,
+            1,
+            format!("{rows} rows of {channels} channels: {limit}"),
+        ));
     }
     let inc = find(&h.road, "REFERENCE_LINE_INCREMENT").ok_or_else(|| {
         at(
@@ -347,12 +371,21 @@ pub(super) fn grid(h: &Header, data: &[&[u8]], first: usize, half: f64) -> Resul
             "$ROAD_CRG must define REFERENCE_LINE_INCREMENT (§3.4.2)",
         )
     })?;
-    let du = positive("REFERENCE_LINE_INCREMENT", inc.value)?;
+    let du = inc.value;
+    if du <= 0.0 {
+        return Err(at(inc.line, 1, "REFERENCE_LINE_INCREMENT must be > 0"));
+    }
     let u0 = find(&h.road, "REFERENCE_LINE_START_U").map_or(0.0, |e| e.value);
     if let Some(end) = find(&h.road, "REFERENCE_LINE_END_U") {
         let expected = u0 + (rows - 1) as f64 * du;
         if (end.value - expected).abs() > 1e-6 * du {
-            return Err(at(end.line, 1, format!("REFERENCE_LINE_END_U = {} but {rows} rows from {u0} m at {du} m end at {expected} m", end.value)));
+            let rows_end = format!("{rows} rows from {u0} m at {du} m end at {expected} m");
+            let given = end.value;
+            return Err(at(
+                end.line,
+                1,
+                format!("REFERENCE_LINE_END_U = {given} but {rows_end}"),
+            ));
         }
     }
     let v: Vec<f64> = v.iter().map(|x| x * m.scale_v).collect();

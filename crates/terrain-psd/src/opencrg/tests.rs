@@ -185,13 +185,38 @@ fn offsets_outside_the_long_sections_are_refused() {
 #[test]
 fn unsupported_content_is_refused_at_its_line() {
     let cases = [
-        ("#:LRFI\n", "#:LRFI\nD:reference line phi,rad\n", "D:reference line phi"),
+        (
+            "#:LRFI\n",
+            "#:LRFI\nD:reference line phi,rad\n",
+            "D:reference line phi",
+        ),
         ("$\n$$$$", "$\n$ROAD_CRG_FILE\nx\n$\n$$$$", "$ROAD_CRG_FILE"),
-        ("LONG_SECTION_V_INCREMENT = 0.50\n", "LONG_SECTION_V_INCREMENT = 0.50\nREFERENCE_LINE_START_PHI = 0\nREFERENCE_LINE_END_PHI = 0.1\n", "REFERENCE_LINE_END_PHI"),
-        ("$\n$$$$", "$\n$ROAD_CRG_MODS\nREFPOINT_X = 3\n$\n$$$$", "REFPOINT_X"),
-        ("$\n$$$$", "$\n$ROAD_CRG_MODS\nGRID_NAN_MODE = 2\n$\n$$$$", "GRID_NAN_MODE"),
-        ("REFERENCE_LINE_INCREMENT = 1.0\n", "REFERENCE_LINE_INCREMENT = 1.0\nREFERENCE_LINE_START_S = 0.01\n", "REFERENCE_LINE_START_S"),
-        ("D:long section 7,m", "D:long section 7,mm", "D:long section 7"),
+        (
+            "LONG_SECTION_V_INCREMENT = 0.50\n",
+            "LONG_SECTION_V_INCREMENT = 0.50\n\
+             REFERENCE_LINE_START_PHI = 0\nREFERENCE_LINE_END_PHI = 1\n",
+            "REFERENCE_LINE_END_PHI",
+        ),
+        (
+            "$\n$$$$",
+            "$\n$ROAD_CRG_MODS\nREFPOINT_X = 3\n$\n$$$$",
+            "REFPOINT_X",
+        ),
+        (
+            "$\n$$$$",
+            "$\n$ROAD_CRG_MODS\nGRID_NAN_MODE = 2\n$\n$$$$",
+            "GRID_NAN_MODE",
+        ),
+        (
+            "REFERENCE_LINE_INCREMENT = 1.0\n",
+            "REFERENCE_LINE_INCREMENT = 1.0\nREFERENCE_LINE_START_S = 0.01\n",
+            "REFERENCE_LINE_START_S",
+        ),
+        (
+            "D:long section 7,m",
+            "D:long section 7,mm",
+            "D:long section 7",
+        ),
         ("0.0400000 *missing*", "0.04000x0 *missing*", "0.04000x0"),
     ];
     for (from, to, at) in cases {
@@ -209,4 +234,22 @@ fn rows_must_be_complete_and_the_file_must_start_with_its_header() {
     assert_eq!((line, column), (short.lines().count(), 61));
     let (line, _, _) = file_error(&BY_NUMBER.replacen("$CT\n", "", 1), 0.5);
     assert_eq!(line, 1);
+}
+
+#[test]
+fn every_prefix_and_every_single_byte_change_gives_a_value_or_an_error() {
+    // No panic on a truncated or corrupted file; the whole file still reads.
+    // Up to the second data row a prefix holds at most one row: never a profile.
+    let second_row = BY_NUMBER.find(" *missing* 0.0100000").expect("row");
+    let bytes = BY_NUMBER.as_bytes();
+    for k in 0..bytes.len() {
+        let prefix = read_crg(&bytes[..k], 0.5);
+        assert!(k > second_row || prefix.is_err(), "prefix {k}");
+        for b in [b'$', b'*', b'!', b'\n', b'-', b'9', 0xE9] {
+            let mut changed = bytes.to_vec();
+            changed[k] = b;
+            let _ = read_crg(&changed, 0.5);
+        }
+    }
+    assert!(read_crg(bytes, 0.5).is_ok());
 }
