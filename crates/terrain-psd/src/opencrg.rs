@@ -34,24 +34,31 @@
 //! - §3.4.7 road data: a row longer than one record wraps to the next record; a field
 //!   starting with `*` (e.g. `*missing*`) or reading `NaN` is a missing value. Missing values
 //!   are accepted wherever the tracks do not need them.
+//! - §3.4.5 `GRID_NAN_MODE`: the missing values between a border of a cross section and its
+//!   outermost value are replaced, by that value (mode 2) or by 0 (mode 1), plus
+//!   `GRID_NAN_OFFSET`; mode 0 keeps them. Without a `$ROAD_CRG_MODS` section the mode is 2,
+//!   the default of the ASAM reference library (`dCrgGridNaNKeepLast`, "keep last valid
+//!   boundary value"); with one, only the file's modifiers apply (§3.4.5), so mode 0 unless
+//!   it says otherwise. The spec's sample `handmade_straight_NaN.crg` reads whole this way.
 //! - §3.4.4 options: only those that act outside the grid or on logging and checks
 //!   (`BORDER_MODE_*`, `BORDER_OFFSET_*`, `REFLINE_CONTINUATION`, `REFLINE_SEARCH_*`,
 //!   `WARN_*`, `LOG_*`, `CHECK_*`); the tracks never leave the grid, so they change nothing.
 //! - §3.4.5 modifiers applied: `SCALE_Z_GRID`, `SCALE_LENGTH`, `SCALE_WIDTH` (a factor of 0 is
 //!   no scaling) and `REFLINE_OFFSET_Z`; accepted without effect on a straight line without
 //!   slope or banking: `REFLINE_ROTCENTER_*`, `REFLINE_OFFSET_X` / `_Y` / `_PHI`,
-//!   `SCALE_SLOPE`, `SCALE_BANKING`, `SCALE_CURVATURE`, `GRID_NAN_MODE = 0`, `GRID_NAN_OFFSET`.
+//!   `SCALE_SLOPE`, `SCALE_BANKING`, `SCALE_CURVATURE`.
 //!
 //! Refused, with an error naming line and column ([`TerrainError::File`]): binary road data
 //! (`#:KRBI`, `#:KDBI`, and no format line, whose §3.4.3 default is KRBI); curved reference
 //! lines (a `D:reference line phi,rad` channel, or `REFERENCE_LINE_START_PHI` /
 //! `REFERENCE_LINE_END_PHI` that differ); slope and banking (their channels, non-zero
 //! `REFERENCE_LINE_START_S` / `_END_S` / `_START_B` / `_END_B`, an `REFERENCE_LINE_END_Z`
-//! other than the start); file references (`$ROAD_CRG_FILE`); the modifiers `REFPOINT_*` and
-//! `GRID_NAN_MODE` 1 or 2 (§3.4.5 leaves open whether they reach NaNs inside the road);
-//! the options `BORDER_SMOOTH_UBEG` / `_UEND` when non-zero; unknown sections, parameters,
-//! channels and units other than `m`; a missing value the tracks need (no border rule of the
-//! spec fills one inside the grid); track offsets outside the long sections; more than
+//! other than the start); file references (`$ROAD_CRG_FILE`); the modifiers `REFPOINT_*`
+//! (re-location that sets `z` at a point); the options `BORDER_SMOOTH_UBEG` / `_UEND` when
+//! non-zero; unknown sections, parameters, modifiers, options, channels and units other than
+//! `m`; a missing value a track needs that no `GRID_NAN_MODE` fills (one between two values
+//! of its cross section, or any when the mode is 0); track offsets outside the long
+//! sections (a [`TerrainError::Parameter`] on `half_track_m`); more than
 //! [`MAX_ROWS`] rows or [`MAX_VALUES`] values, checked before anything is allocated.
 
 use crate::error::{positive, Result, TerrainError};
@@ -122,6 +129,8 @@ struct Header {
     format: Option<Format>,
     channels: Vec<(Channel, usize)>,
     saw_ct: bool,
+    /// The file has a `$ROAD_CRG_MODS` section (then no default modifier applies, §3.4.5).
+    saw_mods: bool,
     /// Line of `$KD_Definition`.
     kd_line: Option<usize>,
 }
@@ -169,6 +178,7 @@ fn read_header(lines: &[&[u8]]) -> Result<Header> {
         if raw.first() == Some(&b'$') {
             section = section_line(&text_of(raw), n)?;
             h.saw_ct |= section == Section::Ct;
+            h.saw_mods |= section == Section::Mods;
             if !h.saw_ct {
                 return Err(at(
                     n,

@@ -113,20 +113,29 @@ fn check_options(opts: &[Entry]) -> Result<()> {
     Ok(())
 }
 
-/// The modifiers applied (§3.4.5): scales of `z`, `u`, `v` and an offset of `z`.
+/// The modifiers applied (§3.4.5): scales of `z`, `u`, `v`, an offset of `z`, and the
+/// replacement of missing values at the borders of each cross section.
 struct Modifiers {
     scale_z: f64,
     scale_u: f64,
     scale_v: f64,
     offset_z: f64,
+    /// `GRID_NAN_MODE`: 0 keep, 1 zero, 2 the last valid value towards the border.
+    nan_mode: u8,
+    nan_offset: f64,
 }
 
-fn modifiers(mods: &[Entry]) -> Result<Modifiers> {
+/// Without a `$ROAD_CRG_MODS` section the reader's default modifier applies: `GRID_NAN_MODE
+/// = 2`, the default of the ASAM reference library (`dCrgGridNaNKeepLast`); with one, only
+/// the file's modifiers apply (§3.4.5), so a missing `GRID_NAN_MODE` keeps missing values.
+fn modifiers(mods: &[Entry], has_section: bool) -> Result<Modifiers> {
     let mut m = Modifiers {
         scale_z: 1.0,
         scale_u: 1.0,
         scale_v: 1.0,
         offset_z: 0.0,
+        nan_mode: if has_section { 0 } else { 2 },
+        nan_offset: 0.0,
     };
     for e in mods {
         let (k, v) = (e.key.as_str(), e.value);
@@ -139,11 +148,21 @@ fn modifiers(mods: &[Entry]) -> Result<Modifiers> {
             "SCALE_LENGTH" => m.scale_u = factor,
             "SCALE_WIDTH" => m.scale_v = factor,
             "REFLINE_OFFSET_Z" => m.offset_z = v,
-            "GRID_NAN_MODE" if v != 0.0 => {
-                let nan =
-                    "GRID_NAN_MODE 1 or 2 is not supported (a needed missing value is refused)";
-                return Err(at(e.line, 1, nan));
+            "GRID_NAN_MODE" => {
+                m.nan_mode = match v {
+                    0.0 => 0,
+                    1.0 => 1,
+                    2.0 => 2,
+                    _ => {
+                        return Err(at(
+                            e.line,
+                            1,
+                            format!("GRID_NAN_MODE = {v} is not 0, 1 or 2"),
+                        ))
+                    }
+                }
             }
+            "GRID_NAN_OFFSET" => m.nan_offset = v,
             "REFLINE_ROTCENTER_X"
             | "REFLINE_ROTCENTER_Y"
             | "REFLINE_OFFSET_X"
@@ -151,9 +170,7 @@ fn modifiers(mods: &[Entry]) -> Result<Modifiers> {
             | "REFLINE_OFFSET_PHI"
             | "SCALE_SLOPE"
             | "SCALE_BANKING"
-            | "SCALE_CURVATURE"
-            | "GRID_NAN_MODE"
-            | "GRID_NAN_OFFSET" => {}
+            | "SCALE_CURVATURE" => {}
             _ if k.starts_with("REFPOINT_") => {
                 let what = "(re-location by reference point) is not supported";
                 return Err(at(e.line, 1, format!("the modifier {k} {what}")));
@@ -327,6 +344,28 @@ fn record(line: &[u8], n: usize, format: Format, out: &mut [f64]) -> Result<()> 
     Ok(())
 }
 
+/// Replaces the missing values between each border of a cross section and its outermost
+/// value (`GRID_NAN_MODE` 1: by 0, 2: by that value; plus `GRID_NAN_OFFSET`, §3.4.5).
+/// Missing values between two values stay missing; so does a cross section without any.
+fn fill_borders(values: &mut [f64], long: &[usize], m: &Modifiers) {
+    if m.nan_mode == 0 {
+        return;
+    }
+    let valid = |k: &usize| !values[long[*k]].is_nan();
+    let (Some(first), Some(last)) = ((0..long.len()).find(valid), (0..long.len()).rfind(valid))
+    else {
+        return;
+    };
+    let fill = |z: f64| (if m.nan_mode == 1 { 0.0 } else { z }) + m.nan_offset;
+    let (right, left) = (fill(values[long[first]]), fill(values[long[last]]));
+    for &j in &long[..first] {
+        values[j] = right;
+    }
+    for &j in &long[last + 1..] {
+        values[j] = left;
+    }
+}
+
 /// The two tracks at `v = ±half` of the road data `data` (its first record on line `first`).
 pub(super) fn grid(h: &Header, data: &[&[u8]], first: usize, half: f64) -> Result<CrgRoad> {
     let kd_line = h
@@ -341,7 +380,7 @@ pub(super) fn grid(h: &Header, data: &[&[u8]], first: usize, half: f64) -> Resul
     })?;
     let z0 = reference_line(&h.road)?;
     check_options(&h.opts)?;
-    let m = modifiers(&h.mods)?;
+    let m = modifiers(&h.mods, h.saw_mods)?;
     let channels = h.channels.len();
     let v = sections(h, kd_line)?;
     let per_row = channels.div_ceil(format.per_record);
@@ -416,6 +455,7 @@ pub(super) fn grid(h: &Header, data: &[&[u8]], first: usize, half: f64) -> Resul
                 chunk,
             )?;
         }
+        fill_borders(&mut values, &long, &m);
         let u = match u_channel {
             Some(j) => {
                 let u = values[j];
@@ -442,11 +482,13 @@ pub(super) fn grid(h: &Header, data: &[&[u8]], first: usize, half: f64) -> Resul
                 if values[j].is_nan() {
                     let (line, column) = place(r, j);
                     let side = if t == 0 { "left" } else { "right" };
-                    return Err(at(
-                        line,
-                        column,
-                        format!("missing value in a long section the {side} track needs"),
-                    ));
+                    let why = if m.nan_mode == 0 {
+                        "GRID_NAN_MODE = 0 keeps it"
+                    } else {
+                        "not at a border of its cross section, so no rule fills it"
+                    };
+                    let what = format!("missing value the {side} track needs ({why})");
+                    return Err(at(line, column, what));
                 }
                 z += wj * values[j];
             }

@@ -104,12 +104,38 @@ fn sample_structure_centres_numbered_sections_and_skips_unneeded_gaps() {
 }
 
 #[test]
+fn missing_values_at_the_borders_are_filled_by_the_grid_nan_mode() {
+    // b/2 = 0.75: left between sections 5 and 6, right between 2 and 3. Row 2 misses 6 and 7
+    // (left border), row 3 misses 1 and 2 (right border) and 7.
+    let road = read_crg(BY_NUMBER.as_bytes(), 0.75).unwrap();
+    assert!(close(&road.profile.left_m, &[0.0, 0.04, -0.025, 0.01]));
+    assert!(close(&road.profile.right_m, &[0.0, 0.015, 0.0, 0.01]));
+    // Mode 1 fills with 0, plus the offset.
+    let mods = "$\n$ROAD_CRG_MODS\nGRID_NAN_MODE = 1\nGRID_NAN_OFFSET = 0.1\n$\n$$$$";
+    let zero = BY_NUMBER.replacen("$\n$$$$", mods, 1);
+    let road = read_crg(zero.as_bytes(), 0.75).unwrap();
+    assert!(close(&road.profile.left_m, &[0.0, 0.07, -0.025, 0.01]));
+    assert!(close(&road.profile.right_m, &[0.0, 0.015, 0.05, 0.01]));
+}
+
+#[test]
 fn a_missing_value_a_track_needs_is_refused_at_its_line_and_column() {
-    // b/2 = 0.75 interpolates between sections 5 and 6; row 2 has section 6 missing.
-    let (line, column, message) = file_error(BY_NUMBER, 0.75);
-    assert_eq!(line, line_of(BY_NUMBER, " *missing* 0.0100000"));
-    assert_eq!(column, 51);
+    // Between two values of its cross section no rule fills it.
+    let inner = BY_NUMBER.replace(
+        " 0.0100000 0.0100000 0.0100000 0.0100000 0.0100000",
+        " 0.0100000 0.0100000 0.0100000 0.0100000 *missing*",
+    );
+    let (line, column, message) = file_error(&inner, 0.5);
+    assert_eq!((line, column), (line_of(&inner, "0.0100000 *missing*"), 41));
     assert!(message.contains("left track"), "{message}");
+    // A modifiers section without GRID_NAN_MODE, or with 0, keeps border gaps (§3.4.5).
+    for mods in ["SCALE_Z_GRID = 1.0", "GRID_NAN_MODE = 0"] {
+        let section = format!("$\n$ROAD_CRG_MODS\n{mods}\n$\n$$$$");
+        let text = BY_NUMBER.replacen("$\n$$$$", &section, 1);
+        let (line, column, message) = file_error(&text, 0.75);
+        assert_eq!((line, column), (line_of(&text, " *missing* 0.0100000"), 51));
+        assert!(message.contains("keeps"), "{message}");
+    }
 }
 
 /// `fields` right-aligned in `width` characters, one record.
@@ -174,11 +200,7 @@ fn offsets_outside_the_long_sections_are_refused() {
         ),
         "{e}"
     );
-    // On the border the offset is inside, and there the missing values are what is refused.
-    assert_eq!(
-        file_error(BY_NUMBER, 1.5).0,
-        line_of(BY_NUMBER, " *missing* 0.0100000")
-    );
+    assert!(read_crg(BY_NUMBER.as_bytes(), 1.5).is_ok());
     assert!(read_crg(BY_NUMBER.as_bytes(), 0.25).is_ok());
 }
 
@@ -204,7 +226,7 @@ fn unsupported_content_is_refused_at_its_line() {
         ),
         (
             "$\n$$$$",
-            "$\n$ROAD_CRG_MODS\nGRID_NAN_MODE = 2\n$\n$$$$",
+            "$\n$ROAD_CRG_MODS\nGRID_NAN_MODE = 3\n$\n$$$$",
             "GRID_NAN_MODE",
         ),
         (
