@@ -55,6 +55,17 @@ pub enum TerrainError {
     /// A signal given to an estimator is unusable (too short, lengths differ, non-finite).
     #[error("{0}")]
     Signal(String),
+    /// A text file (an OpenCRG road) is malformed or asks for what is not supported, at a
+    /// line and column counted from 1.
+    #[error("line {line} column {column}: {message}")]
+    File {
+        /// Line of the file (from 1).
+        line: usize,
+        /// Column of the line (from 1).
+        column: usize,
+        /// What is wrong there.
+        message: String,
+    },
 }
 
 /// Result alias of this crate.

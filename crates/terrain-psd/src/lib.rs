@@ -12,6 +12,8 @@
 //! - [`summary`]: measured-vs-target summary of the nominal terrain for `afsv evaluate`.
 //! - [`surface`]: a two-track profile laid out on the ground plane as a
 //!   `vehicle_components::Terrain` ([`TwoTrackTerrain`], [`SurfaceParams`]).
+//! - [`opencrg`]: a measured road in the ASAM OpenCRG format (regular-grid ASCII, straight
+//!   reference line) read as the two wheel tracks of a [`TwoTrackProfile`].
 //! - `registry`: the synthesis spec and the surface parameters by name
 //!   (`vehicle_components::ParamSet`, names in `docs/terrain-psd.md`).
 //!
@@ -30,6 +32,7 @@
 pub mod coherence;
 pub mod error;
 mod fft;
+pub mod opencrg;
 pub mod psd;
 mod registry;
 pub mod spectral;
@@ -39,6 +42,7 @@ pub mod synth;
 
 pub use coherence::CoherenceModel;
 pub use error::{Result, TerrainError};
+pub use opencrg::{read_crg, CrgRoad};
 pub use psd::{Band, IsoClass, OffRoadTerrain, PowerLawPsd};
 pub use spectral::{
     cross_slope_psd, cross_spectrum, welch_psd, CrossSpectrum, Detrend, Spectrum, WelchConfig,
