@@ -11,7 +11,10 @@
 //! - [`layout`]: [`StateLayout`], contiguous blocks of one global state vector;
 //! - [`recorder`]: [`Channels`] declared from components and the bounded, column-major
 //!   [`Recorder`];
-//! - [`params`]: [`ParamSet`] / [`ParamSpec`], parameters by name with bounds.
+//! - [`params`]: [`ParamSet`] / [`ParamSpec`], parameters by name with bounds;
+//! - [`inputs`]: the steering-wheel inputs [`SteerInput`] (section 3.3) and
+//!   [`path_driver`]: the pure-pursuit [`PathDriver`] on a [`Course`] (section 3.4.1), the
+//!   driver inputs every vehicle model shares.
 //!
 //! Details and conventions: `docs/vehicle-components.md`.
 //!
@@ -23,16 +26,20 @@
 
 pub mod component;
 pub mod error;
+pub mod inputs;
 pub mod layout;
 pub mod params;
+pub mod path_driver;
 pub mod recorder;
 pub mod sampled;
 pub mod terrain;
 
 pub use component::{ChannelInfo, Component, StateInfo};
 pub use error::{ComponentError, ParamError};
+pub use inputs::{InputError, SteerInput};
 pub use layout::{BlockId, StateLayout, MAX_STATES};
 pub use params::{check_specs, within_ranges, ParamSet, ParamSpec};
+pub use path_driver::{Course, PathDriver};
 pub use recorder::{Channels, Recorder, MAX_CELLS, MAX_ROWS};
 pub use terrain::{
     gradient_normal, FlatTerrain, Terrain, TerrainPoint, DEFAULT_FRICTION, NORMAL_STEP_M,

@@ -20,7 +20,7 @@
 //!
 //! Tire 1/3 are the left tires, 2/4 the right ones; the steady slip angles are Eq 3.17.
 
-use crate::inputs::SteerInput;
+use vehicle_components::SteerInput;
 use crate::yaw_plane::actuator::{ActuatorOutput, SteeringActuator, MAX_ACTUATOR_STATES};
 use crate::yaw_plane::driver::PathDriver;
 use crate::yaw_plane::mechanics::{accelerations_with, Accelerations, Loads, Motion, UnitGeometry};

@@ -2,7 +2,7 @@
 //! with the record channels of docs/records.md plus internal states.
 
 use crate::error::DynError;
-use crate::inputs::SteerInput;
+use vehicle_components::SteerInput;
 use crate::yaw_plane::actuator::{SteeringActuator, MAX_ACTUATOR_STATES};
 use crate::yaw_plane::driver::PathDriver;
 use crate::yaw_plane::mechanics::{kinetic_energy, Motion};
@@ -81,9 +81,10 @@ impl Manoeuvre {
             )));
         }
         match &self.steer {
-            SteerSource::Open(i) => i.validate(),
-            SteerSource::Driver(d) => d.validate(),
+            SteerSource::Open(i) => i.validate()?,
+            SteerSource::Driver(d) => d.validate()?,
         }
+        Ok(())
     }
 
     fn breakpoints(&self) -> Vec<f64> {
