@@ -17,8 +17,8 @@ pub mod error;
 pub mod yaw_plane;
 
 pub use error::DynError;
-pub use vehicle_components::{InputError, SteerInput};
 pub use odeint::Solver;
+pub use vehicle_components::{InputError, SteerInput};
 pub use yaw_plane::actuator::{ActuatorOutput, EquivalentTorsion, SteeringActuator};
 pub use yaw_plane::analysis::{
     measures_for, sensitivity, yaw_measures, MeasureSpec, SensitivityParam, SensitivityTable,
