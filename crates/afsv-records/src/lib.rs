@@ -22,9 +22,15 @@
 //! let err = Record::parse_csv("time_s,force_n\n0.0,abc\n", Path::new("bad.csv")).unwrap_err();
 //! assert!(err.to_string().starts_with("bad.csv:2:2:"), "{err}");
 //! ```
+//!
+//! Writing goes through [`atomic`] (whole or absent) under the rules of [`guard`] (no output
+//! replaces an input or a file the toolkit did not write); [`json`] holds the JSON output
+//! rules (no NaN, every `null` explained); [`provenance`] lists the input files read.
 
 pub mod atomic;
 pub mod convention;
+pub mod guard;
+pub mod json;
 pub mod provenance;
 pub mod units;
 
