@@ -8,7 +8,6 @@
 //! [`measure`].
 
 use perf_measures::iso2631::{health_guidance_zone, HgczRelation, HgczZone};
-use rayon::prelude::*;
 use serde::Serialize;
 use std::sync::Arc;
 use vehicle_3d::scenarios::{
@@ -174,9 +173,9 @@ pub fn measure(
         }
     }
     let e = |e: vehicle_3d::VehicleError| e.to_string();
-    let tracks: Vec<SeedTracks> = seeds
-        .par_iter()
-        .map(|&seed| {
+    let outcomes: Vec<Outcome> = crate::fan_out::cached(
+        seeds,
+        |&seed| {
             let ride = ride_loads
                 .iter()
                 .map(|&load| {
@@ -185,21 +184,18 @@ pub fn measure(
                         .map_err(e)
                 })
                 .collect::<Result<_, String>>()?;
-            Ok(SeedTracks {
+            Ok::<_, String>(SeedTracks {
                 seed,
                 ride,
                 roll: roll_tracks(p, &RollSpec::d2(FrontAxle::Rigid), seed).map_err(e)?,
             })
-        })
-        .collect::<Result<_, String>>()?;
-    let outcomes: Vec<Outcome> = jobs
-        .par_iter()
-        .map(|&j| {
-            let out = run_job(p, j, &tracks);
-            progress(&job_text(j));
-            out
-        })
-        .collect::<Result<_, _>>()?;
+        },
+        &jobs,
+        |&j, tracks| run_job(p, j, tracks),
+        |&j| progress(&job_text(j)),
+    )?
+    .into_iter()
+    .collect::<Result<_, _>>()?;
     let zone = health_guidance_zone(8.0, HgczRelation::SqrtTime).map_err(|e| e.to_string())?;
     let summary = |axle: FrontAxle| -> Result<ConfigMeasures, String> {
         let mut awz = vec![Vec::new(); ride_loads.len()];

@@ -109,6 +109,16 @@ pub fn unit_conversions(rec: &crate::Record) -> Value {
     )
 }
 
+/// `serde_json`'s message without its " at line L column C" (each line is parsed alone;
+/// callers that report a position give it themselves).
+pub fn message(e: &serde_json::Error) -> String {
+    let m = e.to_string();
+    match m.rsplit_once(" at line ") {
+        Some((head, _)) => head.to_string(),
+        None => m,
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
