@@ -292,6 +292,25 @@ pub fn assess_runs(with_hps: bool, seeds: usize) -> usize {
     (1 + usize::from(with_hps)) * (1 + 3 * seeds)
 }
 
+/// The HPS's relative changes (percent) with whether each is settled over the seeds
+/// ([`settled`]), as JSON; `None` without an HPS.
+pub fn hps_changes(d: &DesignMeasures) -> Option<serde_json::Value> {
+    let h = d.nominal_hps.as_ref()?;
+    let u = &d.unsuspended;
+    let one = |with: &Spread, base: &Spread| {
+        serde_json::json!({
+            "percent": 100.0 * (with.mean / base.mean - 1.0),
+            "settled_over_seeds": settled(with, base),
+        })
+    };
+    Some(serde_json::json!({
+        "a_wz_unloaded": one(&h.ride_unloaded.a_wz_m_s2, &u.ride_unloaded.a_wz_m_s2),
+        "a_wz_loaded": one(&h.ride_loaded.a_wz_m_s2, &u.ride_loaded.a_wz_m_s2),
+        "sp_drt": one(&h.sp_drt_m_s2, &u.sp_drt_m_s2),
+        "rule": "settled: the means differ by at least twice the standard error of the difference over the seeds",
+    }))
+}
+
 /// Whether the means of `a` and `b` differ by at least twice the standard error of their
 /// difference over the seeds (`sqrt(sd_a²/n_a + sd_b²/n_b)`); with one seed nothing is
 /// settled.

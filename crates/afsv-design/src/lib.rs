@@ -19,6 +19,8 @@
 //! - [`hps_design`]: the chapter-6 design vector [A_hc, A_v, A_b] (Table 6.5) applied to
 //!   a strut parameter set;
 //! - [`sweep`]: the optimum of a one-variable design sweep (parabolic peak);
+//! - [`evaluate`]: the assessment of `afsv evaluate` (design measures, yaw-plane measures,
+//!   strut, terrain) of one vehicle description;
 //! - [`fan_out`]: the one scheduler of the studies on the 3-D vehicle (per-case caches
 //!   built once, runs in parallel, results in order) and the plain seed fan-out.
 //!
@@ -35,6 +37,7 @@ pub mod afs_state;
 pub mod ahp;
 pub mod design_3d;
 pub mod error;
+pub mod evaluate;
 pub mod fan_out;
 pub mod hps_design;
 pub mod hps_optimum;
