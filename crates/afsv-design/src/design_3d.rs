@@ -8,7 +8,6 @@
 //! [`measure`].
 
 use perf_measures::iso2631::{health_guidance_zone, HgczRelation, HgczZone};
-use rayon::prelude::*;
 use serde::Serialize;
 use std::sync::Arc;
 use vehicle_3d::scenarios::{
@@ -174,9 +173,9 @@ pub fn measure(
         }
     }
     let e = |e: vehicle_3d::VehicleError| e.to_string();
-    let tracks: Vec<SeedTracks> = seeds
-        .par_iter()
-        .map(|&seed| {
+    let outcomes: Vec<Outcome> = crate::fan_out::cached(
+        seeds,
+        |&seed| {
             let ride = ride_loads
                 .iter()
                 .map(|&load| {
@@ -185,21 +184,18 @@ pub fn measure(
                         .map_err(e)
                 })
                 .collect::<Result<_, String>>()?;
-            Ok(SeedTracks {
+            Ok::<_, String>(SeedTracks {
                 seed,
                 ride,
                 roll: roll_tracks(p, &RollSpec::d2(FrontAxle::Rigid), seed).map_err(e)?,
             })
-        })
-        .collect::<Result<_, String>>()?;
-    let outcomes: Vec<Outcome> = jobs
-        .par_iter()
-        .map(|&j| {
-            let out = run_job(p, j, &tracks);
-            progress(&job_text(j));
-            out
-        })
-        .collect::<Result<_, _>>()?;
+        },
+        &jobs,
+        |&j, tracks| run_job(p, j, tracks),
+        |&j| progress(&job_text(j)),
+    )?
+    .into_iter()
+    .collect::<Result<_, _>>()?;
     let zone = health_guidance_zone(8.0, HgczRelation::SqrtTime).map_err(|e| e.to_string())?;
     let summary = |axle: FrontAxle| -> Result<ConfigMeasures, String> {
         let mut awz = vec![Vec::new(); ride_loads.len()];
@@ -294,6 +290,25 @@ pub fn assess(
 /// Runs per [`assess`]: one yaw and, per seed, two rides and a roll, for each axle.
 pub fn assess_runs(with_hps: bool, seeds: usize) -> usize {
     (1 + usize::from(with_hps)) * (1 + 3 * seeds)
+}
+
+/// The HPS's relative changes (percent) with whether each is settled over the seeds
+/// ([`settled`]), as JSON; `None` without an HPS.
+pub fn hps_changes(d: &DesignMeasures) -> Option<serde_json::Value> {
+    let h = d.nominal_hps.as_ref()?;
+    let u = &d.unsuspended;
+    let one = |with: &Spread, base: &Spread| {
+        serde_json::json!({
+            "percent": 100.0 * (with.mean / base.mean - 1.0),
+            "settled_over_seeds": settled(with, base),
+        })
+    };
+    Some(serde_json::json!({
+        "a_wz_unloaded": one(&h.ride_unloaded.a_wz_m_s2, &u.ride_unloaded.a_wz_m_s2),
+        "a_wz_loaded": one(&h.ride_loaded.a_wz_m_s2, &u.ride_loaded.a_wz_m_s2),
+        "sp_drt": one(&h.sp_drt_m_s2, &u.sp_drt_m_s2),
+        "rule": "settled: the means differ by at least twice the standard error of the difference over the seeds",
+    }))
 }
 
 /// Whether the means of `a` and `b` differ by at least twice the standard error of their

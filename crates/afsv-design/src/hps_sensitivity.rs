@@ -5,7 +5,6 @@
 //! variant runs on the same terrain seeds (common random numbers), so the differences between
 //! variants are not masked by the terrain's scatter.
 
-use rayon::prelude::*;
 use serde::Serialize;
 use std::sync::Arc;
 use vehicle_3d::scenarios::{
@@ -179,14 +178,6 @@ pub fn hps_sensitivity(
             cases.push((None, s));
         }
     }
-    let tracks: Vec<Arc<TireTracks>> = cases
-        .par_iter()
-        .map(|&(load, s)| match load {
-            Some(load) => ride_tracks(base, &ride_spec(load), s),
-            None => roll_tracks(base, &roll_spec, s),
-        })
-        .collect::<Result<_, _>>()
-        .map_err(sim)?;
     let mut runs = Vec::new();
     for d in 0..designs.len() {
         for (c, case) in cases.iter().enumerate() {
@@ -202,10 +193,15 @@ pub fn hps_sensitivity(
     // a run that fails (a design the integrator cannot carry through, e.g. a strut driven
     // into a stiff state) does not stop the study: its measure becomes n/a (NaN, n = 0) and
     // the failure is reported with the design
-    let values: Vec<Result<f64, String>> = runs
-        .par_iter()
-        .map(|&r| {
-            let v = match r {
+    let values: Vec<Result<f64, String>> = crate::fan_out::cached(
+        &cases,
+        |&(load, s)| match load {
+            Some(load) => ride_tracks(base, &ride_spec(load), s),
+            None => roll_tracks(base, &roll_spec, s),
+        },
+        &runs,
+        |&r, tracks: &[Arc<TireTracks>]| {
+            match r {
                 Run::Ride(d, c, load) => {
                     ride_on(&designs[d].2, &ride_spec(load), Arc::clone(&tracks[c]))
                         .map(|(_, m)| m.a_wz_m_s2)
@@ -214,11 +210,12 @@ pub fn hps_sensitivity(
                     .map(|(_, m)| m.sp_drt_m_s2),
                 Run::Yaw(d) => yaw(&designs[d].2, &YawSpec::d3(FrontAxle::Suspended), 0)
                     .map(|(_, m)| m.omega_z_hz),
-            };
-            progress(&format!("{r:?}"));
-            v.map_err(|e| e.to_string())
-        })
-        .collect();
+            }
+            .map_err(|e| e.to_string())
+        },
+        |r| progress(&format!("{r:?}")),
+    )
+    .map_err(sim)?;
     // the spread of one measure, n/a when any of its runs failed
     let spread = |v: &[Option<f64>]| {
         let ok: Option<Vec<f64>> = v.iter().copied().collect();

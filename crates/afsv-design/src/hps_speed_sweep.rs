@@ -10,7 +10,6 @@
 
 use crate::error::DesignError;
 use perf_measures::iso2631::{health_guidance_zone, HgczRelation};
-use rayon::prelude::*;
 use serde::Serialize;
 use std::sync::Arc;
 use vehicle_3d::scenarios::{ride_on, ride_tracks, RideSpec, Spread};
@@ -137,11 +136,6 @@ pub fn hps_speed_sweep(
         .iter()
         .flat_map(|&load| seeds.iter().map(move |&s| (load, s)))
         .collect();
-    let tracks: Vec<Arc<TireTracks>> = cases
-        .par_iter()
-        .map(|&(load, s)| ride_tracks(p, &spec(load, speeds_kmh[0]), s))
-        .collect::<Result<_, _>>()
-        .map_err(sim)?;
     // runs load by load, speed by speed, seed by seed (the chunks below rely on it)
     let mut runs = Vec::new();
     for (li, &load) in loads.iter().enumerate() {
@@ -151,14 +145,19 @@ pub fn hps_speed_sweep(
             }
         }
     }
-    let measures: Vec<_> = runs
-        .par_iter()
-        .map(|&(load, v, s, c)| {
-            let m = ride_on(p, &spec(load, v), Arc::clone(&tracks[c])).map(|(_, m)| m);
-            progress(&format!("{load} {v} km/h seed {s}"));
-            m.map_err(sim)
-        })
-        .collect::<Result<_, _>>()?;
+    let measures: Vec<_> = crate::fan_out::cached(
+        &cases,
+        |&(load, s)| ride_tracks(p, &spec(load, speeds_kmh[0]), s),
+        &runs,
+        |&(load, v, _, c), tracks: &[Arc<TireTracks>]| {
+            ride_on(p, &spec(load, v), Arc::clone(&tracks[c])).map(|(_, m)| m)
+        },
+        |&(load, v, s, _)| progress(&format!("{load} {v} km/h seed {s}")),
+    )
+    .map_err(sim)?
+    .into_iter()
+    .collect::<Result<_, _>>()
+    .map_err(sim)?;
     let spread = |v: &[f64]| Spread::of_measured(v).map_err(sim);
     let mut points = Vec::new();
     for (chunk, &(load, v, _, _)) in measures

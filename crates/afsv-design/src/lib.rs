@@ -13,21 +13,32 @@
 //!   with a Latin-hypercube search step, then SQP), resumable;
 //! - [`afs_ask_tell`]: the same sequence split into ask (the next batch of design points)
 //!   and tell (advance by their evaluations), for evaluation elsewhere;
+//! - [`afs_batch`]: the problem descriptions, batch and results files (JSON Lines) of
+//!   that split, and the evaluation of one shard of a batch; [`afs_state`]: its state
+//!   file, the batch a state asks for and the results that answer it;
 //! - [`hps_design`]: the chapter-6 design vector [A_hc, A_v, A_b] (Table 6.5) applied to
 //!   a strut parameter set;
-//! - [`sweep`]: the optimum of a one-variable design sweep (parabolic peak).
+//! - [`sweep`]: the optimum of a one-variable design sweep (parabolic peak);
+//! - [`evaluate`]: the assessment of `afsv evaluate` (design measures, yaw-plane measures,
+//!   strut, terrain) of one vehicle description;
+//! - [`fan_out`]: the one scheduler of the studies on the 3-D vehicle (per-case caches
+//!   built once, runs in parallel, results in order) and the plain seed fan-out.
 //!
 //! Every constructor validates its input and returns a [`DesignError`] naming the field.
 //! `docs/design.md` maps each equation to its code.
 
 pub mod afs_ask_tell;
+pub mod afs_batch;
 pub mod afs_design;
 pub mod afs_optimum;
 pub mod afs_problem;
 pub mod afs_resume;
+pub mod afs_state;
 pub mod ahp;
 pub mod design_3d;
 pub mod error;
+pub mod evaluate;
+pub mod fan_out;
 pub mod hps_design;
 pub mod hps_optimum;
 pub mod hps_sensitivity;

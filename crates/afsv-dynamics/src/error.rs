@@ -46,3 +46,11 @@ impl DynError {
         }
     }
 }
+
+/// A driver input the component layer rejected is an invalid input of the run (same
+/// message).
+impl From<vehicle_components::InputError> for DynError {
+    fn from(e: vehicle_components::InputError) -> Self {
+        DynError::InvalidInput(e.0)
+    }
+}

@@ -5,19 +5,20 @@
 //! efficiency, sensitivity).
 //!
 //! The yaw-plane model lives in [`yaw_plane`]; its main types are re-exported here.
-//! [`inputs`] (steering-wheel signals) and [`error`] are shared with the vehicles to come.
+//! The steering-wheel signals ([`SteerInput`]) and the path-following driver
+//! ([`PathDriver`] on a [`Course`]) live in the component layer (`vehicle-components`),
+//! shared with the 3-D vehicle; they are re-exported here.
 //!
 //! Entry points: [`simulate`] (one manoeuvre -> [`YawRecord`]), [`yaw_measures`]
 //! (the five measures at a speed for a load condition), [`sensitivity`].
 //! Equation-to-code map and modelling choices: `docs/afs-yaw-plane.md`.
 
 pub mod error;
-pub mod inputs;
 pub mod yaw_plane;
 
 pub use error::DynError;
-pub use inputs::SteerInput;
 pub use odeint::Solver;
+pub use vehicle_components::{InputError, SteerInput};
 pub use yaw_plane::actuator::{ActuatorOutput, EquivalentTorsion, SteeringActuator};
 pub use yaw_plane::analysis::{
     measures_for, sensitivity, yaw_measures, MeasureSpec, SensitivityParam, SensitivityTable,

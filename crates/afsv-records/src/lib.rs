@@ -22,10 +22,21 @@
 //! let err = Record::parse_csv("time_s,force_n\n0.0,abc\n", Path::new("bad.csv")).unwrap_err();
 //! assert!(err.to_string().starts_with("bad.csv:2:2:"), "{err}");
 //! ```
+//!
+//! Writing goes through [`atomic`] (whole or absent) under the rules of [`guard`] (no output
+//! replaces an input or a file the toolkit did not write); [`json`] holds the JSON output
+//! rules (no NaN, every `null` explained); [`provenance`] lists the input files read;
+//! [`jsonl`] reads and writes JSON Lines files, [`stored`] state files read back (a
+//! checkpoint), [`lock`] takes the one-run-at-a-time lock of such a file.
 
 pub mod atomic;
 pub mod convention;
+pub mod guard;
+pub mod json;
+pub mod jsonl;
+pub mod lock;
 pub mod provenance;
+pub mod stored;
 pub mod units;
 
 pub use convention::{ReadOptions, SIGN_CONVENTION};

@@ -4,6 +4,7 @@
 //! at all (`afsv_records::Record::write`).
 
 use crate::output::{OutputGuard, OutputKind};
+pub use afsv_records::json::{from_columns, from_rows};
 use afsv_records::Record;
 use serde_json::{json, Value};
 use std::io::IsTerminal;
@@ -86,42 +87,6 @@ impl TableOutput {
     }
 }
 
-/// The columns `names` (in that order) from JSON objects that each hold them as numbers;
-/// a field missing or not a finite number is an error naming the row.
-pub fn from_rows(rows: &[Value], names: &[&str]) -> Result<Record, String> {
-    let mut rec = Record::new();
-    for name in names {
-        let col = rows
-            .iter()
-            .enumerate()
-            .map(|(i, r)| {
-                r.get(*name)
-                    .and_then(Value::as_f64)
-                    .ok_or_else(|| format!("row {} has no number `{name}`", i + 1))
-            })
-            .collect::<Result<Vec<f64>, String>>()?;
-        rec.push_column(name, col).map_err(|e| e.to_string())?;
-    }
-    Ok(rec)
-}
-
-/// Named numeric columns from arrays of equal length in the JSON object `obj` (those of
-/// `names` that it has).
-pub fn from_columns(obj: &Value, names: &[&str]) -> Result<Record, String> {
-    let mut rec = Record::new();
-    for name in names {
-        let Some(arr) = obj.get(*name).and_then(Value::as_array) else {
-            continue;
-        };
-        let col = arr
-            .iter()
-            .map(|v| v.as_f64().ok_or_else(|| format!("`{name}` holds {v}")))
-            .collect::<Result<Vec<f64>, String>>()?;
-        rec.push_column(name, col).map_err(|e| e.to_string())?;
-    }
-    Ok(rec)
-}
-
 /// An aligned text table of `rec`: the header, the first and last `ends` rows, and a
 /// `...` line between them when rows are left out. Numbers show 6 significant digits.
 pub fn text(rec: &Record, ends: usize) -> String {
@@ -187,19 +152,6 @@ pub fn number(v: f64) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    #[test]
-    fn rows_become_columns_and_a_missing_field_is_named() {
-        let rows = vec![
-            json!({"x_m": 0.0, "name": "a", "z_m": 1.5}),
-            json!({"x_m": 0.5, "name": "b", "z_m": -2.0}),
-        ];
-        let rec = from_rows(&rows, &["z_m", "x_m"]).unwrap();
-        assert_eq!(rec.names(), ["z_m", "x_m"]);
-        assert_eq!(rec.column("z_m").unwrap(), &[1.5, -2.0]);
-        let bad = vec![json!({"x_m": 0.0}), json!({"y": 1.0})];
-        assert!(from_rows(&bad, &["x_m"]).unwrap_err().contains("row 2"));
-    }
 
     #[test]
     fn a_long_table_shows_its_ends_on_a_terminal() {

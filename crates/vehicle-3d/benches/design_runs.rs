@@ -10,7 +10,7 @@
 //! - `d1_terrain_and_cache`: synthesis of the terrain and the four tandem-cam caches, paid
 //!   once per seed.
 
-use afsv_dynamics::SteerInput;
+use vehicle_components::SteerInput;
 use criterion::{criterion_group, criterion_main, Criterion};
 use odeint::OdeSystem;
 use vehicle_3d::scenarios::{RideSpec, OUTPUT_DT_S};

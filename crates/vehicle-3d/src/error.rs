@@ -51,7 +51,7 @@ pub enum VehicleError {
     Suspension(#[from] hps_emulsion::HpsError),
     /// The steering-wheel input is invalid.
     #[error("steering input: {0}")]
-    Input(#[from] afsv_dynamics::DynError),
+    Input(#[from] vehicle_components::InputError),
     /// A measure could not be computed from the run.
     #[error("measure `{measure}`: {reason}")]
     Measure {

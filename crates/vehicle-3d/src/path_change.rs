@@ -2,7 +2,7 @@
 //! yaw-plane model's pure-pursuit `PathDriver`, its record and the Fig 6.12 channels' peaks
 //! ([`crate::scenarios`] re-exports it with the design scenarios).
 
-use afsv_dynamics::{Course, PathDriver};
+use vehicle_components::{Course, PathDriver};
 use serde::Serialize;
 use vehicle_components::FlatTerrain;
 

@@ -21,7 +21,7 @@
 //! Every rough-terrain number is a mean and SD over seeds ([`Spread`]); variants of one study
 //! use the same seeds (common random numbers).
 
-use afsv_dynamics::SteerInput;
+use vehicle_components::SteerInput;
 use perf_measures::iso2631::weight_fft;
 use perf_measures::roll::{sustained_period, SustainedPeriodParams};
 use perf_measures::Weighting;

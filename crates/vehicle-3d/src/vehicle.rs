@@ -29,7 +29,7 @@ use std::cell::RefCell;
 use std::sync::Arc;
 
 use afs_hydraulics::{AfsSystem, StrutInput};
-use afsv_dynamics::{Course, PathDriver, SteerInput};
+use vehicle_components::{Course, PathDriver, SteerInput};
 use hps_emulsion::{HpsExtensions, HpsStrut};
 use multibody::{Model, Workspace};
 use nalgebra::Vector3;

@@ -2,7 +2,7 @@
 //! tire loads, energy is conserved with every loss off, mirrored inputs give mirrored
 //! motion, and a straight run on flat ground stays straight.
 
-use afsv_dynamics::SteerInput;
+use vehicle_components::SteerInput;
 use odeint::OdeSystem;
 use vehicle_3d::{simulate, FrontAxle, Load, RunOptions, Vehicle, VehicleOptions, VehicleParams};
 use vehicle_components::FlatTerrain;

@@ -13,7 +13,10 @@
 //!   [`Recorder`];
 //! - [`params`]: [`ParamSet`] / [`ParamSpec`], parameters by name with bounds;
 //! - [`cab_seat`]: [`CabSeat`], the cab on elastomer mounts with the operator's suspension
-//!   seat, driven by the frame's motion (`docs/layouts.md`).
+//!   seat, driven by the frame's motion (`docs/layouts.md`);
+//! - [`inputs`]: the steering-wheel inputs [`SteerInput`] (section 3.3) and
+//!   [`path_driver`]: the pure-pursuit [`PathDriver`] on a [`Course`] (section 3.4.1), the
+//!   driver inputs every vehicle model shares.
 //!
 //! Details and conventions: `docs/vehicle-components.md`.
 //!
@@ -26,8 +29,10 @@
 pub mod cab_seat;
 pub mod component;
 pub mod error;
+pub mod inputs;
 pub mod layout;
 pub mod params;
+pub mod path_driver;
 pub mod recorder;
 pub mod sampled;
 pub mod terrain;
@@ -35,8 +40,10 @@ pub mod terrain;
 pub use cab_seat::{CabMount, CabParams, CabSeat, CabSeatOutput, Cushion, FrameMotion, SeatParams};
 pub use component::{ChannelInfo, Component, StateInfo};
 pub use error::{ComponentError, ParamError};
+pub use inputs::{InputError, SteerInput};
 pub use layout::{BlockId, StateLayout, MAX_STATES};
 pub use params::{check_specs, within_ranges, ParamSet, ParamSpec};
+pub use path_driver::{Course, PathDriver};
 pub use recorder::{Channels, Recorder, MAX_CELLS, MAX_ROWS};
 pub use terrain::{
     gradient_normal, FlatTerrain, Terrain, TerrainPoint, DEFAULT_FRICTION, NORMAL_STEP_M,

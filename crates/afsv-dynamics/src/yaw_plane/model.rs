@@ -20,13 +20,13 @@
 //!
 //! Tire 1/3 are the left tires, 2/4 the right ones; the steady slip angles are Eq 3.17.
 
-use crate::inputs::SteerInput;
 use crate::yaw_plane::actuator::{ActuatorOutput, SteeringActuator, MAX_ACTUATOR_STATES};
 use crate::yaw_plane::driver::PathDriver;
 use crate::yaw_plane::mechanics::{accelerations_with, Accelerations, Loads, Motion, UnitGeometry};
 use crate::yaw_plane::params::VehicleParams;
 use crate::EquationForm;
 use tire_fiala::{slip_lag_rate, LinearCornering};
+use vehicle_components::SteerInput;
 
 /// Where the steering-wheel angle comes from.
 #[derive(Debug, Clone, PartialEq)]

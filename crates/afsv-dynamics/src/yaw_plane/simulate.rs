@@ -2,7 +2,6 @@
 //! with the record channels of docs/records.md plus internal states.
 
 use crate::error::DynError;
-use crate::inputs::SteerInput;
 use crate::yaw_plane::actuator::{SteeringActuator, MAX_ACTUATOR_STATES};
 use crate::yaw_plane::driver::PathDriver;
 use crate::yaw_plane::mechanics::{kinetic_energy, Motion};
@@ -11,6 +10,7 @@ use crate::yaw_plane::params::VehicleParams;
 use crate::EquationForm;
 use odeint::{Atol, Control, Integrator, OdeError, Problem, Solver, Workspace};
 use serde::{Deserialize, Serialize};
+use vehicle_components::SteerInput;
 
 /// A constant-speed manoeuvre: forward speed, duration and steering.
 #[derive(Debug, Clone, PartialEq)]
@@ -81,9 +81,10 @@ impl Manoeuvre {
             )));
         }
         match &self.steer {
-            SteerSource::Open(i) => i.validate(),
-            SteerSource::Driver(d) => d.validate(),
+            SteerSource::Open(i) => i.validate()?,
+            SteerSource::Driver(d) => d.validate()?,
         }
+        Ok(())
     }
 
     fn breakpoints(&self) -> Vec<f64> {

@@ -1,30 +1,11 @@
 //! The three design measures of Chapter 6 for `afsv evaluate` and `afsv vehicle measures`:
-//! the runs and their summary are the library's (`afsv_design::design_3d`, re-exported
-//! here, shared with the Python package); this module prints them (the HPS changes as JSON,
-//! the text summary).
+//! the runs, their summary and the HPS changes as JSON are the library's
+//! (`afsv_design::design_3d`, re-exported here, shared with the Python package); this
+//! module prints the text summary.
 
 pub use afsv_design::design_3d::*;
 use perf_measures::iso2631::HgczZone;
 use vehicle_3d::scenarios::Spread;
-
-/// The HPS's relative changes (percent) with whether each is settled over the seeds
-/// ([`settled`]), as JSON; `None` without an HPS.
-pub fn hps_changes(d: &DesignMeasures) -> Option<serde_json::Value> {
-    let h = d.nominal_hps.as_ref()?;
-    let u = &d.unsuspended;
-    let one = |with: &Spread, base: &Spread| {
-        serde_json::json!({
-            "percent": 100.0 * (with.mean / base.mean - 1.0),
-            "settled_over_seeds": settled(with, base),
-        })
-    };
-    Some(serde_json::json!({
-        "a_wz_unloaded": one(&h.ride_unloaded.a_wz_m_s2, &u.ride_unloaded.a_wz_m_s2),
-        "a_wz_loaded": one(&h.ride_loaded.a_wz_m_s2, &u.ride_loaded.a_wz_m_s2),
-        "sp_drt": one(&h.sp_drt_m_s2, &u.sp_drt_m_s2),
-        "rule": "settled: the means differ by at least twice the standard error of the difference over the seeds",
-    }))
-}
 
 /// The relative change from `base` to `with` in percent, marked when it lies within the
 /// seed spread ([`settled`]).

@@ -15,8 +15,8 @@
 //! weighting table, terrain synthesis fidelity) are `afsv check`.
 
 use super::CmdResult;
-use afsv_dynamics::{measures_for, EquationForm, Load, MeasureSpec, YawMeasures};
-use afsv_vehicle::ArticulatedVehicle;
+use afsv_design::evaluate::{assess, yaw_stable, Assessment};
+use afsv_dynamics::YawMeasures;
 use hps_emulsion::StrutSummary;
 use serde_json::{json, Value};
 use std::io::IsTerminal;
@@ -67,79 +67,6 @@ const PAPER_FORM_CAVEATS: &str = "  Against the dissertation (prototype only; do
       isolates more (about -40 %; status: differs).
 
 ";
-
-/// The assessment of one vehicle.
-struct Assessment {
-    /// The vehicle's name and where its front strut comes from.
-    name: String,
-    /// Whether it is the built-in prototype (the dissertation's numbers apply).
-    is_prototype: bool,
-    /// Whether both models use the printed Eq 3.13 (`--paper-form`).
-    paper_form: bool,
-    strut_source: Option<String>,
-    vehicle: super::design_measures::DesignMeasures,
-    speed_kmh: f64,
-    terrain: terrain_psd::Summary,
-    yaw_loaded: YawMeasures,
-    yaw_unloaded: YawMeasures,
-    strut: Option<StrutSummary>,
-}
-
-/// The yaw-plane measures of `v` at `load` and `speed` (m/s) in the equation `form`.
-fn yaw_of(
-    v: &ArticulatedVehicle,
-    load: Load,
-    speed: f64,
-    form: EquationForm,
-) -> Result<YawMeasures, String> {
-    let p = v.yaw_plane_params(load);
-    let mut spec = MeasureSpec::default();
-    spec.options.form = form;
-    measures_for(&p.vehicle, &p.afs, Some(load), speed, &spec)
-        .map_err(|e| format!("yaw-plane measures, {load:?} case: {e}").to_lowercase())
-}
-
-/// Everything `afsv evaluate` measures on the vehicle `v`.
-fn assess(
-    v: &ArticulatedVehicle,
-    speed_kmh: f64,
-    seed: u64,
-    seeds: &[u64],
-    paper_form: bool,
-    progress: &(dyn Fn(&str) + Sync),
-) -> Result<Assessment, String> {
-    let speed = speed_kmh / 3.6;
-    let mut p = v.params.clone();
-    if let Some(s) = &v.front_strut {
-        p.hps = *s;
-    }
-    let form = if paper_form {
-        p.yaw_inertia_form = vehicle_3d::YawInertiaForm::PaperEq313;
-        EquationForm::PaperEq313
-    } else {
-        EquationForm::EnergyConsistent
-    };
-    let vehicle = super::design_measures::assess(&p, v.front_strut.is_some(), seeds, progress)?;
-    let strut = match &v.front_strut {
-        Some(s) => Some(hps_emulsion::characterize::summary(s, 0.025).map_err(|e| e.to_string())?),
-        None => None,
-    };
-    let prototype = afsv_vehicle::load_builtin("prototype").map_err(|e| e.to_string())?;
-    let is_prototype =
-        matches!(&prototype.vehicle, afsv_vehicle::Vehicle::Articulated(p) if p == v);
-    Ok(Assessment {
-        is_prototype,
-        paper_form,
-        name: v.name.clone(),
-        strut_source: v.front_strut_source.clone(),
-        vehicle,
-        speed_kmh,
-        terrain: terrain_psd::default_terrain_summary(seed),
-        yaw_loaded: yaw_of(v, Load::Loaded, speed, form)?,
-        yaw_unloaded: yaw_of(v, Load::Unloaded, speed, form)?,
-        strut,
-    })
-}
 
 /// Run the assessment and print it (text on a terminal, JSON otherwise).
 pub fn run(args: Args) -> CmdResult {
@@ -237,11 +164,6 @@ fn to_json(a: &Assessment) -> Value {
         ]);
     }
     v
-}
-
-/// A yaw mode is stable when its free oscillation decays: a positive fitted damping ratio.
-fn yaw_stable(m: &YawMeasures) -> bool {
-    m.damping_ratio.is_finite() && m.damping_ratio > 0.0
 }
 
 /// `v` scaled by `scale` with `digits` decimals, or `n/a` when it cannot be computed.
@@ -439,6 +361,7 @@ fn strut_text(st: &StrutSummary, source: &str) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use afsv_dynamics::EquationForm;
 
     #[test]
     fn text_summary_names_every_section_with_units() {

@@ -4,29 +4,28 @@
 //! same run goes ask/tell: `--ask` writes the next batch of design points (JSON Lines,
 //! evaluated by `afsv batch evaluate`, possibly in shards on a cluster), `--tell` reads the
 //! results and advances the state file; once finished `--ask` prints the report
-//! (`afsv_design::afs_ask_tell`, formats in `super::batch`).
+//! (`afsv_design::afs_ask_tell`, formats in `afsv_design::afs_batch`).
 
-use super::batch;
 use super::CmdResult;
-use afsv::output::{is_afsv_json, NotEarned, OutputGuard, OutputKind};
-use afsv_design::{
-    optimise, AfsDesignBounds, AfsOptimisationSettings, AfsOptimum, AfsProblem, AfsProblemSpec,
-    AfsRunState, AhpHierarchy, InterferenceGeometry, Objective,
+use afsv::output::{NotEarned, OutputGuard, OutputKind};
+use afsv_design::afs_batch::{
+    chapter4_objective, Eq49Desc, ProblemDesc, VehicleDesc, AFS_KIND, MAX_SHARDS,
 };
-use afsv_dynamics::EquationForm;
-use serde::de::DeserializeOwned;
+use afsv_design::{
+    optimise, AfsOptimisationSettings, AfsOptimum, AfsProblem, AfsRunState, Objective,
+};
+use afsv_records::lock::RunLock;
+use afsv_records::stored::{parse_stored, read_stored, same_settings, write_json};
 use serde::{Deserialize, Serialize};
 use serde_json::{json, Value};
 use std::io::IsTerminal;
-use std::path::{Path, PathBuf};
+use std::path::PathBuf;
 
 mod ask_tell;
 mod hps;
-mod lock;
 mod report;
 
 use ask_tell::AskTell;
-use lock::RunLock;
 use report::{to_json, to_text, write_plots, Bar};
 
 /// `afsv optimize` subcommands.
@@ -165,58 +164,6 @@ struct RunOutcome {
     seconds: f64,
 }
 
-/// What a shard needs to rebuild one configuration's problem: the command-line settings
-/// that define it (written into every batch and results header).
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct ProblemDesc {
-    /// `afs_chapter4`.
-    pub kind: String,
-    /// The configuration, e.g. "with the steering-arm constraint".
-    pub label: String,
-    /// The relaxed B_eff bound of Table 4.4.
-    pub relaxed: bool,
-    /// Minimum full-lock steering arm (m); `null`: no arm constraint.
-    pub min_steering_arm_m: Option<f64>,
-    /// Relative tolerance of the simulations.
-    pub rtol: f64,
-    /// `energy_consistent` or `paper_eq_3_13`.
-    pub form: String,
-    /// The Eq 4.9 geometry, if given.
-    pub eq_4_9: Option<Eq49Desc>,
-    /// A described vehicle (`--vehicle`); absent: Table 3.1's.
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub vehicle: Option<VehicleDesc>,
-}
-
-/// The vehicle of `--vehicle` as a problem stores it: its name, its loaded yaw-plane data
-/// and its steering.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct VehicleDesc {
-    /// The description's name.
-    pub name: String,
-    /// Its loaded yaw-plane data.
-    pub yaw_plane: afsv_dynamics::VehicleParams,
-    /// Its steering system (the current design).
-    pub steering: afs_hydraulics::AfsParams,
-}
-
-/// The Eq 4.9 options as given on the command line.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct Eq49Desc {
-    /// `--front-mount-dir-deg`.
-    pub front_mount_dir_deg: f64,
-    /// `--tire-point`.
-    pub tire_point: [f64; 2],
-    /// `--engine-point`.
-    pub engine_point: [f64; 2],
-}
-
-/// The `kind` of the chapter-4 problem.
-const AFS_KIND: &str = "afs_chapter4";
-
 fn form_name(f: FormArg) -> &'static str {
     match f {
         FormArg::EnergyConsistent => "energy_consistent",
@@ -263,60 +210,6 @@ fn desc_of(
     }
 }
 
-fn spec_of(d: &ProblemDesc) -> Result<AfsProblemSpec, String> {
-    if d.kind != AFS_KIND {
-        return Err(format!(
-            "unknown problem kind {:?} (this afsv knows {AFS_KIND:?})",
-            d.kind
-        ));
-    }
-    if !(d.rtol.is_finite() && d.rtol > 0.0) {
-        return Err(format!("rtol {}: must be finite and > 0", d.rtol));
-    }
-    let mut spec = AfsProblemSpec {
-        bounds: if d.relaxed {
-            AfsDesignBounds::table_4_2_relaxed()
-        } else {
-            AfsDesignBounds::table_4_2()
-        },
-        min_steering_arm_m: d.min_steering_arm_m,
-        ..AfsProblemSpec::default()
-    };
-    spec.measure.options.rtol = d.rtol;
-    spec.measure.options.form = match d.form.as_str() {
-        "energy_consistent" => EquationForm::EnergyConsistent,
-        "paper_eq_3_13" => EquationForm::PaperEq313,
-        other => return Err(format!("unknown equation form {other:?}")),
-    };
-    if let Some(v) = &d.vehicle {
-        spec.vehicle = v.yaw_plane.clone();
-        spec.steering = v.steering.clone();
-    }
-    if let Some(g) = &d.eq_4_9 {
-        spec.interference = Some(
-            InterferenceGeometry::new(
-                g.front_mount_dir_deg.to_radians(),
-                g.tire_point,
-                g.engine_point,
-            )
-            .map_err(|e| e.to_string())?,
-        );
-    }
-    Ok(spec)
-}
-
-fn objective() -> Result<Objective, Box<dyn std::error::Error>> {
-    Ok(Objective::new(
-        AhpHierarchy::chapter4().weights()?.composite,
-    )?)
-}
-
-/// The problem a description defines (simulates its current design once).
-pub fn problem_of(d: &ProblemDesc) -> Result<AfsProblem, String> {
-    let objective = objective().map_err(|e| e.to_string())?;
-    AfsProblem::new(spec_of(d)?, objective).map_err(|e| e.to_string())
-}
-
 fn run_afs(a: &AfsArgs) -> CmdResult {
     if a.starts >= afsv_design::afs_optimum::MAX_STARTS {
         return Err(format!(
@@ -335,8 +228,8 @@ fn run_afs(a: &AfsArgs) -> CmdResult {
     if a.state.is_some() && a.ask.is_none() && a.tell.is_empty() {
         return Err("--state: give --ask FILE or --tell RESULTS...".into());
     }
-    if a.tell.len() > batch::MAX_SHARDS {
-        return Err(format!("--tell: more than {} results files", batch::MAX_SHARDS).into());
+    if a.tell.len() > MAX_SHARDS {
+        return Err(format!("--tell: more than {} results files", MAX_SHARDS).into());
     }
     // One run at a time on a checkpoint or state file; the lock is held until the command
     // returns, and taken before the file is read.
@@ -387,7 +280,7 @@ fn run_afs(a: &AfsArgs) -> CmdResult {
     settings.pattern.search_points = a.search_points as usize;
     settings.pattern.min_mesh = a.min_mesh;
     settings.sqp.max_calls = a.sqp_calls as usize;
-    let objective = objective()?;
+    let objective = chapter4_objective()?;
     let mut configs: Vec<(&'static str, Option<f64>)> =
         vec![("with the steering-arm constraint", Some(a.min_arm_m))];
     if !a.no_arm_comparison {
@@ -410,7 +303,10 @@ fn run_afs(a: &AfsArgs) -> CmdResult {
         .map(|(label, arm)| desc_of(a, label, *arm, &vehicle))
         .collect();
     if let Some(state) = &a.state {
-        let problems: Vec<AfsProblem> = descs.iter().map(problem_of).collect::<Result<_, _>>()?;
+        let problems: Vec<AfsProblem> = descs
+            .iter()
+            .map(ProblemDesc::problem)
+            .collect::<Result<_, _>>()?;
         let job = AskTell {
             args: a,
             state_path: state,
@@ -448,7 +344,7 @@ fn run_afs(a: &AfsArgs) -> CmdResult {
     });
     let problems: Vec<AfsProblem> = descs
         .iter()
-        .map(|d| AfsProblem::new(spec_of(d)?, objective).map_err(|e| e.to_string()))
+        .map(|d| AfsProblem::new(d.spec()?, objective).map_err(|e| e.to_string()))
         .collect::<Result<_, String>>()?;
     // Every stored run is checked before any run starts (and so before the checkpoint is
     // written again): a refused resume leaves the file as it was.
@@ -518,77 +414,4 @@ fn report(
         ))
         .into())
     }
-}
-
-/// The text of a stored afsv JSON file (a checkpoint or a state), `None` if it does not
-/// exist. Unreadable, truncated, malformed or foreign files are refused with their cause
-/// (a truncated file, e.g. from a full disk, is named so, with where it ends).
-fn read_stored(flag: &str, path: &Path) -> Result<Option<String>, String> {
-    let at = |what: String| format!("{flag} {}: {what}", path.display());
-    let bytes = match std::fs::read(path) {
-        Ok(b) => b,
-        Err(e) if e.kind() == std::io::ErrorKind::NotFound => return Ok(None),
-        Err(e) => return Err(at(e.to_string())),
-    };
-    let text = String::from_utf8(bytes).map_err(|e| {
-        at(format!(
-            "not UTF-8 text (byte {}), so not a file afsv wrote",
-            e.utf8_error().valid_up_to()
-        ))
-    })?;
-    if text.trim().is_empty() {
-        return Err(at(format!(
-            "empty ({} bytes): not a complete file; remove it to start afresh",
-            text.len()
-        )));
-    }
-    if let Err(e) = serde_json::from_str::<Value>(&text) {
-        return Err(at(if e.is_eof() {
-            format!(
-                "truncated: not valid JSON, it ends inside a value at line {} column {}; remove it to start afresh",
-                e.line(),
-                e.column()
-            )
-        } else {
-            format!(
-                "not valid JSON at line {} column {}: {}",
-                e.line(),
-                e.column(),
-                batch::message(&e)
-            )
-        }));
-    }
-    if !is_afsv_json(&text) {
-        return Err(at("exists and was not written by afsv".into()));
-    }
-    Ok(Some(text))
-}
-
-/// `text` (from [`read_stored`]) as `T`, with the line and column of what does not fit.
-fn parse_stored<T: DeserializeOwned>(flag: &str, path: &Path, text: &str) -> Result<T, String> {
-    serde_json::from_str(text).map_err(|e| {
-        format!(
-            "{flag} {}: line {} column {}: {}",
-            path.display(),
-            e.line(),
-            e.column(),
-            batch::message(&e)
-        )
-    })
-}
-
-fn same_settings(flag: &str, path: &Path, stored: &Value, now: &Value) -> Result<(), String> {
-    if stored == now {
-        Ok(())
-    } else {
-        Err(format!(
-            "{flag} {}: written for other settings ({stored}); remove it or use the same options",
-            path.display()
-        ))
-    }
-}
-
-fn write_json<T: Serialize>(path: &Path, value: &T) -> Result<(), String> {
-    let text = serde_json::to_string(value).map_err(|e| e.to_string())?;
-    afsv_records::atomic::write(path, text).map_err(|e| format!("{}: {e}", path.display()))
 }

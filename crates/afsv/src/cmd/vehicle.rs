@@ -25,7 +25,6 @@ use options::{
 use path_change::{offset_m, path_change_cmd, PathChangeFiles};
 use perf_measures::iso2631::{health_guidance_zone, HgczRelation};
 use plots::{plot_ride, plot_roll, plot_yaw, ride_psd, RidePsd};
-use rayon::prelude::*;
 use serde_json::{json, Value};
 use simulate::simulate_cmd;
 use std::io::IsTerminal;
@@ -419,8 +418,8 @@ fn axle_name(axle: FrontAxle) -> &'static str {
     }
 }
 
-/// Run `one` for every seed in parallel, with progress when there are several; the
-/// results in seed order; an error names its seed on a terrain.
+/// Run `one` for every seed in parallel (`afsv_design::fan_out::over_seeds`), with progress
+/// when there are several; the results in seed order; an error names its seed on a terrain.
 fn over_seeds<T: Send>(
     what: &str,
     terrain: &Option<TerrainSpec>,
@@ -428,20 +427,20 @@ fn over_seeds<T: Send>(
     one: impl Fn(usize, u64) -> Result<T, String> + Sync,
 ) -> Result<Vec<T>, String> {
     let progress = (seeds.len() > 1).then(|| Progress::new(what, "runs", Some(seeds.len())));
-    let out = seeds
-        .par_iter()
-        .enumerate()
-        .map(|(i, &s)| {
-            let r = one(i, s).map_err(|e| match terrain {
+    let out = afsv_design::fan_out::over_seeds(
+        seeds,
+        |i, s| {
+            one(i, s).map_err(|e| match terrain {
                 Some(_) => format!("seed {s}: {e}"),
                 None => e,
-            });
+            })
+        },
+        |s| {
             if let Some(p) = &progress {
                 p.step(&format!("seed {s}"));
             }
-            r
-        })
-        .collect();
+        },
+    );
     if let Some(p) = &progress {
         p.finish();
     }

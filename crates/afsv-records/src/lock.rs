@@ -16,14 +16,14 @@ use std::path::{Path, PathBuf};
 const MAGIC: &str = "afsv run lock";
 
 /// The lock file of `target`: `target` with `.lock` appended (`ck.json.lock`).
-pub(super) fn lock_path(target: &Path) -> PathBuf {
+pub fn lock_path(target: &Path) -> PathBuf {
     let mut s = target.as_os_str().to_owned();
     s.push(".lock");
     PathBuf::from(s)
 }
 
 /// An exclusive lock on a checkpoint or state file, held until dropped.
-pub(super) struct RunLock {
+pub struct RunLock {
     path: PathBuf,
     file: File,
 }
@@ -113,7 +113,7 @@ fn held_by(flag: &str, target: &Path, path: &Path, text: &str) -> String {
 
 impl RunLock {
     /// Takes the lock of `target` (named `flag` in messages) or says who holds it.
-    pub(super) fn take(flag: &str, target: &Path) -> Result<Self, String> {
+    pub fn take(flag: &str, target: &Path) -> Result<Self, String> {
         let path = lock_path(target);
         let at = |e: std::io::Error| {
             format!(

@@ -1,8 +1,15 @@
 //! Open-loop steering-wheel inputs (section 3.3): half-sine pulse, step, ramp, and a
-//! measured time history. Angles in rad, positive = right-hand turn.
+//! measured time history. Angles in rad, positive = right-hand turn. Shared by the vehicle
+//! models (the yaw-plane model of `afsv-dynamics`, the 3-D vehicle of `vehicle-3d`), which
+//! is why they live in the component layer.
 
-use crate::error::DynError;
 use serde::{Deserialize, Serialize};
+
+/// A steering-wheel input or a path-following driver whose numbers are not usable (the
+/// message names the number and what it must satisfy).
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[error("invalid input: {0}")]
+pub struct InputError(pub String);
 
 /// A steering-wheel angle time history theta_sw(t).
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
@@ -65,9 +72,9 @@ impl SteerInput {
     }
 
     /// Check the input's numbers.
-    pub fn validate(&self) -> Result<(), DynError> {
+    pub fn validate(&self) -> Result<(), InputError> {
         let bad = |what: &str, v: f64| {
-            Err(DynError::InvalidInput(format!(
+            Err(InputError(format!(
                 "steering input: {what} must be finite{}, got {v}",
                 if what == "pulse duration" {
                     " and positive"
@@ -118,13 +125,13 @@ impl SteerInput {
                     return bad("ramp start", *start_s);
                 }
                 if !(limit_rad.is_finite() && *limit_rad >= 0.0) {
-                    return Err(DynError::InvalidInput(format!(
+                    return Err(InputError(format!(
                         "steering input: ramp limit must be finite and >= 0, got {limit_rad}"
                     )));
                 }
                 // the ramp's end (a breakpoint) must be a finite time
                 if *rate_rad_s != 0.0 && !(start_s + limit_rad / rate_rad_s.abs()).is_finite() {
-                    return Err(DynError::InvalidInput(format!(
+                    return Err(InputError(format!(
                         "steering input: ramp rate {rate_rad_s} rad/s is too slow to reach its limit {limit_rad} rad in finite time"
                     )));
                 }
@@ -132,7 +139,7 @@ impl SteerInput {
             }
             SteerInput::Table { time_s, angle_rad } => {
                 if time_s.len() != angle_rad.len() || time_s.is_empty() {
-                    return Err(DynError::InvalidInput(format!(
+                    return Err(InputError(format!(
                         "steering table: {} times but {} angles (need equal, non-zero counts)",
                         time_s.len(),
                         angle_rad.len()
@@ -140,12 +147,12 @@ impl SteerInput {
                 }
                 for i in 0..time_s.len() {
                     if !time_s[i].is_finite() || !angle_rad[i].is_finite() {
-                        return Err(DynError::InvalidInput(format!(
+                        return Err(InputError(format!(
                             "steering table: sample {i} is not finite"
                         )));
                     }
                     if i > 0 && time_s[i] <= time_s[i - 1] {
-                        return Err(DynError::InvalidInput(format!(
+                        return Err(InputError(format!(
                             "steering table: time not strictly increasing at sample {i}"
                         )));
                     }
@@ -263,7 +270,7 @@ fn samples_at_or_before(ts: &[f64], t: f64) -> usize {
     let n = ts.len();
     let guess = (t - ts[0]) * (n - 1) as f64 / (ts[n - 1] - ts[0]);
     // `x <= t` is false for x > t and for a NaN t alike
-    vehicle_components::sampled::partition_point_near(ts, guess, |x| x <= t)
+    crate::sampled::partition_point_near(ts, guess, |x| x <= t)
 }
 
 #[cfg(test)]

@@ -1,0 +1,267 @@
+//! The state file of the ask/tell optimisation (`afsv optimize afs --state`): one run state
+//! per configuration, the settings it belongs to and the batches told; the batch it asks
+//! for ([`AskTellState::asked`]) and the results that answer it ([`AskTellState::results`],
+//! every asked point exactly once, from this state's batch).
+
+use crate::afs_batch::{
+    point_id, BatchPoint, PointResult, ProblemDesc, ResultsHeader, FORMAT_VERSION,
+    MAX_BATCH_POINTS, RESULTS_FORMAT,
+};
+use crate::{AfsAsk, AfsAskTell, AfsOptimisationSettings, AfsProblem, AfsRunState, AfsVariable};
+use afsv_records::stored::{parse_stored, same_settings};
+use optimize::Evaluation;
+use serde::{Deserialize, Serialize};
+use serde_json::{json, Value};
+use std::collections::HashMap;
+use std::path::{Path, PathBuf};
+
+/// The ask/tell state file: one run state per configuration, the settings it belongs to,
+/// and the number of batches told.
+#[derive(Debug, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct AskTellState {
+    /// The command that wrote it.
+    pub written_by: String,
+    /// `afsv-v1`.
+    pub sign_convention: String,
+    /// [`STATE_FORMAT`].
+    pub format: String,
+    /// [`STATE_VERSION`].
+    pub version: u32,
+    /// The settings of the command line the state belongs to.
+    pub settings: Value,
+    /// Batches told so far: the number of the next batch.
+    pub batch: usize,
+    /// One run per configuration (with, then without the arm constraint).
+    pub runs: Vec<AfsRunState>,
+}
+
+/// `format` of the state file.
+pub const STATE_FORMAT: &str = "afsv-ask-tell-state";
+/// `version` of the state file.
+pub const STATE_VERSION: u32 = 1;
+
+/// A batch as asked: its points and, per configuration, how many of them it holds.
+pub struct Asked {
+    /// The batch's points, in order.
+    pub points: Vec<BatchPoint>,
+    /// Per configuration, how many of the points are its.
+    pub per_run: Vec<usize>,
+    /// Per configuration with points: its label, phase, start and point count (JSON).
+    pub phases: Vec<Value>,
+}
+
+impl AskTellState {
+    /// The state of `flag` `path` from its `stored` text (as read under the run lock), checked
+    /// against the command's settings and problems; a new state when there is none and
+    /// `create` allows one.
+    pub fn read(
+        flag: &str,
+        path: &Path,
+        stored: Option<&str>,
+        create: bool,
+        settings: &AfsOptimisationSettings,
+        settings_json: &Value,
+        problems: &[AfsProblem],
+    ) -> Result<Self, String> {
+        Ok(match stored {
+            Some(text) => {
+                let st: AskTellState = parse_stored(flag, path, text)?;
+                same_settings(flag, path, &st.settings, settings_json)?;
+                if st.format != STATE_FORMAT
+                    || st.version != STATE_VERSION
+                    || st.runs.len() != problems.len()
+                {
+                    return Err(format!(
+                        "{flag} {}: not an ask/tell state of version {STATE_VERSION} with {} runs",
+                        path.display(),
+                        problems.len()
+                    ));
+                }
+                for (i, (run, problem)) in st.runs.iter().zip(problems).enumerate() {
+                    crate::check_run_state(problem, settings, run)
+                        .map_err(|e| format!("{flag} {}: run {}: {e}", path.display(), i + 1))?;
+                }
+                st
+            }
+            None if !create => {
+                return Err(format!(
+                    "{flag} {}: does not exist; start the run with --ask",
+                    path.display()
+                ))
+            }
+            None => AskTellState {
+                written_by: "afsv optimize afs".into(),
+                sign_convention: afsv_records::SIGN_CONVENTION.into(),
+                format: STATE_FORMAT.into(),
+                version: STATE_VERSION,
+                settings: settings_json.clone(),
+                batch: 0,
+                runs: vec![AfsRunState::default(); problems.len()],
+            },
+        })
+    }
+
+    /// The batch the state asks for (`None`: every run has finished).
+    pub fn asked(
+        &self,
+        drivers: &[AfsAskTell],
+        descs: &[ProblemDesc],
+    ) -> Result<Option<Asked>, String> {
+        let mut asked = Asked {
+            points: Vec::new(),
+            per_run: Vec::new(),
+            phases: Vec::new(),
+        };
+        let mut finished = true;
+        for (k, (d, run)) in drivers.iter().zip(&self.runs).enumerate() {
+            let AfsAsk::Evaluate(b) = d.ask(run).map_err(|e| e.to_string())? else {
+                asked.per_run.push(0);
+                continue;
+            };
+            finished = false;
+            if asked.points.len() + b.points.len() > MAX_BATCH_POINTS {
+                return Err(format!("a batch of more than {} points", MAX_BATCH_POINTS));
+            }
+            asked.per_run.push(b.points.len());
+            let start = match b.phase {
+                crate::AfsPhase::StartPoint { start } | crate::AfsPhase::Screening { start } => {
+                    Some(start)
+                }
+                _ => None,
+            };
+            asked.phases.push(json!({"run": descs[k].label, "phase": b.phase.name(), "start": start, "points": b.points.len()}));
+            for x in &b.points {
+                let index = asked.points.len();
+                asked.points.push(BatchPoint {
+                    id: point_id(self.batch, index),
+                    problem: k,
+                    phase: b.phase.name().into(),
+                    screened: b.phase.screened(),
+                    x: AfsVariable::ALL
+                        .iter()
+                        .zip(x)
+                        .map(|(v, x)| (v.name().to_string(), *x))
+                        .collect(),
+                });
+            }
+        }
+        Ok((!finished).then_some(asked))
+    }
+
+    /// Reads every results file (`--tell`) and returns the evaluations in the batch's order, checking
+    /// that every asked id comes exactly once, no other id comes, and every file belongs to
+    /// this batch and these problems.
+    pub fn results(
+        &self,
+        tell: &[PathBuf],
+        sha: &str,
+        asked: &Asked,
+        descs: &[ProblemDesc],
+        problems: &[AfsProblem],
+    ) -> Result<Vec<Evaluation>, String> {
+        let index: HashMap<&str, usize> = asked
+            .points
+            .iter()
+            .enumerate()
+            .map(|(i, p)| (p.id.as_str(), i))
+            .collect();
+        let mut found: Vec<Option<(Evaluation, String)>> = vec![None; asked.points.len()];
+        for path in tell {
+            let file = path.display();
+            let check = |h: &ResultsHeader| {
+                if h.format != RESULTS_FORMAT || h.version != FORMAT_VERSION {
+                    return Err(format!(
+                        "--tell {file}: not a results file of version {} (format {:?}, version {})",
+                        FORMAT_VERSION, h.format, h.version
+                    ));
+                }
+                if h.problems != descs {
+                    return Err(format!("--tell {file}: results of another problem or other settings than this state's"));
+                }
+                if h.batch != self.batch {
+                    return Err(format!(
+                        "--tell {file}: results of batch {}, the state asked batch {}",
+                        h.batch, self.batch
+                    ));
+                }
+                if h.state_sha256 != sha {
+                    return Err(format!(
+                        "--tell {file}: results of batch {} as another state asked it (state SHA-256 {}..., this state's {}...): they belong to another run or an older copy of this state; evaluate this state's batch (--ask) and tell its results",
+                        h.batch,
+                        h.state_sha256.get(..12).unwrap_or(&h.state_sha256),
+                        &sha[..12]
+                    ));
+                }
+                Ok(())
+            };
+            let (_, lines): (ResultsHeader, Vec<(usize, PointResult)>) =
+                afsv_records::jsonl::read_jsonl("--tell", path, asked.points.len(), &check)?;
+            for (line, r) in lines {
+                let Some(&i) = index.get(r.id.as_str()) else {
+                    return Err(format!(
+                        "--tell {file}:{line}: id {:?} was not asked in batch {}",
+                        r.id, self.batch
+                    ));
+                };
+                let nc = problems[asked.points[i].problem].constraints().len();
+                if r.constraints.len() != nc {
+                    return Err(format!(
+                        "--tell {file}:{line}: id {:?}: {} constraint values, the problem has {nc}",
+                        r.id,
+                        r.constraints.len()
+                    ));
+                }
+                if let Some((_, first)) = &found[i] {
+                    return Err(format!(
+                        "--tell {file}:{line}: id {:?} already came in {first}",
+                        r.id
+                    ));
+                }
+                found[i] = Some((r.evaluation(), format!("{file}:{line}")));
+            }
+        }
+        let missing: Vec<&str> = asked
+            .points
+            .iter()
+            .zip(&found)
+            .filter(|(_, f)| f.is_none())
+            .map(|(p, _)| p.id.as_str())
+            .collect();
+        if let Some(first) = missing.first() {
+            return Err(format!(
+                "--tell: {} of the {} asked points of batch {} have no result (first: {first}); give every shard's results file",
+                missing.len(),
+                asked.points.len(),
+                self.batch
+            ));
+        }
+        Ok(found.into_iter().flatten().map(|(e, _)| e).collect())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_missing_state_is_new_only_when_asked_and_a_stored_one_must_match() {
+        let path = Path::new("state.json");
+        let settings = AfsOptimisationSettings::default();
+        let now = json!({"seed": 1});
+        let e = AskTellState::read("--state", path, None, false, &settings, &now, &[]).unwrap_err();
+        assert!(e.contains("does not exist"), "{e}");
+        let st = AskTellState::read("--state", path, None, true, &settings, &now, &[]).unwrap();
+        assert_eq!((st.batch, st.runs.len(), &st.settings), (0, 0, &now));
+        let text = serde_json::to_string(&st).unwrap();
+        let back =
+            AskTellState::read("--state", path, Some(&text), false, &settings, &now, &[]).unwrap();
+        assert_eq!(back.format, STATE_FORMAT);
+        let other = json!({"seed": 2});
+        let e = AskTellState::read("--state", path, Some(&text), false, &settings, &other, &[])
+            .unwrap_err();
+        assert!(e.contains("other settings"), "{e}");
+        // a state that asks nothing has finished
+        assert!(st.asked(&[], &[]).unwrap().is_none());
+    }
+}
