@@ -314,6 +314,30 @@ fn a_measured_road_of_the_synthesised_profile_gives_the_seed_run_bit_for_bit() {
         measured["per_seed"][0]["measures"],
         synth["per_seed"][0]["measures"]
     );
+    // The same profile as an ASAM OpenCRG file (LDFI, two long sections at plus and minus
+    // half the prototype's 2.28 m front track) gives the run of a record holding the same
+    // 14-digit values, bit for bit. (Against the full-precision record a_wz differs by
+    // 6e-4: the adaptive steps follow the last digits of the road.)
+    let (crg, rounded) = (scratch("own", "seed1.crg"), scratch("own", "seed1-14.csv"));
+    let (crg_text, csv_text) = crg_of(&road);
+    std::fs::write(&crg, crg_text).unwrap();
+    std::fs::write(&rounded, csv_text).unwrap();
+    let ride_on = |file: &std::path::Path| {
+        json(&afsv(&[
+            "vehicle",
+            "ride",
+            "--road",
+            file.to_str().unwrap(),
+            "--json",
+        ]))
+    };
+    let (from_crg, from_csv) = (ride_on(&crg), ride_on(&rounded));
+    assert_eq!(from_crg["terrain"]["format"], "OpenCRG");
+    assert_eq!(from_crg["a_wz_m_s2"], from_csv["a_wz_m_s2"]);
+    assert_eq!(
+        from_crg["per_seed"][0]["measures"],
+        from_csv["per_seed"][0]["measures"]
+    );
     // A road too short for the window says how long it must be.
     let out = afsv(&[
         "vehicle",
@@ -357,4 +381,30 @@ fn a_vehicle_without_a_strut_is_refused_where_a_strut_is_designed() {
         .as_str()
         .unwrap()
         .contains("no strut"));
+}
+
+/// The two-track record `csv` (x_m, left_m, right_m at a uniform step) as an OpenCRG ASCII
+/// file with long sections at v = -1.14 m (right) and +1.14 m (left), LDFI fields of 14
+/// digits, and as a record holding the same 14-digit values.
+fn crg_of(csv: &std::path::Path) -> (String, String) {
+    let text = std::fs::read_to_string(csv).unwrap();
+    let rows: Vec<Vec<f64>> = text
+        .lines()
+        .skip(1)
+        .map(|l| l.split(',').map(|c| c.parse().unwrap()).collect())
+        .collect();
+    let dx = rows[1][0] - rows[0][0];
+    let mut crg = format!(
+        "$CT\nthe seed-1 class E profile\n$\n$ROAD_CRG\nREFERENCE_LINE_INCREMENT = {dx}\n\
+         LONG_SECTION_V_RIGHT = -1.14\nLONG_SECTION_V_LEFT = 1.14\n\
+         LONG_SECTION_V_INCREMENT = 2.28\n$\n$KD_Definition\n#:LDFI\n\
+         D:long section 1,m\nD:long section 2,m\n$\n$$$$\n"
+    );
+    let mut record = String::from("x_m,left_m,right_m\n");
+    for r in &rows {
+        let (left, right) = (format!("{:.13e}", r[1]), format!("{:.13e}", r[2]));
+        crg += &format!("{right:>20}{left:>20}\n");
+        record += &format!("{},{left},{right}\n", r[0]);
+    }
+    (crg, record)
 }

@@ -67,6 +67,37 @@ fn ride_reports_mean_and_sd_over_the_seeds_with_the_hgcz_verdict() {
         .collect();
     assert_eq!(lines.len(), 2, "{err}");
     assert!(lines[1].contains("2/2 runs"), "{err}");
+    assert!(v["seat"].is_null() && v["seat_reason"].as_str().unwrap().contains("--seat"));
+}
+
+/// `--seat generic` reads ISO 2631-1 at the seat as well: the frame's numbers are the ride's
+/// own, SEAT is the seat's a_wz over the floor's in each run, and the zone verdict at the
+/// seat follows the seat's mean.
+#[test]
+fn ride_with_the_generic_seat_reports_the_seat_and_seat_value() {
+    let args = ["vehicle", "ride", "--seeds", "2", "--length-m", "30"];
+    let frame = json(&afsv(&args));
+    let v = json(&afsv(&[&args[..], &["--seat", "generic"]].concat()));
+    assert_eq!(v["a_wz_m_s2"], frame["a_wz_m_s2"]);
+    let seat = &v["seat"];
+    let runs = seat["per_run"].as_array().unwrap();
+    assert_eq!(runs.len(), 2);
+    for r in runs {
+        let ratio = num(&r["a_wz_seat_m_s2"]) / num(&r["a_wz_floor_m_s2"]);
+        assert!((num(&r["seat"]["seat"]) - ratio).abs() < 1e-9 * ratio, "{r}");
+    }
+    let mean = num(&seat["a_wz_seat_m_s2"]["mean"]);
+    let zone = &frame["hgcz"];
+    let expected = if mean < num(&zone["lower_m_s2"]) {
+        "below"
+    } else if mean <= num(&zone["upper_m_s2"]) {
+        "within"
+    } else {
+        "above"
+    };
+    assert_eq!(seat["a_wz_seat_mean_zone"], expected, "{seat}");
+    let bad = afsv(&[&args[..], &["--seat", "soft"]].concat());
+    assert!(!bad.status.success());
 }
 
 #[test]

@@ -9,6 +9,7 @@ mod options;
 mod path_change;
 mod plots;
 mod road;
+mod seat;
 mod simulate;
 
 use super::{args, CmdResult};
@@ -29,6 +30,7 @@ use serde_json::{json, Value};
 use simulate::simulate_cmd;
 use std::io::IsTerminal;
 use std::path::{Path, PathBuf};
+use vehicle_3d::cab_ride::SeatRideMeasures;
 use vehicle_3d::scenarios::{
     self, RideMeasures, RideSpec, RollMeasures, RollSpec, Spread, TerrainSpec, YawMeasures,
     YawSpec, RUN_IN_M,
@@ -109,9 +111,17 @@ pub enum Command {
         length_m: f64,
         /// A measured road instead of synthesised terrain: a two-track CSV with columns
         /// x_m (uniformly spaced), left_m and right_m (other length units such as left_mm
-        /// are converted on read; docs/records.md). One run; no seeds.
+        /// are converted on read; docs/records.md), or an ASAM OpenCRG ASCII file (`.crg`,
+        /// straight reference line; read along plus and minus half the front track,
+        /// docs/terrain-psd.md). One run; no seeds.
         #[arg(long, conflicts_with_all = ["terrain", "seeds", "seed"])]
         road: Option<PathBuf>,
+        /// The operator's cab and seat (docs/layouts.md): `generic` adds the generic cab on
+        /// mounts and suspension seat, `off` leaves out the description's; default: as the
+        /// vehicle description says (the prototype has none). With one, ISO 2631-1 is also
+        /// read on the cab floor and the seat pan, with SEAT (ISO 10326-1).
+        #[arg(long, value_parser = ["generic", "off"])]
+        seat: Option<String>,
     },
     /// D2 roll: ramp steer to the rear unit's absolute rollover; SP-DRT (RMS |a_y| over the
     /// sustained period of |LTR| = 1), the sustained period, rollover time, peak a_y.
@@ -224,7 +234,8 @@ pub fn run(cmd: Command) -> CmdResult {
             study,
             length_m,
             road,
-        } => ride_cmd(&case, &study, length_m, road.as_deref()),
+            seat,
+        } => ride_cmd(&case, &study, length_m, road.as_deref(), seat.as_deref()),
         Command::Roll {
             case,
             study,
@@ -498,7 +509,13 @@ fn prepare(case: &CaseArgs, study: &StudyArgs) -> Result<(VehicleParams, FrontAx
     vehicle_params(case)
 }
 
-fn ride_cmd(case: &CaseArgs, study: &StudyArgs, length_m: f64, road: Option<&Path>) -> CmdResult {
+fn ride_cmd(
+    case: &CaseArgs,
+    study: &StudyArgs,
+    length_m: f64,
+    road: Option<&Path>,
+    seat: Option<&str>,
+) -> CmdResult {
     if !(10.0..=5000.0).contains(&length_m) {
         return Err(format!("--length-m {}: must be 10 to 5000 m", args::show(length_m)).into());
     }
@@ -509,7 +526,9 @@ fn ride_cmd(case: &CaseArgs, study: &StudyArgs, length_m: f64, road: Option<&Pat
         );
     }
     let (p, axle) = prepare(case, study)?;
+    let layout = seat::layout(case, seat)?;
     let speed = case.speed_kmh.unwrap_or(20.0);
+    let t_window = RUN_IN_M / (speed / 3.6);
     let sim_s = (RUN_IN_M + length_m) / (speed / 3.6);
     if sim_s > MAX_DURATION_S {
         return Err(format!(
@@ -525,8 +544,11 @@ fn ride_cmd(case: &CaseArgs, study: &StudyArgs, length_m: f64, road: Option<&Pat
             length_m,
             ..RideSpec::d1(case.load, axle)
         };
-        let (m, ground) = road::ride(&p, &spec, road)?;
-        return ride_report(case, study, &spec, &[m], ground);
+        let (rec, m, ground) = road::ride(&p, &spec, road)?;
+        let seats: Vec<_> = seat::of_run(&p, &rec, t_window, layout.as_ref())?
+            .into_iter()
+            .collect();
+        return ride_report(case, study, &spec, &[m], &seats, ground);
     }
     let (terrain, seeds) =
         terrain_and_seeds(case, study.seeds, study.seed, Some(TerrainSpec::default()))?;
@@ -539,19 +561,19 @@ fn ride_cmd(case: &CaseArgs, study: &StudyArgs, length_m: f64, road: Option<&Pat
         terrain,
         ..RideSpec::d1(case.load, axle)
     };
-    let t_window = RUN_IN_M / (speed / 3.6);
     let want_psd = study.plot.is_some();
-    let runs: Vec<(RideMeasures, Option<RidePsd>)> =
-        over_seeds("afsv vehicle ride", &Some(terrain), &seeds, |_, s| {
-            let (rec, m) = scenarios::ride(&p, &spec, s).map_err(|e| e.to_string())?;
-            let psd = if want_psd {
-                Some(ride_psd(&rec, t_window)?)
-            } else {
-                None
-            };
-            Ok((m, psd))
-        })?;
+    type RideRun = (RideMeasures, Option<RidePsd>, Option<SeatRideMeasures>);
+    let runs: Vec<RideRun> = over_seeds("afsv vehicle ride", &Some(terrain), &seeds, |_, s| {
+        let (rec, m) = scenarios::ride(&p, &spec, s).map_err(|e| e.to_string())?;
+        let psd = if want_psd {
+            Some(ride_psd(&rec, t_window)?)
+        } else {
+            None
+        };
+        Ok((m, psd, seat::of_run(&p, &rec, t_window, layout.as_ref())?))
+    })?;
     let measures: Vec<RideMeasures> = runs.iter().map(|r| r.0).collect();
+    let seats: Vec<SeatRideMeasures> = runs.iter().filter_map(|r| r.2).collect();
     if let Some(path) = &study.plot {
         let psds: Vec<RidePsd> = runs.into_iter().filter_map(|r| r.1).collect();
         plot_ride(path, &psds, &spec, &seeds)?;
@@ -564,7 +586,7 @@ fn ride_cmd(case: &CaseArgs, study: &StudyArgs, length_m: f64, road: Option<&Pat
         ),
         per_run: per_seed(&Some(terrain), &seeds, &measures, NO_STRUT),
     };
-    ride_report(case, study, &spec, &measures, ground)
+    ride_report(case, study, &spec, &measures, &seats, ground)
 }
 
 /// The ride's measures over its runs (seeds, or one measured road) as JSON or text.
@@ -573,6 +595,7 @@ fn ride_report(
     study: &StudyArgs,
     spec: &RideSpec,
     measures: &[RideMeasures],
+    seats: &[SeatRideMeasures],
     ground: road::Ground,
 ) -> CmdResult {
     let (axle, speed, length_m) = (spec.front_axle, spec.speed_kmh, spec.length_m);
@@ -644,6 +667,7 @@ fn ride_report(
     }
     text += &spread_text("dominant vertical frequency", &vertical, "Hz");
     text += &spread_text("dominant pitch frequency", &pitch, "Hz");
+    seat::report(seats, &mut v, &mut text)?;
     print_result(study.json, &v, &text)
 }
 

@@ -1,7 +1,9 @@
 //! `afsv vehicle ride --road FILE`: the D1 ride on a measured two-track road instead of
-//! synthesised terrain. The file is a record (docs/records.md): columns `x_m` (uniformly
-//! spaced), `left_m` and `right_m`; other length units (`left_mm`, `x_km`) are converted on
-//! read, and the conversions are reported.
+//! synthesised terrain. The file is either a record (docs/records.md): columns `x_m`
+//! (uniformly spaced), `left_m` and `right_m`, other length units (`left_mm`, `x_km`)
+//! converted on read and the conversions reported; or an ASAM OpenCRG ASCII file (`.crg`,
+//! docs/terrain-psd.md), sampled along the two wheel tracks at plus and minus half the front
+//! track.
 
 use afsv::output::OutputGuard;
 use afsv_records::Record;
@@ -9,10 +11,13 @@ use serde_json::{json, Value};
 use std::path::Path;
 use terrain_psd::TwoTrackProfile;
 use vehicle_3d::scenarios::{measured_ride_tracks, ride_on, RideMeasures, RideSpec};
-use vehicle_3d::VehicleParams;
+use vehicle_3d::{RunRecord, VehicleParams};
 
 /// Largest measured road read (samples per track): 200 km at 2 cm.
 const MAX_ROAD_SAMPLES: usize = 10_000_000;
+
+/// Largest OpenCRG file read (bytes): 10 million rows of eight 10-character sections.
+const MAX_CRG_BYTES: u64 = 1 << 30;
 
 /// What the ride ran on, for its report.
 pub(super) struct Ground {
@@ -24,13 +29,49 @@ pub(super) struct Ground {
     pub per_run: Value,
 }
 
-/// One D1 ride of `p` on the measured road in `file`: its measures and its ground.
+/// One D1 ride of `p` on the measured road in `file`: its record, measures and ground.
 pub(super) fn ride(
     p: &VehicleParams,
     spec: &RideSpec,
     file: &Path,
-) -> Result<(RideMeasures, Ground), String> {
+) -> Result<(RunRecord, RideMeasures, Ground), String> {
     OutputGuard::new(false).record_input("--road", file)?;
+    let shown = file.display();
+    let is_crg = file
+        .extension()
+        .is_some_and(|e| e.eq_ignore_ascii_case("crg"));
+    let (profile, format) = if is_crg {
+        crg_profile(p, file)?
+    } else {
+        record_profile(file)?
+    };
+    let (dx, n) = (profile.dx_m, profile.len());
+    let tracks = measured_ride_tracks(p, spec, profile).map_err(|e| format!("{shown}: {e}"))?;
+    let (rec, m) = ride_on(p, spec, tracks).map_err(|e| e.to_string())?;
+    let length = dx * (n - 1) as f64;
+    let mut road = json!({
+        "kind": "measured two-track road",
+        "file": file,
+        "length_m": length,
+        "dx_m": dx,
+        "samples": n,
+    });
+    if let (Value::Object(extra), Some(o)) = (format, road.as_object_mut()) {
+        o.extend(extra);
+    }
+    let ground = Ground {
+        json: road,
+        text: format!("measured road {shown} ({length:.0} m at {dx} m)"),
+        per_run: json!([{
+            "road": file,
+            "measures": afsv::output::explain_nulls(json!(m), super::NO_STRUT),
+        }]),
+    };
+    Ok((rec, m, ground))
+}
+
+/// The two tracks of a record file, and what its reading converted.
+fn record_profile(file: &Path) -> Result<(TwoTrackProfile, Value), String> {
     let shown = file.display();
     let rec = Record::read(file).map_err(|e| e.to_string())?;
     let column = |name: &str| rec.require(name, file).map_err(|e| e.to_string());
@@ -43,24 +84,32 @@ pub(super) fn ride(
     }
     let profile =
         TwoTrackProfile::from_samples(x, left, right).map_err(|e| format!("{shown}: {e}"))?;
-    let (dx, n) = (profile.dx_m, profile.len());
-    let tracks = measured_ride_tracks(p, spec, profile).map_err(|e| format!("{shown}: {e}"))?;
-    let (_, m) = ride_on(p, spec, tracks).map_err(|e| e.to_string())?;
-    let length = dx * (n - 1) as f64;
-    let ground = Ground {
-        json: json!({
-            "kind": "measured two-track road",
-            "file": file,
-            "length_m": length,
-            "dx_m": dx,
-            "samples": n,
-            "unit_conversions": afsv::output::unit_conversions(&rec),
-        }),
-        text: format!("measured road {shown} ({length:.0} m at {dx} m)"),
-        per_run: json!([{
-            "road": file,
-            "measures": afsv::output::explain_nulls(json!(m), super::NO_STRUT),
-        }]),
-    };
-    Ok((m, ground))
+    let format = json!({
+        "format": "afsv record",
+        "unit_conversions": afsv::output::unit_conversions(&rec),
+    });
+    Ok((profile, format))
+}
+
+/// The two tracks of an OpenCRG file at plus and minus half the front track.
+fn crg_profile(p: &VehicleParams, file: &Path) -> Result<(TwoTrackProfile, Value), String> {
+    let shown = file.display();
+    let size = std::fs::metadata(file)
+        .map_err(|e| format!("{shown}: {e}"))?
+        .len();
+    if size > MAX_CRG_BYTES {
+        return Err(format!(
+            "{shown}: {size} bytes, more than the {MAX_CRG_BYTES} an OpenCRG road may have"
+        ));
+    }
+    let bytes = std::fs::read(file).map_err(|e| format!("{shown}: {e}"))?;
+    let half_track = 0.5 * p.front_track_m;
+    let road = terrain_psd::read_crg(&bytes, half_track).map_err(|e| format!("{shown}: {e}"))?;
+    let format = json!({
+        "format": "OpenCRG",
+        "track_offsets_m": [half_track, -half_track],
+        "start_u_m": road.start_u_m,
+        "sections_v_m": road.sections_v_m,
+    });
+    Ok((road.profile, format))
 }
