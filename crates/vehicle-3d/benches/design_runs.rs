@@ -10,12 +10,12 @@
 //! - `d1_terrain_and_cache`: synthesis of the terrain and the four tandem-cam caches, paid
 //!   once per seed.
 
-use vehicle_components::SteerInput;
 use criterion::{criterion_group, criterion_main, Criterion};
 use odeint::OdeSystem;
 use vehicle_3d::scenarios::{RideSpec, OUTPUT_DT_S};
 use vehicle_3d::{simulate, FrontAxle, Load, RunOptions, Vehicle, VehicleOptions, VehicleParams};
 use vehicle_components::FlatTerrain;
+use vehicle_components::SteerInput;
 
 fn bench(c: &mut Criterion) {
     let p = VehicleParams::nominal();

@@ -2,9 +2,9 @@
 //! yaw-plane model's pure-pursuit `PathDriver`, its record and the Fig 6.12 channels' peaks
 //! ([`crate::scenarios`] re-exports it with the design scenarios).
 
-use vehicle_components::{Course, PathDriver};
 use serde::Serialize;
 use vehicle_components::FlatTerrain;
+use vehicle_components::{Course, PathDriver};
 
 use crate::error::{measure, positive, VehicleError};
 use crate::model::FrontAxle;

@@ -21,7 +21,6 @@
 //! Every rough-terrain number is a mean and SD over seeds ([`Spread`]); variants of one study
 //! use the same seeds (common random numbers).
 
-use vehicle_components::SteerInput;
 use perf_measures::iso2631::weight_fft;
 use perf_measures::roll::{sustained_period, SustainedPeriodParams};
 use perf_measures::Weighting;
@@ -32,6 +31,7 @@ use terrain_psd::{
     TwoTrackProfile, TwoTrackSpec, TwoTrackTerrain, WelchConfig,
 };
 use vehicle_components::FlatTerrain;
+use vehicle_components::SteerInput;
 
 use crate::error::{measure, positive, VehicleError};
 use crate::model::FrontAxle;

@@ -29,12 +29,12 @@ use std::cell::RefCell;
 use std::sync::Arc;
 
 use afs_hydraulics::{AfsSystem, StrutInput};
-use vehicle_components::{Course, PathDriver, SteerInput};
 use hps_emulsion::{HpsExtensions, HpsStrut};
 use multibody::{Model, Workspace};
 use nalgebra::Vector3;
 use tire_fiala::{EnvelopeMethod, Fiala, LoadDeflectionTable, Relaxation, VerticalContact};
 use vehicle_components::Terrain;
+use vehicle_components::{Course, PathDriver, SteerInput};
 
 use crate::error::{finite, positive, rejected, VehicleError};
 use crate::model::{body, build_tree, FrontAxle, Layout, TIRE_MOUNTS};

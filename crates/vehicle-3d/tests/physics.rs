@@ -2,10 +2,10 @@
 //! tire loads, energy is conserved with every loss off, mirrored inputs give mirrored
 //! motion, and a straight run on flat ground stays straight.
 
-use vehicle_components::SteerInput;
 use odeint::OdeSystem;
 use vehicle_3d::{simulate, FrontAxle, Load, RunOptions, Vehicle, VehicleOptions, VehicleParams};
 use vehicle_components::FlatTerrain;
+use vehicle_components::SteerInput;
 
 fn flat() -> FlatTerrain {
     FlatTerrain::new(0.0, 0.8).unwrap()
