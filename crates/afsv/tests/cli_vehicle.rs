@@ -84,7 +84,10 @@ fn ride_with_the_generic_seat_reports_the_seat_and_seat_value() {
     assert_eq!(runs.len(), 2);
     for r in runs {
         let ratio = num(&r["a_wz_seat_m_s2"]) / num(&r["a_wz_floor_m_s2"]);
-        assert!((num(&r["seat"]["seat"]) - ratio).abs() < 1e-9 * ratio, "{r}");
+        assert!(
+            (num(&r["seat"]["seat"]) - ratio).abs() < 1e-9 * ratio,
+            "{r}"
+        );
     }
     let mean = num(&seat["a_wz_seat_m_s2"]["mean"]);
     let zone = &frame["hgcz"];
