@@ -3,24 +3,11 @@
 
 mod common;
 
-use common::{BlowUp, Oscillator, StiffCos};
+use common::{loglog_slope, BlowUp, Oscillator, StiffCos};
 use odeint::{
     output_grid, Atol, Control, Direction, Event, Integrator, OdeError, OdeSystem, Problem,
     SampleKind, Solver, Workspace,
 };
-
-/// Least-squares slope of log(error) against log(steps).
-fn loglog_slope(points: &[(f64, f64)]) -> f64 {
-    let n = points.len() as f64;
-    let (mx, my) = points.iter().fold((0.0, 0.0), |(a, b), (x, y)| {
-        (a + x.ln() / n, b + y.ln() / n)
-    });
-    let (sxy, sxx) = points.iter().fold((0.0, 0.0), |(a, b), (x, y)| {
-        let dx = x.ln() - mx;
-        (a + dx * (y.ln() - my), b + dx * dx)
-    });
-    sxy / sxx
-}
 
 fn final_error(integ: &Integrator) -> (f64, f64) {
     let sys = Oscillator { w: 1.0 };

@@ -4,21 +4,8 @@
 
 mod common;
 
-use common::Oscillator;
+use common::{loglog_slope, Oscillator};
 use odeint::{output_grid, Control, Integrator, OdeError, OdeSystem, Solver};
-
-/// Least-squares slope of log(error) against log(steps).
-fn loglog_slope(points: &[(f64, f64)]) -> f64 {
-    let n = points.len() as f64;
-    let (mx, my) = points.iter().fold((0.0, 0.0), |(a, b), (x, y)| {
-        (a + x.ln() / n, b + y.ln() / n)
-    });
-    let (sxy, sxx) = points.iter().fold((0.0, 0.0), |(a, b), (x, y)| {
-        let dx = x.ln() - mx;
-        (a + dx * (y.ln() - my), b + dx * dx)
-    });
-    sxy / sxx
-}
 
 /// The oscillator with the position alone as its "stiff block": the block Jacobian
 /// (∂x'/∂x = 0) leaves out the whole coupling, the case a W-method must survive at full order.
