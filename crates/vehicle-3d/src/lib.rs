@@ -16,6 +16,7 @@
 //! Model notes: `docs/vehicle-3d.md`.
 
 pub mod error;
+pub mod field;
 pub mod model;
 pub mod params;
 pub mod path_change;
@@ -29,6 +30,7 @@ pub mod vehicle;
 pub mod yaw_mode;
 
 pub use error::VehicleError;
+pub use field::{FieldEffects, SpeedSetpoint};
 pub use model::FrontAxle;
 pub use params::{DriveParams, Load, RigidPart, VehicleParams, YawInertiaForm};
 pub use simulate::{simulate, RunOptions, RunRecord};
