@@ -18,7 +18,8 @@ use afsv_dynamics::SteerInput;
 use afsv_records::Record;
 use hps_emulsion::HeatTransfer;
 use serde_json::Value;
-use std::sync::Arc;
+use std::collections::VecDeque;
+use std::sync::{Arc, Mutex};
 use terrain_psd::IsoClass;
 use vehicle_3d::scenarios::TerrainSpec;
 use vehicle_3d::{
@@ -62,7 +63,7 @@ pub const CALIBRATED: [(&str, f64, f64, &str); 5] = [
 /// Relative tolerance of the replays: the fits difference outputs over parameter steps of
 /// 1e-3, so the integrator's jitter must stay well below what such a step changes
 /// (docs/discovery.md "Integration tolerance"); the scenario default is 3e-5.
-pub const REPLAY_RTOL: f64 = 1e-6;
+pub const REPLAY_RTOL: f64 = 1e-5;
 
 /// Leading samples left out of every comparison (s): the replay starts at the static
 /// equilibrium at speed, a measured run does not.
@@ -115,6 +116,48 @@ pub struct Replay3d {
     pub condition: String,
     /// Constancy group: the run kind and the ground class.
     pub group: String,
+    /// The last replays' vehicle-side channels by their vehicle-side inputs ([`ReplayCache`]).
+    pub cache: ReplayCache,
+}
+
+/// The last [`CACHE_ENTRIES`] replays of one record, keyed by the vehicle-side inputs (the
+/// baseline vector and the model-side effects' values, bit for bit): a fit of a sensor
+/// effect (mount, misalignment) varies only what is applied after the replay, so its
+/// Jacobian columns and its line searches reuse the integration instead of repeating it.
+#[derive(Debug, Default)]
+pub struct ReplayCache(Mutex<VecDeque<(Vec<u64>, Channels)>>);
+
+/// Predicted series per entry of [`CHANNELS`].
+type Channels = Vec<Option<Vec<f64>>>;
+
+/// Replays kept per record.
+pub const CACHE_ENTRIES: usize = 12;
+
+impl Clone for ReplayCache {
+    fn clone(&self) -> Self {
+        Self::default()
+    }
+}
+
+impl ReplayCache {
+    /// The cached channels for `key`, else `run()`'s, stored.
+    fn get_or(
+        &self,
+        key: Vec<u64>,
+        run: impl FnOnce() -> Result<Channels, DiscoveryError>,
+    ) -> Result<Channels, DiscoveryError> {
+        let lock = || self.0.lock().unwrap_or_else(|e| e.into_inner());
+        if let Some((_, ch)) = lock().iter().find(|(k, _)| *k == key) {
+            return Ok(ch.clone());
+        }
+        let ch = run()?;
+        let mut c = lock();
+        if c.len() >= CACHE_ENTRIES {
+            c.pop_front();
+        }
+        c.push_back((key, ch.clone()));
+        Ok(ch)
+    }
 }
 
 impl Vehicle3dModel {
@@ -184,15 +227,15 @@ impl Vehicle3dModel {
         self.layout(rec.speed_m_s, rec.steer.clone(), rec.path_length_m, field)
     }
 
-    /// Simulate a prepared record with full parameters, field mechanisms and sensor effects:
-    /// one series per entry of [`CHANNELS`] (`None` where the kind is not compared).
+    /// Simulate a prepared record with full parameters and field mechanisms: one series per
+    /// entry of [`CHANNELS`] (`None` where the kind is not compared), before the sensor
+    /// effects ([`Self::apply_sensor`]).
     pub fn replay(
         &self,
         rec: &Replay3d,
         params: &VehicleParams,
         field: FieldEffects,
-        sensor: SensorEffects,
-    ) -> Result<Vec<Option<Vec<f64>>>, DiscoveryError> {
+    ) -> Result<Channels, DiscoveryError> {
         let v = Vehicle::on_tracks(
             params,
             rec.load,
@@ -207,7 +250,7 @@ impl Vehicle3dModel {
             ..RunOptions::default()
         };
         let out = vehicle_3d::simulate(&v, &run)?;
-        let mut ch: Vec<Option<Vec<f64>>> = CHANNELS
+        let ch: Channels = CHANNELS
             .iter()
             .enumerate()
             .map(|(i, name)| {
@@ -216,13 +259,24 @@ impl Vehicle3dModel {
                     .flatten()
             })
             .collect();
+        Ok(ch)
+    }
+
+    /// The sensor effects on replayed channels of `rec` (sampled at its spacing).
+    pub fn apply_sensor(
+        &self,
+        rec: &Replay3d,
+        gravity_m_s2: f64,
+        sensor: SensorEffects,
+        mut ch: Channels,
+    ) -> Channels {
         let (lin, ang) = ch.split_at_mut(10);
         let mut linear = [lin[7].take(), lin[8].take(), lin[9].take()];
         let mut angular = [ang[0].take(), ang[1].take(), ang[2].take()];
-        sensor.apply(rec.dt_s, params.gravity_m_s2, &mut linear, &mut angular);
+        sensor.apply(rec.dt_s, gravity_m_s2, &mut linear, &mut angular);
         [lin[7], lin[8], lin[9]] = linear;
         [ang[0], ang[1], ang[2]] = angular;
-        Ok(ch)
+        ch
     }
 
     /// The field mechanisms, the sensor effects and the lateral compliance (mm/kN) of the
@@ -533,6 +587,7 @@ impl DiscoveryModel for Vehicle3dModel {
             ),
             group,
             time_s,
+            cache: ReplayCache::default(),
         })
     }
 
@@ -554,7 +609,21 @@ impl DiscoveryModel for Vehicle3dModel {
         let (field, sensor, compliance) = self.apply_effects(prepared, effects)?;
         p.tire.lateral_relaxation_length_m +=
             compliance * 1e-6 * p.tire.cornering_stiffness_n_per_rad;
-        self.replay(prepared, &p, field, sensor)
+        // the vehicle-side inputs: the baseline and every model-side effect's values
+        let mut key: Vec<u64> = baseline.iter().map(|x| x.to_bits()).collect();
+        for e in effects {
+            key.push(e.index as u64);
+            if !matches!(
+                EFFECTS.get(e.index),
+                Some(&"mount-compliance") | Some(&"sensor-misalignment")
+            ) {
+                key.extend(e.values.iter().map(|x| x.to_bits()));
+            }
+        }
+        let ch = prepared
+            .cache
+            .get_or(key, || self.replay(prepared, &p, field))?;
+        Ok(self.apply_sensor(prepared, p.gravity_m_s2, sensor, ch))
     }
 
     fn phases(&self, record: &Record) -> Vec<Phase> {

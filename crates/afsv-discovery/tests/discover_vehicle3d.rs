@@ -60,6 +60,11 @@ fn the_replay_reproduces_records_of_its_own_model() {
     }
 }
 
+/// Ride records and V3 path changes in each of the training and held-out sets.
+const RIDES: usize = 3;
+/// See [`RIDES`].
+const CHANGES: usize = 1;
+
 fn run(
     axle: FrontAxle,
     hidden: Hidden,
@@ -85,7 +90,7 @@ fn run(
         &[],
         &[],
         &DiscoveryOptions::default(),
-        &(),
+        &Elapsed(t0),
     )
     .unwrap();
     let secs = t0.elapsed().as_secs_f64();
@@ -97,6 +102,15 @@ fn run(
         summary(&d)
     );
     (d, secs)
+}
+
+/// Prints each finished fit with the time since the start.
+struct Elapsed(std::time::Instant);
+
+impl afsv_discovery::Progress for Elapsed {
+    fn fit_done(&self, what: &str) {
+        eprintln!("{:7.1} s  {what}", self.0.elapsed().as_secs_f64());
+    }
 }
 
 fn first_named(d: &Discovery, effect: &str) {
@@ -111,7 +125,7 @@ fn first_named(d: &Discovery, effect: &str) {
 #[test]
 #[ignore]
 fn variant_records_without_a_hidden_effect_name_nothing() {
-    let (d, _) = run(FrontAxle::Rigid, Hidden::None, 4, 2, 11);
+    let (d, _) = run(FrontAxle::Rigid, Hidden::None, RIDES, CHANGES, 11);
     assert!(d.named.is_empty(), "{}", summary(&d));
     assert!(!matches!(d.outcome, Outcome::Named { .. }));
 }
@@ -119,14 +133,26 @@ fn variant_records_without_a_hidden_effect_name_nothing() {
 #[test]
 #[ignore]
 fn hidden_tire_lateral_compliance_is_named_first() {
-    let (d, _) = run(FrontAxle::Rigid, Hidden::TireCompliance(2.0), 4, 2, 12);
+    let (d, _) = run(
+        FrontAxle::Rigid,
+        Hidden::TireCompliance(2.0),
+        RIDES,
+        CHANGES,
+        12,
+    );
     first_named(&d, "tire-lateral-compliance");
 }
 
 #[test]
 #[ignore]
 fn hidden_mount_compliance_is_named_first() {
-    let (d, _) = run(FrontAxle::Rigid, Hidden::Mount(0.12, 0.15), 4, 2, 13);
+    let (d, _) = run(
+        FrontAxle::Rigid,
+        Hidden::Mount(0.12, 0.15),
+        RIDES,
+        CHANGES,
+        13,
+    );
     first_named(&d, "mount-compliance");
 }
 
@@ -139,8 +165,8 @@ fn hidden_driver_throttle_is_named_first() {
             amp: 0.6,
             period: 4.0,
         },
-        4,
-        2,
+        RIDES,
+        CHANGES,
         14,
     );
     first_named(&d, "driver-throttle");
@@ -152,8 +178,8 @@ fn hidden_sensor_misalignment_is_named_first() {
     let (d, _) = run(
         FrontAxle::Rigid,
         Hidden::Misalignment([1.5, -2.0, 1.0]),
-        4,
-        2,
+        RIDES,
+        CHANGES,
         15,
     );
     first_named(&d, "sensor-misalignment");
@@ -162,7 +188,13 @@ fn hidden_sensor_misalignment_is_named_first() {
 #[test]
 #[ignore]
 fn hidden_hps_gas_temperature_is_named_first() {
-    let (d, _) = run(FrontAxle::Suspended, Hidden::GasHeat(1.0), 4, 2, 16);
+    let (d, _) = run(
+        FrontAxle::Suspended,
+        Hidden::GasHeat(1.0),
+        RIDES,
+        CHANGES,
+        16,
+    );
     first_named(&d, "hps-gas-temperature");
 }
 
@@ -172,4 +204,31 @@ fn twenty_ride_records() {
     let (d, secs) = run(FrontAxle::Rigid, Hidden::Mount(0.12, 0.15), 10, 0, 17);
     println!("20 ride records: {secs:.1} s");
     first_named(&d, "mount-compliance");
+}
+
+#[test]
+#[ignore]
+fn replay_cost() {
+    let set = runs(2, 1, 3);
+    let p = VehicleParams::nominal();
+    let recs: Vec<Record> = set
+        .iter()
+        .enumerate()
+        .map(|(i, r)| vehicle3d::record(FrontAxle::Rigid, &p, r, Hidden::None, 0.03, i as u64))
+        .collect();
+    for rtol in [3e-5, 1e-5, 1e-6] {
+        let mut model = Vehicle3dModel::nominal(FrontAxle::Rigid);
+        model.rtol = rtol;
+        let nominal: Vec<f64> = model.baseline_params().iter().map(|p| p.initial).collect();
+        for r in &recs {
+            let prep = model.prepare(r).unwrap();
+            let t0 = std::time::Instant::now();
+            model.simulate(&prep, &nominal, &[]).unwrap();
+            println!(
+                "rtol {rtol:e} {}: {:.1} ms",
+                prep.condition,
+                t0.elapsed().as_secs_f64() * 1e3
+            );
+        }
+    }
 }
