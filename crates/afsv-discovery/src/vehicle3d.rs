@@ -280,9 +280,10 @@ impl Vehicle3dModel {
     }
 
     /// The field mechanisms, the sensor effects and the lateral compliance (mm/kN) of the
-    /// active effects on `rec`.
+    /// active effects on `rec` replayed with `params`.
     pub fn apply_effects(
         &self,
+        params: &VehicleParams,
         rec: &Replay3d,
         effects: &[ActiveEffect<'_>],
     ) -> Result<(FieldEffects, SensorEffects, f64), DiscoveryError> {
@@ -294,12 +295,7 @@ impl Vehicle3dModel {
                 Some("tire-lateral-compliance") => compliance = v[0],
                 Some("mount-compliance") => sensor.mount = Some((v[0], v[1])),
                 Some("driver-throttle") => {
-                    let (s, rate) = &rec.speed_smooth;
-                    let set = s
-                        .iter()
-                        .zip(rate)
-                        .map(|(s, r)| rec.speed_m_s + v[0] * (s - rec.speed_m_s + v[1] * r))
-                        .collect();
+                    let set = throttle_setpoint(params, rec, v[0]);
                     field.speed_setpoint = Some(SpeedSetpoint::new(rec.time_s.clone(), set)?);
                 }
                 Some("sensor-misalignment") => sensor.misalignment = Some([v[0], v[1], v[2]]),
@@ -319,6 +315,39 @@ impl Vehicle3dModel {
         }
         Ok((field, sensor, compliance))
     }
+}
+
+/// The drive's setpoint under which `params`' PI drive reproduces the recorded speed of
+/// `rec`, scaled by `gain` about the mean: with the lumped longitudinal inertia per wheel
+/// torque `M = (m + 4 J / r^2) r / 4` (m the vehicle's mass, J the wheel spin inertia, r
+/// the unloaded radius), the drive law `kp e + ki E = M (dv/dt - dv/dt(0))` (E the
+/// integral of the speed error e) is solved for e along the smoothed recorded speed v,
+/// and `v_set = v_mean + gain (v - v_mean + e)`. Rolling resistance, tire slip and
+/// grade are left to the PI loop.
+pub fn throttle_setpoint(params: &VehicleParams, rec: &Replay3d, gain: f64) -> Vec<f64> {
+    let mass = params.front_unit.mass_kg
+        + params
+            .rear_parts(rec.load)
+            .iter()
+            .map(|p| p.mass_kg)
+            .sum::<f64>();
+    let r = params.tire.unloaded_radius_m;
+    let inertia = (mass + 4.0 * params.wheel_spin_inertia_kg_m2 / (r * r)) * r / 4.0;
+    let (kp, ki) = (params.drive.kp_n_m_per_m_s, params.drive.ki_n_m_per_m);
+    let (s, rate) = &rec.speed_smooth;
+    let a0 = rate.first().copied().unwrap_or(0.0);
+    // kp dE/dt + ki E = u, exactly over each sample for u held (E(0) = 0)
+    let decay = (-ki / kp * rec.dt_s).exp();
+    let mut big_e = 0.0;
+    s.iter()
+        .zip(rate)
+        .map(|(v, a)| {
+            let u = inertia * (a - a0);
+            let e = (u - ki * big_e) / kp;
+            big_e = u / ki + (big_e - u / ki) * decay;
+            rec.speed_m_s + gain * (v - rec.speed_m_s + e)
+        })
+        .collect()
 }
 
 /// Set registry path `name` of `p` (a `tire.` or `hps.` prefix addresses the nested set).
@@ -606,7 +635,7 @@ impl DiscoveryModel for Vehicle3dModel {
         effects: &[ActiveEffect<'_>],
     ) -> Result<Vec<Option<Vec<f64>>>, DiscoveryError> {
         let mut p = self.apply_baseline(baseline)?;
-        let (field, sensor, compliance) = self.apply_effects(prepared, effects)?;
+        let (field, sensor, compliance) = self.apply_effects(&p, prepared, effects)?;
         p.tire.lateral_relaxation_length_m +=
             compliance * 1e-6 * p.tire.cornering_stiffness_n_per_rad;
         // the vehicle-side inputs: the baseline and every model-side effect's values

@@ -51,12 +51,9 @@ pub fn catalogue(hps: bool) -> Vec<EffectSpec> {
         },
         EffectSpec {
             name: EFFECTS[2].into(),
-            description: "the driver's throttle moves the speed: the drive's setpoint follows the recorded speed, led by a time constant that undoes the PI loop's lag, v_set = v_mean + g (v - v_mean + tau dv/dt), where the paper's drive holds one speed".into(),
+            description: "the driver's throttle moves the speed: the drive's setpoint is the one under which the PI drive reproduces the recorded speed (its swing about the mean scaled by a gain), where the paper's drive holds one speed".into(),
             citation: "section 6.3 (longitudinal excitation by the driver's throttle in the field runs)".into(),
-            params: vec![
-                ParamSpec::new("gain", 1.0, 0.0, 1.5),
-                ParamSpec::new("lead_s", 1.0, 0.0, 5.0),
-            ],
+            params: vec![ParamSpec::new("gain", 1.0, 0.0, 2.0)],
         },
         EffectSpec {
             name: EFFECTS[3].into(),
