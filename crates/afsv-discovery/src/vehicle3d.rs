@@ -65,6 +65,12 @@ pub const CALIBRATED: [(&str, f64, f64, &str); 5] = [
 /// (docs/discovery.md "Integration tolerance"); the scenario default is 3e-5.
 pub const REPLAY_RTOL: f64 = 1e-5;
 
+/// Half width of the moving average of the recorded speed that `driver-throttle` follows
+/// (s): a driver's throttle moves the speed over seconds; the faster fluctuations are the
+/// terrain's, which the replay produces itself (followed at +-0.25 s, the effect fed them
+/// in twice and made class E rides worse).
+pub const THROTTLE_SMOOTH_S: f64 = 0.5;
+
 /// Leading samples left out of every comparison (s): the replay starts at the static
 /// equilibrium at speed, a measured run does not.
 pub const SKIP_S: f64 = 0.5;
@@ -110,7 +116,8 @@ pub struct Replay3d {
     pub time_s: Vec<f64>,
     /// Sample spacing (s).
     pub dt_s: f64,
-    /// Recorded speed smoothed over +-0.25 s and its rate (for `driver-throttle`).
+    /// Recorded speed smoothed over +-[`THROTTLE_SMOOTH_S`] and its rate (for
+    /// `driver-throttle`).
     pub speed_smooth: (Vec<f64>, Vec<f64>),
     /// Conditions in words and the constancy-test group.
     pub condition: String,
@@ -322,8 +329,9 @@ impl Vehicle3dModel {
 /// torque `M = (m + 4 J / r^2) r / 4` (m the vehicle's mass, J the wheel spin inertia, r
 /// the unloaded radius), the drive law `kp e + ki E = M (dv/dt - dv/dt(0))` (E the
 /// integral of the speed error e) is solved for e along the smoothed recorded speed v,
-/// and `v_set = v_mean + gain (v - v_mean + e)`. Rolling resistance, tire slip and
-/// grade are left to the PI loop.
+/// and `v_set = v_mean + gain (v - v_mean + e)`. The tires' slip lag between torque and
+/// force, rolling resistance and grade are left to the PI loop (asking for the
+/// acceleration one longitudinal relaxation length ahead made the replay worse).
 pub fn throttle_setpoint(params: &VehicleParams, rec: &Replay3d, gain: f64) -> Vec<f64> {
     let mass = params.front_unit.mass_kg
         + params
@@ -609,7 +617,11 @@ impl DiscoveryModel for Vehicle3dModel {
             path_length_m,
             tracks,
             dt_s,
-            speed_smooth: smooth_with_rate(speed_col, (0.25 / dt_s).round() as usize, dt_s),
+            speed_smooth: smooth_with_rate(
+                speed_col,
+                (THROTTLE_SMOOTH_S / dt_s).round() as usize,
+                dt_s,
+            ),
             condition: format!(
                 "{load}, {kind_name}, {:.1} km/h, {ground_name}",
                 speed_m_s * 3.6
