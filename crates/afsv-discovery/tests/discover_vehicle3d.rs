@@ -8,6 +8,7 @@
 //! | `hidden_<effect>_is_named_first` (ignored) | each catalogue effect hidden in variant records is named first, with the held-out gap shrink and the wall time printed | `cargo test --release -p afsv-discovery --test discover_vehicle3d -- --ignored --nocapture` |
 //! | `variant_records_without_a_hidden_effect_name_nothing` (ignored) | the null set: nothing named | same |
 //! | `twenty_ride_records` (ignored) | the timing case: one discovery on 10 + 10 ride records | same |
+//! | `replay_cost` (ignored) | prints one replay's wall time at three tolerances | same |
 
 mod common;
 mod vehicle3d;
