@@ -694,3 +694,45 @@ impl DiscoveryModel for Vehicle3dModel {
         }
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_calibration_set_is_named_by_the_registries() {
+        for axle in [FrontAxle::Rigid, FrontAxle::Suspended] {
+            let m = Vehicle3dModel::nominal(axle);
+            let specs = m.baseline_params();
+            assert_eq!(specs.len(), m.calibrated().len());
+            for s in &specs {
+                assert!(s.lower <= s.initial && s.initial <= s.upper, "{}", s.name);
+            }
+            let v: Vec<f64> = specs.iter().map(|s| s.initial).collect();
+            assert_eq!(m.apply_baseline(&v).unwrap(), m.params);
+            let mut w = v.clone();
+            w[0] = 1.3;
+            w[3] = 0.7;
+            let p = m.apply_baseline(&w).unwrap();
+            assert_eq!(p.joint_height_m, 1.3);
+            assert_eq!(p.tire.longitudinal_relaxation_length_m, 0.7);
+            assert!(m.apply_baseline(&v[1..]).is_err());
+        }
+        let mut p = VehicleParams::nominal();
+        assign(&mut p, "hps.friction.f_c", 800.0).unwrap();
+        assert_eq!(value(&p, "hps.friction.f_c").unwrap(), 800.0);
+        assert!(assign(&mut p, "tire.no_such", 1.0).is_err());
+    }
+
+    #[test]
+    fn a_record_of_the_other_front_axle_or_without_a_load_is_refused() {
+        let mut r = Record::new();
+        r.push_column("time_s", vec![0.0, 0.01, 0.02]).unwrap();
+        r.push_column("speed_m_s", vec![5.0; 3]).unwrap();
+        let m = Vehicle3dModel::nominal(FrontAxle::Rigid);
+        assert!(matches!(m.prepare(&r), Err(DiscoveryError::NoLoad)));
+        r.meta = serde_json::json!({"load": "loaded", "front_axle": "suspended"});
+        let e = m.prepare(&r).unwrap_err().to_string();
+        assert!(e.contains("front_axle"), "{e}");
+    }
+}
