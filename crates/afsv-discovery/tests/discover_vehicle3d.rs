@@ -7,6 +7,7 @@
 //! | `the_replay_reproduces_records_of_its_own_model` | the adapter rebuilds each record's conditions (ground from the sidecar, layout, speed, steering) so that a record of the nominal model replays at the nominal parameters within the integrator's and the open-loop replay's error | CI, a few seconds |
 //! | `hidden_<effect>_is_named_first` (ignored) | each catalogue effect hidden in variant records is named first, with the held-out gap shrink and the wall time printed | `cargo test --release -p afsv-discovery --test discover_vehicle3d -- --ignored --nocapture` |
 //! | `variant_records_without_a_hidden_effect_name_nothing` (ignored) | the null set: nothing named | same |
+//! | `variant_ride_records_without_a_hidden_effect_name_nothing` (ignored) | the same on 5 + 5 ride records only | same |
 //! | `twenty_ride_records` (ignored) | the timing case: one discovery on 10 + 10 ride records | same |
 //! | `replay_cost` (ignored) | prints one replay's wall time at three tolerances | same |
 
@@ -232,4 +233,12 @@ fn replay_cost() {
             );
         }
     }
+}
+
+#[test]
+#[ignore]
+fn variant_ride_records_without_a_hidden_effect_name_nothing() {
+    let (d, _) = run(FrontAxle::Rigid, Hidden::None, 5, 0, 18);
+    assert!(d.named.is_empty(), "{}", summary(&d));
+    assert!(!matches!(d.outcome, Outcome::Named { .. }));
 }
