@@ -115,6 +115,17 @@ pub enum DiscoveryError {
     /// The vehicle model refused its parameters or failed to simulate.
     #[error(transparent)]
     Vehicle(#[from] afsv_dynamics::DynError),
+    /// The 3-D vehicle refused its parameters or failed to simulate.
+    #[error(transparent)]
+    Vehicle3d(#[from] vehicle_3d::VehicleError),
+    /// A sidecar field the model needs is malformed or contradicts the model.
+    #[error("sidecar field `{field}`: {reason}")]
+    Sidecar {
+        /// The field.
+        field: &'static str,
+        /// What is wrong.
+        reason: String,
+    },
     /// A calibrated parameter's name is not in its model's registry.
     #[error(transparent)]
     Param(#[from] vehicle_components::ParamError),

@@ -55,6 +55,8 @@ pub mod report;
 pub mod signature;
 pub mod stats;
 pub mod synth;
+pub mod vehicle3d;
+pub mod vehicle3d_effects;
 pub mod yaw;
 
 pub use engine::{

@@ -19,6 +19,7 @@
 
 pub mod cab_ride;
 pub mod error;
+pub mod field;
 pub mod model;
 pub mod params;
 pub mod path_change;
@@ -33,6 +34,7 @@ pub mod vehicle;
 pub mod yaw_mode;
 
 pub use error::VehicleError;
+pub use field::{FieldEffects, SpeedSetpoint};
 pub use model::FrontAxle;
 pub use params::{DriveParams, Load, RigidPart, VehicleParams, YawInertiaForm};
 pub use simulate::{simulate, RunOptions, RunRecord};

@@ -29,7 +29,7 @@ use std::cell::RefCell;
 use std::sync::Arc;
 
 use afs_hydraulics::{AfsSystem, StrutInput};
-use hps_emulsion::{HpsExtensions, HpsStrut};
+use hps_emulsion::HpsStrut;
 use multibody::{Model, Workspace};
 use nalgebra::Vector3;
 use tire_fiala::{EnvelopeMethod, Fiala, LoadDeflectionTable, Relaxation, VerticalContact};
@@ -119,6 +119,9 @@ pub struct VehicleOptions {
     /// change course only (the steady turn's lap bookkeeping needs an unwrapped heading,
     /// which the floating base does not carry).
     pub driver: Option<PathDriver>,
+    /// Mechanisms the paper's model lacks (a speed setpoint over time, the HPS strut
+    /// extensions): off by default ([`crate::field`]).
+    pub field: crate::field::FieldEffects,
 }
 
 impl Default for VehicleOptions {
@@ -134,6 +137,7 @@ impl Default for VehicleOptions {
             envelope: EnvelopeMethod::TandemCams,
             lock_rear_roll: false,
             driver: None,
+            field: crate::field::FieldEffects::default(),
         }
     }
 }
@@ -302,7 +306,7 @@ impl Vehicle {
         let (hps, hps_static_m) = match options.front_axle {
             FrontAxle::Rigid => (None, 0.0),
             FrontAxle::Suspended => {
-                let strut = HpsStrut::new(&params.hps, &HpsExtensions::default())?;
+                let strut = HpsStrut::new(&params.hps, &options.field.hps)?;
                 let z = strut_static_deflection(&strut, statics.front_strut_force_n(params))?;
                 (Some(strut), z)
             }
@@ -630,7 +634,7 @@ impl Vehicle {
             snap.tires[i] = out.contact;
         }
         let d = &self.params.drive;
-        let error = self.options.speed_m_s - speed;
+        let error = self.options.field.target_speed(t, self.options.speed_m_s) - speed;
         let torque =
             (self.rolling_torque_n_m + d.kp_n_m_per_m_s * error + d.ki_n_m_per_m * y[o.pi])
                 .clamp(-d.max_torque_n_m, d.max_torque_n_m);

@@ -1,0 +1,738 @@
+//! The integrated 3-D vehicle of Chapter 6 (crate `vehicle-3d`) as a [`DiscoveryModel`]:
+//! ride runs with the 6-axis sensor (the D1 set-up, straight on two-track class C or E
+//! ground) and the V3 path change (steering, articulation, strut, pressure and yaw-rate
+//! channels), in the afsv-v1 records `afsv vehicle simulate -o` and `afsv vehicle
+//! path-change -o` write (docs/records.md, docs/vehicle-3d.md).
+//!
+//! Baseline: the paper's 3-D model as those commands run it. Each record is replayed on its
+//! own conditions: the load and front axle of its sidecar, the terrain its sidecar names
+//! (class, coherence, band and seed: the same road, rebuilt), its speed, and for a path
+//! change its recorded steering-wheel angle (open loop: the replay does not re-drive the
+//! course). Calibrated: parameters the paper leaves unstated for the 3-D vehicle
+//! ([`CALIBRATED`], named by the vehicle-3d registry and the tire and strut registries).
+//! The catalogue ([`crate::vehicle3d_effects`]) holds section 6.3's suspects.
+
+use super::{ActiveEffect, DiscoveryError, DiscoveryModel, EffectSpec, ParamSpec, Phase};
+use crate::vehicle3d_effects::{catalogue, SensorEffects, ANGULAR_AXES, EFFECTS, LINEAR_AXES};
+use afsv_dynamics::SteerInput;
+use afsv_records::Record;
+use hps_emulsion::HeatTransfer;
+use serde_json::Value;
+use std::collections::VecDeque;
+use std::sync::{Arc, Mutex};
+use terrain_psd::IsoClass;
+use vehicle_3d::scenarios::TerrainSpec;
+use vehicle_3d::{
+    FieldEffects, FrontAxle, Load, RunOptions, RunRecord, SpeedSetpoint, TireTracks, Vehicle,
+    VehicleOptions, VehicleParams,
+};
+use vehicle_components::{FlatTerrain, ParamSet};
+
+/// Channels the 3-D model predicts (afsv-v1 names). Ride records are compared on the speed
+/// and the six sensor axes; path changes also on the steering channels.
+pub const CHANNELS: [&str; 13] = [
+    "speed_m_s",
+    "articulation_deg",
+    "strut_left_disp_m",
+    "p_c_pa",
+    "p_r_pa",
+    "yaw_rate_front_deg_s",
+    "front_lateral_accel_m_s2",
+    LINEAR_AXES[0],
+    LINEAR_AXES[1],
+    LINEAR_AXES[2],
+    ANGULAR_AXES[0],
+    ANGULAR_AXES[1],
+    ANGULAR_AXES[2],
+];
+
+/// Channels of [`CHANNELS`] compared on ride records only: the speed and the six axes.
+const RIDE_CHANNELS: usize = 0b1_1111_1000_0001;
+
+/// The calibrated parameters: registry paths (`tire.` and `hps.` prefix the tire's and the
+/// strut's own registries), each one's calibration window and why it is uncertain. The
+/// last one only with the front-axle HPS.
+pub const CALIBRATED: [(&str, f64, f64, &str); 5] = [
+    ("joint_height_m", 0.6, 1.6, "not in Table 6.1; 1.0 m assumed (docs/vehicle-3d.md)"),
+    ("drive.kp_n_m_per_m_s", 3_000.0, 27_000.0, "the PI speed gains are not given; 9 kN m/(m/s) assumed"),
+    ("tire.vertical_damping_n_s_per_m", 1.0e4, 1.0e5, "Table 6.2 gives no tire damping; 35 kN s/m assumed"),
+    ("tire.longitudinal_relaxation_length_m", 0.3, 3.0, "only the lateral relaxation length is stated (1.2 m); the longitudinal one is assumed equal"),
+    ("hps.friction.f_c", 0.0, 5_000.0, "Table 5.1's friction constants are missing (HPS only)"),
+];
+
+/// Relative tolerance of the replays: the fits difference outputs over parameter steps of
+/// 1e-3, so the integrator's jitter must stay well below what such a step changes
+/// (docs/discovery.md "Integration tolerance"); the scenario default is 3e-5.
+pub const REPLAY_RTOL: f64 = 1e-5;
+
+/// Half width of the moving average of the recorded speed that `driver-throttle` follows
+/// (s): a driver's throttle moves the speed over seconds; the faster fluctuations are the
+/// terrain's, which the replay produces itself (followed at +-0.25 s, the effect fed them
+/// in twice and made class E rides worse).
+pub const THROTTLE_SMOOTH_S: f64 = 0.5;
+
+/// Leading samples left out of every comparison (s): the replay starts at the static
+/// equilibrium at speed, a measured run does not.
+pub const SKIP_S: f64 = 0.5;
+
+/// The 3-D vehicle for the discovery workflow.
+#[derive(Debug, Clone)]
+pub struct Vehicle3dModel {
+    /// Reference parameters (Table 6.1 and the documented assumptions).
+    pub params: VehicleParams,
+    /// Front axle of every record (a record whose sidecar names the other one is refused).
+    pub front_axle: FrontAxle,
+    /// Load of records whose sidecar states none.
+    pub default_load: Option<Load>,
+    /// Relative tolerance of the replays.
+    pub rtol: f64,
+}
+
+/// What a record is.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum RunKind {
+    /// Straight run on the record's ground.
+    Ride,
+    /// The V3 path change, replayed with its recorded steering-wheel angle.
+    PathChange,
+}
+
+/// A record prepared for replay.
+#[derive(Debug, Clone)]
+pub struct Replay3d {
+    /// Ride or path change.
+    pub kind: RunKind,
+    /// Load case.
+    pub load: Load,
+    /// The drive's setpoint (m/s): the sidecar's target speed, else the mean of the record.
+    pub speed_m_s: f64,
+    /// Steering-wheel input (path change), `SteerInput::None` for a ride.
+    pub steer: SteerInput,
+    /// Path length of the run (m), as the commands lay it out.
+    pub path_length_m: f64,
+    /// The enveloping cache of the record's ground.
+    pub tracks: Arc<TireTracks>,
+    /// Samples (from 0) and spacing (s).
+    pub time_s: Vec<f64>,
+    /// Sample spacing (s).
+    pub dt_s: f64,
+    /// Recorded speed smoothed over +-[`THROTTLE_SMOOTH_S`] and its rate (for
+    /// `driver-throttle`).
+    pub speed_smooth: (Vec<f64>, Vec<f64>),
+    /// Conditions in words and the constancy-test group.
+    pub condition: String,
+    /// Constancy group: the run kind and the ground class.
+    pub group: String,
+    /// The last replays' vehicle-side channels by their vehicle-side inputs ([`ReplayCache`]).
+    pub cache: ReplayCache,
+}
+
+/// The last [`CACHE_ENTRIES`] replays of one record, keyed by the vehicle-side inputs (the
+/// baseline vector and the model-side effects' values, bit for bit): a fit of a sensor
+/// effect (mount, misalignment) varies only what is applied after the replay, so its
+/// Jacobian columns and its line searches reuse the integration instead of repeating it.
+#[derive(Debug, Default)]
+pub struct ReplayCache(Mutex<VecDeque<(Vec<u64>, Channels)>>);
+
+/// Predicted series per entry of [`CHANNELS`].
+type Channels = Vec<Option<Vec<f64>>>;
+
+/// Replays kept per record.
+pub const CACHE_ENTRIES: usize = 12;
+
+impl Clone for ReplayCache {
+    fn clone(&self) -> Self {
+        Self::default()
+    }
+}
+
+impl ReplayCache {
+    /// The cached channels for `key`, else `run()`'s, stored.
+    fn get_or(
+        &self,
+        key: Vec<u64>,
+        run: impl FnOnce() -> Result<Channels, DiscoveryError>,
+    ) -> Result<Channels, DiscoveryError> {
+        let lock = || self.0.lock().unwrap_or_else(|e| e.into_inner());
+        if let Some((_, ch)) = lock().iter().find(|(k, _)| *k == key) {
+            return Ok(ch.clone());
+        }
+        let ch = run()?;
+        let mut c = lock();
+        if c.len() >= CACHE_ENTRIES {
+            c.pop_front();
+        }
+        c.push_back((key, ch.clone()));
+        Ok(ch)
+    }
+}
+
+impl Vehicle3dModel {
+    /// The paper's vehicle with a rigid front axle (the prototype) or the front-axle HPS.
+    pub fn nominal(front_axle: FrontAxle) -> Self {
+        Self {
+            params: VehicleParams::nominal(),
+            front_axle,
+            default_load: None,
+            rtol: REPLAY_RTOL,
+        }
+    }
+
+    /// `vehicle-3d` (rigid front axle) or `vehicle-3d-hps`.
+    pub fn model_name(&self) -> &'static str {
+        match self.front_axle {
+            FrontAxle::Rigid => "vehicle-3d",
+            FrontAxle::Suspended => "vehicle-3d-hps",
+        }
+    }
+
+    /// The entries of [`CALIBRATED`] this model calibrates.
+    fn calibrated(&self) -> &'static [(&'static str, f64, f64, &'static str)] {
+        match self.front_axle {
+            FrontAxle::Rigid => &CALIBRATED[..4],
+            FrontAxle::Suspended => &CALIBRATED[..],
+        }
+    }
+
+    /// `params` with the baseline vector applied by registry path.
+    pub fn apply_baseline(&self, v: &[f64]) -> Result<VehicleParams, DiscoveryError> {
+        let names = self.calibrated();
+        if v.len() != names.len() {
+            return Err(DiscoveryError::BaselineLength {
+                expected: names.len(),
+                got: v.len(),
+            });
+        }
+        let mut p = self.params.clone();
+        for (&(name, ..), &x) in names.iter().zip(v) {
+            assign(&mut p, name, x)?;
+        }
+        Ok(p)
+    }
+
+    /// The vehicle options of a run, laid out as `afsv vehicle simulate` and `path-change`
+    /// do (start at 10 m, path `speed * duration + 5 m`), with the field mechanisms `field`.
+    pub fn layout(
+        &self,
+        speed_m_s: f64,
+        steer: SteerInput,
+        path_length_m: f64,
+        field: FieldEffects,
+    ) -> VehicleOptions {
+        VehicleOptions {
+            front_axle: self.front_axle,
+            speed_m_s,
+            steer,
+            path_length_m,
+            field,
+            ..VehicleOptions::default()
+        }
+    }
+
+    /// The vehicle options of a prepared record's run ([`Self::layout`]).
+    pub fn options(&self, rec: &Replay3d, field: FieldEffects) -> VehicleOptions {
+        self.layout(rec.speed_m_s, rec.steer.clone(), rec.path_length_m, field)
+    }
+
+    /// Simulate a prepared record with full parameters and field mechanisms: one series per
+    /// entry of [`CHANNELS`] (`None` where the kind is not compared), before the sensor
+    /// effects ([`Self::apply_sensor`]).
+    pub fn replay(
+        &self,
+        rec: &Replay3d,
+        params: &VehicleParams,
+        field: FieldEffects,
+    ) -> Result<Channels, DiscoveryError> {
+        let v = Vehicle::on_tracks(
+            params,
+            rec.load,
+            self.options(rec, field),
+            rec.tracks.clone(),
+        )?;
+        let n = rec.time_s.len();
+        let run = RunOptions {
+            t_end_s: (n as f64 - 0.75) * rec.dt_s,
+            output_dt_s: rec.dt_s,
+            rtol: self.rtol,
+            ..RunOptions::default()
+        };
+        let out = vehicle_3d::simulate(&v, &run)?;
+        let ch: Channels = CHANNELS
+            .iter()
+            .enumerate()
+            .map(|(i, name)| {
+                (rec.kind == RunKind::PathChange || RIDE_CHANNELS & (1 << i) != 0)
+                    .then(|| channel(&out, name))
+                    .flatten()
+            })
+            .collect();
+        Ok(ch)
+    }
+
+    /// The sensor effects on replayed channels of `rec` (sampled at its spacing).
+    pub fn apply_sensor(
+        &self,
+        rec: &Replay3d,
+        gravity_m_s2: f64,
+        sensor: SensorEffects,
+        mut ch: Channels,
+    ) -> Channels {
+        let (lin, ang) = ch.split_at_mut(10);
+        let mut linear = [lin[7].take(), lin[8].take(), lin[9].take()];
+        let mut angular = [ang[0].take(), ang[1].take(), ang[2].take()];
+        sensor.apply(rec.dt_s, gravity_m_s2, &mut linear, &mut angular);
+        [lin[7], lin[8], lin[9]] = linear;
+        [ang[0], ang[1], ang[2]] = angular;
+        ch
+    }
+
+    /// The field mechanisms, the sensor effects and the lateral compliance (mm/kN) of the
+    /// active effects on `rec` replayed with `params`.
+    pub fn apply_effects(
+        &self,
+        params: &VehicleParams,
+        rec: &Replay3d,
+        effects: &[ActiveEffect<'_>],
+    ) -> Result<(FieldEffects, SensorEffects, f64), DiscoveryError> {
+        let (mut field, mut sensor, mut compliance) =
+            (FieldEffects::default(), SensorEffects::default(), 0.0);
+        for e in effects {
+            let v = e.values;
+            match EFFECTS.get(e.index).copied() {
+                Some("tire-lateral-compliance") => compliance = v[0],
+                Some("mount-compliance") => sensor.mount = Some((v[0], v[1])),
+                Some("driver-throttle") => {
+                    let set = throttle_setpoint(params, rec, v[0]);
+                    field.speed_setpoint = Some(SpeedSetpoint::new(rec.time_s.clone(), set)?);
+                }
+                Some("sensor-misalignment") => sensor.misalignment = Some([v[0], v[1], v[2]]),
+                Some("hps-gas-temperature") => {
+                    field.hps.heat_transfer = Some(HeatTransfer {
+                        tau: v[0],
+                        kappa: 1.4,
+                    })
+                }
+                _ => {
+                    return Err(DiscoveryError::NoSuchEffect {
+                        index: e.index,
+                        model: self.model_name(),
+                    })
+                }
+            }
+        }
+        Ok((field, sensor, compliance))
+    }
+}
+
+/// The drive's setpoint under which `params`' PI drive reproduces the recorded speed of
+/// `rec`, scaled by `gain` about the mean: with the lumped longitudinal inertia per wheel
+/// torque `M = (m + 4 J / r^2) r / 4` (m the vehicle's mass, J the wheel spin inertia, r
+/// the unloaded radius), the drive law `kp e + ki E = M (dv/dt - dv/dt(0))` (E the
+/// integral of the speed error e) is solved for e along the smoothed recorded speed v,
+/// and `v_set = v_mean + gain (v - v_mean + e)`. The tires' slip lag between torque and
+/// force, rolling resistance and grade are left to the PI loop (asking for the
+/// acceleration one longitudinal relaxation length ahead made the replay worse).
+pub fn throttle_setpoint(params: &VehicleParams, rec: &Replay3d, gain: f64) -> Vec<f64> {
+    let mass = params.front_unit.mass_kg
+        + params
+            .rear_parts(rec.load)
+            .iter()
+            .map(|p| p.mass_kg)
+            .sum::<f64>();
+    let r = params.tire.unloaded_radius_m;
+    let inertia = (mass + 4.0 * params.wheel_spin_inertia_kg_m2 / (r * r)) * r / 4.0;
+    let (kp, ki) = (params.drive.kp_n_m_per_m_s, params.drive.ki_n_m_per_m);
+    let (s, rate) = &rec.speed_smooth;
+    let a0 = rate.first().copied().unwrap_or(0.0);
+    // kp dE/dt + ki E = u, exactly over each sample for u held (E(0) = 0)
+    let decay = (-ki / kp * rec.dt_s).exp();
+    let mut big_e = 0.0;
+    s.iter()
+        .zip(rate)
+        .map(|(v, a)| {
+            let u = inertia * (a - a0);
+            let e = (u - ki * big_e) / kp;
+            big_e = u / ki + (big_e - u / ki) * decay;
+            rec.speed_m_s + gain * (v - rec.speed_m_s + e)
+        })
+        .collect()
+}
+
+/// Set registry path `name` of `p` (a `tire.` or `hps.` prefix addresses the nested set).
+pub fn assign(p: &mut VehicleParams, name: &str, x: f64) -> Result<(), DiscoveryError> {
+    let set: &mut dyn ParamSet = if name.starts_with("tire.") {
+        &mut p.tire
+    } else if name.starts_with("hps.") {
+        &mut p.hps
+    } else {
+        p
+    };
+    let short = name
+        .strip_prefix("tire.")
+        .or_else(|| name.strip_prefix("hps."))
+        .unwrap_or(name);
+    let (i, _) = set.find(short)?;
+    set.assign(i, x);
+    Ok(())
+}
+
+/// Value of registry path `name` of `p`.
+pub fn value(p: &VehicleParams, name: &str) -> Result<f64, DiscoveryError> {
+    Ok(
+        match (name.strip_prefix("tire."), name.strip_prefix("hps.")) {
+            (Some(s), _) => p.tire.get(s)?,
+            (_, Some(s)) => p.hps.get(s)?,
+            _ => p.get(name)?,
+        },
+    )
+}
+
+/// Channel `name` (afsv-v1, as `afsv vehicle simulate -o` writes it) of a run.
+pub fn channel(r: &RunRecord, name: &str) -> Option<Vec<f64>> {
+    let deg = |v: &[f64], sign: f64| v.iter().map(|x| sign * x.to_degrees()).collect();
+    Some(match name {
+        "speed_m_s" => r.speed_m_s.clone(),
+        "articulation_deg" => deg(&r.articulation_rad, 1.0),
+        "strut_left_disp_m" => r.strut_disp_m[0].clone(),
+        "p_c_pa" => r.pressure_pa[0].clone(),
+        "p_r_pa" => r.pressure_pa[1].clone(),
+        // left-turn positive about +z in the model; afsv-v1 is right-turn positive
+        "yaw_rate_front_deg_s" => deg(&r.front_rate_rad_s[2], -1.0),
+        "front_lateral_accel_m_s2" => r.front_lateral_accel_m_s2.clone(),
+        _ => {
+            if let Some(k) = LINEAR_AXES.iter().position(|a| *a == name) {
+                r.cab_accel_m_s2[k].clone()
+            } else {
+                let k = ANGULAR_AXES.iter().position(|a| *a == name)?;
+                r.front_angular_accel_rad_s2[k].clone()
+            }
+        }
+    })
+}
+
+/// A sidecar field, also looked up under the path-change command's `spec`.
+fn meta<'a>(record: &'a Record, key: &str) -> Option<&'a Value> {
+    record
+        .meta
+        .get(key)
+        .or_else(|| record.meta.get("spec").and_then(|s| s.get(key)))
+        .filter(|v| !v.is_null())
+}
+
+/// The ground of a record from its sidecar's `terrain` (as the vehicle commands write it:
+/// class, m_c, band, seeds; `smooth ground` or none is flat).
+fn terrain_of(record: &Record) -> Result<Option<(TerrainSpec, u64)>, DiscoveryError> {
+    let Some(t) = record
+        .meta
+        .get("terrain")
+        .filter(|t| t.get("class").is_some())
+    else {
+        return Ok(None);
+    };
+    let bad = |field: &'static str| DiscoveryError::Sidecar {
+        field,
+        reason: format!("terrain {t} lacks it or it is malformed"),
+    };
+    let class: IsoClass = t["class"]
+        .as_str()
+        .and_then(|c| c.parse().ok())
+        .ok_or_else(|| bad("terrain.class"))?;
+    let mut spec = TerrainSpec {
+        class,
+        ..TerrainSpec::default()
+    };
+    if let Some(m) = t.get("m_c_cycles_per_m").and_then(Value::as_f64) {
+        spec.m_c = m;
+    }
+    if let Some(b) = t.get("band_cycles_per_m").and_then(Value::as_array) {
+        let f = |i: usize| {
+            b.get(i)
+                .and_then(Value::as_f64)
+                .ok_or_else(|| bad("terrain.band"))
+        };
+        spec.band = (f(0)?, f(1)?);
+    }
+    let seed = t
+        .get("seeds")
+        .and_then(|s| s.get(0))
+        .or_else(|| t.get("seed"))
+        .and_then(Value::as_u64)
+        .ok_or_else(|| bad("terrain.seeds"))?;
+    Ok(Some((spec, seed)))
+}
+
+/// Centred moving average of `x` over `half` samples each side, and its central difference.
+fn smooth_with_rate(x: &[f64], half: usize, dt: f64) -> (Vec<f64>, Vec<f64>) {
+    let n = x.len();
+    let s: Vec<f64> = (0..n)
+        .map(|i| {
+            let (a, b) = (i.saturating_sub(half), (i + half).min(n - 1));
+            x[a..=b].iter().sum::<f64>() / (b - a + 1) as f64
+        })
+        .collect();
+    let r = (0..n)
+        .map(|i| {
+            let (a, b) = (i.saturating_sub(1), (i + 1).min(n - 1));
+            (s[b] - s[a]) / ((b - a).max(1) as f64 * dt)
+        })
+        .collect();
+    (s, r)
+}
+
+impl DiscoveryModel for Vehicle3dModel {
+    type Prepared = Replay3d;
+
+    fn name(&self) -> &str {
+        self.model_name()
+    }
+
+    fn channels(&self) -> Vec<String> {
+        CHANNELS.iter().map(|s| s.to_string()).collect()
+    }
+
+    fn baseline_params(&self) -> Vec<ParamSpec> {
+        self.calibrated()
+            .iter()
+            .map(|&(name, lo, hi, _)| {
+                let x = value(&self.params, name).unwrap_or(f64::NAN);
+                ParamSpec {
+                    typical: x.max(0.1 * hi),
+                    ..ParamSpec::new(name, x, lo, hi)
+                }
+            })
+            .collect()
+    }
+
+    fn catalogue(&self) -> Vec<EffectSpec> {
+        catalogue(self.front_axle == FrontAxle::Suspended)
+    }
+
+    fn prepare(&self, record: &Record) -> Result<Replay3d, DiscoveryError> {
+        let t = record
+            .column("time_s")
+            .ok_or(DiscoveryError::MissingColumn { column: "time_s" })?;
+        let n = t.len();
+        if n < 2 {
+            return Err(DiscoveryError::TooFewSamples);
+        }
+        let load = match meta(record, "load") {
+            Some(Value::String(s)) => s
+                .parse::<Load>()
+                .map_err(|_| DiscoveryError::UnknownLoad { load: s.clone() })?,
+            Some(v) => {
+                return Err(DiscoveryError::LoadNotText {
+                    value: v.to_string(),
+                })
+            }
+            None => self.default_load.ok_or(DiscoveryError::NoLoad)?,
+        };
+        if let Some(axle) = meta(record, "front_axle") {
+            let want = serde_json::to_value(self.front_axle)?;
+            if *axle != want {
+                return Err(DiscoveryError::Sidecar {
+                    field: "front_axle",
+                    reason: format!("the record was run with {axle}, the model is {want}"),
+                });
+            }
+        }
+        let kind = match meta(record, "manoeuvre").and_then(Value::as_str) {
+            Some("path_change") => RunKind::PathChange,
+            _ => RunKind::Ride,
+        };
+        let time_s: Vec<f64> = t.iter().map(|v| v - t[0]).collect();
+        let dt_s = time_s[n - 1] / (n - 1) as f64;
+        let speed_col = record
+            .column("speed_m_s")
+            .ok_or(DiscoveryError::MissingColumn {
+                column: "speed_m_s",
+            })?;
+        let target = meta(record, "speed_m_s")
+            .and_then(Value::as_f64)
+            .or_else(|| {
+                meta(record, "speed_kmh")
+                    .and_then(Value::as_f64)
+                    .map(|v| v / 3.6)
+            });
+        let speed_m_s = target.unwrap_or(speed_col.iter().sum::<f64>() / n as f64);
+        let steer = match kind {
+            RunKind::Ride => SteerInput::None,
+            RunKind::PathChange => {
+                let sw = record
+                    .column("steer_wheel_deg")
+                    .ok_or(DiscoveryError::MissingColumn {
+                        column: "steer_wheel_deg",
+                    })?;
+                SteerInput::Table {
+                    time_s: time_s.clone(),
+                    angle_rad: sw.iter().map(|d| d.to_radians()).collect(),
+                }
+            }
+        };
+        let duration = match kind {
+            RunKind::PathChange => meta(record, "t_end_s").and_then(Value::as_f64),
+            RunKind::Ride => None,
+        }
+        .unwrap_or(time_s[n - 1]);
+        let path_length_m = speed_m_s * duration + 5.0;
+        let options = self.layout(
+            speed_m_s,
+            steer.clone(),
+            path_length_m,
+            FieldEffects::default(),
+        );
+        let half = 0.5 * self.params.front_track_m;
+        let ground = terrain_of(record)?;
+        let tracks =
+            Arc::new(match &ground {
+                None => {
+                    let flat = FlatTerrain::new(0.0, vehicle_components::DEFAULT_FRICTION)
+                        .map_err(|e| DiscoveryError::Sidecar {
+                            field: "terrain",
+                            reason: e.to_string(),
+                        })?;
+                    TireTracks::build(&self.params, load, &options, &flat, half)?
+                }
+                Some((spec, seed)) => {
+                    let length = options.start_s_m + options.path_length_m + 50.0;
+                    let terrain = spec.build(&self.params, length, *seed)?;
+                    TireTracks::build(&self.params, load, &options, &terrain, half)?
+                }
+            });
+        let ground_name = ground.map_or("smooth ground".to_string(), |(s, seed)| {
+            format!("class {} seed {seed}", s.class)
+        });
+        let kind_name = match kind {
+            RunKind::Ride => "ride",
+            RunKind::PathChange => "path change",
+        };
+        let group = match ground_name.split(" seed").next() {
+            Some(g) => format!("{kind_name}, {g}"),
+            None => kind_name.to_string(),
+        };
+        Ok(Replay3d {
+            kind,
+            load,
+            speed_m_s,
+            steer,
+            path_length_m,
+            tracks,
+            dt_s,
+            speed_smooth: smooth_with_rate(
+                speed_col,
+                (THROTTLE_SMOOTH_S / dt_s).round() as usize,
+                dt_s,
+            ),
+            condition: format!(
+                "{load}, {kind_name}, {:.1} km/h, {ground_name}",
+                speed_m_s * 3.6
+            ),
+            group,
+            time_s,
+            cache: ReplayCache::default(),
+        })
+    }
+
+    fn condition(&self, prepared: &Replay3d) -> String {
+        prepared.condition.clone()
+    }
+
+    fn group(&self, prepared: &Replay3d) -> Option<String> {
+        Some(prepared.group.clone())
+    }
+
+    fn simulate(
+        &self,
+        prepared: &Replay3d,
+        baseline: &[f64],
+        effects: &[ActiveEffect<'_>],
+    ) -> Result<Vec<Option<Vec<f64>>>, DiscoveryError> {
+        let mut p = self.apply_baseline(baseline)?;
+        let (field, sensor, compliance) = self.apply_effects(&p, prepared, effects)?;
+        p.tire.lateral_relaxation_length_m +=
+            compliance * 1e-6 * p.tire.cornering_stiffness_n_per_rad;
+        // the vehicle-side inputs: the baseline and every model-side effect's values
+        let mut key: Vec<u64> = baseline.iter().map(|x| x.to_bits()).collect();
+        for e in effects {
+            key.push(e.index as u64);
+            if !matches!(
+                EFFECTS.get(e.index),
+                Some(&"mount-compliance") | Some(&"sensor-misalignment")
+            ) {
+                key.extend(e.values.iter().map(|x| x.to_bits()));
+            }
+        }
+        let ch = prepared
+            .cache
+            .get_or(key, || self.replay(prepared, &p, field))?;
+        Ok(self.apply_sensor(prepared, p.gravity_m_s2, sensor, ch))
+    }
+
+    fn phases(&self, record: &Record) -> Vec<Phase> {
+        let Some(sw) = record.column("steer_wheel_deg") else {
+            return Vec::new();
+        };
+        let steering: Vec<bool> = sw.iter().map(|d| d.abs() > 1.0).collect();
+        vec![
+            Phase {
+                name: "steering".into(),
+                mask: steering.clone(),
+            },
+            Phase {
+                name: "straight".into(),
+                mask: steering.iter().map(|s| !s).collect(),
+            },
+        ]
+    }
+
+    fn skip_samples(&self, record: &Record) -> usize {
+        match record.column("time_s") {
+            Some(t) if t.len() > 1 => {
+                let dt = (t[t.len() - 1] - t[0]) / (t.len() - 1) as f64;
+                (SKIP_S / dt).round() as usize
+            }
+            _ => 0,
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_calibration_set_is_named_by_the_registries() {
+        for axle in [FrontAxle::Rigid, FrontAxle::Suspended] {
+            let m = Vehicle3dModel::nominal(axle);
+            let specs = m.baseline_params();
+            assert_eq!(specs.len(), m.calibrated().len());
+            for s in &specs {
+                assert!(s.lower <= s.initial && s.initial <= s.upper, "{}", s.name);
+            }
+            let v: Vec<f64> = specs.iter().map(|s| s.initial).collect();
+            assert_eq!(m.apply_baseline(&v).unwrap(), m.params);
+            let mut w = v.clone();
+            w[0] = 1.3;
+            w[3] = 0.7;
+            let p = m.apply_baseline(&w).unwrap();
+            assert_eq!(p.joint_height_m, 1.3);
+            assert_eq!(p.tire.longitudinal_relaxation_length_m, 0.7);
+            assert!(m.apply_baseline(&v[1..]).is_err());
+        }
+        let mut p = VehicleParams::nominal();
+        assign(&mut p, "hps.friction.f_c", 800.0).unwrap();
+        assert_eq!(value(&p, "hps.friction.f_c").unwrap(), 800.0);
+        assert!(assign(&mut p, "tire.no_such", 1.0).is_err());
+    }
+
+    #[test]
+    fn a_record_of_the_other_front_axle_or_without_a_load_is_refused() {
+        let mut r = Record::new();
+        r.push_column("time_s", vec![0.0, 0.01, 0.02]).unwrap();
+        r.push_column("speed_m_s", vec![5.0; 3]).unwrap();
+        let m = Vehicle3dModel::nominal(FrontAxle::Rigid);
+        assert!(matches!(m.prepare(&r), Err(DiscoveryError::NoLoad)));
+        r.meta = serde_json::json!({"load": "loaded", "front_axle": "suspended"});
+        let e = m.prepare(&r).unwrap_err().to_string();
+        assert!(e.contains("front_axle"), "{e}");
+    }
+}
