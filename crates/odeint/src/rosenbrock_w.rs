@@ -28,7 +28,8 @@
 //!
 //! Workspace use: `k[0]` f(t, y), `k[1..5]` the stage increments u_1..u_4, `k[5]` the stage
 //! derivative, `k[6]` f(t + h, y_1); `aux[0]` the error, `aux[1]` solve scratch, `aux[2]`
-//! the blocks' gathered entries, `aux[3]` the mask of block states for the dense output; `jac` the packed block Jacobians, `w` their factored
+//! the blocks' gathered entries, `aux[3]` the mask of block states for the dense output (set
+//! at each start); `jac` the packed block Jacobians, `w` their factored
 //! iteration matrices, `piv` their pivots (packed).
 
 use crate::kernel::Kernel;
@@ -259,6 +260,11 @@ impl Kernel for RosenbrockWKernel {
     fn start<S2: OdeSystem + ?Sized>(&mut self, sys: &S2, t: f64, ws: &mut Workspace) -> usize {
         self.need_jac = true;
         self.end_ready = false;
+        let mask = &mut ws.aux[3];
+        mask.fill(0.0);
+        for &i in sys.stiff_blocks().iter().flatten() {
+            mask[i] = 1.0;
+        }
         sys.rhs(t, &ws.y, &mut ws.k[0]);
         1
     }
@@ -360,11 +366,6 @@ impl Kernel for RosenbrockWKernel {
     ) -> usize {
         if self.end_ready {
             return 0;
-        }
-        let mask = &mut ws.aux[3];
-        mask.fill(0.0);
-        for &i in sys.stiff_blocks().iter().flatten() {
-            mask[i] = 1.0;
         }
         sys.rhs(t + h, &ws.y_new, &mut ws.k[6]);
         self.end_ready = true;
