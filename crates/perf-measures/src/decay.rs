@@ -23,6 +23,27 @@ use realfft::RealFftPlanner;
 use serde::Serialize;
 use std::f64::consts::PI;
 
+/// Start of the free decay: the second extremum of the articulation after the pulse end,
+/// i.e. after the first, input-driven swing (section 3.4.2: "following the initial
+/// oscillation caused by the steering input"). Returns the index into `time` and `y`, or
+/// `None` when fewer than two extrema follow `pulse_end_s`; the fit of [`fit_free_decay`]
+/// starts there.
+pub fn decay_onset(time: &[f64], y: &[f64], pulse_end_s: f64) -> Option<usize> {
+    let i0 = time.partition_point(|&x| x < pulse_end_s - 1e-12).max(1);
+    let mut found = 0;
+    for i in i0..y.len().saturating_sub(1) {
+        let d0 = y[i] - y[i - 1];
+        let d1 = y[i + 1] - y[i];
+        if d0 * d1 < 0.0 || (d0 != 0.0 && d1 == 0.0) {
+            found += 1;
+            if found == 2 {
+                return Some(i);
+            }
+        }
+    }
+    None
+}
+
 /// Result of [`fit_free_decay`].
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct DecayFit {
@@ -547,7 +568,7 @@ pub fn fit_free_decay(t: &[f64], y: &[f64]) -> Result<DecayFit, MeasureError> {
 
 #[cfg(test)]
 mod phasor_tests {
-    use super::{for_each_phasor, not_one_mode, uniform_spacing};
+    use super::{decay_onset, for_each_phasor, not_one_mode, uniform_spacing};
 
     #[test]
     fn only_a_residual_far_above_the_noise_gets_the_caveat() {
@@ -583,5 +604,27 @@ mod phasor_tests {
             n += 1;
         });
         assert_eq!(n, jittered.len());
+    }
+
+    #[test]
+    fn the_decay_starts_at_the_second_extremum_after_the_pulse() {
+        // y = cos(pi t) sampled at 0.1 s: extrema at t = 1, 2, 3, ...
+        let t: Vec<f64> = (0..=50).map(|i| i as f64 * 0.1).collect();
+        let y: Vec<f64> = t
+            .iter()
+            .map(|&t| (std::f64::consts::PI * t).cos())
+            .collect();
+        // After a pulse ending at 0.5 s the extrema are at 1 s (the driven swing) and 2 s.
+        assert_eq!(decay_onset(&t, &y, 0.5), Some(20));
+        // A pulse ending exactly on a sample counts that sample as after the pulse.
+        assert_eq!(decay_onset(&t, &y, 1.0), Some(20));
+        assert_eq!(decay_onset(&t, &y, 1.05), Some(30));
+        // Fewer than two extrema after the pulse: no onset.
+        assert_eq!(decay_onset(&t, &y, 3.5), None);
+        assert_eq!(decay_onset(&t, &vec![1.0; t.len()], 0.5), None);
+        // A flat top (a repeated sample) counts once, at its first sample.
+        let y2 = [0.0, 1.0, 2.0, 2.0, 1.0, 0.0, -1.0, 0.0];
+        let t2: Vec<f64> = (0..y2.len()).map(|i| i as f64).collect();
+        assert_eq!(decay_onset(&t2, &y2, 0.0), Some(6));
     }
 }

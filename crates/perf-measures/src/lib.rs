@@ -25,7 +25,7 @@ pub mod signal;
 pub mod steering;
 pub mod step;
 
-pub use decay::{fit_free_decay, not_one_mode, DecayFit, DECAY_RESIDUAL_NOISE_LIMIT};
+pub use decay::{decay_onset, fit_free_decay, not_one_mode, DecayFit, DECAY_RESIDUAL_NOISE_LIMIT};
 pub use error::MeasureError;
 pub use iso2631::{weighting_check, weighting_check_at, Weighting, WeightingCheck};
 pub use roll::{

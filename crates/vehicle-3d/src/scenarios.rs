@@ -495,7 +495,7 @@ pub fn yaw_measures(
         .map(|a| a.to_degrees())
         .collect();
     let t = &rec.t_s;
-    let i0 = afsv_dynamics::yaw_plane::analysis::decay_onset(t, &deg, pulse_end_s)
+    let i0 = perf_measures::decay_onset(t, &deg, pulse_end_s)
         .ok_or_else(|| measure("omega_z", "no free oscillation after the pulse"))?;
     let i1 = t.partition_point(|&x| x < t[i0] + window_s);
     let fit = perf_measures::fit_free_decay(&t[i0..i1], &deg[i0..i1])

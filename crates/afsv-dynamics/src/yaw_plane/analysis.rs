@@ -111,25 +111,6 @@ fn index_at(time: &[f64], t: f64) -> usize {
     time.partition_point(|&x| x < t - 1e-12)
 }
 
-/// Start of the free decay: the second extremum of the articulation after the pulse end,
-/// i.e. after the first, input-driven swing (section 3.4.2: "following the initial
-/// oscillation caused by the steering input").
-pub fn decay_onset(time: &[f64], y: &[f64], pulse_end_s: f64) -> Option<usize> {
-    let i0 = index_at(time, pulse_end_s).max(1);
-    let mut found = 0;
-    for i in i0..y.len().saturating_sub(1) {
-        let d0 = y[i] - y[i - 1];
-        let d1 = y[i + 1] - y[i];
-        if d0 * d1 < 0.0 || (d0 != 0.0 && d1 == 0.0) {
-            found += 1;
-            if found == 2 {
-                return Some(i);
-            }
-        }
-    }
-    None
-}
-
 /// Pulse measures from a pulse run: `(fit, peak articulation deg)`.
 pub fn pulse_measures(
     rec: &YawRecord,
@@ -141,7 +122,7 @@ pub fn pulse_measures(
     let peak = y
         .iter()
         .fold(0.0f64, |m, v| if v.abs() > m.abs() { *v } else { m });
-    let i0 = decay_onset(t, y, pulse_end_s).ok_or_else(|| DynError::Measure {
+    let i0 = perf_measures::decay_onset(t, y, pulse_end_s).ok_or_else(|| DynError::Measure {
         measure: "yaw-mode frequency",
         reason: "no free oscillation after the pulse (fewer than two extrema)".into(),
     })?;

@@ -162,9 +162,8 @@ pub(super) fn plot_yaw(path: &Path, rec: &RunRecord, spec: &YawSpec, seed: u64) 
         .collect();
     let t = &rec.t_s;
     // The window of vehicle_3d::scenarios::yaw_measures, and its fit drawn over it.
-    let i0 =
-        afsv_dynamics::yaw_plane::analysis::decay_onset(t, &deg, spec.pulse_start_s + spec.pulse_s)
-            .ok_or("no free oscillation after the pulse")?;
+    let i0 = perf_measures::decay_onset(t, &deg, spec.pulse_start_s + spec.pulse_s)
+        .ok_or("no free oscillation after the pulse")?;
     let i1 = t.partition_point(|&x| x < t[i0] + spec.fit_window_s);
     let fit = perf_measures::fit_free_decay(&t[i0..i1], &deg[i0..i1])?;
     let wd = 2.0 * std::f64::consts::PI * fit.damped_frequency_hz;
