@@ -21,6 +21,8 @@
 //! - [`sweep`]: the optimum of a one-variable design sweep (parabolic peak);
 //! - [`evaluate`]: the assessment of `afsv evaluate` (design measures, yaw-plane measures,
 //!   strut, terrain) of one vehicle description;
+//! - [`layouts`]: `afsv study layouts`, several suspension layouts of one vehicle through
+//!   D1-D4 on common seeds, on the frame and at the seat;
 //! - [`fan_out`]: the one scheduler of the studies on the 3-D vehicle (per-case caches
 //!   built once, runs in parallel, results in order) and the plain seed fan-out.
 //!
@@ -43,6 +45,7 @@ pub mod hps_design;
 pub mod hps_optimum;
 pub mod hps_sensitivity;
 pub mod hps_speed_sweep;
+pub mod layouts;
 pub mod measures;
 pub mod objective;
 pub mod sweep;

@@ -185,3 +185,99 @@ fn hps_optimum_writes_its_strut_and_sweeps_it() {
         "user data"
     );
 }
+
+/// `afsv study layouts` on its smallest request (one seed, two D4 speeds): a frame and a
+/// seat row per layout on the same vehicle runs, the operator's verdicts read from the
+/// reported numbers, and bad requests refused by name before any run.
+#[test]
+fn layouts_report_frame_and_seat_rows_consistent_with_their_numbers() {
+    let out = afsv(&[
+        "study",
+        "layouts",
+        "--seeds",
+        "1",
+        "--speeds",
+        "10,20",
+        "--speed-kmh",
+        "20",
+        "--json",
+    ]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let v = json(&out);
+    let rows = v["rows"].as_array().unwrap();
+    let names: Vec<(&str, bool)> = rows
+        .iter()
+        .map(|r| {
+            (
+                r["layout"].as_str().unwrap(),
+                r["at_seat"].as_bool().unwrap(),
+            )
+        })
+        .collect();
+    assert_eq!(
+        names,
+        [
+            ("rigid", false),
+            ("rigid", true),
+            ("front-hps", false),
+            ("front-hps", true)
+        ]
+    );
+    let upper = v["hgcz_8h_m_s2"][1].as_f64().unwrap();
+    let mean = |r: &serde_json::Value, k: &str| r[k]["mean"].as_f64().unwrap();
+    for pair in rows.chunks(2) {
+        // the seat rides on the frame row's runs: every vehicle measure is the same
+        for k in ["a_wz_frame_m_s2", "sp_drt_m_s2"] {
+            assert_eq!(pair[0][k], pair[1][k], "{k}");
+        }
+        assert!(pair[0]["a_wz_seat_m_s2"].is_null() && pair[0]["seat_ratio"].is_null());
+        for (r, operator) in [
+            (&pair[0], mean(&pair[0], "a_wz_frame_m_s2")),
+            (&pair[1], mean(&pair[1], "a_wz_seat_m_s2")),
+        ] {
+            // the ride speed is a D4 speed: its D4 point is the reported ride
+            let d4 = r["d4_a_wz_m_s2"].as_array().unwrap();
+            assert!((d4[1].as_f64().unwrap() - operator).abs() <= 1e-12 * operator);
+            let (a, b) = (d4[0].as_f64().unwrap(), d4[1].as_f64().unwrap());
+            let crossing = &r["d4_crossing"]["speed_kmh"];
+            if a <= upper && b > upper {
+                let want = 10.0 + (upper - a) / (b - a) * 10.0;
+                assert!((crossing.as_f64().unwrap() - want).abs() < 1e-9);
+            } else {
+                assert!(crossing.is_null());
+            }
+            let zone = if operator > upper {
+                "above"
+            } else if operator < v["hgcz_8h_m_s2"][0].as_f64().unwrap() {
+                "below"
+            } else {
+                "within"
+            };
+            assert_eq!(r["hgcz_8h"], zone);
+        }
+    }
+    assert!(rows[0]["strut_travel_m"].is_null());
+    assert!(mean(&rows[2], "strut_travel_m") > 0.0);
+    // the HPS lowers the frame's a_wz (section 6.5: by about half at 20 km/h)
+    assert!(mean(&rows[2], "a_wz_frame_m_s2") < 0.8 * mean(&rows[0], "a_wz_frame_m_s2"));
+    for (args, needle) in [
+        (&["--layouts", "rigid,bogus"][..], "unknown layout `bogus`"),
+        (&["--layouts", "rigid,rigid"][..], "named twice"),
+        (&["--seat", "soft"][..], "--seat"),
+        (&["--speeds", "20,10"][..], "ascending"),
+        (&["--speed-kmh", "200"][..], "ride_speed_kmh"),
+        (&["--seeds", "0"][..], "--seeds"),
+    ] {
+        let out = afsv(&[&["study", "layouts"][..], args].concat());
+        assert!(!out.status.success(), "{args:?}");
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert!(
+            err.contains(needle) && err.lines().count() == 1,
+            "{args:?}: {err}"
+        );
+    }
+}

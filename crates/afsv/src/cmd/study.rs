@@ -3,7 +3,8 @@
 //! loaded (D1), SP-DRT (D2) and omega_z (D3) over common terrain seeds
 //! (`afsv_design::hps_sensitivity`). `speed-sweep` is D4 (section 6.5.2, Fig 6.16): the
 //! ride of one HPS design from 10 to 30 km/h against the 8 h health guidance caution zone
-//! (`afsv_design::hps_speed_sweep`).
+//! (`afsv_design::hps_speed_sweep`). `layouts` compares suspension layouts
+//! (`afsv_design::layouts`, in `cmd/layouts.rs`).
 
 use super::CmdResult;
 use afsv::output::{OutputGuard, OutputKind};
@@ -21,6 +22,11 @@ pub enum Command {
     /// D4 (Fig 6.16): a_wz, unweighted RMS and HPS travel of one HPS design over forward
     /// speeds, both loads, and the speed at which a_wz crosses the 8 h caution zone.
     SpeedSweep(SweepArgs),
+    /// Suspension layouts of one vehicle (rigid, front HPS, ...) through D1-D4 on common
+    /// seeds, on the frame and at the seat: a_wz, SEAT, strut travel, SP-DRT, omega_z and
+    /// the speed at which a_wz crosses the 8 h caution zone, differences inside the seed
+    /// spread marked.
+    Layouts(super::layouts::LayoutArgs),
 }
 
 /// Options of `afsv study speed-sweep`.
@@ -93,6 +99,7 @@ pub fn run(c: Command) -> CmdResult {
     match c {
         Command::HpsSensitivity(a) => hps(a),
         Command::SpeedSweep(a) => speed_sweep(a),
+        Command::Layouts(a) => super::layouts::run(a),
     }
 }
 
@@ -118,7 +125,7 @@ fn parse_changes(text: &str) -> Result<Vec<f64>, String> {
 }
 
 /// Comma-separated finite numbers of option `name`, at most `max` of them.
-fn parse_list(name: &str, text: &str, max: usize) -> Result<Vec<f64>, String> {
+pub(super) fn parse_list(name: &str, text: &str, max: usize) -> Result<Vec<f64>, String> {
     let out = text
         .split(',')
         .enumerate()
@@ -200,7 +207,11 @@ fn speed_sweep(a: SweepArgs) -> CmdResult {
 }
 
 /// JSON of `value` with `--json` or when piped, else `text()` on the terminal.
-fn emit<T: serde::Serialize>(json: bool, value: &T, text: impl Fn() -> String) -> CmdResult {
+pub(super) fn emit<T: serde::Serialize>(
+    json: bool,
+    value: &T,
+    text: impl Fn() -> String,
+) -> CmdResult {
     if json || !std::io::stdout().is_terminal() {
         afsv::output::print_json(&serde_json::to_value(value)?)?;
     } else {
@@ -210,7 +221,7 @@ fn emit<T: serde::Serialize>(json: bool, value: &T, text: impl Fn() -> String) -
 }
 
 /// An SVG line plot of `columns` (label, x, y) at `path`, marked as afsv's.
-fn line_svg(
+pub(super) fn line_svg(
     path: &std::path::Path,
     title: &str,
     x_label: &str,
