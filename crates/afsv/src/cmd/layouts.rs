@@ -72,7 +72,7 @@ fn build_layouts(v: &afsv_vehicle::ArticulatedVehicle, text: &str) -> Result<Vec
                 front_axle: FrontAxle::Rigid,
             },
             "front-hps" => {
-                let strut = v.front_strut.clone().ok_or_else(|| {
+                let strut = v.front_strut.ok_or_else(|| {
                     format!(
                         "--layouts front-hps: the vehicle description `{}` gives the front axle no strut (add `strut = \"front-axle\"` or a strut file to its front [[axle]])",
                         v.name
