@@ -71,17 +71,19 @@ fn commands(samples: &Path) -> Vec<Timed> {
     ]
 }
 
-/// Build the release binary and print the whole-command table.
-pub fn command_timings(root: &Path, runs: usize) -> Result<(), String> {
+/// Build the binary (`profile`: release by default, or dist) and print the whole-command
+/// table.
+pub fn command_timings(root: &Path, runs: usize, profile: Option<&str>) -> Result<(), String> {
+    let profile = profile.unwrap_or("release");
     let status = Command::new(std::env::var("CARGO").unwrap_or_else(|_| "cargo".into()))
         .current_dir(root)
-        .args(["build", "--release", "-q", "-p", "afsv"])
+        .args(["build", "--profile", profile, "-q", "-p", "afsv"])
         .status()
         .map_err(|e| format!("cannot build afsv: {e}"))?;
     if !status.success() {
         return Err(format!("cargo build -p afsv failed ({status})"));
     }
-    let bin = root.join("target").join("release").join("afsv");
+    let bin = root.join("target").join(profile).join("afsv");
     let dir = std::env::temp_dir().join(format!("afsv-bench-{}", std::process::id()));
     std::fs::create_dir_all(&dir).map_err(|e| format!("{}: {e}", dir.display()))?;
     println!();

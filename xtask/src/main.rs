@@ -6,6 +6,8 @@
 //!   factor = simulated seconds / wall seconds.
 //!   Then the whole-command timings of what users run (`commands.rs`: the release binary run
 //!   `--runs N` times per command, default 20, median). `bench --commands` prints only these.
+//!   `--profile dist` builds both with the workspace's `dist` profile (fat LTO, one codegen
+//!   unit) instead of `release`.
 //! - `bench --summary`: only print the table from the last run's results.
 //! - `validate [--fixtures DIR] [--out DIR]`: compare our models with the dissertation's
 //!   reported numbers (`fixtures/reported/`, see `docs/validation.md`), print the table,
@@ -50,7 +52,7 @@ fn main() -> ExitCode {
     }
 }
 
-const HELP: &str = "usage: cargo xtask <task>\n\ntasks:\n  bench [--summary] [--commands] [--runs N] [ARGS...]  run the criterion benches (ARGS go to the bench harness) and print mean times and real-time factors, then time whole afsv commands (median of N runs, default 20); --commands: only those\n  validate [--fixtures DIR] [--out DIR] [--quick]  compare the models with fixtures/reported/ and write target/validation/report.md; --quick skips the chapter-6 design studies (Table 6.4, the GA of Table 6.5, the D4 sweep: about two minutes)\n  fuzz [--cases N] [--seed S] [--jobs J] [--timeout SECS] [--mem-mib MIB] [--bin PATH] [--only GROUPS] [--skip GROUPS] [--keep]  run afsv on N generated bad inputs (default 10000); fail on panics, hangs, aborts, non-finite output or modified inputs\n  discover-matrix  run the discovery workflow on every catalogue effect of both models and print the detection table (minutes)\n  slurm-test [--bin PATH]  as root: install slurm-wlm and munge, start a single-node Slurm, run scripts/slurm/afs-optimize.sh end to end and compare with the in-process optimum (skipped without root, apt-get or network); --bin: run that afsv binary instead of building one";
+const HELP: &str = "usage: cargo xtask <task>\n\ntasks:\n  bench [--summary] [--commands] [--runs N] [--profile release|dist] [ARGS...]  run the criterion benches (ARGS go to the bench harness) and print mean times and real-time factors, then time whole afsv commands (median of N runs, default 20); --commands: only those; --profile dist: built with fat LTO and one codegen unit (Cargo.toml)\n  validate [--fixtures DIR] [--out DIR] [--quick]  compare the models with fixtures/reported/ and write target/validation/report.md; --quick skips the chapter-6 design studies (Table 6.4, the GA of Table 6.5, the D4 sweep: about two minutes)\n  fuzz [--cases N] [--seed S] [--jobs J] [--timeout SECS] [--mem-mib MIB] [--bin PATH] [--only GROUPS] [--skip GROUPS] [--keep]  run afsv on N generated bad inputs (default 10000); fail on panics, hangs, aborts, non-finite output or modified inputs\n  discover-matrix  run the discovery workflow on every catalogue effect of both models and print the detection table (minutes)\n  slurm-test [--bin PATH]  as root: install slurm-wlm and munge, start a single-node Slurm, run scripts/slurm/afs-optimize.sh end to end and compare with the in-process optimum (skipped without root, apt-get or network); --bin: run that afsv binary instead of building one";
 
 /// The full detection matrix of the discovery workflow (the slow tests of
 /// `crates/afsv-discovery/tests/discover_matrix.rs`).
@@ -148,21 +150,31 @@ fn bench(args: &[String]) -> Result<(), String> {
         }
         None => 20,
     };
+    let profile = match args.iter().position(|a| a == "--profile") {
+        Some(i) => {
+            let name = args
+                .get(i + 1)
+                .filter(|p| ["release", "dist"].contains(&p.as_str()))
+                .cloned()
+                .ok_or("--profile needs release or dist")?;
+            args.drain(i..i + 2);
+            Some(name)
+        }
+        None => None,
+    };
     if args.iter().any(|a| a == "--commands") {
-        return commands::command_timings(&root, runs);
+        return commands::command_timings(&root, runs, profile.as_deref());
     }
     let args = &args[..];
     let summary_only = args.iter().any(|a| a == "--summary");
     if !summary_only {
         let mut cmd = Command::new(std::env::var("CARGO").unwrap_or_else(|_| "cargo".into()));
-        cmd.current_dir(&root).args([
-            "bench",
-            "--workspace",
-            "--exclude",
-            "xtask",
-            "--benches",
-            "--",
-        ]);
+        cmd.current_dir(&root)
+            .args(["bench", "--workspace", "--exclude", "xtask", "--benches"]);
+        if let Some(p) = &profile {
+            cmd.args(["--profile", p]);
+        }
+        cmd.arg("--");
         cmd.args(args);
         let status = cmd
             .status()
@@ -192,7 +204,7 @@ fn bench(args: &[String]) -> Result<(), String> {
         discovery_rows(&root)?;
     }
     if !summary_only {
-        commands::command_timings(&root, runs)?;
+        commands::command_timings(&root, runs, profile.as_deref())?;
     }
     Ok(())
 }
