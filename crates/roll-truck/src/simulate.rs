@@ -294,7 +294,18 @@ pub fn simulate_with_stats(
         let (tires, _) = probe.at(t, y).ok()?;
         Some(vehicle.switching(y, &tires, &pieces.get()?))
     };
-    let margin = |t: f64, y: &[f64]| probe.at(t, y).map_or(f64::NAN, |(_, m)| m);
+    // with the kinks located the two events share one evaluation; alone, the margin needs
+    // only the kinematics
+    let margin = |t: f64, y: &[f64]| {
+        let m = if options.locate_kinks {
+            probe.at(t, y).map(|(_, m)| m)
+        } else {
+            vehicle
+                .rollover_margin(y)
+                .map_err(|source| TruckError::Dynamics { t, source })
+        };
+        m.unwrap_or(f64::NAN)
+    };
     let kink = |t: f64, y: &[f64]| switching(t, y).map_or(f64::NAN, |(g, _)| g);
     let events = [
         Event::new(&margin, Direction::Falling).terminal(),

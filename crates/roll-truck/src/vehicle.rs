@@ -297,7 +297,7 @@ impl TruckVehicle {
         );
         let mut centres = [Vector3::zeros(); 6];
         let mut velocities = [Vector3::zeros(); 6];
-        let mut slopes = [0.0; 6];
+        let mut slopes = [(0.0, 1.0); 6];
         let mut rear_load = 0.0;
         for (i, m) in self.mounts.iter().enumerate() {
             // the effective wheel centre: the column above the hanging point (zero length
@@ -308,6 +308,7 @@ impl TruckVehicle {
             let s = y[state::PATH] + (c - origin).dot(&h);
             let contact = self.tracks[track_index(m)].contact(s, c.z);
             let (sin, cos) = contact.slope.sin_cos();
+            slopes[i] = (sin, cos);
             let rate = vc.dot(&h) * sin - vc.z * cos;
             let delta = contact.deflection;
             out.contact_margin[i] = delta.min(delta + (c_t / k_t) * rate);
@@ -318,15 +319,15 @@ impl TruckVehicle {
             };
             out.normal_force[i] = fz;
             out.deflection[i] = contact.deflection;
-            (centres[i], velocities[i], slopes[i]) = (c, vc, contact.slope);
+            (centres[i], velocities[i]) = (c, vc);
             if !m.front {
                 rear_load += fz;
             }
         }
-        let steer = self.steer.angle(t);
+        // wheel headings: the front wheels steered, the rear ones along the heading
+        let front = (heading + self.steer.angle(t)).sin_cos();
         for (i, m) in self.mounts.iter().enumerate() {
-            let psi = if m.front { heading + steer } else { heading };
-            let (sin_w, cos_w) = psi.sin_cos();
+            let (sin_w, cos_w) = if m.front { front } else { (h.y, h.x) };
             let (e_x, e_y) = (
                 Vector3::new(cos_w, sin_w, 0.0),
                 Vector3::new(-sin_w, cos_w, 0.0),
@@ -340,7 +341,7 @@ impl TruckVehicle {
             } else {
                 out.drive_force * fz / rear_load
             };
-            let (sin, cos) = slopes[i].sin_cos();
+            let (sin, cos) = slopes[i];
             let normal = Vector3::new(-sin * h.x, -sin * h.y, cos);
             let tangent = Vector3::new(cos * e_x.x, cos * e_x.y, sin);
             let force = normal * fz + e_y * fy + tangent * fx;
@@ -419,6 +420,15 @@ impl TruckVehicle {
             .map(|d| 0.5 * k * d.max(0.0).powi(2))
             .sum();
         Ok(kinetic + gravity + struts + tire)
+    }
+
+    /// The rollover margin ([`TruckVehicle::rollover_margin_ws`]) at `y`, from the
+    /// kinematics alone (no tire or strut forces).
+    pub(crate) fn rollover_margin(&self, y: &[f64]) -> Result<f64, multibody::DynamicsError> {
+        let mut ws = self.ws.borrow_mut();
+        let (q, v) = (&y[state::Q..state::Q + NQ], &y[state::V..state::V + NV]);
+        multibody::update_kinematics(&self.model, &mut ws, q, v)?;
+        Ok(self.rollover_margin_ws(&ws))
     }
 
     /// Signed horizontal distance (m) of the whole-vehicle cg inside the nearer of the two
