@@ -4,12 +4,15 @@
 //!   terrain (667 m driven), with a gentler ramp (1.5 deg/s at the steering wheel instead
 //!   of 5) so that the truck does not roll over before 60 s; `cargo xtask bench` prints its
 //!   real-time factor;
+//! - `class_e_ramp_steer_kinks_sim60s`: the same run with the kinks of the force laws
+//!   located as events (`RunOptions::locate_kinks`, docs/numerics.md, "Kinks");
 //! - `class_e_ramp_to_rollover`: the nominal ramp until absolute rollover (about 29 s for
 //!   seed 1);
 //! - `class_e_terrain_and_cache`: synthesis of 800 m of terrain and the enveloping cache,
 //!   paid once per terrain seed.
 
 use criterion::{criterion_group, criterion_main, Criterion};
+use roll_truck::simulate::simulate_with_stats;
 use roll_truck::studies::{rough_terrain, truck_on, TERRAIN_LENGTH_M};
 use roll_truck::{simulate, RunOptions, SteerDirection, TruckParams};
 use terrain_psd::TwoTrackSpec;
@@ -30,6 +33,24 @@ fn bench(c: &mut Criterion) {
     assert_eq!(*run.t_s.last().unwrap(), options.t_end_s);
     group.bench_function("class_e_ramp_steer_sim60s", |b| {
         b.iter(|| simulate(&vehicle, &options).unwrap().t_s.len())
+    });
+    let kinks = RunOptions {
+        locate_kinks: true,
+        ..options
+    };
+    for (name, o) in [("as written", &options), ("kinks located", &kinks)] {
+        let (_, stats) = simulate_with_stats(&vehicle, o).unwrap();
+        let s = stats.integration;
+        println!(
+            "60 s gentle ramp, {name}: {} right-hand sides, {} accepted and {} rejected steps, {} restarts",
+            s.rhs_evals,
+            s.accepted,
+            s.rejected,
+            stats.restarts.len()
+        );
+    }
+    group.bench_function("class_e_ramp_steer_kinks_sim60s", |b| {
+        b.iter(|| simulate(&vehicle, &kinks).unwrap().t_s.len())
     });
     let vehicle = truck_on(&nominal, &terrain, SteerDirection::Left, length).unwrap();
     let rollover = simulate(&vehicle, &options).unwrap().rollover_s.unwrap();

@@ -42,8 +42,45 @@ impl Strut {
     /// Compression force (N) at compression `s` (m from static) and rate `ds` (m/s).
     #[inline]
     pub fn force(&self, s: f64, ds: f64) -> f64 {
-        let clear = s - s.clamp(-self.half_travel, self.half_travel);
+        self.force_on(s, ds, self.piece(s))
+    }
+
+    /// Which piece of the force law holds at compression `s`: `1` on the compression stop
+    /// (`s > half_travel`), `-1` on the extension stop (`s < -half_travel`), else `0`.
+    #[inline]
+    pub fn piece(&self, s: f64) -> i8 {
+        if s > self.half_travel {
+            1
+        } else if s < -self.half_travel {
+            -1
+        } else {
+            0
+        }
+    }
+
+    /// The force of piece `piece` ([`Strut::piece`]) extended beyond its range: the clearance
+    /// term is `s - half_travel` on piece 1, `s + half_travel` on piece -1, 0 on piece 0, so
+    /// the force is linear in `s` and `ds` (a smooth law inside one integration step;
+    /// docs/numerics.md, "Kinks").
+    #[inline]
+    pub fn force_on(&self, s: f64, ds: f64, piece: i8) -> f64 {
+        let clear = match piece {
+            1 => s - self.half_travel,
+            -1 => s + self.half_travel,
+            _ => 0.0,
+        };
         self.preload + self.rate * s + self.damping * ds + self.bump_rate * clear
+    }
+
+    /// Switching function of piece `piece` at compression `s` (m): the distance of `s`
+    /// inside that piece's range, positive inside, zero on its edge, negative beyond it.
+    #[inline]
+    pub fn switching(&self, s: f64, piece: i8) -> f64 {
+        match piece {
+            1 => s - self.half_travel,
+            -1 => -self.half_travel - s,
+            _ => (self.half_travel - s).min(s + self.half_travel),
+        }
     }
 
     /// Stored energy (J) relative to static of the conservative part (preload, spring, stop).
@@ -120,14 +157,38 @@ impl Suspension {
     /// Strut forces `[F_fl, F_fr, F_rl, F_rr]` (N, compression positive).
     #[inline]
     pub fn forces(&self, q: &StrutJoints, dq: &StrutJoints) -> [f64; 4] {
+        self.forces_on(q, dq, &self.pieces(q))
+    }
+
+    /// The pieces ([`Strut::piece`]) of the four struts at joint coordinates `q`.
+    #[inline]
+    pub fn pieces(&self, q: &StrutJoints) -> [i8; 4] {
+        let s = self.compressions(q);
+        std::array::from_fn(|i| self.strut(i).piece(s[i]))
+    }
+
+    /// Strut forces of the pieces `pieces` ([`Strut::force_on`]), in
+    /// [`Suspension::forces`] order.
+    #[inline]
+    pub fn forces_on(&self, q: &StrutJoints, dq: &StrutJoints, pieces: &[i8; 4]) -> [f64; 4] {
         let s = self.compressions(q);
         let ds = self.compressions(dq);
         [
-            self.front.force(s[0], ds[0]),
-            self.front.force(s[1], ds[1]),
-            self.rear.force(s[2], ds[2]),
-            self.rear.force(s[3], ds[3]),
+            self.front.force_on(s[0], ds[0], pieces[0]),
+            self.front.force_on(s[1], ds[1], pieces[1]),
+            self.rear.force_on(s[2], ds[2], pieces[2]),
+            self.rear.force_on(s[3], ds[3], pieces[3]),
         ]
+    }
+
+    /// The strut of compression `i` ([`Suspension::compressions`] order).
+    #[inline]
+    pub fn strut(&self, i: usize) -> &Strut {
+        if i < 2 {
+            &self.front
+        } else {
+            &self.rear
+        }
     }
 
     /// Joint-space forces `tau` on `[q_fl, q_fr, q_b, q_phi]` of strut forces `f`.
@@ -180,6 +241,28 @@ mod tests {
                 proptest::prop_assert!((tau[j] + grad).abs() < tol, "{} {} {}", j, tau[j], grad);
             }
         }
+    }
+
+    #[test]
+    fn each_piece_extends_the_law_linearly_and_its_switch_marks_its_range() {
+        let strut = Suspension::new(&TruckParams::nominal()).rear;
+        let h = strut.half_travel;
+        for s in [-1.5 * h, -h, -0.5 * h, 0.0, 0.7 * h, h, 1.2 * h] {
+            // the law as written is its own piece's force
+            assert_eq!(strut.force(s, 0.1), strut.force_on(s, 0.1, strut.piece(s)));
+            // inside a piece its switch is positive, at the edge zero, beyond it negative
+            for piece in [-1, 0, 1] {
+                let g = strut.switching(s, piece);
+                let inside = strut.piece(s) == piece;
+                assert!(inside == (g > 0.0) || g == 0.0, "{s} {piece} {g}");
+            }
+        }
+        assert_eq!(strut.switching(h, 0), 0.0);
+        assert_eq!(strut.switching(h, 1), 0.0);
+        // a stop's piece extended back into free travel keeps the stop's spring
+        let on_stop = strut.force_on(0.5 * h, 0.0, 1);
+        let free = strut.force_on(0.5 * h, 0.0, 0);
+        assert!((on_stop - free + strut.bump_rate * 0.5 * h).abs() < 1e-6 * free.abs());
     }
 
     #[test]

@@ -11,7 +11,7 @@
 //! A dynamics failure (a mass matrix that is not positive definite) writes NaN
 //! derivatives, which the integrator reports as a divergence with time and state.
 
-use std::cell::RefCell;
+use std::cell::{Cell, RefCell};
 
 use multibody::Workspace;
 use nalgebra::Vector3;
@@ -94,7 +94,35 @@ pub struct TireState {
     pub path_rate: f64,
     /// Heading psi of the sprung mass (rad).
     pub heading: f64,
+    /// Contact margin of each tire (m), `min(delta, delta + (c_t / k_t) d(delta)/dt)`: the
+    /// tire carries load (Eq 2.1 with `delta > 0` and `k_t delta + c_t d(delta)/dt > 0`)
+    /// exactly when it is positive. The switching function of lift-off and touchdown.
+    pub contact_margin: [f64; 6],
 }
+
+/// Which piece of each piecewise force law holds: the bump stops of the four struts and
+/// the contact of the six tires. Frozen over an integration step
+/// ([`TruckVehicle::freeze`]), each law is smooth; the driver locates where the state
+/// leaves the pieces and restarts there (docs/numerics.md, "Kinks").
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Pieces {
+    /// Per strut ([`Suspension::compressions`] order): `1` on the compression stop, `-1` on
+    /// the extension stop, `0` in free travel ([`crate::suspension::Strut::piece`]).
+    pub stops: [i8; 4],
+    /// Per tire ([`crate::model::TIRE_NAMES`] order): in contact, `F_z = k_t delta + c_t
+    /// d(delta)/dt`; else `F_z = 0`.
+    pub contact: [bool; 6],
+}
+
+/// Number of switching functions: four struts, six tires.
+pub const SWITCHES: usize = 10;
+
+/// How far (m) the state goes beyond the edge of its pieces before the switching functions
+/// ([`TruckVehicle::switching`]) cross zero: on the new pieces they then start at least
+/// twice this inside, so a crossing located to rounding never leaves the run on an edge
+/// where no crossing is seen (a change of about 1e-9 of a 0.1 m travel, 0.01 N of a
+/// bump-stop force).
+pub const SWITCH_HYSTERESIS_M: f64 = 1e-9;
 
 /// The truck on a terrain, ready to integrate (module docs).
 #[derive(Debug)]
@@ -103,6 +131,8 @@ pub struct TruckVehicle {
     pub(crate) suspension: Suspension,
     pub(crate) model: multibody::Model,
     pub(crate) ws: RefCell<Workspace>,
+    /// The frozen pieces of the force laws, or `None` for the laws as written.
+    pieces: Cell<Option<Pieces>>,
     pub(crate) mounts: [TireMount; 6],
     /// Effective tracks: left, right.
     tracks: [EffectiveTrack; 2],
@@ -169,6 +199,7 @@ impl TruckVehicle {
             suspension: Suspension::new(params),
             model,
             ws,
+            pieces: Cell::new(None),
             mounts,
             tracks,
             vertical,
@@ -233,7 +264,13 @@ impl TruckVehicle {
         let (q, v) = (&y[state::Q..state::Q + NQ], &y[state::V..state::V + NV]);
         multibody::update_kinematics(&self.model, ws, q, v)?;
         let dq = Self::strut_joints(&v[6..]);
-        let f = self.suspension.forces(&Self::strut_joints(&q[7..]), &dq);
+        let pieces = self.pieces.get();
+        let f = match pieces {
+            Some(p) => self
+                .suspension
+                .forces_on(&Self::strut_joints(&q[7..]), &dq, &p.stops),
+            None => self.suspension.forces(&Self::strut_joints(&q[7..]), &dq),
+        };
         tau.fill(0.0);
         tau[6..].copy_from_slice(&self.suspension.joint_forces(&f));
         let rot = ws.body_rotation(body::SPRUNG);
@@ -254,9 +291,13 @@ impl TruckVehicle {
             drive_force: self.speed.force(speed, y[state::PI]),
             ..TireState::default()
         };
+        let (k_t, c_t) = (
+            self.params.tire_vertical_stiffness_n_per_m,
+            self.params.tire_vertical_damping_n_s_per_m,
+        );
         let mut centres = [Vector3::zeros(); 6];
         let mut velocities = [Vector3::zeros(); 6];
-        let mut slopes = [0.0; 6];
+        let mut slopes = [(0.0, 1.0); 6];
         let mut rear_load = 0.0;
         for (i, m) in self.mounts.iter().enumerate() {
             // the effective wheel centre: the column above the hanging point (zero length
@@ -267,19 +308,26 @@ impl TruckVehicle {
             let s = y[state::PATH] + (c - origin).dot(&h);
             let contact = self.tracks[track_index(m)].contact(s, c.z);
             let (sin, cos) = contact.slope.sin_cos();
+            slopes[i] = (sin, cos);
             let rate = vc.dot(&h) * sin - vc.z * cos;
-            let fz = self.vertical.normal_force(contact.deflection, rate);
+            let delta = contact.deflection;
+            out.contact_margin[i] = delta.min(delta + (c_t / k_t) * rate);
+            let fz = match pieces {
+                Some(p) if p.contact[i] => k_t * delta + c_t * rate,
+                Some(_) => 0.0,
+                None => self.vertical.normal_force(delta, rate),
+            };
             out.normal_force[i] = fz;
             out.deflection[i] = contact.deflection;
-            (centres[i], velocities[i], slopes[i]) = (c, vc, contact.slope);
+            (centres[i], velocities[i]) = (c, vc);
             if !m.front {
                 rear_load += fz;
             }
         }
-        let steer = self.steer.angle(t);
+        // wheel headings: the front wheels steered, the rear ones along the heading
+        let front = (heading + self.steer.angle(t)).sin_cos();
         for (i, m) in self.mounts.iter().enumerate() {
-            let psi = if m.front { heading + steer } else { heading };
-            let (sin_w, cos_w) = psi.sin_cos();
+            let (sin_w, cos_w) = if m.front { front } else { (h.y, h.x) };
             let (e_x, e_y) = (
                 Vector3::new(cos_w, sin_w, 0.0),
                 Vector3::new(-sin_w, cos_w, 0.0),
@@ -293,7 +341,7 @@ impl TruckVehicle {
             } else {
                 out.drive_force * fz / rear_load
             };
-            let (sin, cos) = slopes[i].sin_cos();
+            let (sin, cos) = slopes[i];
             let normal = Vector3::new(-sin * h.x, -sin * h.y, cos);
             let tangent = Vector3::new(cos * e_x.x, cos * e_x.y, sin);
             let force = normal * fz + e_y * fy + tangent * fx;
@@ -306,6 +354,49 @@ impl TruckVehicle {
             out.lateral_total += force.dot(&lat);
         }
         Ok(out)
+    }
+
+    /// Freeze the pieces of the force laws (`Some`): every evaluation until the next call
+    /// uses those pieces, extended linearly beyond their ranges, whatever the state; `None`
+    /// restores the laws as written. [`crate::simulate()`] freezes them between the located
+    /// kinks (docs/numerics.md, "Kinks").
+    pub fn freeze(&self, pieces: Option<Pieces>) {
+        self.pieces.set(pieces);
+    }
+
+    /// The pieces that hold at `y` under the laws as written, given its tire state.
+    pub fn pieces_at(&self, y: &[f64], tires: &TireState) -> Pieces {
+        Pieces {
+            stops: self
+                .suspension
+                .pieces(&Self::strut_joints(&y[state::Q + 7..])),
+            contact: tires.contact_margin.map(|w| w > 0.0),
+        }
+    }
+
+    /// The switching functions of `pieces` at `y` (m): per strut the distance of its
+    /// compression inside its piece's range ([`crate::suspension::Strut::switching`]), per
+    /// tire its contact margin, negated for a tire off the ground, each plus
+    /// [`SWITCH_HYSTERESIS_M`]. All are positive while `y` stays inside `pieces`; the
+    /// smallest and its index ([`SWITCHES`] order).
+    pub fn switching(&self, y: &[f64], tires: &TireState, pieces: &Pieces) -> (f64, usize) {
+        let s = self
+            .suspension
+            .compressions(&Self::strut_joints(&y[state::Q + 7..]));
+        let stops = (0..4).map(|i| self.suspension.strut(i).switching(s[i], pieces.stops[i]));
+        let tires = (0..6).map(|i| {
+            let w = tires.contact_margin[i];
+            if pieces.contact[i] {
+                w
+            } else {
+                -w
+            }
+        });
+        stops
+            .chain(tires)
+            .enumerate()
+            .map(|(i, g)| (g + SWITCH_HYSTERESIS_M, i))
+            .fold((f64::INFINITY, 0), |a, b| if b.0 < a.0 { b } else { a })
     }
 
     /// Mechanical energy (J) at state `y`: kinetic + gravitational + strut springs and
@@ -329,6 +420,15 @@ impl TruckVehicle {
             .map(|d| 0.5 * k * d.max(0.0).powi(2))
             .sum();
         Ok(kinetic + gravity + struts + tire)
+    }
+
+    /// The rollover margin ([`TruckVehicle::rollover_margin_ws`]) at `y`, from the
+    /// kinematics alone (no tire or strut forces).
+    pub(crate) fn rollover_margin(&self, y: &[f64]) -> Result<f64, multibody::DynamicsError> {
+        let mut ws = self.ws.borrow_mut();
+        let (q, v) = (&y[state::Q..state::Q + NQ], &y[state::V..state::V + NV]);
+        multibody::update_kinematics(&self.model, &mut ws, q, v)?;
+        Ok(self.rollover_margin_ws(&ws))
     }
 
     /// Signed horizontal distance (m) of the whole-vehicle cg inside the nearer of the two
