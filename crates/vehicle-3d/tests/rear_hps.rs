@@ -261,3 +261,156 @@ fn the_struts_only_dissipate() {
         "the struts took only {lost} J of {released} J"
     );
 }
+
+/// The hand-derived two-axle model: the truck in its vertical plane is one rigid body (the
+/// articulation joint is rigid in pitch) of the sprung mass (the parts less the four wheel
+/// ends) on one spring per axle, two struts' static stiffness in series with two tires'
+/// tangent stiffness at the static loads; unsprung masses left out. Returns the two
+/// natural frequencies (Hz), lower first, of
+/// `det([[k_f + k_r, -(k_f a + k_r b)], [-(k_f a + k_r b), k_f a² + k_r b²]] - w² diag(m, I)) = 0`
+/// with `a`, `b` the axles' signed distances ahead of the sprung cg and `I` its pitch
+/// inertia (parallel axes; the wheel ends' spin inertia spins free and is not pitched).
+fn hand_bounce_pitch(p: &VehicleParams, v: &Vehicle) -> [f64; 2] {
+    let s = v.statics();
+    let r = p.tire.unloaded_radius_m;
+    let (m_w, i_w) = (p.wheel_mass_kg, p.wheel_spin_inertia_kg_m2);
+    // (mass, x ahead of the joint, height, pitch inertia about its own cg)
+    let mut parts = vec![(
+        p.front_unit.mass_kg,
+        p.front_unit.cg_to_joint_m,
+        p.front_unit.cg_height_m,
+        p.front_unit.pitch_inertia_kg_m2,
+    )];
+    for q in p.rear_parts(Load::Loaded) {
+        parts.push((
+            q.mass_kg,
+            -q.cg_to_joint_m,
+            q.cg_height_m,
+            q.pitch_inertia_kg_m2,
+        ));
+    }
+    let (x_f, x_r) = (p.front_axle_to_joint_m, -p.rear_axle_to_joint_m);
+    let wheels = [
+        (x_f, r - s.front_tire_deflection_m),
+        (x_r, r - s.rear_tire_deflection_m),
+    ];
+    let m = parts.iter().map(|q| q.0).sum::<f64>() - 4.0 * m_w;
+    let first = |f: &dyn Fn(f64, f64) -> f64| {
+        (parts.iter().map(|q| q.0 * f(q.1, q.2)).sum::<f64>()
+            - wheels.iter().map(|w| 2.0 * m_w * f(w.0, w.1)).sum::<f64>())
+            / m
+    };
+    let (x_s, z_s) = (first(&|x, _| x), first(&|_, z| z));
+    let arm = |x: f64, z: f64| (x - x_s).powi(2) + (z - z_s).powi(2);
+    let inertia = parts.iter().map(|q| q.3 + q.0 * arm(q.1, q.2)).sum::<f64>()
+        - wheels
+            .iter()
+            .map(|w| 2.0 * (i_w + m_w * arm(w.0, w.1)))
+            .sum::<f64>();
+    let table = tire_fiala::LoadDeflectionTable::new(&p.tire.load_deflection).unwrap();
+    let [front, rear] = v.axle_struts().map(Option::unwrap);
+    let axle = |a: &vehicle_3d::suspension::AxleStruts, deflection: f64| {
+        let (k_s, k_t) = (
+            a.strut.static_stiffness(a.static_travel_m).unwrap(),
+            table.stiffness(deflection),
+        );
+        2.0 * k_s * k_t / (k_s + k_t)
+    };
+    let (k_f, k_r) = (
+        axle(front, s.front_tire_deflection_m),
+        axle(rear, s.rear_tire_deflection_m),
+    );
+    let (a, b) = (x_f - x_s, x_r - x_s);
+    let (k11, k12, k22) = (k_f + k_r, -(k_f * a + k_r * b), k_f * a * a + k_r * b * b);
+    // m I w⁴ - (k11 I + k22 m) w² + k11 k22 - k12² = 0
+    let (qa, qb, qc) = (
+        m * inertia,
+        -(k11 * inertia + k22 * m),
+        k11 * k22 - k12 * k12,
+    );
+    let disc = (qb * qb - 4.0 * qa * qc).sqrt();
+    let hz = |w2: f64| w2.sqrt() / (2.0 * std::f64::consts::PI);
+    [hz((-qb - disc) / (2.0 * qa)), hz((-qb + disc) / (2.0 * qa))]
+}
+
+/// The vehicle's own linear modes at the static state rolling at 3 m/s: the eigenvalues of
+/// the right-hand side's Jacobian (central differences), the oscillatory modes (damping
+/// ratio below 0.5) between 0.5 and 4 Hz whose eigenvector (inverse iteration) moves the
+/// front unit in its vertical plane (bounce and pitch) at least a hundred times more than
+/// out of it (lateral, roll, yaw, articulation, rear roll).
+/// Their natural frequencies `|lambda| / 2 pi` against [`hand_bounce_pitch`]: within 4 %,
+/// what the unsprung masses (2 000 kg per corner on the struts, their hop near 7 Hz) and
+/// the strut chambers' compliance behind the orifices, both left out by hand, may move.
+/// The losses that have no linearization are off: the struts' Coulomb friction (it sticks
+/// at small amplitude), the tires' horizontal forces (slip at standstill) and their
+/// damping (so the modes are those of the springs).
+#[test]
+fn the_bounce_and_pitch_modes_match_the_two_axle_hand_model() {
+    use nalgebra::{Complex, DMatrix, DVector};
+    let mut p = both_axles();
+    p.tire.vertical_damping_n_s_per_m = 0.0;
+    p.tire.u_max = 1e-12;
+    p.tire.u_min = 1e-12;
+    p.drive.kp_n_m_per_m_s = 1e-12;
+    p.drive.ki_n_m_per_m = 0.0;
+    for s in [&mut p.hps, p.rear_hps.as_mut().unwrap()] {
+        s.friction.mu_v = 0.0;
+        s.friction.f_c = 0.0;
+        s.friction.f_s = 0.0;
+    }
+    let options = VehicleOptions {
+        speed_m_s: 3.0,
+        ..Default::default()
+    };
+    let v = vehicle(&p, Load::Loaded, options);
+    let y0 = v.initial_state();
+    let n = y0.len();
+    let mut jac = DMatrix::<f64>::zeros(n, n);
+    let (mut fp, mut fm) = (vec![0.0; n], vec![0.0; n]);
+    for c in 0..n {
+        let h = 1e-7 * y0[c].abs().max(1e-2);
+        let mut y = y0.clone();
+        y[c] = y0[c] + h;
+        v.rhs(0.0, &y, &mut fp);
+        y[c] = y0[c] - h;
+        v.rhs(0.0, &y, &mut fm);
+        for r in 0..n {
+            jac[(r, c)] = (fp[r] - fm[r]) / (2.0 * h);
+        }
+    }
+    let (o, j) = (*v.offsets(), *v.joints());
+    let jc = jac.map(|x| Complex::new(x, 0.0));
+    let mut found: Vec<f64> = Vec::new();
+    for lambda in jac.complex_eigenvalues().iter() {
+        let f = lambda.norm() / (2.0 * std::f64::consts::PI);
+        // oscillatory modes only: the tire lags relax at v / sigma (real eigenvalues)
+        if lambda.im <= 0.0 || -lambda.re > 0.5 * lambda.norm() || !(0.5..4.0).contains(&f) {
+            continue;
+        }
+        let shift = lambda * Complex::new(1.0 + 1e-9, 1e-9);
+        let lu = (&jc - DMatrix::identity(n, n) * shift).lu();
+        let mut x = DVector::from_element(n, Complex::new(1.0, 0.0));
+        for _ in 0..3 {
+            x = lu.solve(&x).unwrap();
+            x /= Complex::new(x.norm(), 0.0);
+        }
+        let at = |k: usize| x[o.v + k].norm_sqr();
+        let len2 = 9.0; // a 3 m lever for the rotations
+        let vertical = at(5) + len2 * at(1);
+        let rates = [j.articulation.1, j.rear_roll.unwrap().1];
+        let out = at(4) + len2 * (at(0) + at(2) + rates.iter().map(|&k| at(k)).sum::<f64>());
+        if vertical > 100.0 * out {
+            found.push(f);
+        }
+    }
+    found.sort_by(f64::total_cmp);
+    let hand = hand_bounce_pitch(&p, &v);
+    eprintln!("vertical-plane modes {found:?} Hz, hand {hand:?} Hz");
+    assert_eq!(found.len(), 2, "{found:?}");
+    for (model, hand) in found.iter().zip(hand) {
+        assert!(
+            (model / hand - 1.0).abs() < 0.04,
+            "{model} Hz against the hand {hand} Hz"
+        );
+    }
+}
