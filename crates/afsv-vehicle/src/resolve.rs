@@ -337,7 +337,8 @@ fn axles<'a>(a: &'a Articulated, o: &Origin<'_>) -> Result<[&'a Axle; 2], Descri
 /// The rear axle's strut, checked, and where it came from: none on a rigid axle; on an
 /// `hps` axle the strut given, or by default the front strut (`params.hps`) scaled for the
 /// rear static load (`vehicle_3d::suspension::scaled_strut`). The strut must hold the
-/// vehicle up in both load cases, within its travel or on an end stop.
+/// vehicle up in both load cases within its travel or topped out on its extension stop
+/// (a passive strut scaled for the loaded truck does that unloaded), never bottomed out.
 fn rear_strut(
     rear: &Axle,
     params: &VehicleParams,
@@ -377,8 +378,18 @@ fn rear_strut(
         .map_err(|e| o.err(PATH, e.to_string()))?;
     for load in [Load::Unloaded, Load::Loaded] {
         let statics = Statics::of(params, load).map_err(|e| o.err(PATH, e.to_string()))?;
-        vehicle_3d::suspension::static_travel(&hps, statics.rear_strut_force_n(params))
+        let force = statics.rear_strut_force_n(params);
+        let z = vehicle_3d::suspension::static_travel(&hps, force)
             .map_err(|e| o.err(PATH, format!("{load}: {e}")))?;
+        if z > strut.travel {
+            return Err(o.err(
+                PATH,
+                format!(
+                    "{load}: the strut rests on its compression stop under the static load of {:.1} kN (raise p_h0 or the areas)",
+                    force / 1e3
+                ),
+            ));
+        }
     }
     Ok((Some(strut), Some(source)))
 }
