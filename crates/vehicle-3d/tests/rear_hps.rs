@@ -414,3 +414,80 @@ fn the_bounce_and_pitch_modes_match_the_two_axle_hand_model() {
         );
     }
 }
+
+/// The D1 ride (20 km/h, 100 m after a 20 m run-in, m_c 0.3) of the layouts rigid, front
+/// HPS, rear HPS and front + rear HPS on class E and C terrain, loaded and unloaded, seeds
+/// 1-5: a_wz, the front and rear strut travel, the run time (the table of
+/// docs/layouts.md). About a minute:
+/// `cargo test --release -p vehicle-3d --test rear_hps -- --ignored --nocapture`.
+#[test]
+#[ignore]
+fn d1_ride_of_the_layouts() {
+    use terrain_psd::IsoClass;
+    use vehicle_3d::scenarios::{ride_on, ride_tracks, RideSpec, TerrainSpec};
+    let seeds = 1..=5u64;
+    let rigid_rear = VehicleParams::nominal();
+    let rear = both_axles();
+    let layouts = [
+        ("rigid", FrontAxle::Rigid, &rigid_rear),
+        ("front HPS", FrontAxle::Suspended, &rigid_rear),
+        ("rear HPS", FrontAxle::Rigid, &rear),
+        ("front + rear HPS", FrontAxle::Suspended, &rear),
+    ];
+    let stat = |x: &[f64]| {
+        let n = x.len() as f64;
+        let mean = x.iter().sum::<f64>() / n;
+        let sd = (x.iter().map(|v| (v - mean).powi(2)).sum::<f64>() / (n - 1.0)).sqrt();
+        format!("{mean:.3} ± {sd:.3}")
+    };
+    for load in [Load::Loaded, Load::Unloaded] {
+        let v = vehicle(&rear, load, VehicleOptions::default());
+        let y = v.initial_state();
+        for (name, a) in ["front", "rear"].into_iter().zip(v.axle_struts()) {
+            let a = a.unwrap();
+            let top = a.strut.static_force(-a.strut.params().travel).unwrap();
+            println!(
+                "{load} {name}: static travel {:.5} m, pressure {:.4} MPa, stiffness {:.4e} N/m, force fully extended {:.1} kN",
+                a.static_travel_m,
+                y[a.states(0)][1] / 1e6,
+                a.strut.static_stiffness(a.static_travel_m.max(-a.strut.params().travel)).unwrap(),
+                top / 1e3
+            );
+        }
+    }
+    println!("| class | load | layout | a_wz (m/s²) | front d_s (m) | rear d_s (m) | run time (s) | per seed a_wz |");
+    println!("|---|---|---|---|---|---|---|---|");
+    for class in [IsoClass::E, IsoClass::C] {
+        for load in [Load::Loaded, Load::Unloaded] {
+            for (name, front, p) in layouts {
+                let spec = RideSpec {
+                    terrain: TerrainSpec {
+                        class,
+                        ..TerrainSpec::default()
+                    },
+                    ..RideSpec::d1(load, front)
+                };
+                let (mut awz, mut df, mut dr, mut time) = (vec![], vec![], vec![], vec![]);
+                for seed in seeds.clone() {
+                    let tracks = ride_tracks(p, &spec, seed).unwrap();
+                    let t = std::time::Instant::now();
+                    let (_, m) = ride_on(p, &spec, tracks).unwrap();
+                    time.push(t.elapsed().as_secs_f64());
+                    awz.push(m.a_wz_m_s2);
+                    df.extend(m.strut_travel_p2p_m);
+                    dr.extend(m.rear_strut_travel_p2p_m);
+                }
+                let opt = |x: &[f64]| if x.is_empty() { "-".to_string() } else { stat(x) };
+                let each: Vec<String> = awz.iter().map(|a| format!("{a:.3}")).collect();
+                println!(
+                    "| {class:?} | {load} | {name} | {} | {} | {} | {} | {} |",
+                    stat(&awz),
+                    opt(&df),
+                    opt(&dr),
+                    stat(&time),
+                    each.join(" / ")
+                );
+            }
+        }
+    }
+}
