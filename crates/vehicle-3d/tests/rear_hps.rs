@@ -477,7 +477,13 @@ fn d1_ride_of_the_layouts() {
                     df.extend(m.strut_travel_p2p_m);
                     dr.extend(m.rear_strut_travel_p2p_m);
                 }
-                let opt = |x: &[f64]| if x.is_empty() { "-".to_string() } else { stat(x) };
+                let opt = |x: &[f64]| {
+                    if x.is_empty() {
+                        "-".to_string()
+                    } else {
+                        stat(x)
+                    }
+                };
                 let each: Vec<String> = awz.iter().map(|a| format!("{a:.3}")).collect();
                 println!(
                     "| {class:?} | {load} | {name} | {} | {} | {} | {} | {} |",
