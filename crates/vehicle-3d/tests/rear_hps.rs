@@ -153,7 +153,7 @@ fn a_mirrored_input_gives_the_mirrored_response() {
         let v = vehicle(&p, Load::Loaded, options);
         let j = *v.joints();
         let [front, rear] = v.axle_struts().map(|a| a.unwrap().carriers);
-        sampled(&v, &v.initial_state(), 3.0, |y| {
+        sampled(&v, &v.initial_state(), 2.0, |y| {
             vec![
                 y[j.articulation.0],
                 y[j.rear_roll.unwrap().0],
@@ -198,7 +198,7 @@ fn a_mirrored_input_gives_the_mirrored_response() {
 /// bounce, pitch and roll on flat ground: the energy of [`Vehicle::energy`] (with the
 /// struts' stored energy) never rises from one 10 ms sample to the next (to 1e-4 of the
 /// release energy), and
-/// the struts' orifices take a good part of it within 2 s. The seal friction is off: Eq
+/// the struts' orifices take a good part of it within 1.5 s. The seal friction is off: Eq
 /// 5.3's band interpolates from the previous direction's friction level, so just after a
 /// reversal the friction pushes along the motion (docs/layouts.md).
 #[test]
@@ -238,7 +238,7 @@ fn the_struts_only_dissipate() {
             .map(|a| a.stored_energy(y, o.v).unwrap())
             .sum()
     };
-    let both = sampled(&v, &y, 2.0, |y| {
+    let both = sampled(&v, &y, 1.5, |y| {
         let e = v.energy(y).unwrap();
         vec![e, e - stored(y)]
     });
