@@ -1,7 +1,7 @@
 //! From a description to the models' parameters, checked: every scalar against the range of
 //! its parameter registry (`vehicle_3d::registry`, `tire_fiala`, `afs_hydraulics`,
 //! `hps_emulsion`, `roll_truck`), then each model's own validation (relations between
-//! fields), then what the models can run (one axle per unit, one tire set, a rigid rear
+//! fields), then what the models can run (one axle per unit, one tire set; HPS on either
 //! axle). Every error names the description's field path.
 
 use std::path::{Path, PathBuf};
@@ -38,6 +38,11 @@ pub struct ArticulatedVehicle {
     pub front_strut: Option<StrutParams>,
     /// Where the strut came from: a built-in name, a file, or `inline`.
     pub front_strut_source: Option<String>,
+    /// How the rear axle is described; its strut is `params.rear_hps`.
+    pub rear_suspension: Suspension,
+    /// Where the rear strut came from: a built-in name, a file, `inline`, or the front
+    /// strut scaled for the rear static load (the default when `strut` is left out).
+    pub rear_strut_source: Option<String>,
     /// The yaw-plane model's data per load case.
     pub yaw_plane: YawPlaneCases,
     /// Whether `yaw_plane` was derived from the 3-D data (no `[yaw_plane]` tables).
@@ -196,7 +201,7 @@ fn articulated(a: &Articulated, o: &Origin<'_>) -> Result<ArticulatedVehicle, De
             "an `hps` axle needs its strut: a built-in name (front-axle, lab-1orifice, lab-2orifice), a strut file or an inline table",
         ));
     }
-    let params = VehicleParams {
+    let mut params = VehicleParams {
         gravity_m_s2: a.gravity_m_s2,
         front_axle_to_joint_m: front.distance_from_joint_m,
         rear_axle_to_joint_m: rear.distance_from_joint_m,
@@ -213,6 +218,7 @@ fn articulated(a: &Articulated, o: &Origin<'_>) -> Result<ArticulatedVehicle, De
         tire: tire.clone(),
         steering: a.steering.clone(),
         hps: front_strut.unwrap_or_else(StrutParams::front_axle),
+        rear_hps: None,
         drive: a.drive,
         // a description is a vehicle, not a model form: the CLI's --paper-form sets it
         yaw_inertia_form: vehicle_3d::YawInertiaForm::EnergyConsistent,
@@ -267,6 +273,8 @@ fn articulated(a: &Articulated, o: &Origin<'_>) -> Result<ArticulatedVehicle, De
                 }
             })?;
     }
+    let (rear_hps, rear_strut_source) = rear_strut(rear, &params, o)?;
+    params.rear_hps = rear_hps;
     let (yaw_plane, yaw_plane_derived) = match &a.yaw_plane {
         Some(y) => {
             for (case, p) in [("loaded", &y.loaded), ("unloaded", &y.unloaded)] {
@@ -293,6 +301,8 @@ fn articulated(a: &Articulated, o: &Origin<'_>) -> Result<ArticulatedVehicle, De
         front_suspension: front.suspension,
         front_strut,
         front_strut_source,
+        rear_suspension: rear.suspension,
+        rear_strut_source,
         yaw_plane,
         yaw_plane_derived,
     })
@@ -315,19 +325,73 @@ fn axles<'a>(a: &'a Articulated, o: &Origin<'_>) -> Result<[&'a Axle; 2], Descri
     if rear.unit != UnitName::Rear {
         return Err(o.err("axle[1].unit", "the second axle must hang on the rear unit"));
     }
-    if rear.suspension != Suspension::Rigid {
-        return Err(o.err(
-            "axle[1].suspension",
-            "the 3-D model's rear axle is rigid; a suspended rear axle is not modelled yet",
-        ));
-    }
-    if rear.strut.is_some() {
+    if rear.suspension == Suspension::Rigid && rear.strut.is_some() {
         return Err(o.err(
             "axle[1].strut",
-            "a strut on the rigid rear axle is never used; remove it",
+            "a strut on a rigid rear axle is never used (no command tries a rear candidate); remove it or set suspension = \"hps\"",
         ));
     }
     Ok([front, rear])
+}
+
+/// The rear axle's strut, checked, and where it came from: none on a rigid axle; on an
+/// `hps` axle the strut given, or by default the front strut (`params.hps`) scaled for the
+/// rear static load (`vehicle_3d::suspension::scaled_strut`). The strut must hold the
+/// vehicle up in both load cases within its travel or topped out on its extension stop
+/// (a passive strut scaled for the loaded truck does that unloaded), never bottomed out.
+fn rear_strut(
+    rear: &Axle,
+    params: &VehicleParams,
+    o: &Origin<'_>,
+) -> Result<(Option<StrutParams>, Option<String>), DescriptionError> {
+    const PATH: &str = "axle[1].strut";
+    if rear.suspension == Suspension::Rigid {
+        return Ok((None, None));
+    }
+    let (strut, source) = match &rear.strut {
+        Some(s) => {
+            let (p, src) = strut(s, PATH, o)?;
+            let where_ = strut_path(Some(s), PATH);
+            in_ranges(&p, o, |n| format!("{where_}.{n}"))?;
+            (p, src)
+        }
+        None => {
+            let ratio = params
+                .rear_strut_load_ratio()
+                .map_err(|e| o.err(PATH, e.to_string()))?;
+            let p = vehicle_3d::suspension::scaled_strut(&params.hps, ratio).map_err(|e| {
+                o.err(
+                    PATH,
+                    format!("the front strut scaled by {ratio:.3} for the rear load: {e}"),
+                )
+            })?;
+            in_ranges(&p, o, |n| {
+                format!("{PATH} (the front strut scaled by {ratio:.3}).{n}")
+            })?;
+            (
+                p,
+                format!("the front strut scaled by {ratio:.3} for the rear static load"),
+            )
+        }
+    };
+    let hps = hps_emulsion::HpsStrut::new(&strut, &hps_emulsion::HpsExtensions::default())
+        .map_err(|e| o.err(PATH, e.to_string()))?;
+    for load in [Load::Unloaded, Load::Loaded] {
+        let statics = Statics::of(params, load).map_err(|e| o.err(PATH, e.to_string()))?;
+        let force = statics.rear_strut_force_n(params);
+        let z = vehicle_3d::suspension::static_travel(&hps, force)
+            .map_err(|e| o.err(PATH, format!("{load}: {e}")))?;
+        if z > strut.travel {
+            return Err(o.err(
+                PATH,
+                format!(
+                    "{load}: the strut rests on its compression stop under the static load of {:.1} kN (raise p_h0 or the areas)",
+                    force / 1e3
+                ),
+            ));
+        }
+    }
+    Ok((Some(strut), Some(source)))
 }
 
 /// The tire set both axles use.

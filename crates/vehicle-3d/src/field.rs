@@ -4,8 +4,9 @@
 //!
 //! - a time-varying speed setpoint of the PI drive ([`SpeedSetpoint`]): the driver's throttle
 //!   as a longitudinal excitation, where the paper's drive holds one speed;
-//! - the front-axle HPS strut's extensions ([`hps_emulsion::HpsExtensions`]), e.g. the gas
-//!   heat transfer of section 5.4.2 (a gas-temperature state) on the vehicle's struts.
+//! - the HPS strut's extensions ([`hps_emulsion::HpsExtensions`]), e.g. the gas heat
+//!   transfer of section 5.4.2 (a gas-temperature state) on the vehicle's struts (front,
+//!   and rear when the rear axle is suspended).
 //!
 //! The discovery adapter of the 3-D vehicle (`afsv_discovery::vehicle3d`) uses them.
 
@@ -66,7 +67,8 @@ impl SpeedSetpoint {
 pub struct FieldEffects {
     /// Speed setpoint of the PI drive over time; `None` holds `VehicleOptions::speed_m_s`.
     pub speed_setpoint: Option<SpeedSetpoint>,
-    /// Extensions of both front HPS struts (used with `FrontAxle::Suspended` only).
+    /// Extensions of every HPS strut: both front struts (with `FrontAxle::Suspended`) and
+    /// both rear struts (with `VehicleParams::rear_hps`).
     pub hps: HpsExtensions,
 }
 

@@ -5,13 +5,16 @@
 //! core in minimal coordinates.
 //!
 //! - [`params`]: Table 6.1 and every documented assumption, [`registry`]: the same by name;
-//!   [`statics`]: the hand tire loads; [`model`]: the tree (14 DOF, 16 with the HPS);
+//!   [`statics`]: the hand tire loads; [`model`]: the tree (14 DOF, 16 with the front
+//!   HPS, 18 with HPS on both axles);
 //! - [`steering`]: the struts between their 3-D mounts; [`tires`]: one tire on its cached
 //!   track; [`vehicle`]: the ODE system; [`simulate`](mod@simulate): a recorded run;
 //! - [`scenarios`]: the design runs D1 (ride), D2 (roll), D3 (yaw) and their measures;
 //!   [`path_change`](mod@path_change): the V3 path change (section 6.3) with the
 //!   path-following driver (re-exported by `scenarios`);
 //!   [`yaw_mode`]: which addition of the 3-D model moves the yaw mode;
+//! - [`suspension`]: HPS struts on any axle (the rear strut's default, static travel,
+//!   stored energy);
 //! - [`cab_ride`]: the cab on mounts and the suspension seat driven by a ride run's frame
 //!   motion: a_wz on the frame and at the seat, SEAT (`docs/layouts.md`).
 //!
@@ -26,9 +29,11 @@ pub mod path_change;
 pub mod registry;
 pub mod scenarios;
 pub mod simulate;
+mod state_names;
 pub mod statics;
 pub mod steering;
 mod stiff_block;
+pub mod suspension;
 pub mod tires;
 pub mod vehicle;
 pub mod yaw_mode;

@@ -7,9 +7,12 @@
 //! | 2, 4 front-left / front-right wheel end | revolute about y | spin |
 //! | 5 hitch (massless, at the joint) | revolute about z | articulation theta |
 //! | 6 rear unit + payload (origin at the joint) | revolute about x | rear-unit roll |
-//! | 7, 8 rear-left / rear-right wheel end | revolute about y | spin |
+//! | 7, 9 rear-left / rear-right wheel carrier (massless) | prismatic along the rear unit's z (rear HPS), else fixed | strut travel |
+//! | 8, 10 rear-left / rear-right wheel end | revolute about y | spin |
 //!
-//! 14 DOF unsuspended, 16 with the front-axle HPS (Table "s6_model_dof"). The two steering
+//! 14 DOF unsuspended, 16 with the front-axle HPS (Table "s6_model_dof"), 18 with HPS on
+//! both axles: the rear struts are mounted as the front ones, at the wheel centres along
+//! the carrying unit's z, ratio 1 (`docs/layouts.md`, "HPS on any axle"). The two steering
 //! struts are massless force elements between the front unit and the hitch, so their spins
 //! about their own axes (Fig 6.2) do not appear.
 //!
@@ -52,10 +55,14 @@ pub mod body {
     pub const HITCH: usize = 5;
     /// Rear unit with its payload.
     pub const REAR: usize = 6;
+    /// Rear-left wheel carrier.
+    pub const CARRIER_RL: usize = 7;
     /// Rear-left wheel end.
-    pub const WHEEL_RL: usize = 7;
+    pub const WHEEL_RL: usize = 8;
+    /// Rear-right wheel carrier.
+    pub const CARRIER_RR: usize = 9;
     /// Rear-right wheel end.
-    pub const WHEEL_RR: usize = 8;
+    pub const WHEEL_RR: usize = 10;
 }
 
 /// Tire names in state and record order.
@@ -91,13 +98,13 @@ pub const TIRE_MOUNTS: [TireMount; 4] = [
     },
     TireMount {
         wheel: body::WHEEL_RL,
-        carrier: body::REAR,
+        carrier: body::CARRIER_RL,
         left: true,
         front: false,
     },
     TireMount {
         wheel: body::WHEEL_RR,
-        carrier: body::REAR,
+        carrier: body::CARRIER_RR,
         left: false,
         front: false,
     },
@@ -171,7 +178,8 @@ pub enum FrontAxle {
 }
 
 /// The multibody tree and the layout of `p` for `load` (parameters validated by the
-/// caller); `lock_rear_roll` fixes the rear-unit roll joint (the yaw-mode analysis).
+/// caller); `lock_rear_roll` fixes the rear-unit roll joint (the yaw-mode analysis). The
+/// rear carriers slide when `p.rear_hps` holds a strut.
 pub fn build_tree(
     p: &VehicleParams,
     load: Load,
@@ -256,10 +264,14 @@ pub fn build_tree(
     let mut b = ModelBuilder::new(Vector3::new(0.0, 0.0, -p.gravity_m_s2));
     let place = |c: Vector3<f64>| Isometry3::translation(c.x, c.y, c.z);
     let spin = Joint::Revolute { axis: Vector3::y() };
-    let carrier_joint = match front_axle {
-        FrontAxle::Rigid => Joint::Fixed,
-        FrontAxle::Suspended => Joint::Prismatic { axis: Vector3::z() },
+    let slide = |suspended: bool| {
+        if suspended {
+            Joint::Prismatic { axis: Vector3::z() }
+        } else {
+            Joint::Fixed
+        }
     };
+    let carrier_joint = slide(front_axle == FrontAxle::Suspended);
     b.add_body(Body {
         name: "front_unit".into(),
         parent: None,
@@ -278,16 +290,22 @@ pub fn build_tree(
         com: Vector3::zeros(),
         inertia: wheel.inertia,
     };
+    let carrier_body = |name: String, parent: usize, joint: Joint, c: Vector3<f64>| Body {
+        name,
+        parent: Some(parent),
+        joint,
+        placement: place(c),
+        mass: 0.0,
+        com: Vector3::zeros(),
+        inertia: Matrix3::zeros(),
+    };
     for (side, c) in ["left", "right"].into_iter().zip(front_wheels) {
-        let carrier = b.add_body(Body {
-            name: format!("carrier_front_{side}"),
-            parent: Some(body::FRONT),
-            joint: carrier_joint,
-            placement: place(c),
-            mass: 0.0,
-            com: Vector3::zeros(),
-            inertia: Matrix3::zeros(),
-        });
+        let carrier = b.add_body(carrier_body(
+            format!("carrier_front_{side}"),
+            body::FRONT,
+            carrier_joint,
+            c,
+        ));
         b.add_body(wheel_body(
             &format!("wheel_front_{side}"),
             carrier,
@@ -316,11 +334,18 @@ pub fn build_tree(
         com: rear.com,
         inertia: rear.inertia,
     });
+    let rear_joint = slide(p.rear_hps.is_some());
     for (side, c) in ["left", "right"].into_iter().zip(rear_wheels) {
+        let carrier = b.add_body(carrier_body(
+            format!("carrier_rear_{side}"),
+            body::REAR,
+            rear_joint,
+            c,
+        ));
         b.add_body(wheel_body(
             &format!("wheel_rear_{side}"),
-            body::REAR,
-            place(c),
+            carrier,
+            Isometry3::identity(),
         ));
     }
     let model = b.build()?;
@@ -359,13 +384,18 @@ mod tests {
     }
 
     #[test]
-    fn dof_count_is_14_unsuspended_and_16_with_the_hps() {
+    fn dof_count_is_14_unsuspended_16_with_the_front_hps_18_with_both() {
         let (m, _) = tree(Load::Loaded, FrontAxle::Rigid);
         assert_eq!(m.nv(), 6 + 4 + 2);
         // the issue counts the 2 idle strut spins of Fig 6.2 among the 14
         assert_eq!(m.nv() + 2, 14);
         let (m, _) = tree(Load::Loaded, FrontAxle::Suspended);
         assert_eq!(m.nv() + 2, 16);
+        let mut p = VehicleParams::nominal();
+        p.rear_hps = Some(p.hps);
+        let s = Statics::of(&p, Load::Loaded).unwrap();
+        let (m, _) = build_tree(&p, Load::Loaded, &s, FrontAxle::Suspended, false).unwrap();
+        assert_eq!(m.nv() + 2, 18);
     }
 
     #[test]

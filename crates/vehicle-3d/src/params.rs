@@ -148,6 +148,12 @@ pub struct VehicleParams {
     pub steering: AfsParams,
     /// The front-axle strut, Table 6.3, used when the vehicle is built with the HPS.
     pub hps: StrutParams,
+    /// The rear-axle strut: `Some` suspends the rear axle on one strut per wheel, mounted
+    /// as the front's (`docs/layouts.md`, "HPS on any axle"); `None`, the prototype, keeps
+    /// it rigid. [`crate::suspension::scaled_strut`] gives the designer's default, the
+    /// front strut scaled for the rear static load.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub rear_hps: Option<StrutParams>,
     /// The speed controller.
     pub drive: DriveParams,
     /// The yaw-inertia form ([`YawInertiaForm`]); left out of a file, energy-consistent.
@@ -202,6 +208,7 @@ impl VehicleParams {
             tire: TireParams::nominal(),
             steering: AfsParams::nominal(),
             hps: StrutParams::front_axle(),
+            rear_hps: None,
             drive: DriveParams {
                 kp_n_m_per_m_s: 9_000.0,
                 ki_n_m_per_m: 2_000.0,
@@ -266,6 +273,14 @@ impl VehicleParams {
         self.tire.validate()?;
         self.steering.validate()?;
         self.hps.validate()?;
+        if let Some(rear) = &self.rear_hps {
+            rear.validate().map_err(|e| match e {
+                hps_emulsion::HpsError::InvalidParameter { value, reason, .. } => {
+                    rejected("rear_hps", value, reason)
+                }
+                other => VehicleError::from(other),
+            })?;
+        }
         positive("drive.kp_n_m_per_m_s", self.drive.kp_n_m_per_m_s)?;
         non_negative("drive.ki_n_m_per_m", self.drive.ki_n_m_per_m)?;
         positive("drive.max_torque_n_m", self.drive.max_torque_n_m)?;

@@ -144,6 +144,10 @@ pub struct RideMeasures {
     pub a_z_rms_m_s2: f64,
     /// d_s: largest peak-to-peak travel of the two front struts (m); None unsuspended.
     pub strut_travel_p2p_m: Option<f64>,
+    /// The same of the two rear struts (m); None on a rigid rear axle (and then left out
+    /// of the JSON).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub rear_strut_travel_p2p_m: Option<f64>,
     /// Frequency of the vertical-acceleration PSD peak, 0.5-10 Hz (Hz).
     pub vertical_peak_hz: f64,
     /// Frequency of the pitch-acceleration PSD peak, 0.5-10 Hz (Hz).
@@ -276,7 +280,12 @@ pub fn ride_on(
             ..RunOptions::default()
         },
     )?;
-    let m = ride_measures(&rec, RUN_IN_M / speed, spec.front_axle)?;
+    let t_start = RUN_IN_M / speed;
+    let mut m = ride_measures(&rec, t_start, spec.front_axle)?;
+    if p.rear_hps.is_some() {
+        let i0 = rec.t_s.partition_point(|&t| t < t_start);
+        m.rear_strut_travel_p2p_m = Some(largest_p2p(&rec.rear_hps_travel_m, i0));
+    }
     Ok((rec, m))
 }
 
@@ -289,7 +298,21 @@ pub fn ride(
     ride_on(p, spec, ride_tracks(p, spec, seed)?)
 }
 
-/// Ride measures of `rec` from `t_start_s` on (module docs).
+/// The larger peak-to-peak travel of a left and right strut from sample `i0` on (m).
+fn largest_p2p(travel: &[Vec<f64>; 2], i0: usize) -> f64 {
+    travel
+        .iter()
+        .map(|z| {
+            let w = &z[i0..];
+            let hi = w.iter().fold(f64::MIN, |m, v| m.max(*v));
+            let lo = w.iter().fold(f64::MAX, |m, v| m.min(*v));
+            hi - lo
+        })
+        .fold(0.0, f64::max)
+}
+
+/// Ride measures of `rec` from `t_start_s` on (module docs; the rear struts' travel is
+/// [`ride_on`]'s, which knows the axle).
 pub fn ride_measures(
     rec: &RunRecord,
     t_start_s: f64,
@@ -309,22 +332,13 @@ pub fn ride_measures(
     let rms = |x: &[f64]| perf_measures::signal::rms(x).map_err(|e| measure("a_wz", e));
     let travel = match front_axle {
         FrontAxle::Rigid => None,
-        FrontAxle::Suspended => Some(
-            rec.hps_travel_m
-                .iter()
-                .map(|z| {
-                    let w = &z[i0..];
-                    let hi = w.iter().fold(f64::MIN, |m, v| m.max(*v));
-                    let lo = w.iter().fold(f64::MAX, |m, v| m.min(*v));
-                    hi - lo
-                })
-                .fold(0.0, f64::max),
-        ),
+        FrontAxle::Suspended => Some(largest_p2p(&rec.hps_travel_m, i0)),
     };
     Ok(RideMeasures {
         a_wz_m_s2: rms(&weighted)?,
         a_z_rms_m_s2: rms(az)?,
         strut_travel_p2p_m: travel,
+        rear_strut_travel_p2p_m: None,
         vertical_peak_hz: psd_peak(az, fs)?,
         pitch_peak_hz: psd_peak(&rec.front_angular_accel_rad_s2[1][i0..], fs)?,
     })

@@ -108,6 +108,9 @@ pub struct RunRecord {
     pub pressure_pa: [Vec<f64>; 2],
     /// HPS travel z_s, left and right (m, compression positive).
     pub hps_travel_m: [Vec<f64>; 2],
+    /// Rear HPS travel z_s, left and right (m, compression positive; 0 on a rigid rear
+    /// axle).
+    pub rear_hps_travel_m: [Vec<f64>; 2],
     /// Tire normal forces (N) in [`crate::model::TIRE_NAMES`] order.
     pub normal_force_n: [Vec<f64>; 4],
     /// Drive torque per wheel (N m).
@@ -190,6 +193,7 @@ fn push_sample(vehicle: &Vehicle, t: f64, y: &[f64], rec: &mut RunRecord) {
         rec.strut_disp_m[k].push(snap.strut_disp_m[k]);
         rec.pressure_pa[k].push(snap.pressure_pa[k]);
         rec.hps_travel_m[k].push(snap.hps_travel_m[k]);
+        rec.rear_hps_travel_m[k].push(snap.rear_hps_travel_m[k]);
         rec.position_m[k].push(ws.body_position(body::FRONT)[k]);
         rec.front_axle_m[k].push(
             0.5 * (ws.body_position(body::WHEEL_FL)[k] + ws.body_position(body::WHEEL_FR)[k]),
@@ -218,10 +222,10 @@ fn typical(vehicle: &Vehicle) -> Vec<f64> {
     }
     t[o.afs..o.afs + 3].copy_from_slice(&afs_hydraulics::AfsSystem::STATE_TYPICAL);
     t[o.tires..o.tires + 8].fill(0.05);
-    if let Some(strut) = vehicle.hps_strut() {
+    for axle in vehicle.axle_struts().into_iter().flatten() {
         for side in 0..2 {
-            for k in 0..o.hps_states {
-                t[o.hps + side * o.hps_states + k] = strut.state_typical(k);
+            for (k, i) in axle.states(side).enumerate() {
+                t[i] = axle.strut.state_typical(k);
             }
         }
     }
@@ -236,7 +240,7 @@ pub fn simulate(vehicle: &Vehicle, options: &RunOptions) -> Result<RunRecord, Ve
         return Err(rejected(
             "hps",
             f64::NAN,
-            "no static equilibrium of the front struts",
+            "no static equilibrium of the struts",
         ));
     }
     let t_out: Vec<f64> = (0..n).map(|i| i as f64 * options.output_dt_s).collect();

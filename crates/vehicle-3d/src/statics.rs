@@ -82,6 +82,12 @@ impl Statics {
     pub fn front_strut_force_n(&self, p: &VehicleParams) -> f64 {
         self.front_tire_load_n - p.wheel_mass_kg * p.gravity_m_s2
     }
+
+    /// Static force of one rear strut (N): the tire load less the weight of the wheel end
+    /// below the strut.
+    pub fn rear_strut_force_n(&self, p: &VehicleParams) -> f64 {
+        self.rear_tire_load_n - p.wheel_mass_kg * p.gravity_m_s2
+    }
 }
 
 /// Static deflection z_s (m, compression positive from mid-stroke) at which `strut`

@@ -1,6 +1,7 @@
 //! The stiff part of the suspended vehicle, for the Rosenbrock-W integrator
-//! ([`odeint::Solver::Ros34pw2`]): each front strut's own states (gas volume, rod-side
-//! pressure, velocity amplitude and any extension states of Eqs 6.9-6.18).
+//! ([`odeint::Solver::Ros34pw2`]): each strut's own states, front then rear axle (gas
+//! volume, rod-side pressure, velocity amplitude and any extension states of Eqs
+//! 6.9-6.18).
 //!
 //! The rod-side pressure relaxes through the orifices with a rate `β/V_r · ∂Q/∂Δp` that
 //! reaches about 3·10⁴ s⁻¹ near zero flow (nominal strut, loaded D1 ride; 150-700 s⁻¹
@@ -12,33 +13,42 @@
 
 use crate::vehicle::{Offsets, Vehicle};
 
-/// One block per strut, its states in order; none for a rigid front axle.
+/// One block per strut, its states in order: the front struts, then the rear; none on
+/// rigid axles.
 pub(crate) fn strut_blocks(offsets: &Offsets) -> Vec<Vec<usize>> {
-    let n = offsets.hps_states;
-    (0..2)
-        .filter(|_| n > 0)
-        .map(|side| (offsets.hps + side * n..offsets.hps + (side + 1) * n).collect())
-        .collect()
+    [
+        (offsets.hps, offsets.hps_states),
+        (offsets.rear_hps, offsets.rear_hps_states),
+    ]
+    .into_iter()
+    .filter(|&(_, n)| n > 0)
+    .flat_map(|(at, n)| (0..2).map(move |side| (at + side * n..at + (side + 1) * n).collect()))
+    .collect()
 }
 
 impl Vehicle {
-    /// ∂(strut `side`'s state rates)/∂(its states) at `y`, row-major into `jac`, by forward
-    /// differences of `HpsStrut::evaluate` with the carrier's travel and rate held. `false`
-    /// for a rigid front axle (no block).
-    pub(crate) fn strut_block_jacobian(&self, y: &[f64], side: usize, jac: &mut [f64]) -> bool {
-        let (Some(strut), Some(carrier)) = (self.hps_strut(), self.joints.carrier) else {
+    /// ∂(the rates of block `block`'s strut)/∂(its states) at `y`, row-major into `jac`,
+    /// by forward differences of `HpsStrut::evaluate` with the carrier's travel and rate
+    /// held. Blocks count the front struts first, left then right, then the rear. `false`
+    /// for a block that does not exist.
+    pub(crate) fn strut_block_jacobian(&self, y: &[f64], block: usize, jac: &mut [f64]) -> bool {
+        const MAX_STATES: usize = 8;
+        let Some((axle, side)) = self
+            .axle_struts()
+            .into_iter()
+            .flatten()
+            .flat_map(|a| [(a, 0), (a, 1)])
+            .nth(block)
+        else {
             return false;
         };
-        const MAX_STATES: usize = 8;
-        let o = &self.offsets;
-        let n = o.hps_states;
+        let strut = &axle.strut;
+        let n = axle.n_states();
         if n > MAX_STATES {
             return false;
         }
-        let (qi, vi) = carrier[side];
-        let z = self.hps_static_travel_m() + y[o.q + qi];
-        let zdot = y[o.v + vi];
-        let at = o.hps + side * n;
+        let (z, zdot) = axle.motion(y, self.offsets.v, side);
+        let at = axle.states(side).start;
         let mut s = [0.0; MAX_STATES];
         s[..n].copy_from_slice(&y[at..at + n]);
         let (mut f0, mut f1) = ([0.0; MAX_STATES], [0.0; MAX_STATES]);
@@ -70,13 +80,20 @@ mod tests {
             tires: 33,
             hps: 41,
             hps_states: 3,
+            rear_hps: 47,
+            rear_hps_states: 0,
             pi: 47,
             path: 48,
             driver: None,
             dim: 49,
         };
         assert_eq!(strut_blocks(&o), vec![vec![41, 42, 43], vec![44, 45, 46]]);
+        o.rear_hps_states = 3;
+        assert_eq!(strut_blocks(&o)[2..], [vec![47, 48, 49], vec![50, 51, 52]]);
         o.hps_states = 0;
+        o.rear_hps = 41;
+        assert_eq!(strut_blocks(&o), vec![vec![41, 42, 43], vec![44, 45, 46]]);
+        o.rear_hps_states = 0;
         assert!(strut_blocks(&o).is_empty());
     }
 }

@@ -1,9 +1,11 @@
 //! The vehicle as one ODE system (section 6.2): the multibody tree of [`crate::model`], the
-//! strut-space AFS (Eqs 6.6-6.8), the front-axle HPS (Eqs 6.9-6.18), four Fiala tires with
+//! strut-space AFS (Eqs 6.6-6.8), the HPS on the front and optionally the rear axle
+//! (Eqs 6.9-6.18, [`crate::suspension`]), four Fiala tires with
 //! relaxation on cached tandem-cam tracks (Eqs 6.1-6.3, Table 6.2), and the PI drive.
 //!
-//! State `y = [q, v, AFS (P_c, P_r, theta_h), tire lags (kappa, alpha) x 4, HPS states x 2
-//! (HPS only), speed-error integral, path coordinate, steering-wheel angle (driver only)]`;
+//! State `y = [q, v, AFS (P_c, P_r, theta_h), tire lags (kappa, alpha) x 4, front HPS
+//! states x 2 (front HPS only), rear HPS states x 2 (rear HPS only), speed-error integral,
+//! path coordinate, steering-wheel angle (driver only)]`;
 //! [`Offsets`] gives the blocks.
 //!
 //! One right-hand-side evaluation, allocation free:
@@ -11,7 +13,7 @@
 //! 2. strut lengths and rates from the mount points, the AFS flows and strut forces, applied
 //!    along the strut axes ([`crate::steering`]);
 //! 3. with the HPS, each strut's force from its travel `z_s = z_static + c` (c the carrier
-//!    coordinate, positive up = compression), acting between the front unit and the carrier;
+//!    coordinate, positive up = compression), acting between its unit and the carrier;
 //! 4. per tire ([`crate::tires`]): the contact on its effective track, the normal force with
 //!    damping (Eq 2.1 form with the nonlinear load curve), the slips and their lags, the
 //!    Fiala forces and moments, applied at the contact point;
@@ -39,8 +41,9 @@ use vehicle_components::{Course, PathDriver, SteerInput};
 use crate::error::{finite, positive, rejected, VehicleError};
 use crate::model::{body, build_tree, FrontAxle, Layout, TIRE_MOUNTS};
 use crate::params::{Load, VehicleParams};
-use crate::statics::{strut_static_deflection, Statics};
+use crate::statics::Statics;
 use crate::steering::{apply_strut_forces, strut_geometry, StrutGeometry};
+use crate::suspension::AxleStruts;
 use crate::tires::{tire_forces, TireContact, TireInput, TireTracks};
 
 /// Stiffness of the front-strut end stops beyond the Table 6.3 travel of +-120 mm (N/m).
@@ -153,10 +156,14 @@ pub struct Offsets {
     pub afs: usize,
     /// Tire lags, `(kappa, alpha)` per tire in [`crate::model::TIRE_NAMES`] order.
     pub tires: usize,
-    /// HPS states, left then right (none without the HPS).
+    /// Front HPS states, left then right (none without the HPS).
     pub hps: usize,
-    /// States per HPS strut (0 without the HPS).
+    /// States per front HPS strut (0 without the HPS).
     pub hps_states: usize,
+    /// Rear HPS states, left then right (none without the rear HPS).
+    pub rear_hps: usize,
+    /// States per rear HPS strut (0 without the rear HPS).
+    pub rear_hps_states: usize,
     /// Integral of the speed error (m).
     pub pi: usize,
     /// Path coordinate of the front unit's cg (m).
@@ -178,6 +185,8 @@ pub struct Joints {
     pub spin: [(usize, usize); 4],
     /// Front carriers (HPS only), left then right.
     pub carrier: Option<[(usize, usize); 2]>,
+    /// Rear carriers (rear HPS only), left then right.
+    pub rear_carrier: Option<[(usize, usize); 2]>,
 }
 
 /// What one evaluation computes besides the derivatives.
@@ -197,6 +206,10 @@ pub struct Snapshot {
     pub hps_travel_m: [f64; 2],
     /// HPS forces (N, compressive positive; 0 without the HPS).
     pub hps_force_n: [f64; 2],
+    /// Rear HPS travel, left and right (m, compression positive; 0 without the rear HPS).
+    pub rear_hps_travel_m: [f64; 2],
+    /// Rear HPS forces (N, compressive positive; 0 without the rear HPS).
+    pub rear_hps_force_n: [f64; 2],
     /// Mean forward speed of the four wheel centres (m/s), the controlled speed.
     pub speed_m_s: f64,
     /// Drive torque per wheel (N m).
@@ -221,8 +234,10 @@ pub struct Vehicle {
     pub(crate) joints: Joints,
     afs: AfsSystem,
     l0: f64,
-    hps: Option<HpsStrut>,
-    hps_static_m: f64,
+    /// The front struts (front HPS only).
+    front_struts: Option<AxleStruts>,
+    /// The rear struts (rear HPS only).
+    rear_struts: Option<AxleStruts>,
     /// Each strut's states: the blocks the Rosenbrock-W method treats implicitly.
     stiff_blocks: Vec<Vec<usize>>,
     /// Effective tracks per tire in [`crate::model::TIRE_NAMES`] order.
@@ -302,21 +317,38 @@ impl Vehicle {
                 FrontAxle::Rigid => None,
                 FrontAxle::Suspended => Some([joint(body::CARRIER_FL), joint(body::CARRIER_FR)]),
             },
+            rear_carrier: params
+                .rear_hps
+                .map(|_| [joint(body::CARRIER_RL), joint(body::CARRIER_RR)]),
         };
-        let (hps, hps_static_m) = match options.front_axle {
-            FrontAxle::Rigid => (None, 0.0),
-            FrontAxle::Suspended => {
-                let strut = HpsStrut::new(&params.hps, &options.field.hps)?;
-                let z = strut_static_deflection(&strut, statics.front_strut_force_n(params))?;
-                (Some(strut), z)
-            }
-        };
-        let hps_states = hps.as_ref().map_or(0, HpsStrut::n_states);
         let (nq, nv) = (model.nq(), model.nv());
         let afs_at = nq + nv;
         let tires_at = afs_at + AfsSystem::N_STATES;
         let hps_at = tires_at + 8;
-        let pi = hps_at + 2 * hps_states;
+        let front_struts = match joints.carrier {
+            None => None,
+            Some(c) => Some(AxleStruts::new(
+                &params.hps,
+                &options.field.hps,
+                statics.front_strut_force_n(params),
+                c,
+                hps_at,
+            )?),
+        };
+        let hps_states = front_struts.as_ref().map_or(0, AxleStruts::n_states);
+        let rear_at = hps_at + 2 * hps_states;
+        let rear_struts = match (joints.rear_carrier, &params.rear_hps) {
+            (Some(c), Some(strut)) => Some(AxleStruts::new(
+                strut,
+                &options.field.hps,
+                statics.rear_strut_force_n(params),
+                c,
+                rear_at,
+            )?),
+            _ => None,
+        };
+        let rear_hps_states = rear_struts.as_ref().map_or(0, AxleStruts::n_states);
+        let pi = rear_at + 2 * rear_hps_states;
         let offsets = Offsets {
             q: 0,
             v: nq,
@@ -324,6 +356,8 @@ impl Vehicle {
             tires: tires_at,
             hps: hps_at,
             hps_states,
+            rear_hps: rear_at,
+            rear_hps_states,
             pi,
             path: pi + 1,
             driver: options.driver.map(|_| pi + 2),
@@ -360,8 +394,8 @@ impl Vehicle {
             joints,
             afs,
             l0,
-            hps,
-            hps_static_m,
+            front_struts,
+            rear_struts,
             stiff_blocks: crate::stiff_block::strut_blocks(&offsets),
             tracks,
             vertical,
@@ -413,93 +447,24 @@ impl Vehicle {
 
     /// Static deflection of the front struts (m, compression positive; 0 without the HPS).
     pub fn hps_static_travel_m(&self) -> f64 {
-        self.hps_static_m
+        self.front_struts
+            .as_ref()
+            .map_or(0.0, |a| a.static_travel_m)
     }
 
     /// The front-axle strut (None without the HPS).
     pub fn hps_strut(&self) -> Option<&HpsStrut> {
-        self.hps.as_ref()
+        self.front_struts.as_ref().map(|a| &a.strut)
+    }
+
+    /// The struts of the front and the rear axle, each when suspended.
+    pub fn axle_struts(&self) -> [Option<&AxleStruts>; 2] {
+        [self.front_struts.as_ref(), self.rear_struts.as_ref()]
     }
 
     /// The steering hydraulics.
     pub fn steering(&self) -> &AfsSystem {
         &self.afs
-    }
-
-    /// Name of state `i` in messages: the joint coordinate or velocity it is, a steering
-    /// pressure, a tire lag, an HPS state (left or right strut) or a controller state.
-    pub fn state_name(&self, i: usize) -> String {
-        let o = &self.offsets;
-        let j = &self.joints;
-        let joint = |k: usize| -> Option<String> {
-            let spin = ["front-left", "front-right", "rear-left", "rear-right"];
-            if k == j.articulation.0 {
-                return Some("articulation".into());
-            }
-            if j.rear_roll.is_some_and(|r| r.0 == k) {
-                return Some("rear-unit roll".into());
-            }
-            if let Some(w) = j.spin.iter().position(|s| s.0 == k) {
-                return Some(format!("{} wheel spin", spin[w]));
-            }
-            let carrier = j.carrier?.iter().position(|c| c.0 == k)?;
-            Some(format!(
-                "{} carrier travel",
-                ["front-left", "front-right"][carrier]
-            ))
-        };
-        let q_of_v = |k: usize| {
-            [Some(j.articulation), j.rear_roll]
-                .into_iter()
-                .flatten()
-                .chain(j.spin)
-                .chain(j.carrier.into_iter().flatten())
-                .find(|p| p.1 == k)
-                .map(|p| p.0)
-        };
-        if i < o.v {
-            let k = i - o.q;
-            joint(k).unwrap_or_else(|| format!("floating-base coordinate q[{k}]"))
-        } else if i < o.afs {
-            let k = i - o.v;
-            match q_of_v(k).and_then(joint) {
-                Some(n) => format!("{n} rate"),
-                None => format!("floating-base velocity v[{k}]"),
-            }
-        } else if i < o.tires {
-            [
-                "steering pressure P_c",
-                "steering pressure P_r",
-                "valve housing angle theta_h",
-                "valve spool x_v",
-            ]
-            .get(i - o.afs)
-            .map_or_else(
-                || format!("steering state {}", i - o.afs),
-                |n| (*n).to_string(),
-            )
-        } else if i < o.hps {
-            let k = i - o.tires;
-            let tire = crate::model::TIRE_NAMES.get(k / 2).copied().unwrap_or("?");
-            format!("{tire} tire {} lag", ["slip ratio", "slip angle"][k % 2])
-        } else if i < o.hps + 2 * o.hps_states {
-            let k = i - o.hps;
-            let side = ["left", "right"][k / o.hps_states];
-            let state = self
-                .hps
-                .as_ref()
-                .and_then(|h| h.states().get(k % o.hps_states))
-                .map_or("?", |s| s.name);
-            format!("{side} HPS strut {state}")
-        } else if i == o.pi {
-            "speed-error integral".into()
-        } else if i == o.path {
-            "path coordinate".into()
-        } else if Some(i) == o.driver {
-            "driver steering-wheel angle".into()
-        } else {
-            format!("state {i}")
-        }
     }
 
     /// The static equilibrium at the target speed: the front unit's cg at its Table 6.1
@@ -522,17 +487,8 @@ impl Vehicle {
             y[o.v + self.joints.spin[i].1] = speed / (r - d);
         }
         y[o.afs..o.afs + 3].copy_from_slice(&self.afs.initial_state(0.0));
-        if let Some(strut) = &self.hps {
-            for side in 0..2 {
-                let at = o.hps + side * o.hps_states;
-                // the static deflection was found with this strut: its equilibrium exists
-                if strut
-                    .initial_state(self.hps_static_m, &mut y[at..at + o.hps_states])
-                    .is_err()
-                {
-                    y[at..at + o.hps_states].fill(f64::NAN);
-                }
-            }
+        for axle in self.axle_struts().into_iter().flatten() {
+            axle.initial_state(&mut y);
         }
         y[o.path] = self.options.start_s_m;
         y
@@ -577,22 +533,12 @@ impl Vehicle {
         snap.strut_force_n = [afs.force_left, afs.force_right];
         snap.pressure_pa = [afs.p_c, afs.p_r];
 
-        // front-axle struts (Eqs 6.9-6.18)
-        if let (Some(strut), Some(carrier)) = (&self.hps, self.joints.carrier) {
-            for (side, (qi, vi)) in carrier.into_iter().enumerate() {
-                let at = o.hps + side * o.hps_states;
-                let z = self.hps_static_m + y[o.q + qi];
-                let out = strut.evaluate(
-                    z,
-                    v[vi],
-                    &y[at..at + o.hps_states],
-                    &mut dydt[at..at + o.hps_states],
-                );
-                let stop = end_stop_force(z, v[vi], strut.params().travel);
-                tau[vi] -= out.force + stop;
-                snap.hps_travel_m[side] = z;
-                snap.hps_force_n[side] = out.force + stop;
-            }
+        // axle struts (Eqs 6.9-6.18)
+        if let Some(front) = &self.front_struts {
+            (snap.hps_travel_m, snap.hps_force_n) = front.apply(y, o.v, tau, dydt);
+        }
+        if let Some(rear) = &self.rear_struts {
+            (snap.rear_hps_travel_m, snap.rear_hps_force_n) = rear.apply(y, o.v, tau, dydt);
         }
 
         // tires (Eqs 6.1-6.3, Table 6.2) and the drive
@@ -686,18 +632,16 @@ impl Vehicle {
         Ok(snap)
     }
 
-    /// Mechanical and hydraulic energy (J) at `y`, rigid front axle only: kinetic +
-    /// gravitational + the AFS chambers' compression energy + the tires' elastic energy.
-    /// Conserved with the valve closed (steering-wheel angle inside the dead band), no
-    /// leakage, no strut friction, no tire damping and no horizontal tire forces
-    /// (`tests/energy.rs`).
+    /// Mechanical and hydraulic energy (J) at `y`: kinetic + gravitational + the AFS
+    /// chambers' compression energy + the tires' elastic energy, and with the HPS the
+    /// struts' stored energy ([`AxleStruts::stored_energy`]). Conserved on rigid axles with
+    /// the valve closed (steering-wheel angle inside the dead band), no leakage, no strut
+    /// friction, no tire damping and no horizontal tire forces (`tests/physics.rs`); the
+    /// HPS struts only lose it (`tests/rear_hps.rs`).
     pub fn energy(&self, y: &[f64]) -> Result<f64, VehicleError> {
-        if self.hps.is_some() {
-            return Err(rejected(
-                "front_axle",
-                1.0,
-                "the energy balance is implemented for the rigid front axle only",
-            ));
+        let mut struts = 0.0;
+        for axle in self.axle_struts().into_iter().flatten() {
+            struts += axle.stored_energy(y, self.offsets.v)?;
         }
         let mut ws = self.ws.borrow_mut();
         let mut tau = [0.0; MAX_DIM];
@@ -722,7 +666,7 @@ impl Vehicle {
         );
         let table = self.vertical.load_deflection();
         let tires: f64 = snap.tires.iter().map(|c| table.energy(c.deflection)).sum();
-        Ok(kinetic + gravity + hydraulic + tires)
+        Ok(kinetic + gravity + hydraulic + tires + struts)
     }
 
     /// Signed horizontal distance (m) of the rear unit's cg (with payload) inside the nearer

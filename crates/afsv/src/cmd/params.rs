@@ -257,6 +257,8 @@ fn check_vehicle(file: &Path) -> Result<Value, String> {
             "kind": "articulated",
             "front_suspension": a.front_suspension,
             "front_strut": a.front_strut_source,
+            "rear_suspension": a.rear_suspension,
+            "rear_strut": a.rear_strut_source,
             "yaw_plane": if a.yaw_plane_derived { "derived from the units and tire" } else { "as given" },
             "parameters": named(&a.params),
         }),

@@ -103,6 +103,13 @@ fn ride_report(
             m.strut_travel_p2p_m.unwrap_or(f64::NAN)
         })?),
     };
+    let rear_travel = if measures.iter().all(|m| m.rear_strut_travel_p2p_m.is_some()) {
+        Some(spread(measures, |m| {
+            m.rear_strut_travel_p2p_m.unwrap_or(f64::NAN)
+        })?)
+    } else {
+        None
+    };
     let zone = health_guidance_zone(HGCZ_HOURS, HgczRelation::SqrtTime)?;
     let verdict = zone.classify(a_wz.mean);
     let mut v = json!({
@@ -131,6 +138,9 @@ fn ride_report(
     if travel.is_none() {
         v["strut_travel_p2p_m_reason"] = json!(NO_STRUT);
     }
+    if let Some(t) = &rear_travel {
+        v["rear_strut_travel_p2p_m"] = json!(t);
+    }
     if let Some(plot) = &study.plot {
         v["plot"] = json!(plot);
     }
@@ -158,6 +168,9 @@ fn ride_report(
                 "HPS travel peak-to-peak d_s"
             )
         }
+    }
+    if let Some(t) = &rear_travel {
+        text += &spread_text("rear HPS travel peak-to-peak", t, "m");
     }
     text += &spread_text("dominant vertical frequency", &vertical, "Hz");
     text += &spread_text("dominant pitch frequency", &pitch, "Hz");
