@@ -1,0 +1,149 @@
+use super::*;
+use crate::scenarios::{ride, roll};
+
+#[test]
+fn at_the_static_state_the_lines_carry_nothing_and_the_struts_rest() {
+    let p = VehicleParams::nominal();
+    let flat = FlatTerrain::new(0.0, vehicle_components::DEFAULT_FRICTION).unwrap();
+    let options = VehicleOptions {
+        front_axle: FrontAxle::Suspended,
+        path_length_m: 20.0,
+        ..VehicleOptions::default()
+    };
+    let v = Vehicle::new(&p, Load::Loaded, options, &flat, 0.5 * p.front_track_m).unwrap();
+    let mut plain = vec![0.0; v.offsets().dim];
+    let y_plain = v.initial_state();
+    v.rhs(0.0, &y_plain, &mut plain);
+    let linked = LinkedVehicle::new(v, &LineParams::front_axle_roll()).unwrap();
+    let y = linked.initial_state().unwrap();
+    let o = *linked.vehicle().offsets();
+    assert_eq!(y[..o.dim], y_plain[..]);
+    let mut d = vec![0.0; linked.dim()];
+    linked.rhs(0.0, &y, &mut d);
+    // the mechanical rates are the plain vehicle's, bit for bit
+    assert_eq!(d[..o.hps], plain[..o.hps]);
+    assert_eq!(
+        d[o.hps + 2 * o.hps_states..o.dim],
+        plain[o.hps + 2 * o.hps_states..]
+    );
+    // the struts and lines rest (round-off only)
+    let strut = &linked.pair().struts()[0];
+    for side in 0..2 {
+        for k in 0..o.hps_states {
+            let r = d[o.hps + side * o.hps_states + k];
+            assert!(r.abs() < 1e-9 * strut.state_typical(k), "{side} {k}: {r}");
+        }
+    }
+    assert!(d[o.dim].abs() < 1e-12 && d[o.dim + 1].abs() < 1e-12);
+    // the accumulators sit at the static strut pressure
+    let p_s = y[o.hps + 1];
+    let line = linked.pair().line();
+    assert!((line.pressure(y[o.dim]) / p_s - 1.0).abs() < 1e-12);
+    // a rigid front axle has nothing to link
+    let rigid = Vehicle::new(
+        &p,
+        Load::Loaded,
+        VehicleOptions {
+            path_length_m: 20.0,
+            ..VehicleOptions::default()
+        },
+        &flat,
+        0.5 * p.front_track_m,
+    )
+    .unwrap();
+    assert!(LinkedVehicle::new(rigid, &LineParams::front_axle_roll()).is_err());
+}
+
+#[test]
+fn the_link_holds_the_roll_and_softens_the_bounce() {
+    // released with a roll rate, the linked front axle rolls less on its struts; released
+    // with a vertical velocity, it travels further (the bounce spring is softer)
+    let p = VehicleParams::nominal();
+    let line = LineParams::front_axle_roll();
+    let t0 = std::time::Instant::now();
+    let peak = |x: &[f64], base: f64| x.iter().fold(0.0f64, |m, v| m.max((v - base).abs()));
+    let roll = |l| {
+        let r = free_response(&p, l, Kick::Roll, 0.3, 1.0).unwrap();
+        peak(&suspension_roll_rad(&p, &r), 0.0)
+    };
+    let bounce = |l| {
+        let r = free_response(&p, l, Kick::Bounce, 0.3, 1.0).unwrap();
+        let mean: Vec<f64> = (0..r.len())
+            .map(|i| 0.5 * (r.hps_travel_m[0][i] + r.hps_travel_m[1][i]))
+            .collect();
+        peak(&mean, mean[0])
+    };
+    let (roll0, roll1) = (roll(None), roll(Some(&line)));
+    let (bounce0, bounce1) = (bounce(None), bounce(Some(&line)));
+    println!(
+        "free response, peak suspension roll {:.2} -> {:.2} mrad, peak bounce travel \
+         {:.2} -> {:.2} mm ({:.2} s)",
+        1e3 * roll0,
+        1e3 * roll1,
+        1e3 * bounce0,
+        1e3 * bounce1,
+        t0.elapsed().as_secs_f64()
+    );
+    assert!(roll1 < 0.85 * roll0, "{roll0} -> {roll1}");
+    assert!(bounce1 > 1.2 * bounce0, "{bounce0} -> {bounce1}");
+}
+
+/// D1 and D2 with and without the roll link (the numbers of docs/layouts.md):
+/// `cargo test --release -p vehicle-3d --lib interconnect -- --ignored --nocapture`.
+#[test]
+#[ignore]
+fn d1_and_d2_with_and_without_the_link() {
+    let p = VehicleParams::nominal();
+    let line = LineParams::front_axle_roll();
+    let spec = RideSpec::d1(Load::Loaded, FrontAxle::Suspended);
+    // the front unit's roll-acceleration PSD peak over the measured window (the ride
+    // measures' method for the vertical and pitch peaks)
+    let roll_peak = |r: &RunRecord| {
+        let i0 = r
+            .t_s
+            .partition_point(|&t| t < RUN_IN_M / (spec.speed_kmh / 3.6));
+        crate::scenarios::psd_peak(&r.front_angular_accel_rad_s2[0][i0..], 1.0 / OUTPUT_DT_S)
+            .unwrap()
+    };
+    for seed in 1..=5u64 {
+        let (r0, m0) = ride(&p, &spec, seed).unwrap();
+        let (r1, m1) = ride_linked(&p, &spec, seed, &line).unwrap();
+        let rms = |x: &[f64]| (x.iter().map(|v| v * v).sum::<f64>() / x.len() as f64).sqrt();
+        println!(
+            "D1 seed {seed}: a_wz {:.3} -> {:.3}, travel p-p {:.3} -> {:.3} m, vertical peak {:.2} -> {:.2} Hz, pitch peak {:.2} -> {:.2} Hz, roll peak {:.2} -> {:.2} Hz, susp. roll RMS {:.2} -> {:.2} mrad",
+            m0.a_wz_m_s2,
+            m1.a_wz_m_s2,
+            m0.strut_travel_p2p_m.unwrap(),
+            m1.strut_travel_p2p_m.unwrap(),
+            m0.vertical_peak_hz,
+            m1.vertical_peak_hz,
+            m0.pitch_peak_hz,
+            m1.pitch_peak_hz,
+            roll_peak(&r0),
+            roll_peak(&r1),
+            1e3 * rms(&suspension_roll_rad(&p, &r0)),
+            1e3 * rms(&suspension_roll_rad(&p, &r1)),
+        );
+    }
+    let spec = RollSpec::d2(FrontAxle::Suspended);
+    for seed in 1..=3u64 {
+        let (r0, m0) = roll(&p, &spec, seed).unwrap();
+        let (r1, m1) = roll_linked(&p, &spec, seed, &line).unwrap();
+        let peak = |r: &RunRecord| {
+            suspension_roll_rad(&p, r)
+                .iter()
+                .fold(0.0f64, |m, v| m.max(v.abs()))
+        };
+        println!(
+            "D2 seed {seed}: SP-DRT {:.3} -> {:.3} m/s², rollover {:?} -> {:?} s, peak a_y {:.2} -> {:.2}, peak susp. roll {:.1} -> {:.1} mrad",
+            m0.sp_drt_m_s2,
+            m1.sp_drt_m_s2,
+            m0.rollover_s,
+            m1.rollover_s,
+            m0.peak_ay_m_s2,
+            m1.peak_ay_m_s2,
+            1e3 * peak(&r0),
+            1e3 * peak(&r1),
+        );
+    }
+}
