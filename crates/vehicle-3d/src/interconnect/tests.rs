@@ -96,14 +96,13 @@ fn d1_and_d2_with_and_without_the_link() {
     let p = VehicleParams::nominal();
     let line = LineParams::front_axle_roll();
     let spec = RideSpec::d1(Load::Loaded, FrontAxle::Suspended);
-    // the front unit's roll-acceleration PSD peak over the measured window (the ride
+    // the PSD peak of the suspension roll angle over the measured window (the ride
     // measures' method for the vertical and pitch peaks)
     let roll_peak = |r: &RunRecord| {
         let i0 = r
             .t_s
             .partition_point(|&t| t < RUN_IN_M / (spec.speed_kmh / 3.6));
-        crate::scenarios::psd_peak(&r.front_angular_accel_rad_s2[0][i0..], 1.0 / OUTPUT_DT_S)
-            .unwrap()
+        crate::scenarios::psd_peak(&suspension_roll_rad(&p, r)[i0..], 1.0 / OUTPUT_DT_S).unwrap()
     };
     for seed in 1..=5u64 {
         let (r0, m0) = ride(&p, &spec, seed).unwrap();
