@@ -146,3 +146,72 @@ fn d1_and_d2_with_and_without_the_link() {
         );
     }
 }
+
+/// Frequency (Hz) from the mean spacing of the first `k` local extrema of `x` after `t0`.
+fn extrema_frequency(t: &[f64], x: &[f64], k: usize) -> f64 {
+    let ext: Vec<f64> = (1..x.len() - 1)
+        .filter(|&i| (x[i] - x[i - 1]) * (x[i + 1] - x[i]) < 0.0)
+        .map(|i| t[i])
+        .take(k)
+        .collect();
+    assert_eq!(ext.len(), k, "too few extrema");
+    (k - 1) as f64 / (2.0 * (ext[k - 1] - ext[0]))
+}
+
+#[test]
+fn the_bounce_frequency_falls_as_the_square_root_of_the_wheel_rates() {
+    // the front struts' free bounce (seal friction off, so the small motion is linear)
+    // against the hand model: struts in series with the tires, the frequency ratio
+    // sqrt(k_w,linked / k_w,plain)
+    let mut p = VehicleParams::nominal();
+    p.hps.friction.mu_v = 0.0;
+    p.hps.friction.f_c = 0.0;
+    p.hps.friction.f_s = 0.0;
+    let line = LineParams::front_axle_roll();
+    let freq = |l: Option<&LineParams>| {
+        let r = free_response(&p, l, Kick::Bounce, 0.05, 4.0).unwrap();
+        let mean: Vec<f64> = (0..r.len())
+            .map(|i| 0.5 * (r.hps_travel_m[0][i] + r.hps_travel_m[1][i]))
+            .collect();
+        extrema_frequency(&r.t_s, &mean, 6)
+    };
+    let (f0, f1) = (freq(None), freq(Some(&line)));
+    // hand: the strut stiffnesses at the static pressure, the tire's tangent stiffness
+    let statics = crate::Statics::of(&p, Load::Loaded).unwrap();
+    let strut = HpsStrut::new(&p.hps, &Default::default()).unwrap();
+    let z =
+        crate::statics::strut_static_deflection(&strut, statics.front_strut_force_n(&p)).unwrap();
+    let p_s = strut.static_pressure(z).unwrap();
+    let mut s = vec![0.0; strut.n_states()];
+    strut.initial_state(z, &mut s).unwrap();
+    let c0 = strut.chamber_compliances(z, &s);
+    let k0 = p.hps.a_hr.powi(2) / (c0.piston + c0.rod);
+    let pair = CrossCoupledPair::new(
+        [0, 1].map(|_| HpsStrut::ported(&sealed_piston(&p.hps), &Default::default()).unwrap()),
+        &line,
+    )
+    .unwrap();
+    let (kb, _) = pair.hand_stiffness(p_s, z).unwrap();
+    let table = tire_fiala::LoadDeflectionTable::new(&p.tire.load_deflection).unwrap();
+    let d = statics.front_tire_deflection_m;
+    let kt = (table.load(d + 1e-4) - table.load(d - 1e-4)) / 2e-4;
+    let series = |k: f64| k * kt / (k + kt);
+    let hand = (series(kb) / series(k0)).sqrt();
+    println!(
+        "free bounce {f0:.3} -> {f1:.3} Hz, ratio {:.3}, hand {hand:.3} (k_s {:.0} -> {:.0} \
+         kN/m, k_t {:.0} kN/m)",
+        f1 / f0,
+        k0 / 1e3,
+        kb / 1e3,
+        kt / 1e3
+    );
+    assert!((f1 / f0 / hand - 1.0).abs() < 0.05, "{} {hand}", f1 / f0);
+    // the roll mode (the front unit's roll with the rear unit's and the tires') rises
+    let roll = |l: Option<&LineParams>| {
+        let r = free_response(&p, l, Kick::Roll, 0.05, 2.0).unwrap();
+        extrema_frequency(&r.t_s, &r.front_rate_rad_s[0], 6)
+    };
+    let (r0, r1) = (roll(None), roll(Some(&line)));
+    println!("free roll {r0:.3} -> {r1:.3} Hz");
+    assert!(r1 > 1.05 * r0, "{r0} {r1}");
+}
