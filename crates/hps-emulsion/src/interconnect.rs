@@ -80,8 +80,8 @@ impl LineParams {
     /// reasoning for every value; none is in the dissertation): a 38 mm (1 1/2 in) line,
     /// 0.3 m from the accumulator to the piston port and 2.5 m across the axle to the other
     /// strut's rod port, ISO VG 32 oil at 40 °C, port orifices that together give the
-    /// nominal strut's bounce damping, a 6.7 L accumulator precharged to 3.3 MPa (0.8 times
-    /// the unloaded truck's static strut pressure) holding the strut's own gas charge.
+    /// nominal strut's bounce damping, an 8.4 L accumulator precharged to 2.4 MPa (0.9 times
+    /// the lowest line pressure of the D2 runs) holding the strut's own gas charge.
     pub fn front_axle_roll() -> Self {
         Self {
             diameter_m: 0.038,
@@ -95,8 +95,8 @@ impl LineParams {
                 length_m: 2.5,
                 port_area_m2: 6.2e-5,
             },
-            accumulator_volume_m3: 6.7e-3,
-            precharge_pa: 3.3e6,
+            accumulator_volume_m3: 8.4e-3,
+            precharge_pa: 2.4e6,
         }
     }
 

@@ -114,16 +114,27 @@ impl LinkedVehicle {
     }
 
     /// Run from `y0` (the state of [`LinkedVehicle::initial_state`], perhaps perturbed),
-    /// recorded as the vehicle's run.
+    /// recorded as the vehicle's run with the two lines' node pressures.
     pub fn simulate_from(
         &self,
         y0: &[f64],
         options: &RunOptions,
-    ) -> Result<RunRecord, VehicleError> {
+    ) -> Result<LinkedRun, VehicleError> {
+        let dim = self.vehicle.offsets().dim;
         let mut t = typical(&self.vehicle);
-        let v = y0[self.vehicle.offsets().dim];
+        let v = y0[dim];
         t.extend([v, v]);
-        simulate_system(&self.vehicle, self, y0, t, options)
+        let line = self.pair.line();
+        let mut node = [Vec::new(), Vec::new()];
+        let record = simulate_system(&self.vehicle, self, y0, t, options, |y| {
+            for (k, ch) in node.iter_mut().enumerate() {
+                ch.push(line.pressure(y[dim + k]));
+            }
+        })?;
+        Ok(LinkedRun {
+            record,
+            node_pressure_pa: node,
+        })
     }
 }
 
@@ -182,6 +193,16 @@ impl OdeSystem for LinkedVehicle {
     }
 }
 
+/// A run of the linked vehicle.
+#[derive(Debug, Clone, PartialEq, Default, Serialize)]
+pub struct LinkedRun {
+    /// The vehicle's record ([`crate::simulate`]).
+    pub record: RunRecord,
+    /// Node (accumulator) pressure of line 0 (left piston side to right rod side) and line
+    /// 1 (the mirror) at each sample (Pa).
+    pub node_pressure_pa: [Vec<f64>; 2],
+}
+
 /// D1 (section 6.4) with the front struts interconnected by `line`: the record and its
 /// measures, on the terrain of `seed` (the same tracks as [`crate::scenarios::ride`]).
 pub fn ride_linked(
@@ -189,7 +210,7 @@ pub fn ride_linked(
     spec: &RideSpec,
     seed: u64,
     line: &LineParams,
-) -> Result<(RunRecord, RideMeasures), VehicleError> {
+) -> Result<(LinkedRun, RideMeasures), VehicleError> {
     let speed = spec.speed_kmh / 3.6;
     let v = Vehicle::on_tracks(
         p,
@@ -206,7 +227,7 @@ pub fn ride_linked(
             ..RunOptions::default()
         },
     )?;
-    let m = ride_measures(&rec, RUN_IN_M / speed, spec.front_axle)?;
+    let m = ride_measures(&rec.record, RUN_IN_M / speed, spec.front_axle)?;
     Ok((rec, m))
 }
 
@@ -216,7 +237,7 @@ pub fn roll_linked(
     spec: &RollSpec,
     seed: u64,
     line: &LineParams,
-) -> Result<(RunRecord, RollMeasures), VehicleError> {
+) -> Result<(LinkedRun, RollMeasures), VehicleError> {
     let v = Vehicle::on_tracks(
         p,
         spec.load,
@@ -233,7 +254,7 @@ pub fn roll_linked(
             ..RunOptions::default()
         },
     )?;
-    let m = roll_measures(&rec)?;
+    let m = roll_measures(&rec.record)?;
     Ok((rec, m))
 }
 
@@ -290,12 +311,12 @@ pub fn free_response(
             let linked = LinkedVehicle::new(v, l)?;
             let mut y0 = linked.initial_state()?;
             y0[at] += size;
-            linked.simulate_from(&y0, &run)
+            Ok(linked.simulate_from(&y0, &run)?.record)
         }
         None => {
             let mut y0 = v.initial_state();
             y0[at] += size;
-            simulate_system(&v, &v, &y0, typical(&v), &run)
+            simulate_system(&v, &v, &y0, typical(&v), &run, |_| {})
         }
     }
 }

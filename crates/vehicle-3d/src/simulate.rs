@@ -239,19 +239,20 @@ pub fn simulate(vehicle: &Vehicle, options: &RunOptions) -> Result<RunRecord, Ve
             "no static equilibrium of the front struts",
         ));
     }
-    simulate_system(vehicle, vehicle, &y0, typical(vehicle), options)
+    simulate_system(vehicle, vehicle, &y0, typical(vehicle), options, |_| {})
 }
 
 /// Integrate `sys` from `y0` and record it as `vehicle`'s run: `sys` is the vehicle or a
 /// system that extends its state with states appended after the vehicle's (a hydraulic
 /// interconnection, [`crate::interconnect`]); `typical` holds every state's typical
-/// magnitude.
+/// magnitude; `extra` sees the whole state at every recorded sample.
 pub(crate) fn simulate_system<S: OdeSystem>(
     vehicle: &Vehicle,
     sys: &S,
     y0: &[f64],
     typical: Vec<f64>,
     options: &RunOptions,
+    mut extra: impl FnMut(&[f64]),
 ) -> Result<RunRecord, VehicleError> {
     let n = options.validate()?;
     let dim = vehicle.offsets.dim;
@@ -288,6 +289,7 @@ pub(crate) fn simulate_system<S: OdeSystem>(
     integrator
         .run(sys, &problem, &mut ws, |s| {
             push_sample(vehicle, s.t, &s.y[..dim], &mut rec);
+            extra(s.y);
             if let SampleKind::Event(_) = s.kind {
                 rec.rollover_s = Some(s.t);
             }

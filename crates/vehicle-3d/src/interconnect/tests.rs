@@ -106,7 +106,8 @@ fn d1_and_d2_with_and_without_the_link() {
     };
     for seed in 1..=5u64 {
         let (r0, m0) = ride(&p, &spec, seed).unwrap();
-        let (r1, m1) = ride_linked(&p, &spec, seed, &line).unwrap();
+        let (l1, m1) = ride_linked(&p, &spec, seed, &line).unwrap();
+        let r1 = l1.record;
         let rms = |x: &[f64]| (x.iter().map(|v| v * v).sum::<f64>() / x.len() as f64).sqrt();
         println!(
             "D1 seed {seed}: a_wz {:.3} -> {:.3}, travel p-p {:.3} -> {:.3} m, vertical peak {:.2} -> {:.2} Hz, pitch peak {:.2} -> {:.2} Hz, roll peak {:.2} -> {:.2} Hz, susp. roll RMS {:.2} -> {:.2} mrad",
@@ -127,14 +128,35 @@ fn d1_and_d2_with_and_without_the_link() {
     let spec = RollSpec::d2(FrontAxle::Suspended);
     for seed in 1..=3u64 {
         let (r0, m0) = roll(&p, &spec, seed).unwrap();
-        let (r1, m1) = roll_linked(&p, &spec, seed, &line).unwrap();
+        let (l1, m1) = roll_linked(&p, &spec, seed, &line).unwrap();
+        let r1 = &l1.record;
+        let lo = l1
+            .node_pressure_pa
+            .iter()
+            .flatten()
+            .fold(f64::MAX, |m, v| m.min(*v));
+        let hi = l1
+            .node_pressure_pa
+            .iter()
+            .flatten()
+            .fold(0.0f64, |m, v| m.max(*v));
+        // when a node first falls to the precharge (the bladder would reach its stop)
+        let below = (0..r1.len()).find(|&i| {
+            l1.node_pressure_pa[0][i].min(l1.node_pressure_pa[1][i]) <= line.precharge_pa
+        });
+        if let Some(i) = below {
+            println!(
+                "D2 seed {seed}: a node at the precharge from t = {:.2} s, rear a_y {:.2} m/s²",
+                r1.t_s[i], r1.rear_lateral_accel_m_s2[i]
+            );
+        }
         let peak = |r: &RunRecord| {
             suspension_roll_rad(&p, r)
                 .iter()
                 .fold(0.0f64, |m, v| m.max(v.abs()))
         };
         println!(
-            "D2 seed {seed}: SP-DRT {:.3} -> {:.3} m/s², rollover {:?} -> {:?} s, peak a_y {:.2} -> {:.2}, peak susp. roll {:.1} -> {:.1} mrad",
+            "D2 seed {seed}: SP-DRT {:.3} -> {:.3} m/s², rollover {:?} -> {:?} s, peak a_y {:.2} -> {:.2}, peak susp. roll {:.1} -> {:.1} mrad, node pressures {:.2}-{:.2} MPa (precharge {:.2})",
             m0.sp_drt_m_s2,
             m1.sp_drt_m_s2,
             m0.rollover_s,
@@ -142,7 +164,10 @@ fn d1_and_d2_with_and_without_the_link() {
             m0.peak_ay_m_s2,
             m1.peak_ay_m_s2,
             1e3 * peak(&r0),
-            1e3 * peak(&r1),
+            1e3 * peak(r1),
+            lo / 1e6,
+            hi / 1e6,
+            line.precharge_pa / 1e6,
         );
     }
 }
