@@ -19,6 +19,8 @@
 //!   [`HysteresisLoop`]: the samples of one period for the loop plots.
 //! - [`identify`]: least-squares identification from a record.
 //! - [`HpsExtensions`]: switchable physical extensions for the model-discrepancy workflow.
+//! - [`interconnect`]: two struts cross-connected by hydraulic lines with accumulators (roll
+//!   or pitch interconnection, `docs/layouts.md`).
 //!
 //! See `docs/hps-emulsion.md` for the equation-to-code map and every modelling choice.
 
@@ -34,6 +36,7 @@ pub mod fit_checks;
 pub mod flow;
 pub mod friction;
 pub mod identify;
+pub mod interconnect;
 pub mod lab;
 pub mod loops;
 pub mod params;
@@ -53,6 +56,7 @@ pub use extensions::{
 pub use identify::{
     identify, ChannelNrmse, FitParam, FittedValue, IdentifyOptions, IdentifyResult, Measured,
 };
+pub use interconnect::{sealed_piston, CrossCoupledPair, HydraulicLine, LineEnd, LineParams};
 pub use lab::{identify_lab, LabConfig, LabIdentification, LabReported};
 pub use loops::HysteresisLoop;
 pub use params::{FrictionParams, StrutParams};
@@ -61,4 +65,4 @@ pub use simulate::{
     simulate_displacement, simulate_strut, simulate_strut_from, Excitation, SimOptions, Solver,
     StrutRecord,
 };
-pub use strut::{HpsStrut, StrutOutputs};
+pub use strut::{ChamberCompliance, ChamberInflow, HpsStrut, StrutOutputs};

@@ -197,6 +197,13 @@ impl StrutParams {
 
     /// Validate every field; the error names the first offending field.
     pub fn validate(&self) -> Result<(), HpsError> {
+        self.validate_ported(false)
+    }
+
+    /// As [`StrutParams::validate`]; with `ported` the chambers also have external ports
+    /// (hydraulic lines, [`crate::interconnect`]), so a sealed piston (no bleed orifice, no
+    /// leakage) is accepted: the rod-side chamber then discharges through its port.
+    pub fn validate_ported(&self, ported: bool) -> Result<(), HpsError> {
         positive("a_hc", self.a_hc)?;
         positive("a_hr", self.a_hr)?;
         if self.a_hr >= self.a_hc {
@@ -211,7 +218,7 @@ impl StrutParams {
         non_negative("a_v", self.a_v)?;
         non_negative("c_v", self.c_v)?;
         non_negative("k_l", self.k_l)?;
-        if (self.n_b == 0 || self.a_b == 0.0 || self.c_b == 0.0) && self.k_l == 0.0 {
+        if !ported && (self.n_b == 0 || self.a_b == 0.0 || self.c_b == 0.0) && self.k_l == 0.0 {
             return Err(HpsError::InvalidParameter {
                 field: "n_b",
                 value: self.n_b as f64,

@@ -74,6 +74,35 @@ pub struct StrutOutputs {
     pub velocity_amplitude: f64,
 }
 
+/// External volume flows into the two chambers (m^3/s) through ports to hydraulic lines
+/// ([`crate::interconnect`]), at the chamber's density: they enter the continuity equations
+/// 5.5 (piston side) and 5.6 (rod side) beside the piston displacement.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct ChamberInflow {
+    /// Into the piston-side chamber (m^3/s).
+    pub piston: f64,
+    /// Into the rod-side chamber (m^3/s).
+    pub rod: f64,
+}
+
+impl ChamberInflow {
+    /// No external flow: the strut of Eqs 5.5-5.6 as printed.
+    pub const NONE: Self = Self {
+        piston: 0.0,
+        rod: 0.0,
+    };
+}
+
+/// Hydraulic compliances `dV/dP` of the two chambers (m^3/Pa):
+/// [`HpsStrut::chamber_compliances`].
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ChamberCompliance {
+    /// Piston side: free gas and emulsion.
+    pub piston: f64,
+    /// Rod side: emulsion.
+    pub rod: f64,
+}
+
 /// Reference (static, `z_s = 0`, `P_h0`) volumes and gas fraction in effect at one velocity
 /// amplitude: the parameters' own, or those of [`StrutParams::with_gamma0`] at the grown gas
 /// fraction when [`crate::GasFractionGrowth`] is on.
@@ -156,7 +185,19 @@ impl HpsStrut {
     /// 5.3.1) and, with [`crate::GasFractionGrowth`], the gas fraction follow the
     /// velocity-amplitude state `u`. Errors name the offending parameter.
     pub fn new(params: &StrutParams, ext: &HpsExtensions) -> Result<Self, HpsError> {
-        params.validate()?;
+        Self::build(params, ext, false)
+    }
+
+    /// A strut whose chambers also have ports to hydraulic lines ([`crate::interconnect`]):
+    /// as [`HpsStrut::new`], but a sealed piston (no bleed orifice, check valve or leakage,
+    /// the damping moved into the lines' ports) is accepted
+    /// ([`StrutParams::validate_ported`]).
+    pub fn ported(params: &StrutParams, ext: &HpsExtensions) -> Result<Self, HpsError> {
+        Self::build(params, ext, true)
+    }
+
+    fn build(params: &StrutParams, ext: &HpsExtensions, ported: bool) -> Result<Self, HpsError> {
+        params.validate_ported(ported)?;
         ext.validate()?;
         let p = *params;
         let levels = match ext.asymmetric_friction {
@@ -331,6 +372,14 @@ impl HpsStrut {
             });
         }
         let pe = self.static_pressure_at(z, u0)?;
+        self.write_rest_state(pe, u0, state);
+        Ok(())
+    }
+
+    /// Write the state at rest with both chambers at pressure `pe` (Pa) and velocity
+    /// amplitude `u0` (m/s): the free gas compressed to `pe` from the reference state (the
+    /// static gas law), gas at the wall temperature, check valves closed.
+    fn write_rest_state(&self, pe: f64, u0: f64, state: &mut [f64]) {
         state[0] = self.reference(u0).v_g0
             * (self.params.p_h0 / pe).powf(1.0 / self.static_gas_exponent());
         state[1] = pe;
@@ -341,6 +390,27 @@ impl HpsStrut {
         if let Some(i) = self.idx_valve {
             state[i] = 0.0;
         }
+    }
+
+    /// Fill `state` with the strut at rest with both chambers at pressure `p` (Pa): the
+    /// static state of a ported strut ([`HpsStrut::ported`]), whose deflection at a pressure
+    /// depends on the oil in its lines, not on the strut alone.
+    pub fn rest_state_at_pressure(&self, p: f64, state: &mut [f64]) -> Result<(), HpsError> {
+        if state.len() != self.n_states {
+            return Err(HpsError::InvalidExcitation(format!(
+                "state buffer has {} entries, the strut has {}",
+                state.len(),
+                self.n_states
+            )));
+        }
+        if !(p.is_finite() && p > self.params.p_vap) {
+            return Err(HpsError::InvalidParameter {
+                field: "p",
+                value: p,
+                reason: "rest pressure must be finite and above the vapour pressure",
+            });
+        }
+        self.write_rest_state(p, 0.0, state);
         Ok(())
     }
 
@@ -406,7 +476,7 @@ impl HpsStrut {
         let v = (state[0] / r.v_g0).max(1e-9);
         let (p_c, ratio_c) = self.piston_pressure(v, state);
         let p_r_raw = state[1];
-        let p_r = p_r_raw.max(p.p_vap.max(1.0));
+        let p_r = self.rod_pressure(p_r_raw);
         let ec = emulsion_from_ratio(p_c, ratio_c, p.p_h0, p.n, p.beta_h, p.rho_h, r.gamma0);
         let ratio_r = if r.gamma0 > 0.0 {
             (p.p_h0 / p_r).powf(self.inv_n)
@@ -434,6 +504,47 @@ impl HpsStrut {
         }
     }
 
+    /// Eq 5.7 (x = z_s): the emulsion volumes `(V_c, V_r)` of both chambers; they cannot go
+    /// below zero.
+    #[inline]
+    fn emulsion_volumes(&self, c: &Chambers, z: f64) -> (f64, f64) {
+        let r = &c.r;
+        let vc = (r.v_c0 + r.v_g0 - self.params.a_hc * z - c.vg).max(0.0);
+        let vr = (r.v_r0 + self.a_ann * z).max(1e-12);
+        (vc, vr)
+    }
+
+    /// Hydraulic compliances (m^3/Pa) of both chambers at deflection `z` and `state`, the
+    /// linearisation of Eqs 5.4-5.7 and 5.11: piston side `V_g / (n P_hc) + V_c / beta_c`,
+    /// rod side `V_r / beta_r` (the baseline gas law; a quasi-static spring's compliance).
+    pub fn chamber_compliances(&self, z: f64, state: &[f64]) -> ChamberCompliance {
+        let c = self.chambers(state);
+        let (vc, vr) = self.emulsion_volumes(&c, z);
+        ChamberCompliance {
+            piston: c.vg / (self.params.n * c.p_c) + vc / c.ec.beta,
+            rod: vr / c.er.beta,
+        }
+    }
+
+    /// Rod-side pressure from its state, held above the vapour pressure.
+    #[inline]
+    fn rod_pressure(&self, p_r_raw: f64) -> f64 {
+        p_r_raw.max(self.params.p_vap.max(1.0))
+    }
+
+    /// Both chamber pressures `(P_hc, P_hr)` (Pa, absolute) at `state`, as
+    /// [`HpsStrut::evaluate`] computes them (Eq 5.4 for the piston side): what a hydraulic
+    /// line at the chambers' ports sees.
+    #[inline]
+    pub fn chamber_pressures(&self, state: &[f64]) -> (f64, f64) {
+        let r = self.reference(state[STATE_U]);
+        let v = (state[0] / r.v_g0).max(1e-9);
+        (
+            self.piston_pressure(v, state).0,
+            self.rod_pressure(state[1]),
+        )
+    }
+
     /// State derivatives at deflection `z` (m), velocity `zdot` (m/s): Eq 5.5 for the gas
     /// volume (with Eq 5.4 giving P_hc'), Eq 5.6 for P_hr, flows of Eq 5.12, emulsion
     /// properties of Eqs 5.9-5.11, volumes of Eq 5.7 (`x` of Eq 5.7 is `z_s`), the velocity
@@ -441,16 +552,22 @@ impl HpsStrut {
     #[inline]
     pub fn derivatives(&self, z: f64, zdot: f64, state: &[f64], dstate: &mut [f64]) {
         let c = self.chambers(state);
-        self.rates(&c, z, zdot, state, dstate);
+        self.rates(&c, z, zdot, ChamberInflow::NONE, state, dstate);
     }
 
     #[inline]
-    fn rates(&self, c: &Chambers, z: f64, zdot: f64, state: &[f64], dstate: &mut [f64]) {
+    fn rates(
+        &self,
+        c: &Chambers,
+        z: f64,
+        zdot: f64,
+        inflow: ChamberInflow,
+        state: &[f64],
+        dstate: &mut [f64],
+    ) {
         let p = &self.params;
         let r = &c.r;
-        // Eq 5.7 (x = z_s); emulsion volumes cannot go below zero.
-        let vc = (r.v_c0 + r.v_g0 - p.a_hc * z - c.vg).max(0.0);
-        let vr = (r.v_r0 + self.a_ann * z).max(1e-12);
+        let (vc, vr) = self.emulsion_volumes(c, z);
         let u_dot = Self::amplitude_rate(zdot, state[STATE_U]);
         // Eq 5.5 with P_hc' = -n P_hc V_g'/V_g (Eq 5.4), or the heat-transfer gas law.
         let (n_eff, heat) = match (self.idx_theta, self.ext.heat_transfer) {
@@ -463,11 +580,16 @@ impl HpsStrut {
         // Gas the growth law moves from the free gas into the emulsion leaves at the current
         // pressure: V_g falls with V_g0(u) at fixed V_g/V_g0, so P_hc does not jump.
         let transfer = c.vg / r.v_g0 * r.dvg0_du * u_dot;
-        let vg_dot = (c.q - p.a_hc * zdot + heat) / (1.0 + n_eff * c.p_c * vc / (c.ec.beta * c.vg))
+        // An external inflow enters Eq 5.5 beside the flow to the rod side (`q - 0.0` is `q`
+        // bit for bit: the strut without lines is unchanged).
+        let vg_dot = (c.q - inflow.piston - p.a_hc * zdot + heat)
+            / (1.0 + n_eff * c.p_c * vc / (c.ec.beta * c.vg))
             + transfer;
         dstate[0] = vg_dot;
         // Eq 5.6
-        let mut pr_dot = c.er.beta / vr * (c.ec.rho / c.er.rho * c.q - self.a_ann * zdot);
+        // The external inflow offsets the annulus' displacement (`x - 0.0` is `x` bit for bit).
+        let displaced = self.a_ann * zdot - inflow.rod;
+        let mut pr_dot = c.er.beta / vr * (c.ec.rho / c.er.rho * c.q - displaced);
         if pr_dot < 0.0 {
             let guard = 1.0 - (-(c.p_r_raw - p.p_vap) / CAVITATION_BAND).exp();
             pr_dot *= guard.clamp(0.0, 1.0);
@@ -489,8 +611,23 @@ impl HpsStrut {
     /// band `v_h(u)`) at deflection `z` (m) and velocity `zdot` (m/s). No allocation.
     #[inline]
     pub fn evaluate(&self, z: f64, zdot: f64, state: &[f64], dstate: &mut [f64]) -> StrutOutputs {
+        self.evaluate_with_inflow(z, zdot, ChamberInflow::NONE, state, dstate)
+    }
+
+    /// As [`HpsStrut::evaluate`], with external volume flows into the chambers (hydraulic
+    /// lines at their ports, [`crate::interconnect`]) in the continuity equations 5.5 and
+    /// 5.6. With [`ChamberInflow::NONE`] it is [`HpsStrut::evaluate`], bit for bit.
+    #[inline]
+    pub fn evaluate_with_inflow(
+        &self,
+        z: f64,
+        zdot: f64,
+        inflow: ChamberInflow,
+        state: &[f64],
+        dstate: &mut [f64],
+    ) -> StrutOutputs {
         let c = self.chambers(state);
-        self.rates(&c, z, zdot, state, dstate);
+        self.rates(&c, z, zdot, inflow, state, dstate);
         self.outputs_of(&c, z, zdot, state)
     }
 

@@ -16,13 +16,16 @@
 //! - [`suspension`]: HPS struts on any axle (the rear strut's default, static travel,
 //!   stored energy);
 //! - [`cab_ride`]: the cab on mounts and the suspension seat driven by a ride run's frame
-//!   motion: a_wz on the frame and at the seat, SEAT (`docs/layouts.md`).
+//!   motion: a_wz on the frame and at the seat, SEAT (`docs/layouts.md`);
+//! - [`interconnect`]: the front struts roll-interconnected by hydraulic lines
+//!   (`docs/layouts.md`).
 //!
 //! Model notes: `docs/vehicle-3d.md`.
 
 pub mod cab_ride;
 pub mod error;
 pub mod field;
+pub mod interconnect;
 pub mod model;
 pub mod params;
 pub mod path_change;

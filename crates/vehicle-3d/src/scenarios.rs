@@ -186,7 +186,7 @@ impl RideSpec {
 const RIDE_START_M: f64 = 15.0;
 
 /// The vehicle options of a ride run.
-fn ride_options(spec: &RideSpec) -> VehicleOptions {
+pub(crate) fn ride_options(spec: &RideSpec) -> VehicleOptions {
     VehicleOptions {
         front_axle: spec.front_axle,
         speed_m_s: spec.speed_kmh / 3.6,
@@ -576,7 +576,7 @@ impl RollSpec {
 }
 
 /// The vehicle options of a roll run.
-fn roll_options(spec: &RollSpec) -> VehicleOptions {
+pub(crate) fn roll_options(spec: &RollSpec) -> VehicleOptions {
     let speed = spec.speed_kmh / 3.6;
     VehicleOptions {
         front_axle: spec.front_axle,

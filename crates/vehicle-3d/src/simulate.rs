@@ -10,7 +10,7 @@
 //! accelerations are right-handed about those axes (a left turn has a positive yaw rate).
 //! The CLI converts to the `afsv-v1` record convention (docs/records.md).
 
-use odeint::{Atol, Control, Direction, Event, Integrator, Problem, SampleKind, Solver};
+use odeint::{Atol, Control, Direction, Event, Integrator, OdeSystem, Problem, SampleKind, Solver};
 use serde::Serialize;
 
 use crate::error::{positive, rejected, VehicleError};
@@ -207,7 +207,7 @@ fn push_sample(vehicle: &Vehicle, t: f64, y: &[f64], rec: &mut RunRecord) {
 }
 
 /// Typical magnitudes of the states (for the absolute tolerances).
-fn typical(vehicle: &Vehicle) -> Vec<f64> {
+pub(crate) fn typical(vehicle: &Vehicle) -> Vec<f64> {
     let o = vehicle.offsets;
     let mut t = vec![1.0; o.dim];
     // joint coordinates after the floating base: small angles and travels
@@ -234,7 +234,7 @@ fn typical(vehicle: &Vehicle) -> Vec<f64> {
 
 /// Integrate `vehicle` from its static state at the target speed (module docs).
 pub fn simulate(vehicle: &Vehicle, options: &RunOptions) -> Result<RunRecord, VehicleError> {
-    let n = options.validate()?;
+    options.validate()?;
     let y0 = vehicle.initial_state();
     if y0.iter().any(|v| !v.is_finite()) {
         return Err(rejected(
@@ -243,6 +243,23 @@ pub fn simulate(vehicle: &Vehicle, options: &RunOptions) -> Result<RunRecord, Ve
             "no static equilibrium of the struts",
         ));
     }
+    simulate_system(vehicle, vehicle, &y0, typical(vehicle), options, |_| {})
+}
+
+/// Integrate `sys` from `y0` and record it as `vehicle`'s run: `sys` is the vehicle or a
+/// system that extends its state with states appended after the vehicle's (a hydraulic
+/// interconnection, [`crate::interconnect`]); `typical` holds every state's typical
+/// magnitude; `extra` sees the whole state at every recorded sample.
+pub(crate) fn simulate_system<S: OdeSystem>(
+    vehicle: &Vehicle,
+    sys: &S,
+    y0: &[f64],
+    typical: Vec<f64>,
+    options: &RunOptions,
+    mut extra: impl FnMut(&[f64]),
+) -> Result<RunRecord, VehicleError> {
+    let n = options.validate()?;
+    let dim = vehicle.offsets.dim;
     let t_out: Vec<f64> = (0..n).map(|i| i as f64 * options.output_dt_s).collect();
     let margin = |t: f64, y: &[f64]| -> f64 {
         let mut ws = vehicle.ws.borrow_mut();
@@ -250,10 +267,10 @@ pub fn simulate(vehicle: &Vehicle, options: &RunOptions) -> Result<RunRecord, Ve
         let mut scratch = [0.0; MAX_DIM];
         match vehicle.apply_forces(
             t,
-            y,
+            &y[..dim],
             &mut ws,
             &mut tau[..vehicle.model.nv()],
-            &mut scratch[..y.len()],
+            &mut scratch[..dim],
         ) {
             Ok(_) => vehicle.rear_rollover_margin(&ws),
             Err(_) => f64::NAN,
@@ -261,21 +278,22 @@ pub fn simulate(vehicle: &Vehicle, options: &RunOptions) -> Result<RunRecord, Ve
     };
     let events = [Event::new(&margin, Direction::Falling).terminal()];
     let breakpoints = vehicle.options.steer.breakpoints();
-    let mut problem = Problem::new(0.0, &y0, &t_out).with_breakpoints(&breakpoints);
+    let mut problem = Problem::new(0.0, y0, &t_out).with_breakpoints(&breakpoints);
     if options.stop_at_rollover {
         problem = problem.with_events(&events);
     }
     let integrator = Integrator::new(
         options.solver,
         options.rtol,
-        Atol::scaled(options.rtol, typical(vehicle)),
+        Atol::scaled(options.rtol, typical),
     )
     .with_max_step(options.max_step_s);
-    let mut ws = odeint::Workspace::with_events(vehicle.offsets.dim, 1);
+    let mut ws = odeint::Workspace::with_events(sys.dim(), 1);
     let mut rec = RunRecord::default();
     integrator
-        .run(vehicle, &problem, &mut ws, |s| {
-            push_sample(vehicle, s.t, s.y, &mut rec);
+        .run(sys, &problem, &mut ws, |s| {
+            push_sample(vehicle, s.t, &s.y[..dim], &mut rec);
+            extra(s.y);
             if let SampleKind::Event(_) = s.kind {
                 rec.rollover_s = Some(s.t);
             }

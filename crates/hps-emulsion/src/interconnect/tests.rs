@@ -1,0 +1,496 @@
+//! Physics tests of the interconnection (docs/layouts.md, "Interconnected struts"): statics,
+//! the quasi-static bounce and roll stiffness against the hand-derived formula, energy,
+//! mirror symmetry, parameter checks. Together well under a second in release.
+
+use super::*;
+use crate::extensions::HpsExtensions;
+use odeint::{Integrator, OdeSystem, Solver};
+
+fn table_6_3_pair() -> CrossCoupledPair {
+    let sealed = sealed_piston(&StrutParams::front_axle());
+    let s = HpsStrut::ported(&sealed, &HpsExtensions::default()).unwrap();
+    CrossCoupledPair::new([s.clone(), s], &LineParams::front_axle_roll()).unwrap()
+}
+
+/// Two struts driven by prescribed deflections `z_i(t) = dz_i (1 - cos(pi t / T)) / 2` for
+/// `t < T`, then held: a slow ramp from rest.
+enum Driven<'a> {
+    /// The cross-coupled pair.
+    Coupled(&'a CrossCoupledPair),
+    /// Two independent struts of one design (the Table 6.3 strut without lines).
+    Independent(&'a HpsStrut),
+}
+
+struct Ramp<'a> {
+    pair: Driven<'a>,
+    dz: [f64; 2],
+    t_ramp: f64,
+}
+
+impl Ramp<'_> {
+    fn motion(&self, t: f64) -> ([f64; 2], [f64; 2]) {
+        let w = std::f64::consts::PI / self.t_ramp;
+        let (s, sd) = if t < self.t_ramp {
+            (0.5 * (1.0 - (w * t).cos()), 0.5 * w * (w * t).sin())
+        } else {
+            (1.0, 0.0)
+        };
+        (self.dz.map(|d| d * s), self.dz.map(|d| d * sd))
+    }
+
+    /// Pressure forces (Eq 5.1 without the seal friction) of both struts.
+    fn forces(&self, t: f64, y: &[f64]) -> [f64; 2] {
+        let mut d = vec![0.0; y.len()];
+        let (z, zd) = self.motion(t);
+        match self.pair {
+            Driven::Coupled(p) => p
+                .evaluate(z, zd, y, &mut d)
+                .struts
+                .map(|o| o.force - o.friction),
+            Driven::Independent(s) => {
+                let n = s.n_states();
+                [0, 1].map(|i| {
+                    let o = s.evaluate(z[i], zd[i], &y[i * n..(i + 1) * n], &mut d[..n]);
+                    o.force - o.friction
+                })
+            }
+        }
+    }
+}
+
+impl OdeSystem for Ramp<'_> {
+    fn dim(&self) -> usize {
+        match self.pair {
+            Driven::Coupled(p) => p.n_states(),
+            Driven::Independent(s) => 2 * s.n_states(),
+        }
+    }
+    fn rhs(&self, t: f64, y: &[f64], dydt: &mut [f64]) {
+        let (z, zd) = self.motion(t);
+        match self.pair {
+            Driven::Coupled(p) => {
+                p.evaluate(z, zd, y, dydt);
+            }
+            Driven::Independent(s) => {
+                let n = s.n_states();
+                for i in 0..2 {
+                    let r = i * n..(i + 1) * n;
+                    s.evaluate(z[i], zd[i], &y[r.clone()], &mut dydt[r]);
+                }
+            }
+        }
+    }
+    fn is_stiff(&self) -> bool {
+        true
+    }
+}
+
+/// Pressure force of strut 0 after the ramp to `dz` from the rest state `y0`.
+fn force_after(pair: Driven<'_>, y0: &[f64], dz: [f64; 2]) -> f64 {
+    let ramp = Ramp {
+        pair,
+        dz,
+        t_ramp: 2.0,
+    };
+    let t_end = 2.5;
+    let mut last = vec![0.0; y0.len()];
+    Integrator::new(Solver::Rosenbrock23, 1e-9, 1e-12)
+        .integrate(&ramp, 0.0, y0, &[t_end], |_, y| {
+            last.copy_from_slice(y);
+            odeint::Control::Continue
+        })
+        .unwrap();
+    ramp.forces(t_end, &last)[0]
+}
+
+/// Quasi-static stiffness of strut 0 (N/m) under the motion `shape` (bounce `[1, 1]`, roll
+/// `[1, -1]`) by a central difference over +-0.5 mm ramps.
+fn stiffness(pair: impl Fn() -> Driven<'static>, y0: &[f64], shape: [f64; 2]) -> f64 {
+    let d = 5e-4;
+    let up = force_after(pair(), y0, shape.map(|s| s * d));
+    let down = force_after(pair(), y0, shape.map(|s| -s * d));
+    (up - down) / (2.0 * d)
+}
+
+#[test]
+fn at_rest_every_pressure_is_equal_and_nothing_moves() {
+    let pair = table_6_3_pair();
+    let p_s = 5.6e6;
+    let mut y = vec![0.0; pair.n_states()];
+    pair.rest_state(p_s, &mut y).unwrap();
+    let mut d = vec![1.0; y.len()];
+    let out = pair.evaluate([0.01, 0.01], [0.0, 0.0], &y, &mut d);
+    for o in out.struts {
+        assert!((o.p_piston - p_s).abs() < 1e-6 * p_s, "{o:?}");
+        assert_eq!(o.p_rod, p_s);
+        // Eq 5.1 at one pressure: (P - p_amb) A_hr
+        let sp = pair.struts()[0].params();
+        assert!((o.force - (p_s - sp.p_amb) * sp.a_hr).abs() < 1e-6 * o.force);
+    }
+    for l in out.lines {
+        assert!((l.p_node - p_s).abs() < 1e-6 * p_s, "{l:?}");
+        assert!(l.q_piston.abs() < 1e-9 && l.q_rod.abs() < 1e-9 && l.dissipation_w.abs() < 1e-3);
+    }
+    // zero up to round-off (the stiff rod side turns a 1e-16 pressure error into 1e-4 Pa/s)
+    let typical = pair.struts()[0].states().iter().map(|s| s.typical);
+    let typical: Vec<f64> = typical.clone().chain(typical).chain([1e-3, 1e-3]).collect();
+    for (r, t) in d.iter().zip(&typical) {
+        assert!(r.abs() < 1e-9 * t, "{d:?}");
+    }
+    // the accumulator holds its precharged gas compressed to the static pressure
+    let lp = LineParams::front_axle_roll();
+    let v = y[pair.line_state(0)];
+    let hand = lp.accumulator_volume_m3 * (lp.precharge_pa / p_s).powf(1.0 / 1.4);
+    assert!((v - hand).abs() < 1e-12 * hand, "{v} {hand}");
+    // at or below the precharge there is no static state with oil in the accumulator
+    assert!(pair.rest_state(lp.precharge_pa, &mut y).is_err());
+}
+
+#[test]
+fn without_line_flow_the_ported_strut_is_the_strut_bit_for_bit() {
+    // a strut with lines whose flows are zero evaluates exactly as the strut alone
+    let s = HpsStrut::new(&StrutParams::front_axle(), &HpsExtensions::default()).unwrap();
+    let mut y = vec![0.0; s.n_states()];
+    for (k, (z, zd)) in [(0.02, 0.3), (-0.05, -0.7), (0.0, 0.0), (0.1, -0.01)]
+        .into_iter()
+        .enumerate()
+    {
+        s.initial_state(z * 0.5, &mut y).unwrap();
+        y[1] *= 1.0 + 0.01 * k as f64;
+        y[2] = 0.05 * k as f64;
+        let (mut a, mut b) = (vec![0.0; y.len()], vec![0.0; y.len()]);
+        let oa = s.evaluate(z, zd, &y, &mut a);
+        let ob = s.evaluate_with_inflow(z, zd, ChamberInflow::NONE, &y, &mut b);
+        assert_eq!(oa, ob);
+        assert_eq!(
+            a.iter().map(|v| v.to_bits()).collect::<Vec<_>>(),
+            b.iter().map(|v| v.to_bits()).collect::<Vec<_>>()
+        );
+        // and an inflow moves exactly the two continuity equations
+        let oc = s.evaluate_with_inflow(
+            z,
+            zd,
+            ChamberInflow {
+                piston: 1e-4,
+                rod: 0.0,
+            },
+            &y,
+            &mut b,
+        );
+        assert_eq!(oa.force, oc.force);
+        assert!(b[0] < a[0] && b[1] == a[1]);
+    }
+}
+
+#[test]
+fn the_end_law_is_laminar_plus_turbulent_in_series() {
+    let line = table_6_3_pair().line().rod_end;
+    for dp in [-3e6, -2e4, -1.0, 0.0, 1e-3, 50.0, 7e5, 4e6] {
+        let q = line.flow(dp);
+        let back = line.laminar * q + line.turbulent * q * q.abs();
+        assert!(
+            (back - dp).abs() <= 1e-12 * dp.abs().max(1.0),
+            "{dp}: {back}"
+        );
+        assert_eq!(line.flow(-dp), -q);
+    }
+    // Hagen-Poiseuille and the orifice law by hand: 128 mu L / (pi d^4), rho / (2 (C A)^2)
+    let lp = LineParams::front_axle_roll();
+    let r = 128.0 * 0.027 * 2.5 / (std::f64::consts::PI * 0.038f64.powi(4));
+    assert!((line.laminar - r).abs() < 1e-9 * r);
+    let a = 850.0 / (2.0 * (0.7 * lp.rod_end.port_area_m2).powi(2));
+    assert!((line.turbulent - a).abs() < 1e-9 * a);
+}
+
+#[test]
+fn bounce_and_roll_stiffness_match_the_hand_formula() {
+    let sp = StrutParams::front_axle();
+    let pair: &'static CrossCoupledPair = Box::leak(Box::new(table_6_3_pair()));
+    let strut: &'static HpsStrut = Box::leak(Box::new(
+        HpsStrut::new(&sp, &HpsExtensions::default()).unwrap(),
+    ));
+    // both at the reference state, z = 0 and P_h0 in every chamber
+    let mut y_pair = vec![0.0; pair.n_states()];
+    pair.rest_state(sp.p_h0, &mut y_pair).unwrap();
+    let mut y1 = vec![0.0; strut.n_states()];
+    strut.initial_state(0.0, &mut y1).unwrap();
+    let y_ind: Vec<f64> = y1.iter().chain(y1.iter()).copied().collect();
+
+    let c0 = strut.chamber_compliances(0.0, &y1);
+    let k0_hand = sp.a_hr * sp.a_hr / (c0.piston + c0.rod);
+    let (kb_hand, kr_hand) = pair.hand_stiffness(sp.p_h0, 0.0).unwrap();
+
+    let bounce0 = stiffness(|| Driven::Independent(strut), &y_ind, [1.0, 1.0]);
+    let roll0 = stiffness(|| Driven::Independent(strut), &y_ind, [1.0, -1.0]);
+    let bounce = stiffness(|| Driven::Coupled(pair), &y_pair, [1.0, 1.0]);
+    let roll = stiffness(|| Driven::Coupled(pair), &y_pair, [1.0, -1.0]);
+    println!(
+        "k per strut (kN/m): without line bounce {:.1} roll {:.1} (hand {:.1}); with line \
+         bounce {:.1} (hand {:.1}) roll {:.1} (hand {:.1}); roll/bounce {:.3}, \
+         bounce with/without {:.3}, roll with/without {:.3}; relative to hand {:.1e} {:.1e} \
+         {:.1e} {:.1e}",
+        bounce0 / 1e3,
+        roll0 / 1e3,
+        k0_hand / 1e3,
+        bounce / 1e3,
+        kb_hand / 1e3,
+        roll / 1e3,
+        kr_hand / 1e3,
+        roll / bounce,
+        bounce / bounce0,
+        roll / roll0,
+        bounce0 / k0_hand - 1.0,
+        roll0 / k0_hand - 1.0,
+        bounce / kb_hand - 1.0,
+        roll / kr_hand - 1.0,
+    );
+    let close = |a: f64, b: f64, tol: f64| (a / b - 1.0).abs() < tol;
+    assert!(close(bounce0, k0_hand, 2e-3), "{bounce0} {k0_hand}");
+    assert!(close(roll0, k0_hand, 2e-3), "{roll0} {k0_hand}");
+    assert!(close(bounce, kb_hand, 2e-3), "{bounce} {kb_hand}");
+    assert!(close(roll, kr_hand, 2e-3), "{roll} {kr_hand}");
+    // the ratio is the area ratio ((2 A_hc - A_hr) / A_hr)^2, whatever the compliances
+    let area = ((2.0 * sp.a_hc - sp.a_hr) / sp.a_hr).powi(2);
+    assert!(close(kr_hand / kb_hand, area, 1e-12));
+    assert!(close(roll / bounce, area, 3e-3), "{}", roll / bounce);
+    // the point of the layout: softer in bounce, stiffer in roll than the plain strut
+    assert!(bounce < 0.7 * bounce0 && roll > 1.5 * roll0);
+}
+
+/// The pair at fixed deflections (no external work) with the dissipated energy as an extra
+/// state.
+struct Closed<'a> {
+    pair: &'a CrossCoupledPair,
+    z: [f64; 2],
+}
+
+impl OdeSystem for Closed<'_> {
+    fn dim(&self) -> usize {
+        self.pair.n_states() + 1
+    }
+    fn rhs(&self, _t: f64, y: &[f64], dydt: &mut [f64]) {
+        let n = self.pair.n_states();
+        let o = self
+            .pair
+            .evaluate(self.z, [0.0; 2], &y[..n], &mut dydt[..n]);
+        dydt[n] = o.lines[0].dissipation_w + o.lines[1].dissipation_w;
+    }
+    fn is_stiff(&self) -> bool {
+        true
+    }
+}
+
+/// `int_{p0}^{p} s c(s) ds` by Simpson's rule: the energy stored in a chamber of
+/// compliance `c` when it is charged from `p0` to `p` (`dE = P dV = P C dP`).
+fn charge_energy(c: impl Fn(f64) -> f64, p0: f64, p: f64) -> f64 {
+    let n = 400;
+    let h = (p - p0) / n as f64;
+    (0..=n)
+        .map(|i| {
+            let s = p0 + h * i as f64;
+            let w = if i == 0 || i == n {
+                1.0
+            } else if i % 2 == 1 {
+                4.0
+            } else {
+                2.0
+            };
+            w * s * c(s)
+        })
+        .sum::<f64>()
+        * h
+        / 3.0
+}
+
+/// Stored energy of the pair at fixed deflections `z` (J, from every chamber at `p0`).
+fn stored(pair: &CrossCoupledPair, z: [f64; 2], y: &[f64]) -> f64 {
+    let p0 = 5.0e6;
+    let mut e = 0.0;
+    let mut off = 0;
+    for (i, s) in pair.struts().iter().enumerate() {
+        let n = s.n_states();
+        let (pc, pr) = s.chamber_pressures(&y[off..off + n]);
+        let c = |p: f64| {
+            let mut buf = vec![0.0; n];
+            s.rest_state_at_pressure(p, &mut buf).unwrap();
+            s.chamber_compliances(z[i], &buf)
+        };
+        e += charge_energy(|p| c(p).piston, p0, pc);
+        e += charge_energy(|p| c(p).rod, p0, pr);
+        off += n;
+    }
+    let l = pair.line();
+    e + l.stored_energy(y[pair.line_state(0)]) + l.stored_energy(y[pair.line_state(1)])
+}
+
+#[test]
+fn the_lines_dissipate_and_never_create_energy() {
+    let pair = table_6_3_pair();
+    let l = pair.line();
+    // pointwise: the power the chambers push into a line is the node's storage rate plus
+    // a dissipation that is never negative
+    let v_rest = l.gas_volume_at(5.6e6).unwrap();
+    for (dv, pc, pr) in [
+        (0.0, 5.6e6, 5.6e6),
+        (0.05, 6.1e6, 5.0e6),
+        (-0.08, 4.9e6, 7.2e6),
+        (0.02, 5.61e6, 5.5999e6),
+    ] {
+        let v = v_rest * (1.0 + dv);
+        let f = l.evaluate(v, pc, pr);
+        let h = 1e-9 * v;
+        let de = (l.stored_energy(v + h) - l.stored_energy(v - h)) / (2.0 * h) * f.gas_volume_rate;
+        let p_in = -(pc * f.q_piston + pr * f.q_rod);
+        assert!(f.dissipation_w >= 0.0);
+        assert!(
+            (p_in - de - f.dissipation_w).abs() <= 1e-6 * p_in.abs().max(1.0),
+            "{p_in} {de} {}",
+            f.dissipation_w
+        );
+    }
+    // a run: the pair held at fixed deflections, released from unequal pressures
+    let z = [0.01, -0.02];
+    let sys = Closed { pair: &pair, z };
+    let n = pair.n_states();
+    let mut y0 = vec![0.0; n + 1];
+    pair.rest_state(5.6e6, &mut y0[..n]).unwrap();
+    y0[pair.line_state(0)] *= 0.97;
+    y0[pair.struts()[0].n_states() + 1] += 3e5;
+    let e0 = stored(&pair, z, &y0);
+    let times: Vec<f64> = (1..=20).map(|i| 0.01 * i as f64).collect();
+    let mut last_e = e0;
+    let mut samples = Vec::new();
+    Integrator::new(Solver::Rosenbrock23, 1e-10, 1e-14)
+        .integrate(&sys, 0.0, &y0, &times, |_, y| {
+            samples.push(y.to_vec());
+            odeint::Control::Continue
+        })
+        .unwrap();
+    for y in &samples {
+        let e = stored(&pair, z, y);
+        let dissipated = y[n];
+        assert!(
+            e <= last_e + 1e-9 * e0.abs(),
+            "stored energy rose: {last_e} -> {e}"
+        );
+        assert!(
+            (e + dissipated - e0).abs() < 1e-4 * dissipated,
+            "E {e} + D {dissipated} != E0 {e0}"
+        );
+        last_e = e;
+    }
+    // and the pressures settled to one per circuit
+    let y = samples.last().unwrap();
+    let mut d = vec![0.0; n];
+    let o = pair.evaluate(z, [0.0; 2], &y[..n], &mut d);
+    assert!((o.struts[0].p_piston / o.struts[1].p_rod - 1.0).abs() < 1e-6);
+    assert!((o.struts[1].p_piston / o.struts[0].p_rod - 1.0).abs() < 1e-6);
+    println!(
+        "released: dissipated {:.3} J, stored change {:.3} J",
+        y[n],
+        e0 - stored(&pair, z, y)
+    );
+}
+
+#[test]
+fn swapping_the_struts_swaps_the_response() {
+    let pair = table_6_3_pair();
+    let (n0, n) = (pair.struts()[0].n_states(), pair.n_states());
+    let mut y = vec![0.0; n];
+    pair.rest_state(5.6e6, &mut y).unwrap();
+    // an unsymmetric state: each strut and each line at its own pressure
+    y[0] *= 0.98;
+    y[1] += 2e5;
+    y[n0 + 1] -= 1e5;
+    y[pair.line_state(1)] *= 1.01;
+    let mirror = |y: &[f64]| -> Vec<f64> {
+        let mut m = Vec::with_capacity(n);
+        m.extend_from_slice(&y[n0..2 * n0]);
+        m.extend_from_slice(&y[..n0]);
+        m.push(y[pair.line_state(1)]);
+        m.push(y[pair.line_state(0)]);
+        m
+    };
+    let (z, zd) = ([0.02, -0.01], [0.3, -0.1]);
+    let (mut d, mut dm) = (vec![0.0; n], vec![0.0; n]);
+    let o = pair.evaluate(z, zd, &y, &mut d);
+    let om = pair.evaluate([z[1], z[0]], [zd[1], zd[0]], &mirror(&y), &mut dm);
+    assert_eq!(mirror(&d), dm);
+    assert_eq!(o.struts[0], om.struts[1]);
+    assert_eq!(o.struts[1], om.struts[0]);
+    assert_eq!(o.lines[0], om.lines[1]);
+}
+
+#[test]
+fn bad_parameters_are_refused_by_name() {
+    let good = LineParams::front_axle_roll();
+    good.validate().unwrap();
+    let field = |p: LineParams| match p.validate() {
+        Err(HpsError::InvalidParameter { field, .. }) => field,
+        other => panic!("{other:?}"),
+    };
+    assert_eq!(
+        field(LineParams {
+            diameter_m: 0.5,
+            ..good
+        }),
+        "diameter_m"
+    );
+    assert_eq!(
+        field(LineParams {
+            diameter_m: f64::NAN,
+            ..good
+        }),
+        "diameter_m"
+    );
+    assert_eq!(
+        field(LineParams {
+            viscosity_pa_s: 0.0,
+            ..good
+        }),
+        "viscosity_pa_s"
+    );
+    assert_eq!(
+        field(LineParams {
+            port_cd: 1.5,
+            ..good
+        }),
+        "port_cd"
+    );
+    let mut p = good;
+    p.rod_end.port_area_m2 = -1e-5;
+    assert_eq!(field(p), "rod_end.port_area_m2");
+    p = good;
+    p.piston_end.port_area_m2 = 0.01;
+    assert_eq!(field(p), "piston_end.port_area_m2");
+    p = good;
+    p.piston_end.length_m = 100.0;
+    assert_eq!(field(p), "piston_end.length_m");
+    assert_eq!(
+        field(LineParams {
+            accumulator_volume_m3: 1.0,
+            ..good
+        }),
+        "accumulator_volume_m3"
+    );
+    assert_eq!(
+        field(LineParams {
+            precharge_pa: -1.0,
+            ..good
+        }),
+        "precharge_pa"
+    );
+    // struts of different oil cannot share a line
+    let a = StrutParams::front_axle();
+    let b = StrutParams { rho_h: 900.0, ..a };
+    let ext = HpsExtensions::default();
+    let s = [
+        HpsStrut::ported(&a, &ext).unwrap(),
+        HpsStrut::ported(&b, &ext).unwrap(),
+    ];
+    assert!(CrossCoupledPair::new(s, &good).is_err());
+    // a sealed piston needs ports: the plain strut refuses it, the ported one takes it
+    let sealed = sealed_piston(&a);
+    assert!(HpsStrut::new(&sealed, &ext).is_err());
+    assert!(HpsStrut::ported(&sealed, &ext).is_ok());
+}
