@@ -1,8 +1,9 @@
 //! `afsv study layouts`: several suspension layouts of one vehicle through D1-D4 on common
 //! terrain seeds (section 6.4; the layouts of section 7.3's future work, docs/layouts.md).
 //!
-//! Each [`Layout`] is a parameter set of the 3-D vehicle with its front axle. On the same
-//! seeds, each layout runs
+//! Each [`Layout`] is a parameter set of the 3-D vehicle (its rear strut, if any, in
+//! `rear_hps`) with its front axle and, optionally, the front struts' roll interconnection.
+//! On the same seeds, each layout runs
 //! - the ride (class E, m_c 0.3, 100 m after the run-in) at the question's speed and at
 //!   every D4 speed: a_wz on the frame (W_k, ISO 2631-1) and the strut travel d_s;
 //! - D2 (SP-DRT, loaded) and D3 (omega_z, loaded, smooth ground).
@@ -23,10 +24,12 @@
 use crate::design_3d::{hgcz_8h_band, settled};
 use crate::error::DesignError;
 use crate::hps_speed_sweep::{first_upward_crossing, MAX_SPEEDS, MAX_SPEED_KMH, MIN_SPEED_KMH};
+use hps_emulsion::interconnect::LineParams;
 use perf_measures::iso2631::{health_guidance_zone, HgczRelation, HgczZone};
 use serde::Serialize;
 use std::sync::Arc;
 use vehicle_3d::cab_ride::{seat_ride_measures, CabSeatLayout};
+use vehicle_3d::interconnect::{ride_linked_on, roll_linked_on, yaw_linked};
 use vehicle_3d::scenarios::{
     ride_on, ride_tracks, roll_on, roll_tracks, yaw, RideSpec, RollSpec, Spread, YawSpec, RUN_IN_M,
 };
@@ -46,6 +49,9 @@ pub struct Layout {
     pub params: VehicleParams,
     /// The front axle.
     pub front_axle: FrontAxle,
+    /// The roll interconnection of the front struts (`vehicle_3d::interconnect`), if any;
+    /// it needs the front-axle HPS.
+    pub front_link: Option<LineParams>,
 }
 
 /// What the study runs.
@@ -223,6 +229,16 @@ fn check(layouts: &[Layout], o: &LayoutOptions) -> Result<(), DesignError> {
         l.params
             .validate()
             .map_err(|e| DesignError::Simulation(format!("layout `{}`: {e}", l.name)))?;
+        if let Some(line) = &l.front_link {
+            if l.front_axle != FrontAxle::Suspended {
+                return Err(DesignError::Simulation(format!(
+                    "layout `{}`: the roll interconnection needs the front-axle HPS",
+                    l.name
+                )));
+            }
+            line.validate()
+                .map_err(|e| DesignError::Simulation(format!("layout `{}`: {e}", l.name)))?;
+        }
     }
     if let (Some(s), Some(l)) = (&o.seat, layouts.first()) {
         s.build(&l.params)
@@ -285,7 +301,14 @@ pub fn layouts(
                     let l = &layouts[layout];
                     let spec = ride_spec(l, speeds[speed]);
                     let t = Arc::clone(&cache(layout, seed).ride);
-                    let (rec, m) = ride_on(&l.params, &spec, t).map_err(sim)?;
+                    let (rec, m) = match &l.front_link {
+                        None => ride_on(&l.params, &spec, t).map_err(sim)?,
+                        Some(line) => {
+                            let (run, m) =
+                                ride_linked_on(&l.params, &spec, t, line).map_err(sim)?;
+                            (run.record, m)
+                        }
+                    };
                     let seat = o
                         .seat
                         .as_ref()
@@ -304,12 +327,20 @@ pub fn layouts(
                 Job::Roll { layout, seed } => {
                     let l = &layouts[layout];
                     let t = Arc::clone(&cache(layout, seed).roll);
-                    let (_, m) = roll_on(&l.params, &RollSpec::d2(l.front_axle), t).map_err(sim)?;
+                    let spec = RollSpec::d2(l.front_axle);
+                    let m = match &l.front_link {
+                        None => roll_on(&l.params, &spec, t).map_err(sim)?.1,
+                        Some(line) => roll_linked_on(&l.params, &spec, t, line).map_err(sim)?.1,
+                    };
                     Ok(Outcome::Roll(m.sp_drt_m_s2))
                 }
                 Job::Yaw { layout } => {
                     let l = &layouts[layout];
-                    let (_, m) = yaw(&l.params, &YawSpec::d3(l.front_axle), 0).map_err(sim)?;
+                    let spec = YawSpec::d3(l.front_axle);
+                    let m = match &l.front_link {
+                        None => yaw(&l.params, &spec, 0).map_err(sim)?.1,
+                        Some(line) => yaw_linked(&l.params, &spec, line).map_err(sim)?.1,
+                    };
                     Ok(Outcome::Yaw(m.omega_z_hz))
                 }
             }
@@ -546,6 +577,7 @@ mod tests {
             name: "rigid".into(),
             params: p.clone(),
             front_axle: FrontAxle::Rigid,
+            front_link: None,
         }];
         let good = LayoutOptions {
             load: Load::Loaded,

@@ -186,8 +186,9 @@ fn hps_optimum_writes_its_strut_and_sweeps_it() {
     );
 }
 
-/// `afsv study layouts` on its smallest request (one seed, two D4 speeds): a frame and a
-/// seat row per layout on the same vehicle runs, the operator's verdicts read from the
+/// `afsv study layouts` on its smallest request (one seed, two D4 speeds, the rigid
+/// baseline and the layout with every element: struts on both axles, the front roll link):
+/// a frame and a seat row per layout on the same vehicle runs, the operator's verdicts read from the
 /// reported numbers, and bad requests refused by name before any run.
 #[test]
 fn layouts_report_frame_and_seat_rows_consistent_with_their_numbers() {
@@ -200,6 +201,8 @@ fn layouts_report_frame_and_seat_rows_consistent_with_their_numbers() {
         "10,20",
         "--speed-kmh",
         "20",
+        "--layouts",
+        "rigid,front-rear-roll",
         "--json",
     ]);
     assert!(
@@ -223,8 +226,8 @@ fn layouts_report_frame_and_seat_rows_consistent_with_their_numbers() {
         [
             ("rigid", false),
             ("rigid", true),
-            ("front-hps", false),
-            ("front-hps", true)
+            ("front-rear-roll", false),
+            ("front-rear-roll", true)
         ]
     );
     let upper = v["hgcz_8h_m_s2"][1].as_f64().unwrap();
@@ -262,7 +265,8 @@ fn layouts_report_frame_and_seat_rows_consistent_with_their_numbers() {
     }
     assert!(rows[0]["strut_travel_m"].is_null());
     assert!(mean(&rows[2], "strut_travel_m") > 0.0);
-    // the HPS lowers the frame's a_wz (section 6.5: by about half at 20 km/h)
+    // the struts on both axles with the front roll link lower the frame's a_wz (the front
+    // HPS alone halves it at 20 km/h, section 6.5)
     assert!(mean(&rows[2], "a_wz_frame_m_s2") < 0.8 * mean(&rows[0], "a_wz_frame_m_s2"));
     for (args, needle) in [
         (&["--layouts", "rigid,bogus"][..], "unknown layout `bogus`"),

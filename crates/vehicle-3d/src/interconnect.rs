@@ -23,10 +23,13 @@ use crate::model::FrontAxle;
 use crate::params::{Load, VehicleParams};
 use crate::scenarios::{
     ride_measures, ride_options, ride_tracks, roll_measures, roll_options, roll_tracks,
-    RideMeasures, RideSpec, RollMeasures, RollSpec, OUTPUT_DT_S, RUN_IN_M,
+    yaw_measures, yaw_options, RideMeasures, RideSpec, RollMeasures, RollSpec, YawMeasures,
+    YawSpec, OUTPUT_DT_S, RUN_IN_M,
 };
 use crate::simulate::{simulate_system, typical, RunOptions, RunRecord};
+use crate::tires::TireTracks;
 use crate::vehicle::{Vehicle, VehicleOptions};
+use std::sync::Arc;
 
 /// Largest state count of one strut the pair block holds (the strut with every extension
 /// has 5).
@@ -64,11 +67,15 @@ impl LinkedVehicle {
         let o = vehicle.offsets();
         let mut block: Vec<usize> = (o.hps..o.hps + 2 * n).collect();
         block.extend([o.dim, o.dim + 1]);
+        // the pair first, then the vehicle's own blocks after its two front struts' (the
+        // rear struts of a vehicle suspended on both axles)
+        let mut blocks = vec![block];
+        blocks.extend(vehicle.stiff_blocks().iter().skip(2).cloned());
         Ok(Self {
             vehicle,
             pair,
             carrier,
-            blocks: vec![block],
+            blocks,
         })
     }
 
@@ -163,10 +170,12 @@ impl OdeSystem for LinkedVehicle {
     }
 
     /// The pair block's Jacobian by forward differences of the pair's evaluate with the
-    /// struts' travels and rates held.
-    fn block_jacobian(&self, _t: f64, y: &[f64], block: usize, jac: &mut [f64]) -> bool {
+    /// struts' travels and rates held; a rear strut's block is the vehicle's own.
+    fn block_jacobian(&self, t: f64, y: &[f64], block: usize, jac: &mut [f64]) -> bool {
         if block != 0 {
-            return false;
+            let dim = self.vehicle.offsets().dim;
+            return block < self.blocks.len()
+                && self.vehicle.block_jacobian(t, &y[..dim], block + 1, jac);
         }
         let mut s = [0.0; MAX_PAIR];
         let (z, zdot, m) = self.gather(y, &mut s);
@@ -211,13 +220,19 @@ pub fn ride_linked(
     seed: u64,
     line: &LineParams,
 ) -> Result<(LinkedRun, RideMeasures), VehicleError> {
+    ride_linked_on(p, spec, ride_tracks(p, spec, seed)?, line)
+}
+
+/// [`ride_linked`] on the enveloping cache `tracks` of [`crate::scenarios::ride_tracks`]
+/// (shared with the runs of other layouts on the same seed and load).
+pub fn ride_linked_on(
+    p: &VehicleParams,
+    spec: &RideSpec,
+    tracks: Arc<TireTracks>,
+    line: &LineParams,
+) -> Result<(LinkedRun, RideMeasures), VehicleError> {
     let speed = spec.speed_kmh / 3.6;
-    let v = Vehicle::on_tracks(
-        p,
-        spec.load,
-        ride_options(spec),
-        ride_tracks(p, spec, seed)?,
-    )?;
+    let v = Vehicle::on_tracks(p, spec.load, ride_options(spec), tracks)?;
     let linked = LinkedVehicle::new(v, line)?;
     let rec = linked.simulate_from(
         &linked.initial_state()?,
@@ -238,12 +253,17 @@ pub fn roll_linked(
     seed: u64,
     line: &LineParams,
 ) -> Result<(LinkedRun, RollMeasures), VehicleError> {
-    let v = Vehicle::on_tracks(
-        p,
-        spec.load,
-        roll_options(spec),
-        roll_tracks(p, spec, seed)?,
-    )?;
+    roll_linked_on(p, spec, roll_tracks(p, spec, seed)?, line)
+}
+
+/// [`roll_linked`] on the enveloping cache `tracks` of [`crate::scenarios::roll_tracks`].
+pub fn roll_linked_on(
+    p: &VehicleParams,
+    spec: &RollSpec,
+    tracks: Arc<TireTracks>,
+    line: &LineParams,
+) -> Result<(LinkedRun, RollMeasures), VehicleError> {
+    let v = Vehicle::on_tracks(p, spec.load, roll_options(spec), tracks)?;
     let linked = LinkedVehicle::new(v, line)?;
     let rec = linked.simulate_from(
         &linked.initial_state()?,
@@ -255,6 +275,45 @@ pub fn roll_linked(
         },
     )?;
     let m = roll_measures(&rec.record)?;
+    Ok((rec, m))
+}
+
+/// D3 (section 6.4, smooth ground) with the front struts interconnected by `line`: the
+/// yaw-mode run of [`crate::scenarios::yaw`] (its terrain must be smooth).
+pub fn yaw_linked(
+    p: &VehicleParams,
+    spec: &YawSpec,
+    line: &LineParams,
+) -> Result<(LinkedRun, YawMeasures), VehicleError> {
+    if spec.terrain.is_some() {
+        return Err(measure(
+            "yaw_linked",
+            "the linked D3 runs on smooth ground only",
+        ));
+    }
+    let flat = FlatTerrain::new(0.0, vehicle_components::DEFAULT_FRICTION)
+        .map_err(|e| measure("terrain", e))?;
+    let v = Vehicle::new(
+        p,
+        spec.load,
+        yaw_options(spec)?,
+        &flat,
+        0.5 * p.front_track_m,
+    )?;
+    let linked = LinkedVehicle::new(v, line)?;
+    let rec = linked.simulate_from(
+        &linked.initial_state()?,
+        &RunOptions {
+            t_end_s: spec.t_end_s,
+            output_dt_s: OUTPUT_DT_S,
+            ..RunOptions::default()
+        },
+    )?;
+    let m = yaw_measures(
+        &rec.record,
+        spec.pulse_start_s + spec.pulse_s,
+        spec.fit_window_s,
+    )?;
     Ok((rec, m))
 }
 

@@ -454,22 +454,27 @@ impl YawSpec {
     }
 }
 
-/// One yaw run (on terrain `seed` when the spec has a terrain).
-pub fn yaw(
-    p: &VehicleParams,
-    spec: &YawSpec,
-    seed: u64,
-) -> Result<(RunRecord, YawMeasures), VehicleError> {
+/// The vehicle options of a D3 run: the speed, the steering pulse and the path.
+pub(crate) fn yaw_options(spec: &YawSpec) -> Result<VehicleOptions, VehicleError> {
     positive("speed_kmh", spec.speed_kmh)?;
     let speed = spec.speed_kmh / 3.6;
-    let options = VehicleOptions {
+    Ok(VehicleOptions {
         front_axle: spec.front_axle,
         speed_m_s: speed,
         steer: SteerInput::pulse_deg(spec.pulse_deg, spec.pulse_s, spec.pulse_start_s),
         path_length_m: speed * spec.t_end_s + 5.0,
         lock_rear_roll: spec.lock_rear_roll,
         ..VehicleOptions::default()
-    };
+    })
+}
+
+/// One yaw run (on terrain `seed` when the spec has a terrain).
+pub fn yaw(
+    p: &VehicleParams,
+    spec: &YawSpec,
+    seed: u64,
+) -> Result<(RunRecord, YawMeasures), VehicleError> {
+    let options = yaw_options(spec)?;
     let run = RunOptions {
         t_end_s: spec.t_end_s,
         output_dt_s: OUTPUT_DT_S,

@@ -4,6 +4,7 @@
 use super::CmdResult;
 use afsv::output::{OutputGuard, OutputKind};
 use afsv_design::layouts::{layout_runs, layouts, Layout, LayoutOptions, LayoutRow, LayoutStudy};
+use hps_emulsion::interconnect::LineParams;
 use std::path::PathBuf;
 use vehicle_3d::cab_ride::CabSeatLayout;
 use vehicle_3d::{FrontAxle, Load};
@@ -13,7 +14,19 @@ pub const LAYOUT_NAMES: &[(&str, &str)] = &[
     ("rigid", "every axle rigid"),
     (
         "front-hps",
-        "the description's front-axle strut (or its candidate strut)",
+        "the description's front-axle strut (or its candidate strut), rigid rear",
+    ),
+    (
+        "front-rear-hps",
+        "front strut and the description's rear strut (or the front strut scaled for the rear static load)",
+    ),
+    (
+        "front-roll",
+        "front-hps with the front struts roll-interconnected (sealed pistons, two cross lines with accumulators)",
+    ),
+    (
+        "front-rear-roll",
+        "front-rear-hps with the front struts roll-interconnected",
     ),
 ];
 
@@ -23,8 +36,14 @@ pub struct LayoutArgs {
     #[arg(long, help = super::described::HELP)]
     pub vehicle: Option<PathBuf>,
     /// Layouts, comma separated, the first is the baseline: rigid (every axle rigid),
-    /// front-hps (the description's front-axle strut, or its candidate strut).
-    #[arg(long, default_value = "rigid,front-hps")]
+    /// front-hps (the description's front-axle strut, or its candidate strut),
+    /// front-rear-hps (and the description's rear strut, or the front strut scaled for the
+    /// rear static load), front-roll and front-rear-roll (those with the front struts
+    /// roll-interconnected; docs/layouts.md).
+    #[arg(
+        long,
+        default_value = "rigid,front-hps,front-rear-hps,front-roll,front-rear-roll"
+    )]
     pub layouts: String,
     /// The cab and seat of the seat rows: `generic` (docs/layouts.md), `off` (frame rows
     /// only), or `described` (the description's [cab.body] and [seat]). Default: the
@@ -65,37 +84,45 @@ fn build_layouts(v: &afsv_vehicle::ArticulatedVehicle, text: &str) -> Result<Vec
         if out.iter().any(|l| l.name == name) {
             return Err(format!("--layouts: `{name}` is named twice"));
         }
-        let layout = match name {
-            "rigid" => Layout {
-                name: name.into(),
-                params: v.params.clone(),
-                front_axle: FrontAxle::Rigid,
-            },
-            "front-hps" => {
-                let strut = v.front_strut.ok_or_else(|| {
-                    format!(
-                        "--layouts front-hps: the vehicle description `{}` gives the front axle no strut (add `strut = \"front-axle\"` or a strut file to its front [[axle]])",
-                        v.name
-                    )
-                })?;
-                Layout {
-                    name: name.into(),
-                    params: vehicle_3d::VehicleParams {
-                        hps: strut,
-                        ..v.params.clone()
-                    },
-                    front_axle: FrontAxle::Suspended,
-                }
-            }
-            other => {
-                let known: Vec<&str> = LAYOUT_NAMES.iter().map(|(n, _)| *n).collect();
-                return Err(format!(
-                    "--layouts: unknown layout `{other}` (known: {})",
-                    known.join(", ")
-                ));
-            }
+        if !LAYOUT_NAMES.iter().any(|(n, _)| *n == name) {
+            let known: Vec<&str> = LAYOUT_NAMES.iter().map(|(n, _)| *n).collect();
+            return Err(format!(
+                "--layouts: unknown layout `{name}` (known: {})",
+                known.join(", ")
+            ));
+        }
+        let suspended = name != "rigid";
+        let rear = name.starts_with("front-rear");
+        let mut params = vehicle_3d::VehicleParams {
+            rear_hps: None,
+            ..v.params.clone()
         };
-        out.push(layout);
+        if suspended {
+            params.hps = v.front_strut.ok_or_else(|| {
+                format!(
+                    "--layouts {name}: the vehicle description `{}` gives the front axle no strut (add `strut = \"front-axle\"` or a strut file to its front [[axle]])",
+                    v.name
+                )
+            })?;
+        }
+        if rear {
+            params.rear_hps = Some(match v.params.rear_hps {
+                Some(strut) => strut,
+                None => params
+                    .default_rear_strut()
+                    .map_err(|e| format!("--layouts {name}: the default rear strut: {e}"))?,
+            });
+        }
+        out.push(Layout {
+            name: name.into(),
+            params,
+            front_axle: if suspended {
+                FrontAxle::Suspended
+            } else {
+                FrontAxle::Rigid
+            },
+            front_link: name.ends_with("-roll").then(LineParams::front_axle_roll),
+        });
     }
     Ok(out)
 }
@@ -278,10 +305,18 @@ mod tests {
         let afsv_vehicle::Vehicle::Articulated(v) = v.vehicle else {
             panic!("the prototype is articulated")
         };
-        let l = build_layouts(&v, "rigid, front-hps").unwrap();
-        assert_eq!(l.len(), 2);
+        let l = build_layouts(
+            &v,
+            "rigid, front-hps,front-rear-hps,front-roll,front-rear-roll",
+        )
+        .unwrap();
+        assert_eq!(l.len(), 5);
         assert_eq!(l[0].front_axle, FrontAxle::Rigid);
-        assert_eq!(l[1].front_axle, FrontAxle::Suspended);
+        assert!(l[1..].iter().all(|l| l.front_axle == FrontAxle::Suspended));
+        let rear: Vec<bool> = l.iter().map(|l| l.params.rear_hps.is_some()).collect();
+        assert_eq!(rear, [false, false, true, false, true]);
+        let link: Vec<bool> = l.iter().map(|l| l.front_link.is_some()).collect();
+        assert_eq!(link, [false, false, false, true, true]);
         assert!(build_layouts(&v, "rigid,rigid")
             .unwrap_err()
             .contains("twice"));

@@ -240,3 +240,49 @@ fn the_bounce_frequency_falls_as_the_square_root_of_the_wheel_rates() {
     println!("free roll {r0:.3} -> {r1:.3} Hz");
     assert!(r1 > 1.05 * r0, "{r0} {r1}");
 }
+
+#[test]
+fn with_struts_on_both_axles_the_rear_struts_keep_their_own_blocks() {
+    let mut p = VehicleParams::nominal();
+    p.rear_hps = Some(p.default_rear_strut().unwrap());
+    let flat = FlatTerrain::new(0.0, vehicle_components::DEFAULT_FRICTION).unwrap();
+    let options = VehicleOptions {
+        front_axle: FrontAxle::Suspended,
+        path_length_m: 20.0,
+        ..VehicleOptions::default()
+    };
+    let v = Vehicle::new(&p, Load::Loaded, options, &flat, 0.5 * p.front_track_m).unwrap();
+    let own: Vec<Vec<usize>> = v.stiff_blocks().to_vec();
+    assert_eq!(own.len(), 4, "two front and two rear struts");
+    let y = v.initial_state();
+    let linked = LinkedVehicle::new(v, &LineParams::front_axle_roll()).unwrap();
+    let blocks = linked.stiff_blocks();
+    assert_eq!(blocks.len(), 3, "the linked pair, then the two rear struts");
+    assert_eq!(blocks[1..], own[2..]);
+    // a rear block's Jacobian is the vehicle's own, the pair's is the pair's
+    let yl = linked.initial_state().unwrap();
+    for (b, vehicle_block) in [(1, 2), (2, 3)] {
+        let n = blocks[b].len();
+        let (mut mine, mut theirs) = (vec![0.0; n * n], vec![0.0; n * n]);
+        assert!(linked.block_jacobian(0.0, &yl, b, &mut mine));
+        assert!(linked
+            .vehicle()
+            .block_jacobian(0.0, &y, vehicle_block, &mut theirs));
+        assert_eq!(mine, theirs);
+    }
+    let mut pair = vec![0.0; blocks[0].len().pow(2)];
+    assert!(linked.block_jacobian(0.0, &yl, 0, &mut pair));
+    assert!(pair.iter().all(|v| v.is_finite()) && pair.iter().any(|v| *v != 0.0));
+    assert!(!linked.block_jacobian(0.0, &yl, 3, &mut pair));
+}
+
+#[test]
+fn the_linked_yaw_run_refuses_rough_ground() {
+    let p = VehicleParams::nominal();
+    let spec = YawSpec {
+        terrain: Some(crate::scenarios::TerrainSpec::default()),
+        ..YawSpec::d3(FrontAxle::Suspended)
+    };
+    let e = yaw_linked(&p, &spec, &LineParams::front_axle_roll()).unwrap_err();
+    assert!(e.to_string().contains("smooth ground"), "{e}");
+}
