@@ -4,8 +4,8 @@
 //!
 //! | test | proves | also proved by |
 //! |---|---|---|
-//! | `synth_then_discover_...` | the two commands chained as a user runs them: synth's folder layout and truth.json, discover's JSON on stdout (outcome `named`, exit code 0), report.md / report.json / SVG overlays, the inputs untouched, synth refusing a non-empty folder | the naming itself: `discover_hps` (library, full catalogue, a second round that names nothing) |
-//! | `bad_input_gives_one_line_errors` | unknown effect, missing folders, unknown model: one-line errors | the fuzz suite (`cargo xtask fuzz`) |
+//! | `synth_then_discover_...` | the two commands chained as a user runs them: synth's folder layout and truth.json (at the `--sample-rate-hz` asked for), discover's JSON on stdout (outcome `named`, exit code 0), report.md / report.json / SVG overlays, the inputs untouched, synth refusing a non-empty folder | the naming itself: `discover_hps` (library, full catalogue, a second round that names nothing) |
+//! | `bad_input_gives_one_line_errors` | unknown effect, a sample rate out of range or for the vehicle, missing folders, unknown model: one-line errors | the fuzz suite (`cargo xtask fuzz`) |
 //! | `overlapping_sets_...` | overlapping training / held-out sets (spelled differently), a report folder among the inputs, `-o` onto a file: refused before any fit | - |
 //! | `list_effects_prints_the_catalogue` | the vehicle catalogue holds only mechanisms the paper's model lacks; the calibrated parameters are listed | - |
 //! | `records_written_elsewhere_...` | another tool's layout (column order, extra column, BOM, CRLF, 100 Hz, clock offset, no sidecar) is read; an unknown load is refused naming the field, then `--load` / `--params-for` apply per record; the effect is still named with a shrink > 0.7 | naming among candidates on independent vehicle records: `discover_yaw` |
@@ -14,8 +14,9 @@
 //! | `vehicle_3d_is_reached_through_the_cli` | `--model vehicle-3d` / `vehicle-3d-hps`: catalogue and calibration set, one-line refusals (synth, `--params-for`, no load, the other front axle), a calibration on `afsv vehicle simulate -o` records with the outcome's exit code and the records' conditions | naming on 3-D records: `discover_vehicle3d` (ignored, minutes) |
 //!
 //! Cost: each discovery that names tries one candidate for one round (the choice among
-//! candidates and the later rounds are the library tests'); the sign-convention records are
-//! written at every third sample (120 Hz) and only calibrated.
+//! candidates and the later rounds are the library tests'); the strut records are at 120 Hz
+//! (synth's `--sample-rate-hz 120`, as `discover_hps`; the sign-convention records every
+//! third sample of synth's 360 Hz), and the sign-convention ones are only calibrated.
 
 mod cli_support;
 use cli_support::{afsv, scratch};
@@ -24,7 +25,16 @@ use cli_support::{afsv, scratch};
 fn synth_then_discover_names_the_hidden_effect() {
     let data = tmp("data");
     let report = tmp("report");
-    synth("hps-strut", "gas-heat-transfer=3", "5", &data);
+    synth_at(
+        "hps-strut",
+        "gas-heat-transfer=3",
+        "5",
+        &data,
+        &["--sample-rate-hz", "120"],
+    );
+    let truth: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(data.join("truth.json")).unwrap()).unwrap();
+    assert_eq!(truth["sample_rate_hz"], 120.0);
     assert!(data.join("truth.json").is_file());
     let before: Vec<_> = std::fs::read_dir(data.join("train"))
         .unwrap()
@@ -112,6 +122,24 @@ fn bad_input_gives_one_line_errors() {
     let err = String::from_utf8_lossy(&out.stderr);
     assert_eq!(err.trim().lines().count(), 1, "{err}");
     assert!(err.contains("unknown effect"), "{err}");
+    for (model, rate, msg) in [
+        ("yaw-plane", "120", "hps-strut only"),
+        ("hps-strut", "10", "50 to 2000"),
+    ] {
+        let out = afsv(&[
+            "synth",
+            "--model",
+            model,
+            "--sample-rate-hz",
+            rate,
+            "-o",
+            "/tmp/x-afsv-none",
+        ]);
+        assert!(!out.status.success());
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(err.trim().lines().count(), 1, "{err}");
+        assert!(err.contains(msg), "{err}");
+    }
     let out = afsv(&[
         "discover",
         "--model",
@@ -692,7 +720,12 @@ fn vehicle_3d_is_reached_through_the_cli() {
 
 /// `afsv synth --model MODEL --effects EFFECTS --seed SEED -o DIR`, which must succeed.
 fn synth(model: &str, effects: &str, seed: &str, dir: &std::path::Path) {
-    let out = afsv(&[
+    synth_at(model, effects, seed, dir, &[]);
+}
+
+/// [`synth`] with `extra` arguments.
+fn synth_at(model: &str, effects: &str, seed: &str, dir: &std::path::Path, extra: &[&str]) {
+    let mut args = vec![
         "synth",
         "--model",
         model,
@@ -702,7 +735,9 @@ fn synth(model: &str, effects: &str, seed: &str, dir: &std::path::Path) {
         seed,
         "-o",
         dir.to_str().unwrap(),
-    ]);
+    ];
+    args.extend(extra);
+    let out = afsv(&args);
     assert!(
         out.status.success(),
         "{}",

@@ -96,6 +96,10 @@ pub struct SynthArgs {
     /// Seed of the noise generator.
     #[arg(long, default_value_t = 7)]
     pub seed: u64,
+    /// Strut: sample rate of the bench records (Hz), 50 to 2000; default 360 (the vehicle
+    /// programme is sampled at 200 Hz).
+    #[arg(long, allow_hyphen_values = true)]
+    pub sample_rate_hz: Option<f64>,
     /// Baseline parameters as JSON (as for `afsv discover --params`).
     #[arg(long)]
     pub params: Option<PathBuf>,
@@ -397,6 +401,13 @@ pub fn run_synth(args: SynthArgs) -> CmdResult {
         "none" => true,
         other => return Err(format!("--noise must be `default` or `none`, got `{other}`").into()),
     };
+    if args.sample_rate_hz.is_some() && !matches!(args.model, ModelKind::HpsStrut) {
+        return Err("--sample-rate-hz applies to --model hps-strut only".into());
+    }
+    let rate = args.sample_rate_hz.unwrap_or(STRUT_RATE_HZ);
+    if !(50.0..=2000.0).contains(&rate) {
+        return Err(format!("--sample-rate-hz must be within 50 to 2000 Hz, got {rate}").into());
+    }
     let (records, truth) = match args.model {
         ModelKind::HpsStrut => {
             let m = hps_model(args.params.as_deref())?;
@@ -407,10 +418,10 @@ pub fn run_synth(args: SynthArgs) -> CmdResult {
             } else {
                 synth::HpsNoise::default_levels()
             };
-            let recs = synth::hps_records(&m, &hidden, noise, args.seed, 360.0)?;
+            let recs = synth::hps_records(&m, &hidden, noise, args.seed, rate)?;
             (
                 recs,
-                serde_json::json!({"model": "hps-strut", "effects": hidden, "noise": noise, "seed": args.seed}),
+                serde_json::json!({"model": "hps-strut", "effects": hidden, "noise": noise, "seed": args.seed, "sample_rate_hz": rate}),
             )
         }
         ModelKind::YawPlane => {
@@ -452,6 +463,10 @@ pub fn run_synth(args: SynthArgs) -> CmdResult {
     }))?;
     Ok(())
 }
+
+/// Default sample rate of `afsv synth`'s strut records (Hz): 45 samples per cycle of the
+/// programme's fastest (8 Hz) test.
+const STRUT_RATE_HZ: f64 = 360.0;
 
 /// `"written_by"` of the `truth.json` that marks a folder `afsv synth` wrote.
 const SYNTH_WRITTEN_BY: &str = "afsv synth";
