@@ -4,16 +4,19 @@
 //!
 //! | test | proves | also proved by |
 //! |---|---|---|
-//! | `synth_then_discover_...` | the two commands chained as a user runs them: synth's folder layout and truth.json, discover's JSON on stdout (outcome `named`, exit code 0), report.md / report.json / SVG overlays, the inputs untouched, synth refusing a non-empty folder | the naming itself: `discover_hps` (library, full catalogue) |
-//! | `bad_input_gives_one_line_errors` | unknown effect, missing folders, unknown model: one-line errors | the fuzz suite (`cargo xtask fuzz`) |
+//! | `synth_then_discover_...` | the two commands chained as a user runs them: synth's folder layout and truth.json (at the `--sample-rate-hz` asked for), discover's JSON on stdout (outcome `named`, exit code 0), report.md / report.json / SVG overlays, the inputs untouched, synth refusing a non-empty folder | the naming itself: `discover_hps` (library, full catalogue, a second round that names nothing) |
+//! | `bad_input_gives_one_line_errors` | unknown effect, a sample rate out of range or for the vehicle, missing folders, unknown model: one-line errors | the fuzz suite (`cargo xtask fuzz`) |
 //! | `overlapping_sets_...` | overlapping training / held-out sets (spelled differently), a report folder among the inputs, `-o` onto a file: refused before any fit | - |
 //! | `list_effects_prints_the_catalogue` | the vehicle catalogue holds only mechanisms the paper's model lacks; the calibrated parameters are listed | - |
-//! | `records_written_elsewhere_...` | another tool's layout (column order, extra column, BOM, CRLF, 100 Hz, clock offset, no sidecar) is read; an unknown load is refused naming the field, then `--load` / `--params-for` apply per record; the effect is still named with a shrink > 0.7 | naming on independent vehicle records: `discover_yaw` |
-//! | `sign_conventions_...` | a convention stated in words is refused naming both ways forward; `--assume-convention` reads it and a per-channel statement is honoured: both name the hidden effect | naming on strut records: `discover_hps`, `synth_then_discover_...`; the conversion: `afsv-records` unit tests |
-//! | `synth_replaces_only_...` | synth replaces only its own folder and only with `--force`; a foreign file or folder is never replaced; piped discover prints one progress line per fit; with nothing named the exit code is the outcome's (3 or 4, as the JSON says) | the outcome codes: `afsv_discovery::form` unit tests |
+//! | `records_written_elsewhere_...` | another tool's layout (column order, extra column, BOM, CRLF, 100 Hz, clock offset, no sidecar) is read; an unknown load is refused naming the field, then `--load` / `--params-for` apply per record; the effect is still named with a shrink > 0.7 | naming among candidates on independent vehicle records: `discover_yaw` |
+//! | `sign_conventions_...` | a convention stated in words is refused naming both ways forward; `--assume-convention` and a per-channel statement read the same values (the same calibration to the bit, which follows the force); with nothing tried the exit code is the outcome's (3 or 4, as the JSON says); piped discover prints one progress line per fit | naming on strut records: `discover_hps`, `synth_then_discover_...`; the conversion: `afsv-records` unit tests; the outcome codes: `afsv_discovery::form` unit tests |
+//! | `synth_replaces_only_...` | synth replaces only its own folder and only with `--force`; a foreign file or folder is never replaced | - |
+//! | `vehicle_3d_is_reached_through_the_cli` | `--model vehicle-3d` / `vehicle-3d-hps`: catalogue and calibration set, one-line refusals (synth, `--params-for`, no load, the other front axle), a calibration on `afsv vehicle simulate -o` records with the outcome's exit code and the records' conditions | naming on 3-D records: `discover_vehicle3d` (ignored, minutes) |
 //!
-//! Cost: the sign-convention records are written at every third sample (120 Hz): what the
-//! test proves is the reading, and the two discoveries it runs then cost a third.
+//! Cost: each discovery that names tries one candidate for one round (the choice among
+//! candidates and the later rounds are the library tests'); the strut records are at 120 Hz
+//! (synth's `--sample-rate-hz 120`, as `discover_hps`; the sign-convention records every
+//! third sample of synth's 360 Hz), and the sign-convention ones are only calibrated.
 
 mod cli_support;
 use cli_support::{afsv, scratch};
@@ -22,7 +25,16 @@ use cli_support::{afsv, scratch};
 fn synth_then_discover_names_the_hidden_effect() {
     let data = tmp("data");
     let report = tmp("report");
-    synth("hps-strut", "gas-heat-transfer=3", "5", &data);
+    synth_at(
+        "hps-strut",
+        "gas-heat-transfer=3",
+        "5",
+        &data,
+        &["--sample-rate-hz", "120"],
+    );
+    let truth: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(data.join("truth.json")).unwrap()).unwrap();
+    assert_eq!(truth["sample_rate_hz"], 120.0);
     assert!(data.join("truth.json").is_file());
     let before: Vec<_> = std::fs::read_dir(data.join("train"))
         .unwrap()
@@ -37,7 +49,9 @@ fn synth_then_discover_names_the_hidden_effect() {
         "--holdout",
         data.join("holdout").to_str().unwrap(),
         "--effects",
-        "gas-heat-transfer,check-valve-lag",
+        "gas-heat-transfer",
+        "--max-effects",
+        "1",
         "-o",
         report.to_str().unwrap(),
     ]);
@@ -108,6 +122,24 @@ fn bad_input_gives_one_line_errors() {
     let err = String::from_utf8_lossy(&out.stderr);
     assert_eq!(err.trim().lines().count(), 1, "{err}");
     assert!(err.contains("unknown effect"), "{err}");
+    for (model, rate, msg) in [
+        ("yaw-plane", "120", "hps-strut only"),
+        ("hps-strut", "10", "50 to 2000"),
+    ] {
+        let out = afsv(&[
+            "synth",
+            "--model",
+            model,
+            "--sample-rate-hz",
+            rate,
+            "-o",
+            "/tmp/x-afsv-none",
+        ]);
+        assert!(!out.status.success());
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(err.trim().lines().count(), 1, "{err}");
+        assert!(err.contains(msg), "{err}");
+    }
     let out = afsv(&[
         "discover",
         "--model",
@@ -270,7 +302,9 @@ fn records_written_elsewhere_are_read_and_the_effect_is_named() {
         "--holdout",
         holdout.to_str().unwrap(),
         "--effects",
-        "valve-lag,sensor-backlash",
+        "valve-lag",
+        "--max-effects",
+        "1",
         "-o",
         report.to_str().unwrap(),
     ];
@@ -354,7 +388,11 @@ fn records_written_elsewhere_are_read_and_the_effect_is_named() {
 /// Strut records (every third sample of synth's, 120 Hz) whose sidecars state the convention
 /// in words are refused, with both ways forward named; `--assume-convention afsv-v1` reads
 /// them, and a per-channel statement is honoured (a force written tension-positive is
-/// flipped back).
+/// flipped back): both readings calibrate to the same baseline, to the bit, and that
+/// baseline follows the force. The runs only calibrate (`--max-effects 0`; the naming on
+/// strut records is `synth_then_discover_...`'s and `discover_hps`'s), so nothing is named:
+/// the exit code is the outcome's, 3 (model-form discrepancy) or 4 (nothing missing), as the
+/// JSON says, and piped, discover prints one progress line per fit.
 #[test]
 fn sign_conventions_in_words_are_refused_and_both_ways_forward_work() {
     let data = tmp("conv-synth");
@@ -394,15 +432,7 @@ fn sign_conventions_in_words_are_refused_and_both_ways_forward_work() {
     }
     let run = |dir: &std::path::Path, extra: &[&str]| {
         let report = dir.join("report");
-        let mut args = vec![
-            "discover",
-            "--model",
-            "hps-strut",
-            "--effects",
-            "gas-heat-transfer",
-            "--max-effects",
-            "1",
-        ];
+        let mut args = vec!["discover", "--model", "hps-strut", "--max-effects", "0"];
         let (t, h, r) = (dir.join("train"), dir.join("holdout"), report);
         let (t, h, r) = (
             t.to_str().unwrap().to_string(),
@@ -421,19 +451,43 @@ fn sign_conventions_in_words_are_refused_and_both_ways_forward_work() {
         err.contains("--assume-convention afsv-v1") && err.contains("tension_positive"),
         "{err}"
     );
+    let mut calibrated = Vec::new();
     for (dir, extra) in [
         (&words, vec!["--assume-convention", "afsv-v1"]),
         (&flipped, vec![]),
     ] {
         let out = run(dir, &extra);
+        let v: serde_json::Value = serde_json::from_slice(&out.stdout)
+            .unwrap_or_else(|_| panic!("{}", String::from_utf8_lossy(&out.stderr)));
+        let kind = v["outcome"]["kind"].as_str().unwrap();
+        let code = out.status.code().unwrap();
         assert!(
-            out.status.success(),
-            "{}",
-            String::from_utf8_lossy(&out.stderr)
+            (kind, code) == ("model-form-discrepancy", 3) || (kind, code) == ("nothing-missing", 4),
+            "{kind} {code}"
         );
-        let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
-        assert_eq!(v["named"], serde_json::json!(["gas-heat-transfer"]), "{v}");
+        assert_eq!(v["exit_code"], code);
+        assert_eq!(v["named"], serde_json::json!([]), "{v}");
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert!(
+            err.lines().next().is_some_and(|l| l
+                .starts_with("afsv discover: 1 fits (baseline calibration), ")
+                && l.ends_with(" elapsed")),
+            "{err}"
+        );
+        // A force read with the wrong sign leaves an error of twice the static load, many
+        // times the force's standard deviation.
+        let force = v["channel_errors"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .find(|c| c["channel"] == "force_n")
+            .unwrap()["train_before"]
+            .as_f64()
+            .unwrap();
+        assert!(force < 0.5, "force NRMSE {force}: {v}");
+        calibrated.push((v["holdout_mse"].clone(), v["channel_errors"].clone()));
     }
+    assert_eq!(calibrated[0], calibrated[1]);
     for d in [&data, &words, &flipped] {
         let _ = std::fs::remove_dir_all(d);
     }
@@ -517,28 +571,132 @@ fn synth_replaces_only_its_own_folder_and_only_with_force() {
         r#"{"model": "hps-strut"}"#
     );
 
-    // Piped discover prints one progress line per fit (count unknown in advance).
-    let report = tmp("rerun-report");
-    let out = afsv(&[
-        "discover",
-        "--model",
-        "hps-strut",
-        "--train",
-        data.join("train").to_str().unwrap(),
-        "--holdout",
-        data.join("holdout").to_str().unwrap(),
-        "--effects",
-        "check-valve-lag",
-        "--max-effects",
-        "0",
-        "-o",
+    std::fs::remove_dir_all(&data).unwrap();
+    std::fs::remove_dir_all(&other).unwrap();
+}
+
+/// The 3-D vehicle through the CLI: its catalogue and calibration set for both front axles,
+/// one-line refusals (synth has no 3-D programme, `--params-for`, a record without a load,
+/// a record of the other front axle), and a calibration on two short ride records written
+/// by `afsv vehicle simulate -o`: the exit code is the outcome's, as the JSON says, and the
+/// report lists each record's conditions. Naming on 3-D records is the library's
+/// (`discover_vehicle3d`, ignored: minutes per run).
+#[test]
+fn vehicle_3d_is_reached_through_the_cli() {
+    let list = |model: &str| -> (Vec<String>, Vec<String>) {
+        let out = afsv(&["discover", "--model", model, "--list-effects"]);
+        assert!(
+            out.status.success(),
+            "{}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+        assert_eq!(v["model"], model);
+        let names = |key: &str| {
+            v[key]
+                .as_array()
+                .unwrap()
+                .iter()
+                .map(|e| e["name"].as_str().unwrap().to_string())
+                .collect::<Vec<_>>()
+        };
+        (names("catalogue"), names("baseline_params"))
+    };
+    let (effects, base) = list("vehicle-3d");
+    assert_eq!(
+        effects,
+        [
+            "tire-lateral-compliance",
+            "mount-compliance",
+            "driver-throttle",
+            "sensor-misalignment"
+        ]
+    );
+    assert!(base.iter().any(|b| b == "joint_height_m"), "{base:?}");
+    assert!(!base.iter().any(|b| b.starts_with("hps.")), "{base:?}");
+    let (effects, base) = list("vehicle-3d-hps");
+    assert_eq!(
+        effects.last().map(String::as_str),
+        Some("hps-gas-temperature")
+    );
+    assert!(base.iter().any(|b| b == "hps.friction.f_c"), "{base:?}");
+
+    let data = tmp("v3d");
+    let one_line = |args: &[&str], want: &str| {
+        let out = afsv(args);
+        assert!(!out.status.success());
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(err.trim().lines().count(), 1, "{err}");
+        assert!(err.contains(want), "{err}");
+    };
+    let d = data.to_str().unwrap();
+    one_line(
+        &["synth", "--model", "vehicle-3d", "-o", d],
+        "afsv vehicle simulate",
+    );
+    for (set, seed) in [("train", "1"), ("holdout", "2")] {
+        std::fs::create_dir_all(data.join(set)).unwrap();
+        let f = data.join(set).join(format!("ride{seed}.csv"));
+        let out = afsv(&[
+            "vehicle",
+            "simulate",
+            "--terrain",
+            "class:C,mc:0.3",
+            "--seed",
+            seed,
+            "--duration",
+            "2",
+            "--dt",
+            "0.01",
+            "-o",
+            f.to_str().unwrap(),
+        ]);
+        assert!(
+            out.status.success(),
+            "{}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+    }
+    let (train, holdout) = (data.join("train"), data.join("holdout"));
+    let report = data.join("report");
+    let (t, h, r) = (
+        train.to_str().unwrap(),
+        holdout.to_str().unwrap(),
         report.to_str().unwrap(),
-    ]);
-    // Nothing tried, so nothing named: the exit code is the outcome's, 3 (model-form
-    // discrepancy: the baseline is far above the noise) or 4 (nothing missing), as the
-    // JSON says.
+    );
+    let args = |model: &'static str| {
+        vec![
+            "discover",
+            "--model",
+            model,
+            "--train",
+            t,
+            "--holdout",
+            h,
+            "-o",
+            r,
+            "--max-effects",
+            "0",
+        ]
+    };
+    let mut with_params_for = args("vehicle-3d");
+    let pf = format!("{}=x.json", train.join("ride1.csv").display());
+    with_params_for.extend(["--params-for", pf.as_str()]);
+    one_line(&with_params_for, "--params-for");
+    one_line(&args("vehicle-3d-hps"), "front_axle");
+    // The same record without its sidecar: no load.
+    let bare = data.join("bare");
+    std::fs::create_dir_all(&bare).unwrap();
+    std::fs::copy(train.join("ride1.csv"), bare.join("ride1.csv")).unwrap();
+    let mut no_load = args("vehicle-3d");
+    no_load[4] = bare.to_str().unwrap();
+    one_line(&no_load, "`load`");
+    assert!(!report.exists());
+
+    let out = afsv(&args("vehicle-3d"));
     let v: serde_json::Value = serde_json::from_slice(&out.stdout)
         .unwrap_or_else(|_| panic!("{}", String::from_utf8_lossy(&out.stderr)));
+    assert_eq!(v["model"], "vehicle-3d");
     let kind = v["outcome"]["kind"].as_str().unwrap();
     let code = out.status.code().unwrap();
     assert!(
@@ -546,21 +704,28 @@ fn synth_replaces_only_its_own_folder_and_only_with_force() {
         "{kind} {code}"
     );
     assert_eq!(v["exit_code"], code);
-    let err = String::from_utf8_lossy(&out.stderr);
+    let rep: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(report.join("report.json")).unwrap())
+            .unwrap();
+    let conditions = rep["conditions"].as_array().unwrap();
+    assert_eq!(conditions.len(), 2, "{conditions:?}");
     assert!(
-        err.lines().next().is_some_and(|l| l
-            .starts_with("afsv discover: 1 fits (baseline calibration), ")
-            && l.ends_with(" elapsed")),
-        "{err}"
+        conditions
+            .iter()
+            .all(|c| c["condition"].as_str().unwrap().contains("class C")),
+        "{conditions:?}"
     );
     std::fs::remove_dir_all(&data).unwrap();
-    std::fs::remove_dir_all(&other).unwrap();
-    std::fs::remove_dir_all(&report).unwrap();
 }
 
 /// `afsv synth --model MODEL --effects EFFECTS --seed SEED -o DIR`, which must succeed.
 fn synth(model: &str, effects: &str, seed: &str, dir: &std::path::Path) {
-    let out = afsv(&[
+    synth_at(model, effects, seed, dir, &[]);
+}
+
+/// [`synth`] with `extra` arguments.
+fn synth_at(model: &str, effects: &str, seed: &str, dir: &std::path::Path, extra: &[&str]) {
+    let mut args = vec![
         "synth",
         "--model",
         model,
@@ -570,7 +735,9 @@ fn synth(model: &str, effects: &str, seed: &str, dir: &std::path::Path) {
         seed,
         "-o",
         dir.to_str().unwrap(),
-    ]);
+    ];
+    args.extend(extra);
+    let out = afsv(&args);
     assert!(
         out.status.success(),
         "{}",

@@ -4,6 +4,7 @@ use super::CmdResult;
 use afsv_discovery::hps::HpsStrutModel;
 use afsv_discovery::report::write_report;
 use afsv_discovery::synth;
+use afsv_discovery::vehicle3d::Vehicle3dModel;
 use afsv_discovery::yaw::YawPlaneModel;
 use afsv_discovery::{discover, DiscoveryModel, DiscoveryOptions, Progress};
 use afsv_records::{ReadOptions, Record};
@@ -18,6 +19,15 @@ pub enum ModelKind {
     /// Yaw-plane vehicle with hydraulic frame steering (records: time_s, steer_wheel_deg,
     /// speed_m_s, articulation_deg, strut_left_disp_m, p_c_pa, p_r_pa, yaw_rate_front_deg_s).
     YawPlane,
+    /// The 3-D vehicle of Chapter 6 with a rigid front axle: ride records of `afsv vehicle
+    /// simulate -o` (speed_m_s and the 6-axis sensor, cab_accel_{x,y,z}_m_s2,
+    /// front_{roll,pitch,yaw}_accel_rad_s2) and V3 path changes of `afsv vehicle
+    /// path-change -o` (also the steering channels).
+    #[value(name = "vehicle-3d")]
+    Vehicle3d,
+    /// The same with the front-axle HPS (records whose sidecar says `front_axle: suspended`).
+    #[value(name = "vehicle-3d-hps")]
+    Vehicle3dHps,
 }
 
 /// Options of `afsv discover`.
@@ -27,16 +37,18 @@ pub struct DiscoverArgs {
     #[arg(long, value_enum)]
     pub model: ModelKind,
     /// Baseline parameters as JSON (strut: `StrutParams`; vehicle: `afsv params dump yaw-plane`
-    /// format). Default: the paper's full model, the one `afsv hps harmonic` / `afsv yaw
-    /// simulate` run: the front-axle strut of Table 6.3 / the vehicle of Table 3.1 for the
-    /// load each record states. A vehicle file that states a load replaces that load's
-    /// vehicle; one without a load is used for every record.
+    /// format; 3-D vehicle: `afsv params dump vehicle-3d`). Default: the paper's full model,
+    /// the one `afsv hps harmonic` / `afsv yaw simulate` / `afsv vehicle simulate` run: the
+    /// front-axle strut of Table 6.3 / the vehicle of Table 3.1 for the load each record
+    /// states / the vehicle of Table 6.1. A yaw-plane file that states a load replaces that
+    /// load's vehicle; one without a load is used for every record.
     #[arg(long)]
     pub params: Option<PathBuf>,
-    /// Vehicle: the load of records whose sidecar states none.
+    /// Vehicle (yaw-plane or 3-D): the load of records whose sidecar states none.
     #[arg(long, value_parser = ["loaded", "unloaded"])]
     pub load: Option<String>,
-    /// Vehicle: a record's own parameter file, `RECORD.csv=params.json` (repeatable).
+    /// Yaw-plane vehicle: a record's own parameter file, `RECORD.csv=params.json`
+    /// (repeatable).
     #[arg(long = "params-for", value_name = "RECORD=PARAMS")]
     pub params_for: Vec<String>,
     /// Read records whose sidecar describes its sign convention in words as this convention
@@ -84,6 +96,10 @@ pub struct SynthArgs {
     /// Seed of the noise generator.
     #[arg(long, default_value_t = 7)]
     pub seed: u64,
+    /// Strut: sample rate of the bench records (Hz), 50 to 2000; default 360 (the vehicle
+    /// programme is sampled at 200 Hz).
+    #[arg(long, allow_hyphen_values = true)]
+    pub sample_rate_hz: Option<f64>,
     /// Baseline parameters as JSON (as for `afsv discover --params`).
     #[arg(long)]
     pub params: Option<PathBuf>,
@@ -120,6 +136,29 @@ fn read_vehicle(path: &Path) -> Result<afsv_dynamics::YawPlaneParams, String> {
     p.validate()
         .map_err(|e| format!("{}: {e}", path.display()))?;
     Ok(p)
+}
+
+/// The 3-D vehicle with `front_axle`: Table 6.1's parameters or those of `params` (`afsv
+/// params dump vehicle-3d` format, checked as `afsv params check` checks them), and the load
+/// of records whose sidecar states none.
+fn vehicle3d_model(
+    front_axle: vehicle_3d::FrontAxle,
+    params: Option<&Path>,
+    load: Option<&str>,
+) -> Result<Vehicle3dModel, String> {
+    let mut m = Vehicle3dModel::nominal(front_axle);
+    if let Some(path) = params {
+        let p: vehicle_3d::VehicleParams = read_json(path)?;
+        p.validate()
+            .map_err(|e| format!("{}: {e}", path.display()))?;
+        super::params::vehicle_3d_in_ranges(&p).map_err(|e| format!("{}: {e}", path.display()))?;
+        m.params = p;
+    }
+    m.default_load = load
+        .map(|l| l.parse::<vehicle_3d::Load>())
+        .transpose()
+        .map_err(|e| format!("--load: {e}"))?;
+    Ok(m)
 }
 
 fn yaw_model(
@@ -325,12 +364,23 @@ fn run_discover<M: DiscoveryModel>(model: &M, args: &DiscoverArgs) -> DiscoverRe
 
 /// Run `afsv discover`.
 pub fn run_discover_cmd(args: DiscoverArgs) -> DiscoverResult {
+    if !args.params_for.is_empty() && !matches!(args.model, ModelKind::YawPlane) {
+        return Err("--params-for applies to --model yaw-plane only".into());
+    }
     match args.model {
         ModelKind::HpsStrut => {
-            if args.load.is_some() || !args.params_for.is_empty() {
-                return Err("--load and --params-for apply to --model yaw-plane only".into());
+            if args.load.is_some() {
+                return Err("--load applies to the vehicle models only".into());
             }
             run_discover(&hps_model(args.params.as_deref())?, &args)
+        }
+        ModelKind::Vehicle3d | ModelKind::Vehicle3dHps => {
+            let axle = match args.model {
+                ModelKind::Vehicle3dHps => vehicle_3d::FrontAxle::Suspended,
+                _ => vehicle_3d::FrontAxle::Rigid,
+            };
+            let m = vehicle3d_model(axle, args.params.as_deref(), args.load.as_deref())?;
+            run_discover(&m, &args)
         }
         ModelKind::YawPlane => run_discover(
             &yaw_model(
@@ -351,6 +401,13 @@ pub fn run_synth(args: SynthArgs) -> CmdResult {
         "none" => true,
         other => return Err(format!("--noise must be `default` or `none`, got `{other}`").into()),
     };
+    if args.sample_rate_hz.is_some() && !matches!(args.model, ModelKind::HpsStrut) {
+        return Err("--sample-rate-hz applies to --model hps-strut only".into());
+    }
+    let rate = args.sample_rate_hz.unwrap_or(STRUT_RATE_HZ);
+    if !(50.0..=2000.0).contains(&rate) {
+        return Err(format!("--sample-rate-hz must be within 50 to 2000 Hz, got {rate}").into());
+    }
     let (records, truth) = match args.model {
         ModelKind::HpsStrut => {
             let m = hps_model(args.params.as_deref())?;
@@ -361,10 +418,10 @@ pub fn run_synth(args: SynthArgs) -> CmdResult {
             } else {
                 synth::HpsNoise::default_levels()
             };
-            let recs = synth::hps_records(&m, &hidden, noise, args.seed, 360.0)?;
+            let recs = synth::hps_records(&m, &hidden, noise, args.seed, rate)?;
             (
                 recs,
-                serde_json::json!({"model": "hps-strut", "effects": hidden, "noise": noise, "seed": args.seed}),
+                serde_json::json!({"model": "hps-strut", "effects": hidden, "noise": noise, "seed": args.seed, "sample_rate_hz": rate}),
             )
         }
         ModelKind::YawPlane => {
@@ -382,6 +439,10 @@ pub fn run_synth(args: SynthArgs) -> CmdResult {
                 serde_json::json!({"model": "yaw-plane", "effects": hidden, "noise": noise, "seed": args.seed}),
             )
         }
+        ModelKind::Vehicle3d | ModelKind::Vehicle3dHps => return Err(
+            "afsv synth --model vehicle-3d: no record programme; write 3-D records with `afsv vehicle simulate -o` (ride) or `afsv vehicle path-change -o` (V3), docs/discovery.md"
+                .into(),
+        ),
     };
     let (mut records, mut truth) = (records, truth);
     truth["written_by"] = SYNTH_WRITTEN_BY.into();
@@ -402,6 +463,10 @@ pub fn run_synth(args: SynthArgs) -> CmdResult {
     }))?;
     Ok(())
 }
+
+/// Default sample rate of `afsv synth`'s strut records (Hz): 45 samples per cycle of the
+/// programme's fastest (8 Hz) test.
+const STRUT_RATE_HZ: f64 = 360.0;
 
 /// `"written_by"` of the `truth.json` that marks a folder `afsv synth` wrote.
 const SYNTH_WRITTEN_BY: &str = "afsv synth";
