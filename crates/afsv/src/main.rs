@@ -48,7 +48,7 @@ enum Command {
     /// Roll stability of the rigid mining truck (chapter 2): `simulate`, `measures`, `study`, `calibrate`.
     #[command(subcommand)]
     Roll(cmd::roll::Command),
-    /// Design studies on the 3-D vehicle (chapter 6): `hps-sensitivity` (Table 6.4), `speed-sweep` (D4 against speed).
+    /// Design studies on the 3-D vehicle (chapter 6): `hps-sensitivity` (Table 6.4), `speed-sweep` (D4 against speed), `layouts` (suspension layouts on the frame and at the seat).
     #[command(subcommand)]
     Study(cmd::study::Command),
     /// The 3-D articulated vehicle of chapter 6: `ride`, `roll`, `yaw`, `path-change` (design runs over terrain seeds), `measures` (D1-D3 together), `simulate`.
