@@ -74,7 +74,8 @@ pub enum DiscoveryError {
     #[error(
         "its load is unknown: the sidecar has no `load` field. State it there \
          (\"load\": \"loaded\" or \"unloaded\"), or pass --load loaded|unloaded for \
-         all such records, or --params-for FILE.csv=params.json for this one"
+         all such records (with --model yaw-plane also --params-for \
+         FILE.csv=params.json for this one)"
     )]
     NoLoad,
     /// A record's forward speed is stated nowhere.
