@@ -171,10 +171,11 @@ struct Tracks {
     roll: Arc<TireTracks>,
 }
 
-/// Runs of [`layouts`] for `layouts` layouts, `seeds` seeds and `speeds` distinct ride
-/// speeds (the ride speed and the D4 speeds together).
-pub fn layout_runs(layouts: usize, seeds: usize, speeds: usize) -> usize {
-    layouts * (1 + seeds * (1 + speeds))
+/// Vehicle runs of [`layouts`] for `layouts` layouts with options `o`: per layout one yaw
+/// run and, per seed, one roll run and one ride at each distinct speed (the ride speed and
+/// the D4 speeds together).
+pub fn layout_runs(layouts: usize, o: &LayoutOptions) -> usize {
+    layouts * (1 + o.seeds.len() * (1 + all_speeds(o).len()))
 }
 
 /// The ride speed and the D4 speeds, ascending, each once.
@@ -619,6 +620,7 @@ mod tests {
             ..good
         };
         assert_eq!(all_speeds(&extra), vec![10.0, 20.0, 25.0, 30.0]);
-        assert_eq!(layout_runs(2, 3, 4), 2 * (1 + 3 * 5));
+        // two seeds, four speeds: per layout a yaw run, and per seed a roll and four rides
+        assert_eq!(layout_runs(3, &extra), 3 * (1 + 2 * (1 + 4)));
     }
 }

@@ -16,6 +16,23 @@ fn both_axles() -> VehicleParams {
     p
 }
 
+/// [`both_axles`] with no tire damping or tire lag, the speed held by a near-zero gain,
+/// and no strut friction (the Eq 5.3 band is not passive sample by sample).
+fn quiet_both_axles() -> VehicleParams {
+    let mut p = both_axles();
+    p.tire.vertical_damping_n_s_per_m = 0.0;
+    p.tire.u_max = 1e-12;
+    p.tire.u_min = 1e-12;
+    p.drive.kp_n_m_per_m_s = 1e-12;
+    p.drive.ki_n_m_per_m = 0.0;
+    for s in [&mut p.hps, p.rear_hps.as_mut().unwrap()] {
+        s.friction.mu_v = 0.0;
+        s.friction.f_c = 0.0;
+        s.friction.f_s = 0.0;
+    }
+    p
+}
+
 fn vehicle(p: &VehicleParams, load: Load, options: VehicleOptions) -> Vehicle {
     let flat = FlatTerrain::new(0.0, 0.8).unwrap();
     let options = VehicleOptions {
@@ -203,21 +220,11 @@ fn a_mirrored_input_gives_the_mirrored_response() {
 /// reversal the friction pushes along the motion (docs/layouts.md).
 #[test]
 fn the_struts_only_dissipate() {
-    let mut p = both_axles();
-    p.tire.vertical_damping_n_s_per_m = 0.0;
-    p.tire.u_max = 1e-12;
-    p.tire.u_min = 1e-12;
+    let mut p = quiet_both_axles();
     p.tire.rolling_resistance_coefficient = 0.0;
     p.steering.leak_const = 0.0;
     p.steering.leak_velocity = 0.0;
     p.steering.seal_viscous_n_s_m = 0.0;
-    p.drive.kp_n_m_per_m_s = 1e-12;
-    p.drive.ki_n_m_per_m = 0.0;
-    for s in [&mut p.hps, p.rear_hps.as_mut().unwrap()] {
-        s.friction.mu_v = 0.0;
-        s.friction.f_c = 0.0;
-        s.friction.f_s = 0.0;
-    }
     let options = VehicleOptions {
         speed_m_s: 3.0,
         ..Default::default()
@@ -347,17 +354,7 @@ fn hand_bounce_pitch(p: &VehicleParams, v: &Vehicle) -> [f64; 2] {
 #[test]
 fn the_bounce_and_pitch_modes_match_the_two_axle_hand_model() {
     use nalgebra::{Complex, DMatrix, DVector};
-    let mut p = both_axles();
-    p.tire.vertical_damping_n_s_per_m = 0.0;
-    p.tire.u_max = 1e-12;
-    p.tire.u_min = 1e-12;
-    p.drive.kp_n_m_per_m_s = 1e-12;
-    p.drive.ki_n_m_per_m = 0.0;
-    for s in [&mut p.hps, p.rear_hps.as_mut().unwrap()] {
-        s.friction.mu_v = 0.0;
-        s.friction.f_c = 0.0;
-        s.friction.f_s = 0.0;
-    }
+    let p = quiet_both_axles();
     let options = VehicleOptions {
         speed_m_s: 3.0,
         ..Default::default()

@@ -177,11 +177,7 @@ pub fn run(a: LayoutArgs) -> CmdResult {
             .collect(),
         seat: seat_of(&v, a.seat.as_deref())?,
     };
-    let mut distinct = options.sweep_speeds_kmh.clone();
-    distinct.push(options.ride_speed_kmh);
-    distinct.sort_by(f64::total_cmp);
-    distinct.dedup();
-    let runs = layout_runs(list.len(), a.seeds, distinct.len());
+    let runs = layout_runs(list.len(), &options);
     let progress = afsv::progress::Progress::new("afsv study layouts", "runs", Some(runs));
     let s = layouts(&list, &options, &|d| progress.step(d))?;
     progress.finish();
