@@ -23,8 +23,8 @@ use std::sync::{Arc, Mutex};
 use terrain_psd::IsoClass;
 use vehicle_3d::scenarios::TerrainSpec;
 use vehicle_3d::{
-    FieldEffects, FrontAxle, Load, RunOptions, RunRecord, SpeedSetpoint, TireTracks, Vehicle,
-    VehicleOptions, VehicleParams,
+    FieldEffects, FrontAxle, Load, RunOptions, SpeedSetpoint, TireTracks, Vehicle, VehicleOptions,
+    VehicleParams,
 };
 use vehicle_components::{FlatTerrain, ParamSet};
 
@@ -262,7 +262,7 @@ impl Vehicle3dModel {
             .enumerate()
             .map(|(i, name)| {
                 (rec.kind == RunKind::PathChange || RIDE_CHANNELS & (1 << i) != 0)
-                    .then(|| channel(&out, name))
+                    .then(|| out.afsv_v1_channel(name))
                     .flatten()
             })
             .collect();
@@ -385,29 +385,6 @@ pub fn value(p: &VehicleParams, name: &str) -> Result<f64, DiscoveryError> {
             _ => p.get(name)?,
         },
     )
-}
-
-/// Channel `name` (afsv-v1, as `afsv vehicle simulate -o` writes it) of a run.
-pub fn channel(r: &RunRecord, name: &str) -> Option<Vec<f64>> {
-    let deg = |v: &[f64], sign: f64| v.iter().map(|x| sign * x.to_degrees()).collect();
-    Some(match name {
-        "speed_m_s" => r.speed_m_s.clone(),
-        "articulation_deg" => deg(&r.articulation_rad, 1.0),
-        "strut_left_disp_m" => r.strut_disp_m[0].clone(),
-        "p_c_pa" => r.pressure_pa[0].clone(),
-        "p_r_pa" => r.pressure_pa[1].clone(),
-        // left-turn positive about +z in the model; afsv-v1 is right-turn positive
-        "yaw_rate_front_deg_s" => deg(&r.front_rate_rad_s[2], -1.0),
-        "front_lateral_accel_m_s2" => r.front_lateral_accel_m_s2.clone(),
-        _ => {
-            if let Some(k) = LINEAR_AXES.iter().position(|a| *a == name) {
-                r.cab_accel_m_s2[k].clone()
-            } else {
-                let k = ANGULAR_AXES.iter().position(|a| *a == name)?;
-                r.front_angular_accel_rad_s2[k].clone()
-            }
-        }
-    })
 }
 
 /// A sidecar field, also looked up under the path-change command's `spec`.

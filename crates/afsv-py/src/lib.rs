@@ -74,14 +74,14 @@ pub(crate) fn to_bytes<'py>(py: Python<'py>, values: &[f64]) -> PyResult<Bound<'
 
 /// A run's result for the Python `Record`: `(columns, meta_json)` with `columns` a list of
 /// `(name, bytearray)`.
-pub(crate) fn record_out<'py>(
+pub(crate) fn record_out<'py, S: AsRef<str>>(
     py: Python<'py>,
-    columns: &Columns,
+    columns: &[(S, Vec<f64>)],
     meta: &serde_json::Value,
 ) -> PyResult<Bound<'py, PyTuple>> {
     let list = PyList::empty(py);
     for (name, values) in columns {
-        list.append((name.as_str(), to_bytes(py, values)?))?;
+        list.append((name.as_ref(), to_bytes(py, values)?))?;
     }
     PyTuple::new(py, [list.into_any(), json_text(py, meta)?.into_any()])
 }

@@ -3,7 +3,7 @@
 //! `afsv vehicle simulate`, with the same record channels and signs (afsv-v1).
 
 use crate::desc::DescRef;
-use crate::{py_err, record_out, to_json, value_err, Columns};
+use crate::{py_err, record_out, to_json, value_err};
 use afsv_dynamics::SteerInput;
 use perf_measures::roll::SustainedPeriodParams;
 use pyo3::prelude::*;
@@ -150,38 +150,6 @@ fn simulate_truck<'py>(
         .detach(|| run_case(&p, spec.as_ref(), seed, direction, &options, &sp))
         .map_err(|e| py_err(py, &e))?;
     let r = &run.record;
-    let mut cols: Columns = vec![
-        ("time_s".into(), r.t_s.clone()),
-        ("steer_rad".into(), r.steer_rad.clone()),
-        ("speed_m_s".into(), r.speed_m_s.clone()),
-        ("lateral_accel_m_s2".into(), r.lateral_accel_m_s2.clone()),
-        ("ltr".into(), r.ltr.clone()),
-        (
-            "sprung_lateral_accel_m_s2".into(),
-            r.sprung_lateral_accel_m_s2.clone(),
-        ),
-        (
-            "sprung_sensor_lateral_accel_m_s2".into(),
-            r.sprung_sensor_lateral_accel_m_s2.clone(),
-        ),
-        ("roll_rad".into(), r.roll_rad.clone()),
-        ("rollover_margin_m".into(), r.rollover_margin_m.clone()),
-        ("drive_force_n".into(), r.drive_force_n.clone()),
-        (
-            "on_bump_stop".into(),
-            r.on_bump_stop
-                .iter()
-                .map(|b| f64::from(u8::from(*b)))
-                .collect(),
-        ),
-        (
-            "airborne".into(),
-            r.airborne.iter().map(|b| f64::from(u8::from(*b))).collect(),
-        ),
-    ];
-    for (name, values) in roll_truck::model::TIRE_NAMES.iter().zip(&r.normal_force_n) {
-        cols.push((format!("normal_force_{name}_n"), values.clone()));
-    }
     let meta = json!({
         "model": "roll-truck rigid mining truck (chapter 2)",
         "sample_rate_hz": 1.0 / dt,
@@ -191,7 +159,7 @@ fn simulate_truck<'py>(
         "measures": to_json(&run.measures)?,
         "sustained_period_rule": to_json(&sp)?,
     });
-    record_out(py, &cols, &meta)
+    record_out(py, &r.afsv_v1_columns(), &meta)
 }
 
 /// A steer input of the 3-D vehicle: `("none",)`, `("pulse", DEG, DUR_S, START_S)` or
@@ -362,53 +330,7 @@ fn simulate_vehicle<'py>(
         },
         "params": to_json(&p)?,
     });
-    record_out(py, &vehicle_columns(&rec), &meta)
-}
-
-/// The 3-D run's channels in the afsv-v1 convention, in the order and with the signs of
-/// `afsv vehicle simulate` (docs/records.md).
-fn vehicle_columns(r: &vehicle_3d::RunRecord) -> Columns {
-    let deg =
-        |v: &[f64], sign: f64| -> Vec<f64> { v.iter().map(|x| sign * x.to_degrees()).collect() };
-    let mut c: Columns = vec![
-        ("time_s".into(), r.t_s.clone()),
-        ("steer_wheel_deg".into(), deg(&r.steer_wheel_rad, 1.0)),
-        ("speed_m_s".into(), r.speed_m_s.clone()),
-        ("articulation_deg".into(), deg(&r.articulation_rad, 1.0)),
-        ("strut_left_disp_m".into(), r.strut_disp_m[0].clone()),
-        ("strut_right_disp_m".into(), r.strut_disp_m[1].clone()),
-        ("p_c_pa".into(), r.pressure_pa[0].clone()),
-        ("p_r_pa".into(), r.pressure_pa[1].clone()),
-        // The model's yaw rate is left-turn positive about +z; afsv-v1 is right-turn positive.
-        (
-            "yaw_rate_front_deg_s".into(),
-            deg(&r.front_rate_rad_s[2], -1.0),
-        ),
-    ];
-    for (axis, values) in ["x", "y", "z"].iter().zip(&r.cab_accel_m_s2) {
-        c.push((format!("cab_accel_{axis}_m_s2"), values.clone()));
-    }
-    c.push((
-        "front_pitch_accel_rad_s2".into(),
-        r.front_angular_accel_rad_s2[1].clone(),
-    ));
-    c.push((
-        "front_lateral_accel_m_s2".into(),
-        r.front_lateral_accel_m_s2.clone(),
-    ));
-    c.push((
-        "rear_lateral_accel_m_s2".into(),
-        r.rear_lateral_accel_m_s2.clone(),
-    ));
-    c.push(("rear_ltr".into(), r.rear_ltr.clone()));
-    c.push(("rear_roll_deg".into(), deg(&r.rear_roll_rad, 1.0)));
-    c.push(("hps_travel_left_m".into(), r.hps_travel_m[0].clone()));
-    c.push(("hps_travel_right_m".into(), r.hps_travel_m[1].clone()));
-    for (name, values) in vehicle_3d::model::TIRE_NAMES.iter().zip(&r.normal_force_n) {
-        c.push((format!("normal_force_{name}_n"), values.clone()));
-    }
-    c.push(("drive_torque_n_m".into(), r.drive_torque_n_m.clone()));
-    c
+    record_out(py, &rec.afsv_v1_columns(), &meta)
 }
 
 /// Register the truck and 3-D vehicle functions.

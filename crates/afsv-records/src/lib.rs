@@ -176,6 +176,18 @@ impl Record {
         Ok(())
     }
 
+    /// A record of the given columns, in order (each checked as [`Record::push_column`]
+    /// checks it).
+    pub fn from_columns<S: AsRef<str>>(
+        columns: impl IntoIterator<Item = (S, Vec<f64>)>,
+    ) -> Result<Self, RecordError> {
+        let mut out = Self::new();
+        for (name, values) in columns {
+            out.push_column(name.as_ref(), values)?;
+        }
+        Ok(out)
+    }
+
     /// Column names in file order.
     pub fn names(&self) -> &[String] {
         &self.names

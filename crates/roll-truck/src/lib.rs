@@ -10,6 +10,7 @@
 //!   stops; [`tires`]: Eqs 2.1-2.7; [`driver`]: ramp steer and PI speed control;
 //!   [`vehicle`]: the ODE system.
 //! - [`simulate`](mod@simulate): a run to absolute rollover (an `odeint` event);
+//!   [`channels`]: its channels in the record convention `afsv-v1`;
 //!   [`measures`]: LTR (Eq 2.11), DRT, SP-DRT, the peaks of three a_y channels, SSF;
 //!   [`calibration`]: the one calibrated roll compliance; [`studies`]: section 2.4 over
 //!   terrain seeds and the calibrated against the plausible truck
@@ -19,6 +20,7 @@
 //! See `docs/roll-truck.md` for the map from equations to code and every assumption.
 
 pub mod calibration;
+pub mod channels;
 pub mod driver;
 mod error;
 mod findings;

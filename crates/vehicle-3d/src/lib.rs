@@ -9,6 +9,7 @@
 //!   HPS, 18 with HPS on both axles);
 //! - [`steering`]: the struts between their 3-D mounts; [`tires`]: one tire on its cached
 //!   track; [`vehicle`]: the ODE system; [`simulate`](mod@simulate): a recorded run;
+//!   [`channels`]: its channels in the record convention `afsv-v1`;
 //! - [`scenarios`]: the design runs D1 (ride), D2 (roll), D3 (yaw) and their measures;
 //!   [`path_change`](mod@path_change): the V3 path change (section 6.3) with the
 //!   path-following driver (re-exported by `scenarios`);
@@ -23,6 +24,7 @@
 //! Model notes: `docs/vehicle-3d.md`.
 
 pub mod cab_ride;
+pub mod channels;
 pub mod error;
 pub mod field;
 pub mod interconnect;

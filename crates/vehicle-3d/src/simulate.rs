@@ -8,7 +8,7 @@
 //! paper's theta (positive in a right-hand turn); the front unit's accelerations are in its
 //! own body axes (x forward, y left, z up) at the a_wz point; rates and angular
 //! accelerations are right-handed about those axes (a left turn has a positive yaw rate).
-//! The CLI converts to the `afsv-v1` record convention (docs/records.md).
+//! [`crate::channels`] converts them to the `afsv-v1` record convention (docs/records.md).
 
 use odeint::{Atol, Control, Direction, Event, Integrator, OdeSystem, Problem, SampleKind, Solver};
 use serde::Serialize;

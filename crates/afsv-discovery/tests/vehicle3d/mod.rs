@@ -15,7 +15,7 @@
 #[path = "../independent/rng.rs"]
 mod rng;
 
-use afsv_discovery::vehicle3d::{assign, channel, Vehicle3dModel, CHANNELS};
+use afsv_discovery::vehicle3d::{assign, Vehicle3dModel, CHANNELS};
 use afsv_discovery::vehicle3d_effects::{SensorEffects, ANGULAR_AXES, LINEAR_AXES};
 use afsv_dynamics::{PathDriver, SteerInput};
 use afsv_records::Record;
@@ -146,8 +146,8 @@ pub fn record(
     )
     .unwrap();
     let thin = |x: &[f64]| -> Vec<f64> { x.iter().step_by(2).copied().collect() };
-    let mut linear = LINEAR_AXES.map(|n| channel(&out, n).map(|x| thin(&x)));
-    let mut angular = ANGULAR_AXES.map(|n| channel(&out, n).map(|x| thin(&x)));
+    let mut linear = LINEAR_AXES.map(|n| out.afsv_v1_channel(n).map(|x| thin(&x)));
+    let mut angular = ANGULAR_AXES.map(|n| out.afsv_v1_channel(n).map(|x| thin(&x)));
     sensor.apply(0.01, p.gravity_m_s2, &mut linear, &mut angular);
     let mut rng = rng::Noise::new(seed, 3);
     let mut rec = Record::new();
@@ -166,7 +166,7 @@ pub fn record(
         } else if let Some(k) = ANGULAR_AXES.iter().position(|a| *a == name) {
             angular[k].clone().unwrap()
         } else {
-            thin(&channel(&out, name).unwrap())
+            thin(&out.afsv_v1_channel(name).unwrap())
         };
         let m = x.iter().sum::<f64>() / x.len() as f64;
         let sd = (x.iter().map(|v| (v - m).powi(2)).sum::<f64>() / x.len() as f64).sqrt();

@@ -10,9 +10,8 @@ use afsv::output::{OutputGuard, OutputKind};
 use afsv_records::Record;
 use perf_measures::roll::SustainedPeriodParams;
 use roll_truck::measures::RollMeasures;
-use roll_truck::model::TIRE_NAMES;
 use roll_truck::studies::run_case;
-use roll_truck::{BuiltinTruck, RunOptions, RunRecord, SteerDirection, TruckParams};
+use roll_truck::{BuiltinTruck, RunOptions, SteerDirection, TruckParams};
 use serde_json::json;
 use std::io::IsTerminal;
 use std::path::{Path, PathBuf};
@@ -307,7 +306,7 @@ fn simulate(case: &CaseArgs, dt: f64, output: &Path, force: bool) -> CmdResult {
         roll_truck::simulate::MAX_SAMPLES as f64,
     )?;
     let run = one_run(case, &p, dt)?;
-    let out = record(&run.record)?;
+    let out = Record::from_columns(run.record.afsv_v1_columns())?;
     let mut out = out;
     out.meta = json!({
         "written_by": "afsv roll simulate",
@@ -327,39 +326,6 @@ fn simulate(case: &CaseArgs, dt: f64, output: &Path, force: bool) -> CmdResult {
     summary["columns"] = json!(out.names());
     afsv::output::print_json(&summary)?;
     Ok(())
-}
-
-/// The run's channels, named with their units.
-fn record(r: &RunRecord) -> Result<Record, afsv_records::RecordError> {
-    let mut out = Record::new();
-    out.push_column("time_s", r.t_s.clone())?;
-    out.push_column("steer_rad", r.steer_rad.clone())?;
-    out.push_column("speed_m_s", r.speed_m_s.clone())?;
-    out.push_column("lateral_accel_m_s2", r.lateral_accel_m_s2.clone())?;
-    out.push_column("ltr", r.ltr.clone())?;
-    out.push_column(
-        "sprung_lateral_accel_m_s2",
-        r.sprung_lateral_accel_m_s2.clone(),
-    )?;
-    out.push_column(
-        "sprung_sensor_lateral_accel_m_s2",
-        r.sprung_sensor_lateral_accel_m_s2.clone(),
-    )?;
-    out.push_column("roll_rad", r.roll_rad.clone())?;
-    out.push_column("rollover_margin_m", r.rollover_margin_m.clone())?;
-    out.push_column("drive_force_n", r.drive_force_n.clone())?;
-    let stop = r
-        .on_bump_stop
-        .iter()
-        .map(|b| f64::from(u8::from(*b)))
-        .collect();
-    out.push_column("on_bump_stop", stop)?;
-    let airborne = r.airborne.iter().map(|b| f64::from(u8::from(*b))).collect();
-    out.push_column("airborne", airborne)?;
-    for (name, values) in TIRE_NAMES.iter().zip(&r.normal_force_n) {
-        out.push_column(&format!("normal_force_{name}_n"), values.clone())?;
-    }
-    Ok(out)
 }
 
 fn terrain_json(case: &CaseArgs) -> serde_json::Value {

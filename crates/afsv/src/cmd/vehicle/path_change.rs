@@ -4,7 +4,7 @@
 //! JSON sidecar, afsv-v1) and a four-panel SVG of the channels.
 
 use super::super::args;
-use super::simulate::{record, AXES};
+use super::simulate::AXES;
 use super::{axle_name, declare_inputs, print_result, terrain_and_seeds, terrain_json};
 use super::{vehicle_params, CaseArgs, CmdResult};
 use afsv::output::{OutputGuard, OutputKind};
@@ -54,7 +54,7 @@ pub(super) fn path_change_cmd(
     };
     let (rec, m) = path_change(&p, &spec, seeds[0])?;
     if let Some(path) = out.output.as_deref() {
-        let mut r = record(&rec)?;
+        let mut r = afsv_records::Record::from_columns(rec.afsv_v1_columns())?;
         r.meta = json!({
             "written_by": "afsv vehicle path-change",
             "sample_rate_hz": 1.0 / (rec.t_s[1] - rec.t_s[0]),

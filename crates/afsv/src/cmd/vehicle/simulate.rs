@@ -9,8 +9,7 @@ use afsv::output::{OutputGuard, OutputKind};
 use afsv_records::Record;
 use serde_json::json;
 use std::path::Path;
-use vehicle_3d::model::TIRE_NAMES;
-use vehicle_3d::{RunOptions, RunRecord, Vehicle, VehicleOptions};
+use vehicle_3d::{RunOptions, Vehicle, VehicleOptions};
 use vehicle_components::FlatTerrain;
 
 /// The axes and signs of the record's ride channels (the sidecar's `axes`).
@@ -65,7 +64,7 @@ pub(super) fn simulate_cmd(
             vehicle_3d::simulate(&Vehicle::new(&p, case.load, options, &ground, half)?, &run)?
         }
     };
-    let mut out = record(&rec)?;
+    let mut out = Record::from_columns(rec.afsv_v1_columns())?;
     out.meta = json!({
         "written_by": "afsv vehicle simulate",
         "sample_rate_hz": 1.0 / dt,
@@ -90,42 +89,4 @@ pub(super) fn simulate_cmd(
         "peak_articulation_deg": rec.articulation_rad.iter().fold(0.0f64, |m, v| if v.abs() > m.abs() { *v } else { m }).to_degrees(),
     }))?;
     Ok(())
-}
-
-/// The run's channels in the afsv-v1 convention (docs/records.md): the steering channels of
-/// a vehicle steering test, then the ride channels.
-pub(super) fn record(r: &RunRecord) -> Result<Record, afsv_records::RecordError> {
-    let deg = |v: &[f64], sign: f64| v.iter().map(|x| sign * x.to_degrees()).collect();
-    let mut out = Record::new();
-    out.push_column("time_s", r.t_s.clone())?;
-    out.push_column("steer_wheel_deg", deg(&r.steer_wheel_rad, 1.0))?;
-    out.push_column("speed_m_s", r.speed_m_s.clone())?;
-    out.push_column("articulation_deg", deg(&r.articulation_rad, 1.0))?;
-    out.push_column("strut_left_disp_m", r.strut_disp_m[0].clone())?;
-    out.push_column("strut_right_disp_m", r.strut_disp_m[1].clone())?;
-    out.push_column("p_c_pa", r.pressure_pa[0].clone())?;
-    out.push_column("p_r_pa", r.pressure_pa[1].clone())?;
-    // The model's yaw rate is left-turn positive about +z; afsv-v1 is right-turn positive.
-    out.push_column("yaw_rate_front_deg_s", deg(&r.front_rate_rad_s[2], -1.0))?;
-    for (axis, values) in ["x", "y", "z"].iter().zip(&r.cab_accel_m_s2) {
-        out.push_column(&format!("cab_accel_{axis}_m_s2"), values.clone())?;
-    }
-    out.push_column(
-        "front_pitch_accel_rad_s2",
-        r.front_angular_accel_rad_s2[1].clone(),
-    )?;
-    out.push_column(
-        "front_lateral_accel_m_s2",
-        r.front_lateral_accel_m_s2.clone(),
-    )?;
-    out.push_column("rear_lateral_accel_m_s2", r.rear_lateral_accel_m_s2.clone())?;
-    out.push_column("rear_ltr", r.rear_ltr.clone())?;
-    out.push_column("rear_roll_deg", deg(&r.rear_roll_rad, 1.0))?;
-    out.push_column("hps_travel_left_m", r.hps_travel_m[0].clone())?;
-    out.push_column("hps_travel_right_m", r.hps_travel_m[1].clone())?;
-    for (name, values) in TIRE_NAMES.iter().zip(&r.normal_force_n) {
-        out.push_column(&format!("normal_force_{name}_n"), values.clone())?;
-    }
-    out.push_column("drive_torque_n_m", r.drive_torque_n_m.clone())?;
-    Ok(out)
 }
