@@ -153,8 +153,6 @@ pub fn smooth_drt_g(p: &TruckParams) -> Result<f64, TruckError> {
     let vehicle = TruckVehicle::new(p, &level_ground(), 1.0, ModelOptions::default())?;
     let rec = simulate(&vehicle, &RunOptions::default())?;
     let m = roll_measures(p, &rec, &SustainedPeriodParams::default())?;
-    m.drt_g.ok_or(TruckError::Measure {
-        measure: "drt",
-        source: perf_measures::MeasureError::NotFound("the LTR never reaches unity".into()),
-    })
+    m.drt_g
+        .ok_or_else(|| vehicle_run::measure("drt", "the LTR never reaches unity"))
 }

@@ -7,10 +7,11 @@
 
 use std::cell::{Cell, RefCell};
 
-use odeint::{Atol, Control, Direction, Event, Integrator, OdeError, Problem, SampleKind, Solver};
+use odeint::{Control, Direction, Event, OdeError, Problem, SampleKind, Solver};
 use serde::Serialize;
+use vehicle_run::RunSpan;
 
-use crate::error::{positive, rejected, TruckError};
+use crate::error::TruckError;
 use crate::model::NV;
 use crate::vehicle::{state, Pieces, TireState, TruckVehicle};
 
@@ -58,21 +59,20 @@ impl Default for RunOptions {
 }
 
 impl RunOptions {
-    /// Check the fields and bound the sample count.
+    /// Check the fields and bound the sample count ([`MAX_SAMPLES`]); returns the number
+    /// of samples.
     pub fn validate(&self) -> Result<usize, TruckError> {
-        positive("t_end_s", self.t_end_s)?;
-        positive("output_dt_s", self.output_dt_s)?;
-        positive("rtol", self.rtol)?;
-        positive("max_step_s", self.max_step_s)?;
-        let n = (self.t_end_s / self.output_dt_s).floor() + 1.0;
-        if n > MAX_SAMPLES as f64 {
-            return Err(rejected(
-                "output_dt_s",
-                self.output_dt_s,
-                "more than 1e6 output samples (raise output_dt_s or lower t_end_s)",
-            ));
+        self.span().samples(MAX_SAMPLES)
+    }
+
+    /// The run's span: end time, output interval, tolerance, largest step.
+    fn span(&self) -> RunSpan {
+        RunSpan {
+            t_end_s: self.t_end_s,
+            output_dt_s: self.output_dt_s,
+            rtol: self.rtol,
+            max_step_s: self.max_step_s,
         }
-        Ok(n as usize)
     }
 }
 
@@ -284,7 +284,8 @@ pub fn simulate_with_stats(
 ) -> Result<(RunRecord, RunStats), TruckError> {
     let n = options.validate()?;
     let _thaw = Thaw(vehicle);
-    let t_out: Vec<f64> = (0..n).map(|i| i as f64 * options.output_dt_s).collect();
+    let span = options.span();
+    let t_out = span.output_times(n);
     let probe = Probe {
         vehicle,
         last: RefCell::new(None),
@@ -313,12 +314,7 @@ pub fn simulate_with_stats(
     ];
     let n_events = if options.locate_kinks { 2 } else { 1 };
     let breakpoints = [vehicle.params.ramp_start_s];
-    let mut integrator = Integrator::new(
-        Solver::Dopri5,
-        options.rtol,
-        Atol::scaled(options.rtol, typical()),
-    )
-    .with_max_step(options.max_step_s);
+    let mut integrator = vehicle_run::integrator(Solver::Dopri5, &span, typical());
     let mut ws = odeint::Workspace::with_events(state::DIM, 2);
     let mut rec = RunRecord::default();
     let mut stats = RunStats::default();

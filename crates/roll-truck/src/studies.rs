@@ -413,10 +413,8 @@ pub fn run_variants(
         ));
     }
     options.validate()?;
-    sp.validate().map_err(|source| TruckError::Measure {
-        measure: "sustained period",
-        source,
-    })?;
+    sp.validate()
+        .map_err(|e| vehicle_run::measure("sustained period", e))?;
     let mut jobs: Vec<(usize, Option<u64>)> = Vec::new();
     for (i, v) in variants.iter().enumerate() {
         if v.with_smooth {

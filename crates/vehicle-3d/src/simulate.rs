@@ -10,10 +10,11 @@
 //! accelerations are right-handed about those axes (a left turn has a positive yaw rate).
 //! [`crate::channels`] converts them to the `afsv-v1` record convention (docs/records.md).
 
-use odeint::{Atol, Control, Direction, Event, Integrator, OdeSystem, Problem, SampleKind, Solver};
+use odeint::{Control, Direction, Event, OdeSystem, Problem, SampleKind, Solver};
 use serde::Serialize;
+use vehicle_run::RunSpan;
 
-use crate::error::{positive, rejected, VehicleError};
+use crate::error::{rejected, VehicleError};
 use crate::model::body;
 use crate::vehicle::{Vehicle, MAX_DIM};
 
@@ -55,21 +56,20 @@ impl Default for RunOptions {
 }
 
 impl RunOptions {
-    /// Check the fields and bound the sample count; returns the number of samples.
+    /// Check the fields and bound the sample count ([`MAX_SAMPLES`]); returns the number
+    /// of samples.
     pub fn validate(&self) -> Result<usize, VehicleError> {
-        positive("t_end_s", self.t_end_s)?;
-        positive("output_dt_s", self.output_dt_s)?;
-        positive("rtol", self.rtol)?;
-        positive("max_step_s", self.max_step_s)?;
-        let n = (self.t_end_s / self.output_dt_s).floor() + 1.0;
-        if n > MAX_SAMPLES as f64 {
-            return Err(rejected(
-                "output_dt_s",
-                self.output_dt_s,
-                "more than 2e6 output samples (raise output_dt_s or lower t_end_s)",
-            ));
+        self.span().samples(MAX_SAMPLES)
+    }
+
+    /// The run's span: end time, output interval, tolerance, largest step.
+    fn span(&self) -> RunSpan {
+        RunSpan {
+            t_end_s: self.t_end_s,
+            output_dt_s: self.output_dt_s,
+            rtol: self.rtol,
+            max_step_s: self.max_step_s,
         }
-        Ok(n as usize)
     }
 }
 
@@ -259,8 +259,9 @@ pub(crate) fn simulate_system<S: OdeSystem>(
     mut extra: impl FnMut(&[f64]),
 ) -> Result<RunRecord, VehicleError> {
     let n = options.validate()?;
+    let span = options.span();
     let dim = vehicle.offsets.dim;
-    let t_out: Vec<f64> = (0..n).map(|i| i as f64 * options.output_dt_s).collect();
+    let t_out = span.output_times(n);
     let margin = |t: f64, y: &[f64]| -> f64 {
         let mut ws = vehicle.ws.borrow_mut();
         let mut tau = [0.0; MAX_DIM];
@@ -282,12 +283,7 @@ pub(crate) fn simulate_system<S: OdeSystem>(
     if options.stop_at_rollover {
         problem = problem.with_events(&events);
     }
-    let integrator = Integrator::new(
-        options.solver,
-        options.rtol,
-        Atol::scaled(options.rtol, typical),
-    )
-    .with_max_step(options.max_step_s);
+    let integrator = vehicle_run::integrator(options.solver, &span, typical);
     let mut ws = odeint::Workspace::with_events(sys.dim(), 1);
     let mut rec = RunRecord::default();
     integrator
@@ -299,12 +295,6 @@ pub(crate) fn simulate_system<S: OdeSystem>(
             }
             Control::Continue
         })
-        .map_err(|e| match e {
-            odeint::OdeError::StepSizeCollapsed { dominant_state, .. } => VehicleError::Stiff {
-                state: vehicle.state_name(dominant_state),
-                source: e,
-            },
-            other => VehicleError::Integration(other),
-        })?;
+        .map_err(|e| vehicle_run::run_error(e, |i| vehicle.state_name(i)))?;
     Ok(rec)
 }

@@ -1,0 +1,11 @@
+//! The run harness the multibody vehicles share (`roll-truck`, Chapter 2; `vehicle-3d`,
+//! Chapter 6): one error type ([`RunError`]) with its parameter checks, the checks of a
+//! run's settings and its output grid ([`RunSpan`]), and the integrator every run is
+//! integrated with ([`integrator`], [`run_error`]). Each vehicle keeps what is its own: its
+//! state, its recorded channels and its events.
+
+mod error;
+mod run;
+
+pub use error::{finite, measure, non_negative, positive, rejected, RunError};
+pub use run::{integrator, run_error, RunSpan};
