@@ -423,11 +423,24 @@ fn per_seed<T: serde::Serialize>(
     Value::Array(rows)
 }
 
-fn axle_name(axle: FrontAxle) -> &'static str {
-    match axle {
-        FrontAxle::Rigid => "rigid (no HPS)",
-        FrontAxle::Suspended => "front-axle HPS",
+/// The suspended axles of the vehicle `p` run with the front axle `front`, for headers and
+/// plot titles.
+fn axle_name(front: FrontAxle, p: &VehicleParams) -> &'static str {
+    match (front, p.rear_hps.is_some()) {
+        (FrontAxle::Rigid, false) => "rigid (no HPS)",
+        (FrontAxle::Suspended, false) => "front-axle HPS",
+        (FrontAxle::Rigid, true) => "rear-axle HPS, rigid front axle",
+        (FrontAxle::Suspended, true) => "HPS on both axles",
     }
+}
+
+/// The rear axle of `p` in JSON: `rigid` or `suspended` (as `front_axle`).
+fn rear_axle(p: &VehicleParams) -> Value {
+    json!(if p.rear_hps.is_some() {
+        "suspended"
+    } else {
+        "rigid"
+    })
 }
 
 /// Run `one` for every seed in parallel (`afsv_design::fan_out::over_seeds`), with progress
@@ -473,7 +486,13 @@ fn spread_text(label: &str, s: &Spread, unit: &str) -> String {
     }
 }
 
-fn header_text(title: &str, case: &CaseArgs, axle: FrontAxle, speed: f64, seeds: usize) -> String {
+fn header_text(
+    title: &str,
+    case: &CaseArgs,
+    (axle, p): (FrontAxle, &VehicleParams),
+    speed: f64,
+    seeds: usize,
+) -> String {
     let runs = if seeds > 1 {
         format!(", mean ± SD over {seeds} seeds")
     } else {
@@ -487,7 +506,7 @@ fn header_text(title: &str, case: &CaseArgs, axle: FrontAxle, speed: f64, seeds:
     format!(
         "{title}: {}, {}, {speed} km/h{runs}{form}\n",
         case.load,
-        axle_name(axle)
+        axle_name(axle, p)
     )
 }
 
@@ -540,12 +559,13 @@ fn roll_cmd(case: &CaseArgs, study: &StudyArgs, ramp_deg_s: f64, duration: f64) 
         Some(Spread::of(&rolled)?)
     };
     if let (Some(path), Some((m, Some(rec)))) = (&study.plot, runs.first()) {
-        plot_roll(path, rec, m, &spec, seeds[0])?;
+        plot_roll(path, rec, m, &spec, axle_name(axle, &p), seeds[0])?;
     }
     let mut v = json!({
         "scenario": "roll (D2, section 6.4)",
         "load": case.load,
         "front_axle": axle,
+        "rear_axle": rear_axle(&p),
         "yaw_inertia_form": options::yaw_inertia_form(case.paper_form),
         "speed_kmh": speed,
         "ramp_deg_s": ramp_deg_s,
@@ -564,7 +584,7 @@ fn roll_cmd(case: &CaseArgs, study: &StudyArgs, ramp_deg_s: f64, duration: f64) 
     if let Some(plot) = &study.plot {
         v["plot"] = json!(plot);
     }
-    let mut text = header_text("roll D2", case, axle, speed, seeds.len());
+    let mut text = header_text("roll D2", case, (axle, &p), speed, seeds.len());
     text += &format!(
         "ramp steer {ramp_deg_s} deg/s from t = {} s\n",
         spec.ramp_start_s
@@ -614,12 +634,13 @@ fn yaw_cmd(case: &CaseArgs, study: &StudyArgs, pulse_deg: f64) -> CmdResult {
     let zeta = spread(&measures, |m| m.damping_ratio)?;
     let peak = spread(&measures, |m| m.peak_articulation_deg)?;
     if let (Some(path), Some((_, Some(rec)))) = (&study.plot, runs.first()) {
-        plot_yaw(path, rec, &spec, seeds[0])?;
+        plot_yaw(path, rec, &spec, axle_name(axle, &p), seeds[0])?;
     }
     let mut v = json!({
         "scenario": "yaw (D3, section 6.4)",
         "load": case.load,
         "front_axle": axle,
+        "rear_axle": rear_axle(&p),
         "yaw_inertia_form": options::yaw_inertia_form(case.paper_form),
         "speed_kmh": speed,
         "pulse_deg": pulse_deg,
@@ -636,7 +657,7 @@ fn yaw_cmd(case: &CaseArgs, study: &StudyArgs, pulse_deg: f64) -> CmdResult {
     if let Some(plot) = &study.plot {
         v["plot"] = json!(plot);
     }
-    let mut text = header_text("yaw D3", case, axle, speed, seeds.len());
+    let mut text = header_text("yaw D3", case, (axle, &p), speed, seeds.len());
     text += &format!(
         "steering-wheel pulse {pulse_deg} deg, {} s, at t = {} s\n",
         spec.pulse_s, spec.pulse_start_s

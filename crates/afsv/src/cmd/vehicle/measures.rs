@@ -57,6 +57,7 @@ pub(super) fn measures_cmd(
     let mut v = json!({
         "measures": "design measures D1-D3 (section 6.4)",
         "front_axle": axle,
+        "rear_axle": super::rear_axle(&p),
         "yaw_inertia_form": p.yaw_inertia_form,
         "ride_load": case.load,
         "seeds": seeds,
@@ -97,7 +98,7 @@ pub(super) fn measures_cmd(
     let row = |label: &str, value: String, unit: &str| format!("{label:<36} {value:>16} {unit}\n");
     let mut text = format!(
         "design measures: {}, ride {}, {} terrain seed(s){}\n",
-        axle_name(axle),
+        axle_name(axle, &p),
         case.load,
         seeds.len(),
         if seeds.len() > 1 { ", mean ± SD" } else { "" }

@@ -70,12 +70,13 @@ pub(super) fn path_change_cmd(
         r.write(path)?;
     }
     if let Some(path) = out.plot.as_deref() {
-        plot(path, &rec, &spec, &m)?;
+        plot(path, &rec, (&spec, axle_name(axle, &p)), &m)?;
     }
     let mut v = json!({
         "scenario": "path change (V3, section 6.3, Fig 3.6(b))",
         "load": case.load,
         "front_axle": axle,
+        "rear_axle": super::rear_axle(&p),
         "speed_kmh": spec.speed_kmh,
         "course": {
             "offset_m": spec.offset_m,
@@ -101,7 +102,7 @@ pub(super) fn path_change_cmd(
     let mut text = format!(
         "path change V3: {}, {}, {} km/h, {} m offset over an {} m gate, {ground}\n",
         case.load,
-        axle_name(axle),
+        axle_name(axle, &p),
         spec.speed_kmh,
         spec.offset_m,
         spec.gate_m
@@ -145,7 +146,12 @@ pub(super) fn path_change_cmd(
 }
 
 /// The four Fig 6.12 channels in a 2 × 2 grid, afsv-v1 signs.
-fn plot(path: &Path, rec: &RunRecord, spec: &PathChangeSpec, m: &PathChangeMeasures) -> CmdResult {
+fn plot(
+    path: &Path,
+    rec: &RunRecord,
+    (spec, axles): (&PathChangeSpec, &str),
+    m: &PathChangeMeasures,
+) -> CmdResult {
     let deg =
         |v: &[f64], sign: f64| -> Vec<f64> { v.iter().map(|x| sign * x.to_degrees()).collect() };
     let theta = deg(&rec.articulation_rad, 1.0);
@@ -161,12 +167,7 @@ fn plot(path: &Path, rec: &RunRecord, spec: &PathChangeSpec, m: &PathChangeMeasu
     };
     let conditions = format!(
         "{}, {}, {} km/h, {} m offset, {} m gate; max deviation {:.2} m",
-        spec.load,
-        axle_name(spec.front_axle),
-        spec.speed_kmh,
-        spec.offset_m,
-        spec.gate_m,
-        m.max_deviation_m
+        spec.load, axles, spec.speed_kmh, spec.offset_m, spec.gate_m, m.max_deviation_m
     );
     afsv_plot::panels(
         path,

@@ -1,7 +1,6 @@
 //! The `--plot` figures of `afsv vehicle`: the ride PSDs (Welch), the roll LTR history with
 //! the sustained period, the yaw articulation with its single-DOF decay fit.
 
-use super::axle_name;
 use super::CmdResult;
 use std::path::Path;
 use terrain_psd::{welch_psd, WelchConfig};
@@ -30,6 +29,7 @@ pub(super) fn plot_ride(
     path: &Path,
     psds: &[RidePsd],
     spec: &RideSpec,
+    axles: &str,
     seeds: &[u64],
 ) -> CmdResult {
     let first = psds.first().ok_or("no PSD to plot")?;
@@ -59,7 +59,7 @@ pub(super) fn plot_ride(
     let conditions = format!(
         "{}, {}, {} km/h, class {}, m_c {}, mean of {} seed(s) from {}",
         spec.load,
-        axle_name(spec.front_axle),
+        axles,
         spec.speed_kmh,
         spec.terrain.class,
         spec.terrain.m_c,
@@ -110,6 +110,7 @@ pub(super) fn plot_roll(
     rec: &RunRecord,
     m: &RollMeasures,
     spec: &RollSpec,
+    axles: &str,
     seed: u64,
 ) -> CmdResult {
     let ltr: Vec<f64> = rec.rear_ltr.iter().map(|x| x.abs()).collect();
@@ -123,11 +124,7 @@ pub(super) fn plot_roll(
     };
     let conditions = format!(
         "{}, {}, {} km/h, ramp {} deg/s, {ground}; SP-DRT {:.2} m/s²",
-        spec.load,
-        axle_name(spec.front_axle),
-        spec.speed_kmh,
-        spec.ramp_deg_s,
-        m.sp_drt_m_s2
+        spec.load, axles, spec.speed_kmh, spec.ramp_deg_s, m.sp_drt_m_s2
     );
     afsv_plot::figure(
         path,
@@ -154,7 +151,13 @@ pub(super) fn plot_roll(
     Ok(())
 }
 
-pub(super) fn plot_yaw(path: &Path, rec: &RunRecord, spec: &YawSpec, seed: u64) -> CmdResult {
+pub(super) fn plot_yaw(
+    path: &Path,
+    rec: &RunRecord,
+    spec: &YawSpec,
+    axles: &str,
+    seed: u64,
+) -> CmdResult {
     let deg: Vec<f64> = rec
         .articulation_rad
         .iter()
@@ -188,7 +191,7 @@ pub(super) fn plot_yaw(path: &Path, rec: &RunRecord, spec: &YawSpec, seed: u64) 
     let conditions = format!(
         "{}, {}, {} km/h, {} deg pulse, {ground}; omega_z {:.2} Hz, zeta {:.3}",
         spec.load,
-        axle_name(spec.front_axle),
+        axles,
         spec.speed_kmh,
         spec.pulse_deg,
         fit.natural_frequency_hz,

@@ -42,7 +42,7 @@ pub(super) fn ride_cmd(
         let seats: Vec<_> = seat::of_run(&p, &rec, t_window, layout.as_ref())?
             .into_iter()
             .collect();
-        return ride_report(case, study, &spec, &[m], &seats, ground);
+        return ride_report(case, study, (&spec, &p), &[m], &seats, ground);
     }
     let (terrain, seeds) =
         terrain_and_seeds(case, study.seeds, study.seed, Some(TerrainSpec::default()))?;
@@ -70,7 +70,7 @@ pub(super) fn ride_cmd(
     let seats: Vec<SeatRideMeasures> = runs.iter().filter_map(|r| r.2).collect();
     if let Some(path) = &study.plot {
         let psds: Vec<RidePsd> = runs.into_iter().filter_map(|r| r.1).collect();
-        plot_ride(path, &psds, &spec, &seeds)?;
+        plot_ride(path, &psds, &spec, super::axle_name(axle, &p), &seeds)?;
     }
     let ground = road::Ground {
         json: terrain_json(&Some(terrain), &seeds),
@@ -80,14 +80,14 @@ pub(super) fn ride_cmd(
         ),
         per_run: per_seed(&Some(terrain), &seeds, &measures, NO_STRUT),
     };
-    ride_report(case, study, &spec, &measures, &seats, ground)
+    ride_report(case, study, (&spec, &p), &measures, &seats, ground)
 }
 
 /// The ride's measures over its runs (seeds, or one measured road) as JSON or text.
 fn ride_report(
     case: &CaseArgs,
     study: &StudyArgs,
-    spec: &RideSpec,
+    (spec, p): (&RideSpec, &VehicleParams),
     measures: &[RideMeasures],
     seats: &[SeatRideMeasures],
     ground: road::Ground,
@@ -116,6 +116,7 @@ fn ride_report(
         "scenario": "ride (D1, section 6.4)",
         "load": case.load,
         "front_axle": axle,
+        "rear_axle": super::rear_axle(p),
         "yaw_inertia_form": options::yaw_inertia_form(case.paper_form),
         "speed_kmh": speed,
         "run_in_m": RUN_IN_M,
@@ -149,7 +150,7 @@ fn ride_report(
         perf_measures::iso2631::HgczZone::Within => "within the zone (caution)",
         perf_measures::iso2631::HgczZone::Above => "above the zone (health risk likely)",
     };
-    let mut text = header_text("ride D1", case, axle, speed, measures.len());
+    let mut text = header_text("ride D1", case, (axle, p), speed, measures.len());
     text += &format!(
         "{}, {length_m} m after a {RUN_IN_M} m run-in\n",
         ground.text

@@ -71,6 +71,7 @@ pub(super) fn simulate_cmd(
         "model": "vehicle-3d integrated 3-D articulated dump truck (chapter 6)",
         "load": case.load,
         "front_axle": axle,
+        "rear_axle": super::rear_axle(&p),
         "speed_kmh": speed_kmh,
         "speed_m_s": speed,
         "manoeuvre": steer_label(&input),
