@@ -70,6 +70,12 @@ pub(crate) fn crba(model: &Model, ws: &mut Workspace) {
     }
     let tree = &model.dofs;
     for (i, link) in model.links.iter().enumerate() {
+        if link.nv == 6 && tree.unit_axis[link.v_offset] == 0 {
+            // A floating root: S̄ = 1, so its block is the composite inertia itself.
+            let start = tree.row(link.v_offset).start;
+            floating_root_block(&ws.ic[i], &mut ws.hs[start..start + 21]);
+            continue;
+        }
         for k in link.v_offset..link.v_offset + link.nv {
             let f = ws.ic[i].apply(&ws.cdof[k]);
             let (start, general, unit) = tree.split_row(k);
@@ -99,6 +105,36 @@ pub(crate) fn crba(model: &Model, ws: &mut Workspace) {
         dense[upper] = h;
     }
     ws.h_current = true;
+}
+
+/// The 21 packed entries of a floating root's rows (row `m` at `m (m + 1) / 2`, columns
+/// `m, m - 1, ..., 0`): with `S̄ = 1`, `H[m, j] = I^c[j, m]` for the root's composite
+/// inertia `I^c = [Ī, h×; h×^T, m 1]` (Featherstone 2008, ch. 2), the entries of
+/// `F = I^c e_m` without the products by zeros.
+fn floating_root_block(ic: &RigidInertia, block: &mut [f64]) {
+    let block: &mut [f64; 21] = block.try_into().expect("a floating root has 21 entries");
+    let h = &ic.h;
+    // Column m of I^c, rows 0..=m (the upper triangle).
+    let column = |m: usize, j: usize| match (j, m) {
+        (j, m) if m < 3 => ic.ibar[(j, m)],
+        (j, m) if j < 3 => match (j, m - 3) {
+            (0, 1) => -h.z,
+            (0, 2) => h.y,
+            (1, 0) => h.z,
+            (1, 2) => -h.x,
+            (2, 0) => -h.y,
+            (2, 1) => h.x,
+            _ => 0.0,
+        },
+        (j, m) if j == m => ic.mass,
+        _ => 0.0,
+    };
+    for m in 0..6 {
+        let row = m * (m + 1) / 2;
+        for t in 0..=m {
+            block[row + t] = column(m, m - t);
+        }
+    }
 }
 
 /// The motion subspace columns of `joint` in root coordinates, `(i X r)^-1 S` with
