@@ -56,7 +56,13 @@ pub(crate) fn crba(model: &Model, ws: &mut Workspace) {
                 ws.ic[i] = if body.mass == 0.0 {
                     RigidInertia::zero()
                 } else {
-                    RigidInertia::body_in(body.mass, &body.com, &body.inertia, &x)
+                    RigidInertia::body_in(
+                        body.mass,
+                        &body.com,
+                        &body.inertia,
+                        link.inertia_diagonal,
+                        &x,
+                    )
                 };
                 subspace_in_root(&body.joint, &x, &mut ws.cdof[dofs]);
             }

@@ -491,6 +491,7 @@ mod tests {
                     tree_translation_only: true,
                     inertia: nalgebra::Matrix6::identity(),
                     rigid_inertia: crate::inertia::RigidInertia::zero(),
+                    inertia_diagonal: true,
                     subspace: b.joint.motion_subspace(),
                     nv: b.joint.nv(),
                     q_offset: 0,

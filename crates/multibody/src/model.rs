@@ -40,6 +40,9 @@ pub(crate) struct Link {
     pub(crate) inertia: Matrix6<f64>,
     /// The same inertia by its ten parameters (CRBA accumulates these).
     pub(crate) rigid_inertia: RigidInertia,
+    /// Whether the rotational inertia about the centre of mass is diagonal in body axes
+    /// (its off-diagonal entries exactly zero), which CRBA's transform exploits.
+    pub(crate) inertia_diagonal: bool,
     pub(crate) subspace: Matrix6<f64>,
     pub(crate) nv: usize,
     pub(crate) q_offset: usize,
@@ -115,6 +118,7 @@ impl ModelBuilder {
                     x_tree,
                     inertia: rigid_body_inertia(b.mass, &b.com, &b.inertia),
                     rigid_inertia: RigidInertia::new(b.mass, &b.com, &b.inertia),
+                    inertia_diagonal: b.inertia == Matrix3::from_diagonal(&b.inertia.diagonal()),
                     subspace: b.joint.motion_subspace(),
                     nv: b.joint.nv(),
                     q_offset: nq,
