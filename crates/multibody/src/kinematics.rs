@@ -203,3 +203,48 @@ impl Workspace {
         self.x_world[body].rot.transpose() * local
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use nalgebra::{Isometry3, Matrix6, Translation3, UnitQuaternion};
+
+    fn link(placement: &Isometry3<f64>) -> Link {
+        let x_tree = SpatialTransform::from_pose(placement);
+        Link {
+            tree_translation_only: x_tree.rot == Matrix3::identity(),
+            x_tree,
+            inertia: Matrix6::identity(),
+            rigid_inertia: crate::inertia::RigidInertia::zero(),
+            inertia_diagonal: true,
+            subspace: Matrix6::identity(),
+            nv: 0,
+            q_offset: 0,
+            v_offset: 0,
+        }
+    }
+
+    #[test]
+    fn joint_after_placement_equals_the_general_composition() {
+        let axis = Vector3::new(0.3, -0.8, 0.52).normalize();
+        let joints = [
+            (Joint::Revolute { axis }, vec![0.7]),
+            (Joint::Prismatic { axis }, vec![-0.4]),
+            (Joint::Floating, vec![0.2, -1.0, 3.0, 0.8, 0.2, -0.4, 0.4]),
+            (Joint::Fixed, vec![]),
+        ];
+        let shift = Translation3::new(1.2, -0.3, 0.45);
+        let placements = [
+            Isometry3::from_parts(shift, UnitQuaternion::identity()),
+            Isometry3::from_parts(shift, UnitQuaternion::from_euler_angles(0.3, -0.2, 1.1)),
+        ];
+        for placement in &placements {
+            let link = link(placement);
+            for (joint, q) in &joints {
+                let general = joint.transform(q).after(&link.x_tree);
+                let special = joint_after_placement(joint, q, &link);
+                assert_eq!(special, general, "{joint:?} at {placement:?}");
+            }
+        }
+    }
+}
