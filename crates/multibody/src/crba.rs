@@ -22,8 +22,8 @@
 //!
 //! The root frame (rather than the world frame) keeps the lever arms short, so no precision
 //! is lost to large positions, and makes `S̄ = S` for the root joint itself. The result
-//! fills the packed rows of the tree-sparse factorisation ([`crate::ltdl`]) and the dense
-//! matrix returned by [`crate::mass_matrix`].
+//! fills the packed rows of the tree-sparse factorisation ([`crate::ltdl`]), from which the
+//! dense matrix of [`crate::mass_matrix`] is filled when asked for.
 
 use crate::inertia::RigidInertia;
 use crate::joint::Joint;
@@ -32,8 +32,9 @@ use crate::spatial::{spatial, SpatialTransform};
 use crate::workspace::Workspace;
 use nalgebra::{Vector3, Vector6};
 
-/// Fills `ws.hs` (packed rows of `H`) and the dense `ws.h` at the configuration of the
-/// last kinematics update (the caller has checked the workspace).
+/// Fills `ws.hs` (packed rows of `H`) at the configuration of the last kinematics update
+/// (the caller has checked the workspace); the dense `ws.h` is filled from them on request
+/// ([`Workspace::mass_matrix`]).
 pub(crate) fn crba(model: &Model, ws: &mut Workspace) {
     let bodies = model.bodies();
     for (i, (body, link)) in bodies.iter().zip(&model.links).enumerate() {
@@ -105,11 +106,7 @@ pub(crate) fn crba(model: &Model, ws: &mut Workspace) {
         ws.h.fill(0.0);
         ws.h_pattern.copy_from_slice(&tree.parent);
     }
-    let dense = ws.h.as_mut_slice();
-    for (&h, &(lower, upper)) in ws.hs.iter().zip(&tree.dense) {
-        dense[lower] = h;
-        dense[upper] = h;
-    }
+    ws.h_dense_current = false;
     ws.h_current = true;
 }
 

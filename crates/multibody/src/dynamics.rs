@@ -28,7 +28,7 @@ pub fn mass_matrix<'w>(
 ) -> Result<&'w DMatrix<f64>, DynamicsError> {
     ws.check(model)?;
     crba(model, ws);
-    Ok(&ws.h)
+    Ok(ws.mass_matrix())
 }
 
 /// RNEA passes (Featherstone 2008, Table 5.1) at the state of the last kinematics update

@@ -17,7 +17,7 @@ use crate::joint::Joint;
 use crate::model::{Body, Link};
 
 /// Marks a dof with no parent dof (a chain root).
-const NONE: usize = usize::MAX;
+pub(crate) const NONE: usize = usize::MAX;
 
 /// The expanded parent array and the packed row structure of the mass matrix, computed
 /// once by [`crate::ModelBuilder::build`].
