@@ -22,8 +22,8 @@
 //!
 //! The root frame (rather than the world frame) keeps the lever arms short, so no precision
 //! is lost to large positions, and makes `S̄ = S` for the root joint itself. The result
-//! fills the packed rows of the tree-sparse factorisation ([`crate::ltdl`]) and the dense
-//! matrix returned by [`crate::mass_matrix`].
+//! fills the packed rows of the tree-sparse factorisation ([`crate::ltdl`]), from which the
+//! dense matrix of [`crate::mass_matrix`] is filled when asked for.
 
 use crate::inertia::RigidInertia;
 use crate::joint::Joint;
@@ -32,8 +32,9 @@ use crate::spatial::{spatial, SpatialTransform};
 use crate::workspace::Workspace;
 use nalgebra::{Vector3, Vector6};
 
-/// Fills `ws.hs` (packed rows of `H`) and the dense `ws.h` at the configuration of the
-/// last kinematics update (the caller has checked the workspace).
+/// Fills `ws.hs` (packed rows of `H`) at the configuration of the last kinematics update
+/// (the caller has checked the workspace); the dense `ws.h` is filled from them on request
+/// ([`Workspace::mass_matrix`]).
 pub(crate) fn crba(model: &Model, ws: &mut Workspace) {
     let bodies = model.bodies();
     for (i, (body, link)) in bodies.iter().zip(&model.links).enumerate() {
@@ -56,7 +57,13 @@ pub(crate) fn crba(model: &Model, ws: &mut Workspace) {
                 ws.ic[i] = if body.mass == 0.0 {
                     RigidInertia::zero()
                 } else {
-                    RigidInertia::body_in(body.mass, &body.com, &body.inertia, &x)
+                    RigidInertia::body_in(
+                        body.mass,
+                        &body.com,
+                        &body.inertia,
+                        link.inertia_diagonal,
+                        &x,
+                    )
                 };
                 subspace_in_root(&body.joint, &x, &mut ws.cdof[dofs]);
             }
@@ -70,6 +77,12 @@ pub(crate) fn crba(model: &Model, ws: &mut Workspace) {
     }
     let tree = &model.dofs;
     for (i, link) in model.links.iter().enumerate() {
+        if link.nv == 6 && tree.unit_axis[link.v_offset] == 0 {
+            // A floating root: S̄ = 1, so its block is the composite inertia itself.
+            let start = tree.row(link.v_offset).start;
+            floating_root_block(&ws.ic[i], &mut ws.hs[start..start + 21]);
+            continue;
+        }
         for k in link.v_offset..link.v_offset + link.nv {
             let f = ws.ic[i].apply(&ws.cdof[k]);
             let (start, general, unit) = tree.split_row(k);
@@ -93,12 +106,38 @@ pub(crate) fn crba(model: &Model, ws: &mut Workspace) {
         ws.h.fill(0.0);
         ws.h_pattern.copy_from_slice(&tree.parent);
     }
-    let dense = ws.h.as_mut_slice();
-    for (&h, &(lower, upper)) in ws.hs.iter().zip(&tree.dense) {
-        dense[lower] = h;
-        dense[upper] = h;
-    }
+    ws.h_dense_current = false;
     ws.h_current = true;
+}
+
+/// The 21 packed entries of a floating root's rows (row `m` at `m (m + 1) / 2`, columns
+/// `m, m - 1, ..., 0`): with `S̄ = 1`, `H[m, j] = I^c[j, m]` for the root's composite
+/// inertia `I^c = [Ī, h×; h×^T, m 1]` (Featherstone 2008, ch. 2), the entries of
+/// `F = I^c e_m` without the products by zeros.
+fn floating_root_block(ic: &RigidInertia, block: &mut [f64]) {
+    let block: &mut [f64; 21] = block.try_into().expect("a floating root has 21 entries");
+    let h = &ic.h;
+    // Column m of I^c, rows 0..=m (the upper triangle).
+    let column = |m: usize, j: usize| match (j, m) {
+        (j, m) if m < 3 => ic.ibar[(j, m)],
+        (j, m) if j < 3 => match (j, m - 3) {
+            (0, 1) => -h.z,
+            (0, 2) => h.y,
+            (1, 0) => h.z,
+            (1, 2) => -h.x,
+            (2, 0) => -h.y,
+            (2, 1) => h.x,
+            _ => 0.0,
+        },
+        (j, m) if j == m => ic.mass,
+        _ => 0.0,
+    };
+    for m in 0..6 {
+        let row = m * (m + 1) / 2;
+        for t in 0..=m {
+            block[row + t] = column(m, m - t);
+        }
+    }
 }
 
 /// The motion subspace columns of `joint` in root coordinates, `(i X r)^-1 S` with

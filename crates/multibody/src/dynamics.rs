@@ -28,6 +28,14 @@ pub fn mass_matrix<'w>(
 ) -> Result<&'w DMatrix<f64>, DynamicsError> {
     ws.check(model)?;
     crba(model, ws);
+    // The dense matrix through the model's precomputed offsets (cheaper than the chain
+    // walk of `Workspace::mass_matrix`, which has no model).
+    let dense = ws.h.as_mut_slice();
+    for (&h, &(lower, upper)) in ws.hs.iter().zip(&model.dofs.dense) {
+        dense[lower] = h;
+        dense[upper] = h;
+    }
+    ws.h_dense_current = true;
     Ok(&ws.h)
 }
 

@@ -3,8 +3,9 @@
 //! loop of RNEA Table 5.1), plus point kinematics for contact and mount points.
 
 use crate::error::DynamicsError;
+use crate::joint::Joint;
 use crate::model::{Link, Model};
-use crate::spatial::{angular, cross_motion, linear};
+use crate::spatial::{angular, cross_motion, linear, SpatialTransform};
 use crate::workspace::Workspace;
 use nalgebra::{Matrix3, Vector3, Vector6};
 
@@ -16,6 +17,47 @@ pub(crate) fn subspace_times(link: &Link, x: &[f64]) -> Vector6<f64> {
         out += link.subspace.column(k) * x[link.v_offset + k];
     }
     out
+}
+
+/// `iXλ = X_J(q) X_T` (Featherstone 2008, ch. 4): [`SpatialTransform::after`] specialised
+/// per joint type, leaving out the products by the zero offset of a revolute joint, by the
+/// identity rotation of a prismatic joint, and by a placement rotation that is exactly the
+/// identity. The same values as `joint.transform(q).after(&link.x_tree)`.
+fn joint_after_placement(joint: &Joint, q: &[f64], link: &Link) -> SpatialTransform {
+    let tree = &link.x_tree;
+    match joint {
+        Joint::Revolute { .. } => {
+            let rot = joint.transform(q).rot;
+            SpatialTransform {
+                rot: if link.tree_translation_only {
+                    rot
+                } else {
+                    rot * tree.rot
+                },
+                pos: tree.pos,
+            }
+        }
+        Joint::Prismatic { axis } => {
+            let offset = axis * q[0];
+            SpatialTransform {
+                rot: tree.rot,
+                pos: if link.tree_translation_only {
+                    tree.pos + offset
+                } else {
+                    tree.pos + tree.rot.transpose() * offset
+                },
+            }
+        }
+        Joint::Floating if link.tree_translation_only => {
+            let x = joint.transform(q);
+            SpatialTransform {
+                rot: x.rot,
+                pos: tree.pos + x.pos,
+            }
+        }
+        Joint::Floating => joint.transform(q).after(tree),
+        Joint::Fixed => *tree,
+    }
 }
 
 /// Computes every body's transforms `i X lambda(i)`, pose `i X 0` and spatial velocity
@@ -35,7 +77,7 @@ pub fn update_kinematics(
     check_len("v", v, model.nv())?;
     for (i, (body, link)) in model.bodies().iter().zip(&model.links).enumerate() {
         let qi = &q[link.q_offset..link.q_offset + body.joint.nq()];
-        let x_up = body.joint.transform(qi).after(&link.x_tree);
+        let x_up = joint_after_placement(&body.joint, qi, link);
         let vj = subspace_times(link, v);
         let (x_world, vel) = match body.parent {
             Some(p) => (
@@ -159,5 +201,50 @@ impl Workspace {
         let w = angular(v);
         let local = linear(a) + angular(a).cross(point) + w.cross(&(linear(v) + w.cross(point)));
         self.x_world[body].rot.transpose() * local
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use nalgebra::{Isometry3, Matrix6, Translation3, UnitQuaternion};
+
+    fn link(placement: &Isometry3<f64>) -> Link {
+        let x_tree = SpatialTransform::from_pose(placement);
+        Link {
+            tree_translation_only: x_tree.rot == Matrix3::identity(),
+            x_tree,
+            inertia: Matrix6::identity(),
+            rigid_inertia: crate::inertia::RigidInertia::zero(),
+            inertia_diagonal: true,
+            subspace: Matrix6::identity(),
+            nv: 0,
+            q_offset: 0,
+            v_offset: 0,
+        }
+    }
+
+    #[test]
+    fn joint_after_placement_equals_the_general_composition() {
+        let axis = Vector3::new(0.3, -0.8, 0.52).normalize();
+        let joints = [
+            (Joint::Revolute { axis }, vec![0.7]),
+            (Joint::Prismatic { axis }, vec![-0.4]),
+            (Joint::Floating, vec![0.2, -1.0, 3.0, 0.8, 0.2, -0.4, 0.4]),
+            (Joint::Fixed, vec![]),
+        ];
+        let shift = Translation3::new(1.2, -0.3, 0.45);
+        let placements = [
+            Isometry3::from_parts(shift, UnitQuaternion::identity()),
+            Isometry3::from_parts(shift, UnitQuaternion::from_euler_angles(0.3, -0.2, 1.1)),
+        ];
+        for placement in &placements {
+            let link = link(placement);
+            for (joint, q) in &joints {
+                let general = joint.transform(q).after(&link.x_tree);
+                let special = joint_after_placement(joint, q, &link);
+                assert_eq!(special, general, "{joint:?} at {placement:?}");
+            }
+        }
     }
 }

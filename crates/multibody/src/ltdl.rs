@@ -17,7 +17,7 @@ use crate::joint::Joint;
 use crate::model::{Body, Link};
 
 /// Marks a dof with no parent dof (a chain root).
-const NONE: usize = usize::MAX;
+pub(crate) const NONE: usize = usize::MAX;
 
 /// The expanded parent array and the packed row structure of the mass matrix, computed
 /// once by [`crate::ModelBuilder::build`].
@@ -213,21 +213,100 @@ impl DofTree {
     /// [`Self::factor`] (Featherstone 2008, Table 6.4): `L^T z = b` from the leaves
     /// inwards, then `L x = D^-1 z` from the roots outwards.
     pub(crate) fn solve(&self, packed: &[f64], x: &mut [f64]) {
-        for k in (0..self.nv()).rev() {
+        // A floating root's block and the trailing root entries of the rows below it run
+        // in fixed-size code (the same operations in the same order as the general loops).
+        let mut next = self.nv();
+        while next > 0 {
+            let k = next - 1;
+            next = k;
+            if self.unit_axis[k] == 5 {
+                next = k - 5;
+                let base = self.row[next];
+                root_block_transpose_solve(&packed[base..base + 21], &mut x[next..next + 6]);
+                continue;
+            }
             let (start, end) = (self.row[k], self.row[k + 1]);
+            let general_end = self.general_end(k);
             let xk = x[k];
-            for (l, &j) in packed[start + 1..end].iter().zip(&self.col[start + 1..end]) {
+            for (l, &j) in packed[start + 1..general_end]
+                .iter()
+                .zip(&self.col[start + 1..general_end])
+            {
                 x[j] -= l * xk;
             }
+            if general_end < end {
+                let root = self.col[end - 1];
+                let l: &[f64; 6] = packed[general_end..end]
+                    .try_into()
+                    .expect("six root entries");
+                let xr: &mut [f64; 6] = (&mut x[root..root + 6]).try_into().expect("six root dofs");
+                for t in 0..6 {
+                    xr[5 - t] -= l[t] * xk;
+                }
+            }
         }
-        for k in 0..self.nv() {
+        let mut k = 0;
+        while k < self.nv() {
+            if self.unit_axis[k] == 0 {
+                let base = self.row[k];
+                root_block_solve(&packed[base..base + 21], &mut x[k..k + 6]);
+                k += 6;
+                continue;
+            }
             let (start, end) = (self.row[k], self.row[k + 1]);
+            let general_end = self.general_end(k);
             let mut xk = x[k] / packed[start];
-            for (l, &j) in packed[start + 1..end].iter().zip(&self.col[start + 1..end]) {
+            for (l, &j) in packed[start + 1..general_end]
+                .iter()
+                .zip(&self.col[start + 1..general_end])
+            {
                 xk -= l * x[j];
             }
+            if general_end < end {
+                let root = self.col[end - 1];
+                let l: &[f64; 6] = packed[general_end..end]
+                    .try_into()
+                    .expect("six root entries");
+                let xr: &[f64; 6] = x[root..root + 6].try_into().expect("six root dofs");
+                for t in 0..6 {
+                    xk -= l[t] * xr[5 - t];
+                }
+            }
             x[k] = xk;
+            k += 1;
         }
+    }
+}
+
+/// The first half of [`DofTree::solve`], `L^T z = b`, on a floating root's six rows (the
+/// 21 packed entries `block`, row `m` at `m (m + 1) / 2`, columns `m, m - 1, ..., 0`) and
+/// its six entries `x`. Fixed sizes, so the loops unroll.
+#[inline(always)]
+fn root_block_transpose_solve(block: &[f64], x: &mut [f64]) {
+    let block: &[f64; 21] = block.try_into().expect("a floating root has 21 entries");
+    let x: &mut [f64; 6] = x.try_into().expect("a floating root has 6 dofs");
+    for m in (0..6).rev() {
+        let row = m * (m + 1) / 2;
+        let xm = x[m];
+        for t in 1..=m {
+            x[m - t] -= block[row + t] * xm;
+        }
+    }
+}
+
+/// The second half of [`DofTree::solve`], `L x = D^-1 z`, on a floating root's six rows
+/// (layout as in [`root_block_transpose_solve`]).
+#[inline(always)]
+fn root_block_solve(block: &[f64], x: &mut [f64]) {
+    let block: &[f64; 21] = block.try_into().expect("a floating root has 21 entries");
+    let x: &mut [f64; 6] = x.try_into().expect("a floating root has 6 dofs");
+    for m in 0..6 {
+        let row = m * (m + 1) / 2;
+        let mut xm = x[m] / block[row];
+        for t in 1..=m {
+            xm -= block[row + t] * x[m - t];
+        }
+        x[m] = xm;
     }
 }
 
@@ -409,8 +488,10 @@ mod tests {
             .map(|b| {
                 let link = Link {
                     x_tree: SpatialTransform::identity(),
+                    tree_translation_only: true,
                     inertia: nalgebra::Matrix6::identity(),
                     rigid_inertia: crate::inertia::RigidInertia::zero(),
+                    inertia_diagonal: true,
                     subspace: b.joint.motion_subspace(),
                     nv: b.joint.nv(),
                     q_offset: 0,

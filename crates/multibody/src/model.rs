@@ -34,9 +34,15 @@ pub struct Body {
 #[derive(Debug, Clone, PartialEq)]
 pub(crate) struct Link {
     pub(crate) x_tree: SpatialTransform,
+    /// Whether the placement `x_tree` is a pure translation (its rotation is exactly the
+    /// identity), so the kinematics skip the rotation product.
+    pub(crate) tree_translation_only: bool,
     pub(crate) inertia: Matrix6<f64>,
     /// The same inertia by its ten parameters (CRBA accumulates these).
     pub(crate) rigid_inertia: RigidInertia,
+    /// Whether the rotational inertia about the centre of mass is diagonal in body axes
+    /// (its off-diagonal entries exactly zero), which CRBA's transform exploits.
+    pub(crate) inertia_diagonal: bool,
     pub(crate) subspace: Matrix6<f64>,
     pub(crate) nv: usize,
     pub(crate) q_offset: usize,
@@ -106,10 +112,13 @@ impl ModelBuilder {
         let links = bodies
             .iter()
             .map(|b| {
+                let x_tree = SpatialTransform::from_pose(&b.placement);
                 let link = Link {
-                    x_tree: SpatialTransform::from_pose(&b.placement),
+                    tree_translation_only: x_tree.rot == Matrix3::identity(),
+                    x_tree,
                     inertia: rigid_body_inertia(b.mass, &b.com, &b.inertia),
                     rigid_inertia: RigidInertia::new(b.mass, &b.com, &b.inertia),
+                    inertia_diagonal: b.inertia == Matrix3::from_diagonal(&b.inertia.diagonal()),
                     subspace: b.joint.motion_subspace(),
                     nv: b.joint.nv(),
                     q_offset: nq,

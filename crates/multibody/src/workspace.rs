@@ -6,6 +6,7 @@
 
 use crate::error::DynamicsError;
 use crate::inertia::RigidInertia;
+use crate::ltdl::NONE;
 use crate::model::Model;
 use crate::spatial::{spatial, SpatialTransform};
 use nalgebra::{DMatrix, DVector, Vector3, Vector6};
@@ -56,6 +57,9 @@ pub struct Workspace {
     pub(crate) h_pattern: Vec<usize>,
     /// Whether `h` and `hs` hold the mass matrix at the current kinematics.
     pub(crate) h_current: bool,
+    /// Whether the dense `h` holds the packed `hs` (else [`Workspace::mass_matrix`]
+    /// fills it first).
+    pub(crate) h_dense_current: bool,
     /// Whether `update_kinematics` has filled the pose and velocity buffers.
     pub(crate) kinematics_ready: bool,
 }
@@ -85,6 +89,7 @@ impl Workspace {
             ldl: vec![0.0; nv * (nv + 1) / 2],
             h_pattern: model.dofs.parent.clone(),
             h_current: false,
+            h_dense_current: true,
             kinematics_ready: false,
         }
     }
@@ -114,8 +119,26 @@ impl Workspace {
     }
 
     /// Joint-space mass matrix of the last [`crate::mass_matrix`] or
-    /// [`crate::forward_dynamics`] call.
-    pub fn mass_matrix(&self) -> &DMatrix<f64> {
+    /// [`crate::forward_dynamics`] call. Those compute only its packed rows along the
+    /// ancestor chains (the structural non-zeros, section 6.5 of Featherstone 2008); the
+    /// dense symmetric matrix is written from them on the first request after each call,
+    /// hence `&mut self`. Allocation free.
+    pub fn mass_matrix(&mut self) -> &DMatrix<f64> {
+        if !self.h_dense_current {
+            let nv = self.h.nrows();
+            let mut packed = self.hs.iter();
+            for k in 0..nv {
+                // Row k holds the chain k, λ(k), λ(λ(k)), ... of the model's parent array.
+                let mut j = k;
+                while j != NONE {
+                    let h = *packed.next().expect("one packed entry per chain link");
+                    self.h[(k, j)] = h;
+                    self.h[(j, k)] = h;
+                    j = self.h_pattern[j];
+                }
+            }
+            self.h_dense_current = true;
+        }
         &self.h
     }
 

@@ -2,7 +2,8 @@
 //! largest entry), the body-coordinate CRBA of Featherstone 2008, Table 6.2 (the crate's
 //! earlier algorithm, rebuilt here from the public API with 6x6 matrices) on random trees,
 //! structural zeros included; forward dynamics by the sparse `L^T D L` solve agrees with a
-//! dense Cholesky solve of that reference matrix and is backward stable; a workspace reused
+//! dense Cholesky solve of that reference matrix and is backward stable, and the dense
+//! matrix the workspace gives after it is the current one; a workspace reused
 //! for a model of the same size but another tree gives the fresh workspace's results.
 #[path = "support/random_tree.rs"]
 mod random_tree;
@@ -110,11 +111,16 @@ proptest! {
     ) {
         let (model, q, v) = random_tree(&bodies);
         let nv = model.nv();
+        let tau: Vec<f64> = (0..nv).map(|k| ((seed + 5 * k as u64) % 11) as f64 - 5.0).collect();
         let mut ws = Workspace::new(&model);
+        // An earlier evaluation at another configuration, its dense H read.
+        let neutral = model.neutral_configuration();
+        update_kinematics(&model, &mut ws, neutral.as_slice(), &v).unwrap();
+        forward_dynamics(&model, &mut ws, &tau).unwrap();
+        ws.mass_matrix();
         update_kinematics(&model, &mut ws, &q, &v).unwrap();
         let (h, _) = reference_crba(&model, &ws);
         let c = bias_forces(&model, &mut ws).unwrap().clone();
-        let tau: Vec<f64> = (0..nv).map(|k| ((seed + 5 * k as u64) % 11) as f64 - 5.0).collect();
         let b = DVector::from_column_slice(&tau) - &c;
         let dense = h.clone().cholesky().expect("H is positive definite").solve(&b);
         let got = forward_dynamics(&model, &mut ws, &tau).unwrap().clone();
@@ -127,6 +133,11 @@ proptest! {
         let error = (&got - &dense).amax();
         prop_assert!(error <= 1e-14 * condition * (1.0 + dense.amax()),
             "error {error}, condition {condition}");
+        // The dense H read after forward dynamics is this configuration's, not the
+        // earlier one's, and equals the mass_matrix function's.
+        let h_fd = ws.mass_matrix().clone();
+        prop_assert!((&h_fd - &h).amax() <= 1e-12 * h.amax());
+        prop_assert_eq!(&h_fd, mass_matrix(&model, &mut ws).unwrap());
         // solve_mass_matrix gives the same solution for the same right-hand side.
         let mut x = b.as_slice().to_vec();
         solve_mass_matrix(&model, &mut ws, &mut x).unwrap();

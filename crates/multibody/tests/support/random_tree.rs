@@ -1,6 +1,8 @@
 //! Random kinematic trees for the property tests: body 0 floating, then floating,
 //! revolute, prismatic and fixed joints on random parents, with random placements, mass
-//! properties, configuration and velocity.
+//! properties, configuration and velocity. About one body in four is axis-aligned: its
+//! placement is a pure translation and its inertia diagonal in body axes (the cases the
+//! kinematics and CRBA take by shorter paths).
 #![allow(dead_code)] // each test binary uses part of it
 
 use multibody::{Body, Joint, Model, ModelBuilder};
@@ -13,6 +15,7 @@ use std::f64::consts::PI;
 pub struct RandomBody {
     parent_seed: usize,
     kind: u8,
+    aligned: bool,
     axis: [f64; 3],
     offset: [f64; 3],
     tilt: [f64; 3],
@@ -27,7 +30,7 @@ pub fn random_body() -> impl Strategy<Value = RandomBody> {
     let unit = || [-1.0..1.0_f64, -1.0..1.0, -1.0..1.0];
     let angles = || [-PI..PI, -PI..PI, -PI..PI];
     (
-        (0..1000usize, 0..4u8, unit(), unit(), angles()),
+        (0..1000usize, 0..4u8, unit(), unit(), angles(), 0..4u8),
         (0.1..10.0_f64, unit(), [0.1..2.0_f64, 0.1..2.0, 0.1..2.0]),
         (
             angles(),
@@ -44,6 +47,7 @@ pub fn random_body() -> impl Strategy<Value = RandomBody> {
         .prop_map(|(a, b, c)| RandomBody {
             parent_seed: a.0,
             kind: a.1,
+            aligned: a.5 == 0,
             axis: a.2,
             offset: a.3,
             tilt: a.4,
@@ -69,15 +73,19 @@ fn joint(r: &RandomBody, index: usize) -> Joint {
 pub fn random_tree(bodies: &[RandomBody]) -> (Model, Vec<f64>, Vec<f64>) {
     let mut b = ModelBuilder::new(Vector3::new(0.3, -0.2, -9.81));
     for (i, r) in bodies.iter().enumerate() {
-        let rot = Rotation3::from_euler_angles(r.tilt[2], r.tilt[0], r.tilt[1]).into_inner();
+        let (rot, tilt) = if r.aligned {
+            (Matrix3::identity(), UnitQuaternion::identity())
+        } else {
+            (
+                Rotation3::from_euler_angles(r.tilt[2], r.tilt[0], r.tilt[1]).into_inner(),
+                UnitQuaternion::from_euler_angles(r.tilt[0], r.tilt[1], r.tilt[2]),
+            )
+        };
         b.add_body(Body {
             name: format!("b{i}"),
             parent: (i > 0 && r.parent_seed % (i + 1) < i).then(|| r.parent_seed % (i + 1)),
             joint: joint(r, i),
-            placement: Isometry3::from_parts(
-                Translation3::from(Vector3::from(r.offset)),
-                UnitQuaternion::from_euler_angles(r.tilt[0], r.tilt[1], r.tilt[2]),
-            ),
+            placement: Isometry3::from_parts(Translation3::from(Vector3::from(r.offset)), tilt),
             mass: r.mass,
             com: Vector3::from(r.com),
             inertia: rot * Matrix3::from_diagonal(&Vector3::from(r.moments)) * rot.transpose(),
