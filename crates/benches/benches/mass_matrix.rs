@@ -1,7 +1,7 @@
 //! Cost of one forward-dynamics evaluation (kinematics + CRBA + RNEA + sparse L^T D L
 //! solve) for the 14-DOF truck tree, and of CRBA, RNEA and the factorisation and solve
 //! alone.
-#[path = "../tests/support/vehicle.rs"]
+#[path = "../../multibody/tests/support/vehicle.rs"]
 mod vehicle;
 
 use criterion::{criterion_group, criterion_main, Criterion};
