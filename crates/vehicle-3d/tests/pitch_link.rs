@@ -202,3 +202,68 @@ fn a_mirrored_roll_gives_the_mirrored_response() {
         assert!((x + y).abs() <= 1e-2 * s, "{x} vs {y}");
     }
 }
+
+/// D1 and D2 of the two-axle HPS vehicle with and without the pitch link (the numbers of
+/// docs/layouts.md): `cargo test --release -p vehicle-3d --test pitch_link -- --ignored
+/// --nocapture`.
+#[test]
+#[ignore]
+fn d1_and_d2_with_and_without_the_pitch_link() {
+    use vehicle_3d::interconnect::{ride_linked, roll_linked};
+    use vehicle_3d::scenarios::{ride, roll, RideSpec, RollSpec};
+    let p = both_axles();
+    let link = Link::pitch_of(&p).unwrap();
+    let spec = RideSpec::d1(Load::Loaded, FrontAxle::Suspended);
+    let rms = |x: &[f64]| {
+        let m = x.iter().sum::<f64>() / x.len() as f64;
+        (x.iter().map(|v| (v - m) * (v - m)).sum::<f64>() / x.len() as f64).sqrt()
+    };
+    let i0 = |r: &vehicle_3d::RunRecord| {
+        r.t_s
+            .partition_point(|&t| t < vehicle_3d::scenarios::RUN_IN_M / (spec.speed_kmh / 3.6))
+    };
+    for seed in 1..=5u64 {
+        let (r0, m0) = ride(&p, &spec, seed).unwrap();
+        let (l1, m1) = ride_linked(&p, &spec, seed, &link).unwrap();
+        let r1 = &l1.record;
+        let pitch = |r: &vehicle_3d::RunRecord| rms(&suspension_pitch_travel_m(r)[i0(r)..]);
+        let lo = l1
+            .node_pressure_pa
+            .iter()
+            .flatten()
+            .fold(f64::MAX, |m, v| m.min(*v));
+        println!(
+            "D1 seed {seed}: a_wz {:.3} -> {:.3}, front travel p-p {:.3} -> {:.3} m, vertical peak {:.2} -> {:.2} Hz, pitch peak {:.2} -> {:.2} Hz, susp. pitch travel RMS {:.2} -> {:.2} mm, lowest node {:.2} MPa",
+            m0.a_wz_m_s2,
+            m1.a_wz_m_s2,
+            m0.strut_travel_p2p_m.unwrap(),
+            m1.strut_travel_p2p_m.unwrap(),
+            m0.vertical_peak_hz,
+            m1.vertical_peak_hz,
+            m0.pitch_peak_hz,
+            m1.pitch_peak_hz,
+            1e3 * pitch(&r0),
+            1e3 * pitch(r1),
+            lo / 1e6
+        );
+    }
+    let spec = RollSpec::d2(FrontAxle::Suspended);
+    for seed in 1..=3u64 {
+        let (_, m0) = roll(&p, &spec, seed).unwrap();
+        let (l1, m1) = roll_linked(&p, &spec, seed, &link).unwrap();
+        let lo = l1
+            .node_pressure_pa
+            .iter()
+            .flatten()
+            .fold(f64::MAX, |m, v| m.min(*v));
+        let hi = l1
+            .node_pressure_pa
+            .iter()
+            .flatten()
+            .fold(0.0f64, |m, v| m.max(*v));
+        println!(
+            "D2 seed {seed}: SP-DRT {:.3} -> {:.3} m/s², rollover {:?} -> {:?} s, node pressures {:.2}-{:.2} MPa",
+            m0.sp_drt_m_s2, m1.sp_drt_m_s2, m0.rollover_s, m1.rollover_s, lo / 1e6, hi / 1e6
+        );
+    }
+}

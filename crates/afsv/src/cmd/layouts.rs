@@ -47,7 +47,7 @@ pub struct LayoutArgs {
     /// rear struts pitch-interconnected; docs/layouts.md).
     #[arg(
         long,
-        default_value = "rigid,front-hps,front-rear-hps,front-roll,front-rear-roll"
+        default_value = "rigid,front-hps,front-rear-hps,front-roll,front-rear-roll,front-rear-pitch"
     )]
     pub layouts: String,
     /// The cab and seat of the seat rows: `generic` (docs/layouts.md), `off` (frame rows

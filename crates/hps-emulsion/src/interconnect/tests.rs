@@ -682,6 +682,24 @@ fn pitch_is_stiffer_than_bounce_by_the_hand_ratio() {
         c[0],
         c[1]
     );
+    // the hand model at the loaded static state of the prototype (5.228 MPa, -14.49 mm):
+    // the matrix, and bounce, pitch and their coupling u_b^T K u_p / 2
+    let (p_s, z_s) = (5.2276e6, -0.01449);
+    let k = pair.stiffness_matrix([p_s; 2], [z_s; 2]).unwrap();
+    let at_static = |u| pair.mode_stiffness([p_s; 2], [z_s; 2], u).unwrap();
+    println!(
+        "hand at the loaded static state (kN/m): K = [[{:.1}, {:.1}], [{:.1}, {:.1}]], bounce \
+         {:.1}, pitch {:.1}, pitch/bounce {:.3}, coupling {:.1}",
+        k[0][0] / 1e3,
+        k[0][1] / 1e3,
+        k[1][0] / 1e3,
+        k[1][1] / 1e3,
+        at_static(bounce) / 1e3,
+        at_static(pitch) / 1e3,
+        at_static(pitch) / at_static(bounce),
+        (k[0][0] - k[1][1]) / 2e3
+    );
+    assert_eq!(k[0][1], k[1][0], "a passive spring's matrix is symmetric");
     let close = |a: f64, b: f64, tol: f64| (a / b - 1.0).abs() < tol;
     assert!(close(kb0, plain_hand, 2e-3) && close(kp0, plain_hand, 2e-3));
     assert!(close(kb, hb, 2e-3), "{kb} {hb}");
