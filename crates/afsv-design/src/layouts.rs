@@ -658,7 +658,7 @@ mod tests {
             pitch_link: Some(lines),
             ..one[0].clone()
         };
-        let e = layouts(&[pitch.clone()], &good, &none).unwrap_err();
+        let e = layouts(std::slice::from_ref(&pitch), &good, &none).unwrap_err();
         assert!(e.to_string().contains("both axles"), "{e}");
         let mut both = pitch;
         both.params.rear_hps = Some(p.default_rear_strut().unwrap());
