@@ -18,7 +18,10 @@
 //! rod area. In roll (or pitch) one strut compresses while the other extends: both ends of
 //! a line push oil in, the accumulator sees `(2 A_hc - A_hr) z'`, and the pressure rise acts
 //! on the piston of one strut and the annulus of the other, both opposing the motion: the
-//! roll stiffness is `((2 A_hc - A_hr) / A_hr)^2` times the bounce stiffness.
+//! roll stiffness is `((2 A_hc - A_hr) / A_hr)^2` times the bounce stiffness. With two
+//! different struts (a front and a larger rear strut of a pitch link, each line with its own
+//! design) the two circuits differ: [`CrossCoupledPair::stiffness_matrix`] and
+//! [`CrossCoupledPair::circuit_pressures`] give the hand model and the statics.
 //!
 //! States per line: the accumulator's gas volume `V_a` (m^3). The node's continuity, the
 //! form of Eq 5.5 with the line's oil compressibility:
