@@ -85,6 +85,19 @@ impl Link {
     }
 }
 
+/// A line design alone is the front roll link (the runs below take either).
+impl From<&LineParams> for Link {
+    fn from(line: &LineParams) -> Self {
+        Self::Roll(*line)
+    }
+}
+
+impl From<&Link> for Link {
+    fn from(link: &Link) -> Self {
+        *link
+    }
+}
+
 /// One cross-coupled pair of the vehicle's struts: where its struts' and lines' states
 /// sit in the linked state, and how its struts move.
 #[derive(Debug)]
@@ -393,15 +406,15 @@ pub struct LinkedRun {
     pub node_pressure_pa: Vec<Vec<f64>>,
 }
 
-/// D1 (section 6.4) with the struts interconnected by `link`: the record and its
-/// measures, on the terrain of `seed` (the same tracks as [`crate::scenarios::ride`]).
+/// D1 (section 6.4) with the struts interconnected by `link` (a [`Link`], or a
+/// `&LineParams` for the front roll link): the record and its measures, on the terrain of `seed` (the same tracks as [`crate::scenarios::ride`]).
 pub fn ride_linked(
     p: &VehicleParams,
     spec: &RideSpec,
     seed: u64,
-    link: &Link,
+    link: impl Into<Link>,
 ) -> Result<(LinkedRun, RideMeasures), VehicleError> {
-    ride_linked_on(p, spec, ride_tracks(p, spec, seed)?, link)
+    ride_linked_on(p, spec, ride_tracks(p, spec, seed)?, link.into())
 }
 
 /// [`ride_linked`] on the enveloping cache `tracks` of [`crate::scenarios::ride_tracks`]
@@ -410,11 +423,11 @@ pub fn ride_linked_on(
     p: &VehicleParams,
     spec: &RideSpec,
     tracks: Arc<TireTracks>,
-    link: &Link,
+    link: impl Into<Link>,
 ) -> Result<(LinkedRun, RideMeasures), VehicleError> {
     let speed = spec.speed_kmh / 3.6;
     let v = Vehicle::on_tracks(p, spec.load, ride_options(spec), tracks)?;
-    let linked = LinkedVehicle::new(v, link)?;
+    let linked = LinkedVehicle::new(v, &link.into())?;
     let rec = linked.simulate_from(
         &linked.initial_state()?,
         &RunOptions {
@@ -432,9 +445,9 @@ pub fn roll_linked(
     p: &VehicleParams,
     spec: &RollSpec,
     seed: u64,
-    link: &Link,
+    link: impl Into<Link>,
 ) -> Result<(LinkedRun, RollMeasures), VehicleError> {
-    roll_linked_on(p, spec, roll_tracks(p, spec, seed)?, link)
+    roll_linked_on(p, spec, roll_tracks(p, spec, seed)?, link.into())
 }
 
 /// [`roll_linked`] on the enveloping cache `tracks` of [`crate::scenarios::roll_tracks`].
@@ -442,10 +455,10 @@ pub fn roll_linked_on(
     p: &VehicleParams,
     spec: &RollSpec,
     tracks: Arc<TireTracks>,
-    link: &Link,
+    link: impl Into<Link>,
 ) -> Result<(LinkedRun, RollMeasures), VehicleError> {
     let v = Vehicle::on_tracks(p, spec.load, roll_options(spec), tracks)?;
-    let linked = LinkedVehicle::new(v, link)?;
+    let linked = LinkedVehicle::new(v, &link.into())?;
     let rec = linked.simulate_from(
         &linked.initial_state()?,
         &RunOptions {
@@ -464,7 +477,7 @@ pub fn roll_linked_on(
 pub fn yaw_linked(
     p: &VehicleParams,
     spec: &YawSpec,
-    link: &Link,
+    link: impl Into<Link>,
 ) -> Result<(LinkedRun, YawMeasures), VehicleError> {
     if spec.terrain.is_some() {
         return Err(measure(
@@ -481,7 +494,7 @@ pub fn yaw_linked(
         &flat,
         0.5 * p.front_track_m,
     )?;
-    let linked = LinkedVehicle::new(v, link)?;
+    let linked = LinkedVehicle::new(v, &link.into())?;
     let rec = linked.simulate_from(
         &linked.initial_state()?,
         &RunOptions {

@@ -224,7 +224,7 @@ fn d1_and_d2_with_and_without_the_pitch_link() {
     };
     for seed in 1..=5u64 {
         let (r0, m0) = ride(&p, &spec, seed).unwrap();
-        let (l1, m1) = ride_linked(&p, &spec, seed, &link).unwrap();
+        let (l1, m1) = ride_linked(&p, &spec, seed, link).unwrap();
         let r1 = &l1.record;
         let pitch = |r: &vehicle_3d::RunRecord| rms(&suspension_pitch_travel_m(r)[i0(r)..]);
         let lo = l1
@@ -250,7 +250,7 @@ fn d1_and_d2_with_and_without_the_pitch_link() {
     let spec = RollSpec::d2(FrontAxle::Suspended);
     for seed in 1..=3u64 {
         let (_, m0) = roll(&p, &spec, seed).unwrap();
-        let (l1, m1) = roll_linked(&p, &spec, seed, &link).unwrap();
+        let (l1, m1) = roll_linked(&p, &spec, seed, link).unwrap();
         let lo = l1
             .node_pressure_pa
             .iter()

@@ -108,7 +108,7 @@ fn d1_and_d2_with_and_without_the_link() {
     };
     for seed in 1..=5u64 {
         let (r0, m0) = ride(&p, &spec, seed).unwrap();
-        let (l1, m1) = ride_linked(&p, &spec, seed, &line).unwrap();
+        let (l1, m1) = ride_linked(&p, &spec, seed, line).unwrap();
         let r1 = l1.record;
         let rms = |x: &[f64]| (x.iter().map(|v| v * v).sum::<f64>() / x.len() as f64).sqrt();
         println!(
@@ -130,7 +130,7 @@ fn d1_and_d2_with_and_without_the_link() {
     let spec = RollSpec::d2(FrontAxle::Suspended);
     for seed in 1..=3u64 {
         let (r0, m0) = roll(&p, &spec, seed).unwrap();
-        let (l1, m1) = roll_linked(&p, &spec, seed, &line).unwrap();
+        let (l1, m1) = roll_linked(&p, &spec, seed, line).unwrap();
         let r1 = &l1.record;
         let lo = l1
             .node_pressure_pa
@@ -286,7 +286,8 @@ fn the_linked_yaw_run_refuses_rough_ground() {
         terrain: Some(crate::scenarios::TerrainSpec::default()),
         ..YawSpec::d3(FrontAxle::Suspended)
     };
-    let e = yaw_linked(&p, &spec, &Link::Roll(LineParams::front_axle_roll())).unwrap_err();
+    // a line design alone is the front roll link
+    let e = yaw_linked(&p, &spec, &LineParams::front_axle_roll()).unwrap_err();
     assert!(e.to_string().contains("smooth ground"), "{e}");
 }
 
