@@ -2,7 +2,8 @@
 //! terrain seeds (section 6.4; the layouts of section 7.3's future work, docs/layouts.md).
 //!
 //! Each [`Layout`] is a parameter set of the 3-D vehicle (its rear strut, if any, in
-//! `rear_hps`) with its front axle and, optionally, the front struts' roll interconnection.
+//! `rear_hps`) with its front axle and, optionally, the front struts' roll interconnection
+//! or the front-rear (pitch) interconnection of each side's struts.
 //! On the same seeds, each layout runs
 //! - the ride (class E, m_c 0.3, 100 m after the run-in) at the question's speed and at
 //!   every D4 speed: a_wz on the frame (W_k, ISO 2631-1) and the strut travel d_s;
@@ -29,7 +30,7 @@ use perf_measures::iso2631::{health_guidance_zone, HgczRelation, HgczZone};
 use serde::Serialize;
 use std::sync::Arc;
 use vehicle_3d::cab_ride::{seat_ride_measures, CabSeatLayout};
-use vehicle_3d::interconnect::{ride_linked_on, roll_linked_on, yaw_linked};
+use vehicle_3d::interconnect::{ride_linked_on, roll_linked_on, yaw_linked, Link};
 use vehicle_3d::scenarios::{
     ride_on, ride_tracks, roll_on, roll_tracks, yaw, RideSpec, RollSpec, Spread, YawSpec, RUN_IN_M,
 };
@@ -52,6 +53,22 @@ pub struct Layout {
     /// The roll interconnection of the front struts (`vehicle_3d::interconnect`), if any;
     /// it needs the front-axle HPS.
     pub front_link: Option<LineParams>,
+    /// The pitch interconnection of each side's front and rear struts
+    /// (`vehicle_3d::interconnect::Link::Pitch`: the line at the front strut's piston side,
+    /// the line at the rear strut's), if any; it needs struts on both axles, and a layout
+    /// has at most one of the two links.
+    pub pitch_link: Option<[LineParams; 2]>,
+}
+
+impl Layout {
+    /// The layout's strut interconnection, if any.
+    pub fn link(&self) -> Option<Link> {
+        match (self.front_link, self.pitch_link) {
+            (Some(line), _) => Some(Link::Roll(line)),
+            (None, Some(lines)) => Some(Link::Pitch(lines)),
+            (None, None) => None,
+        }
+    }
 }
 
 /// What the study runs.
@@ -240,6 +257,24 @@ fn check(layouts: &[Layout], o: &LayoutOptions) -> Result<(), DesignError> {
             line.validate()
                 .map_err(|e| DesignError::Simulation(format!("layout `{}`: {e}", l.name)))?;
         }
+        if let Some(lines) = &l.pitch_link {
+            if l.front_link.is_some() {
+                return Err(DesignError::Simulation(format!(
+                    "layout `{}`: a layout takes the roll or the pitch interconnection, not both",
+                    l.name
+                )));
+            }
+            if l.front_axle != FrontAxle::Suspended || l.params.rear_hps.is_none() {
+                return Err(DesignError::Simulation(format!(
+                    "layout `{}`: the pitch interconnection needs struts on both axles",
+                    l.name
+                )));
+            }
+            for line in lines {
+                line.validate()
+                    .map_err(|e| DesignError::Simulation(format!("layout `{}`: {e}", l.name)))?;
+            }
+        }
     }
     if let (Some(s), Some(l)) = (&o.seat, layouts.first()) {
         s.build(&l.params)
@@ -302,11 +337,11 @@ pub fn layouts(
                     let l = &layouts[layout];
                     let spec = ride_spec(l, speeds[speed]);
                     let t = Arc::clone(&cache(layout, seed).ride);
-                    let (rec, m) = match &l.front_link {
+                    let (rec, m) = match &l.link() {
                         None => ride_on(&l.params, &spec, t).map_err(sim)?,
-                        Some(line) => {
+                        Some(link) => {
                             let (run, m) =
-                                ride_linked_on(&l.params, &spec, t, line).map_err(sim)?;
+                                ride_linked_on(&l.params, &spec, t, link).map_err(sim)?;
                             (run.record, m)
                         }
                     };
@@ -329,18 +364,18 @@ pub fn layouts(
                     let l = &layouts[layout];
                     let t = Arc::clone(&cache(layout, seed).roll);
                     let spec = RollSpec::d2(l.front_axle);
-                    let m = match &l.front_link {
+                    let m = match &l.link() {
                         None => roll_on(&l.params, &spec, t).map_err(sim)?.1,
-                        Some(line) => roll_linked_on(&l.params, &spec, t, line).map_err(sim)?.1,
+                        Some(link) => roll_linked_on(&l.params, &spec, t, link).map_err(sim)?.1,
                     };
                     Ok(Outcome::Roll(m.sp_drt_m_s2))
                 }
                 Job::Yaw { layout } => {
                     let l = &layouts[layout];
                     let spec = YawSpec::d3(l.front_axle);
-                    let m = match &l.front_link {
+                    let m = match &l.link() {
                         None => yaw(&l.params, &spec, 0).map_err(sim)?.1,
-                        Some(line) => yaw_linked(&l.params, &spec, line).map_err(sim)?.1,
+                        Some(link) => yaw_linked(&l.params, &spec, link).map_err(sim)?.1,
                     };
                     Ok(Outcome::Yaw(m.omega_z_hz))
                 }
@@ -579,6 +614,7 @@ mod tests {
             params: p.clone(),
             front_axle: FrontAxle::Rigid,
             front_link: None,
+            pitch_link: None,
         }];
         let good = LayoutOptions {
             load: Load::Loaded,
@@ -614,6 +650,22 @@ mod tests {
             assert!(layouts(&one, o, &none).is_err(), "{o:?}");
         }
         assert!(layouts(&[], &good, &none).is_err());
+        // a pitch link without rear struts, or with the roll link, is refused by name
+        let lines = LineParams::side_pitch(1.457).unwrap();
+        let pitch = Layout {
+            name: "front-pitch".into(),
+            front_axle: FrontAxle::Suspended,
+            pitch_link: Some(lines),
+            ..one[0].clone()
+        };
+        let e = layouts(std::slice::from_ref(&pitch), &good, &none).unwrap_err();
+        assert!(e.to_string().contains("both axles"), "{e}");
+        let mut both = pitch;
+        both.params.rear_hps = Some(p.default_rear_strut().unwrap());
+        assert!(both.link() == Some(Link::Pitch(lines)));
+        both.front_link = Some(LineParams::front_axle_roll());
+        let e = layouts(&[both], &good, &none).unwrap_err();
+        assert!(e.to_string().contains("not both"), "{e}");
         assert_eq!(all_speeds(&good), vec![10.0, 20.0, 30.0]);
         let extra = LayoutOptions {
             ride_speed_kmh: 25.0,

@@ -18,7 +18,10 @@
 //! rod area. In roll (or pitch) one strut compresses while the other extends: both ends of
 //! a line push oil in, the accumulator sees `(2 A_hc - A_hr) z'`, and the pressure rise acts
 //! on the piston of one strut and the annulus of the other, both opposing the motion: the
-//! roll stiffness is `((2 A_hc - A_hr) / A_hr)^2` times the bounce stiffness.
+//! roll stiffness is `((2 A_hc - A_hr) / A_hr)^2` times the bounce stiffness. With two
+//! different struts (a front and a larger rear strut of a pitch link, each line with its own
+//! design) the two circuits differ: [`CrossCoupledPair::stiffness_matrix`] and
+//! [`CrossCoupledPair::circuit_pressures`] give the hand model and the statics.
 //!
 //! States per line: the accumulator's gas volume `V_a` (m^3). The node's continuity, the
 //! form of Eq 5.5 with the line's oil compressibility:
@@ -41,6 +44,12 @@ pub fn sealed_piston(p: &StrutParams) -> StrutParams {
         ..*p
     }
 }
+
+/// Length of a pitch line from the accumulator at one axle's strut to the other axle's
+/// strut (m): the prototype's 5.12 m between the axles (1.68 m and 3.44 m from the
+/// articulation joint, Table 6.1) plus the routing along the frames and the hose loop that
+/// crosses the joint (assumption).
+pub const PITCH_LINE_M: f64 = 6.0;
 
 /// One end of a line: the length of line from the accumulator to the strut port and the
 /// port's orifice.
@@ -98,6 +107,48 @@ impl LineParams {
             accumulator_volume_m3: 8.4e-3,
             precharge_pa: 2.4e6,
         }
+    }
+
+    /// The generic pitch lines of one side (`docs/layouts.md`, "Pitch interconnection"):
+    /// `[line at the front strut's piston side, line at the rear strut's piston side]`, the
+    /// rear strut's areas `ratio` times the front's (the prototype's scaled rear strut:
+    /// 1.457). Each is [`LineParams::front_axle_roll`] with its long run [`PITCH_LINE_M`]
+    /// from the front axle to the rear one across the articulation joint, and every port and
+    /// accumulator at a rear-strut chamber `ratio` times the roll line's: at equal stroke
+    /// rates the ports then see the roll line's flows per unit area, so its pressure drops,
+    /// and each accumulator holds its piston-side strut's gas charge as in the roll line.
+    pub fn side_pitch(ratio: f64) -> Result<[Self; 2], HpsError> {
+        in_range(
+            "ratio",
+            ratio,
+            0.25,
+            4.0,
+            "rear-to-front strut area ratio between 0.25 and 4",
+        )?;
+        let roll = Self::front_axle_roll();
+        let long = LineEnd {
+            length_m: PITCH_LINE_M,
+            ..roll.rod_end
+        };
+        let at_front = Self {
+            rod_end: LineEnd {
+                port_area_m2: ratio * roll.rod_end.port_area_m2,
+                ..long
+            },
+            ..roll
+        };
+        let at_rear = Self {
+            piston_end: LineEnd {
+                port_area_m2: ratio * roll.piston_end.port_area_m2,
+                ..roll.piston_end
+            },
+            rod_end: long,
+            accumulator_volume_m3: ratio * roll.accumulator_volume_m3,
+            ..roll
+        };
+        at_front.validate()?;
+        at_rear.validate()?;
+        Ok([at_front, at_rear])
     }
 
     /// Validate every field (the error names it): positive areas and lengths, and values
@@ -321,11 +372,13 @@ impl HydraulicLine {
 
 /// Two struts cross-connected by two lines (module docs): line 0 joins strut 0's piston
 /// side (its accumulator end) to strut 1's rod side, line 1 strut 1's piston side to strut
-/// 0's rod side. State: strut 0's states, strut 1's, then the two accumulator gas volumes.
+/// 0's rod side. Circuit `k` is line `k` with the two chambers it joins. State: strut 0's
+/// states, strut 1's, then the two accumulator gas volumes. The struts may differ (a front
+/// and a rear strut of a pitch interconnection); so may the lines.
 #[derive(Debug, Clone, PartialEq)]
 pub struct CrossCoupledPair {
     struts: [HpsStrut; 2],
-    line: HydraulicLine,
+    lines: [HydraulicLine; 2],
     n0: usize,
     n1: usize,
 }
@@ -341,9 +394,17 @@ pub struct PairOutputs {
 
 impl CrossCoupledPair {
     /// The pair of two struts (each validated as [`HpsStrut::ported`], so a sealed piston is
-    /// accepted) and one line design for both lines. The struts must share the oil and the
-    /// gas exponent (the lines carry their oil).
+    /// accepted) and one line design for both lines (a roll interconnection of two equal
+    /// struts). The struts must share the oil and the gas exponent (the lines carry their
+    /// oil).
     pub fn new(struts: [HpsStrut; 2], line: &LineParams) -> Result<Self, HpsError> {
+        Self::with_lines(struts, [line, line])
+    }
+
+    /// The pair with its own design for each line: `lines[k]` is line `k`, whose
+    /// accumulator sits at strut `k`'s piston side (a pitch interconnection of a front and
+    /// a larger rear strut, [`LineParams::side_pitch`]).
+    pub fn with_lines(struts: [HpsStrut; 2], lines: [&LineParams; 2]) -> Result<Self, HpsError> {
         let (a, b) = (struts[0].params(), struts[1].params());
         if a.rho_h != b.rho_h || a.beta_h != b.beta_h || a.n != b.n {
             return Err(HpsError::InvalidParameter {
@@ -352,11 +413,14 @@ impl CrossCoupledPair {
                 reason: "the interconnected struts must share the oil and gas (rho_h, beta_h, n)",
             });
         }
-        let line = HydraulicLine::new(line, a)?;
+        let lines = [
+            HydraulicLine::new(lines[0], a)?,
+            HydraulicLine::new(lines[1], a)?,
+        ];
         let (n0, n1) = (struts[0].n_states(), struts[1].n_states());
         Ok(Self {
             struts,
-            line,
+            lines,
             n0,
             n1,
         })
@@ -367,9 +431,9 @@ impl CrossCoupledPair {
         &self.struts
     }
 
-    /// The line model both lines share.
-    pub fn line(&self) -> &HydraulicLine {
-        &self.line
+    /// Line `k` (0 or 1).
+    pub fn line(&self, k: usize) -> &HydraulicLine {
+        &self.lines[k]
     }
 
     /// Number of states: both struts' plus two.
@@ -377,17 +441,32 @@ impl CrossCoupledPair {
         self.n0 + self.n1 + 2
     }
 
+    /// Index of strut `k`'s first state in the pair's state.
+    pub fn strut_state(&self, k: usize) -> usize {
+        if k == 0 {
+            0
+        } else {
+            self.n0
+        }
+    }
+
     /// Index of line `k`'s accumulator gas volume in the state.
     pub fn line_state(&self, k: usize) -> usize {
         self.n0 + self.n1 + k
     }
 
-    /// The rest state at pressure `p` (Pa) in every chamber and both accumulators: the
-    /// static equilibrium of the pair (the oil in each circuit is what this state holds, so
-    /// it is the equilibrium at whatever deflections the struts are at). Errors when `p`
-    /// does not exceed the precharge or the vapour pressure, or the buffer has the wrong
-    /// length.
+    /// The rest state at pressure `p` (Pa) in every chamber and both accumulators
+    /// ([`CrossCoupledPair::rest_state_at`] with both circuits at `p`).
     pub fn rest_state(&self, p: f64, state: &mut [f64]) -> Result<(), HpsError> {
+        self.rest_state_at([p, p], state)
+    }
+
+    /// The rest state with circuit `k` (line `k`'s node, strut `k`'s piston side and the
+    /// other strut's rod side) at pressure `p[k]` (Pa): the static equilibrium of the pair
+    /// (the oil in each circuit is what this state holds, so it is the equilibrium at
+    /// whatever deflections the struts are at). Errors when a pressure does not exceed its
+    /// line's precharge or the vapour pressure, or the buffer has the wrong length.
+    pub fn rest_state_at(&self, p: [f64; 2], state: &mut [f64]) -> Result<(), HpsError> {
         if state.len() != self.n_states() {
             return Err(HpsError::InvalidExcitation(format!(
                 "state buffer has {} entries, the pair has {}",
@@ -397,10 +476,15 @@ impl CrossCoupledPair {
         }
         let (s0, rest) = state.split_at_mut(self.n0);
         let (s1, lines) = rest.split_at_mut(self.n1);
-        self.struts[0].rest_state_at_pressure(p, s0)?;
-        self.struts[1].rest_state_at_pressure(p, s1)?;
-        let v = self.line.gas_volume_at(p)?;
-        lines.fill(v);
+        // each pressure is checked by the strut whose piston side it fills
+        for (k, s) in [s0, s1].into_iter().enumerate() {
+            self.struts[k].rest_state_at_pressure(p[k], s)?;
+            // the rod side's state is its pressure (Eq 5.6): the other circuit's
+            s[ROD_PRESSURE] = p[1 - k];
+        }
+        for k in 0..2 {
+            lines[k] = self.lines[k].gas_volume_at(p[k])?;
+        }
         Ok(())
     }
 
@@ -419,8 +503,8 @@ impl CrossCoupledPair {
         let (pc0, pr0) = self.struts[0].chamber_pressures(s0);
         let (pc1, pr1) = self.struts[1].chamber_pressures(s1);
         // line 0: strut 0's piston side to strut 1's rod side; line 1 the mirror
-        let l0 = self.line.evaluate(lines[0], pc0, pr1);
-        let l1 = self.line.evaluate(lines[1], pc1, pr0);
+        let l0 = self.lines[0].evaluate(lines[0], pc0, pr1);
+        let l1 = self.lines[1].evaluate(lines[1], pc1, pr0);
         let (d0, rest) = dstate.split_at_mut(self.n0);
         let (d1, dlines) = rest.split_at_mut(self.n1);
         let in0 = ChamberInflow {
@@ -441,28 +525,79 @@ impl CrossCoupledPair {
         }
     }
 
-    /// Hand-derived quasi-static stiffnesses `(bounce, roll)` per strut (N/m) of the pair at
-    /// rest at pressure `p` with both struts at deflection `z` (`docs/layouts.md`): with `C` the compliance of one circuit
-    /// (the piston side's gas and emulsion of one strut, the other's rod-side emulsion, the
-    /// accumulator and the line oil), `k_bounce = A_hr^2 / C` and
-    /// `k_roll = (A_hc + (A_hc - A_hr))^2 / C`. Equal struts only.
-    pub fn hand_stiffness(&self, p: f64, z: f64) -> Result<(f64, f64), HpsError> {
-        let sp = self.struts[0].params();
-        if self.struts[0].params() != self.struts[1].params() {
-            return Err(HpsError::InvalidParameter {
-                field: "struts",
-                value: f64::NAN,
-                reason: "the hand stiffness is derived for two equal struts",
-            });
+    /// The circuit pressures (Pa) at which the pair at rest carries what its struts carry
+    /// at rest alone with both chambers of strut `k` at `strut_p[k]`, the pressure force
+    /// `(P_k - p_amb) A_hr,k` (Eq 5.1). Eq 5.1 for both struts, with circuit `k` at `Q_k`,
+    /// `Q_0 A_hc,0 - Q_1 A_ann,0 = P_0 A_hr,0` and `Q_1 A_hc,1 - Q_0 A_ann,1 = P_1 A_hr,1`,
+    /// solve to
+    /// `Q_0 = P_0 + (P_1 - P_0) A_ann,0 A_hr,1 / D`, `Q_1 = P_1 - (P_1 - P_0) A_ann,1 A_hr,0 / D`,
+    /// `D = A_hc,0 A_hc,1 - A_ann,0 A_ann,1 > 0`: the struts' own pressures when they are
+    /// equal (the similar struts of a loaded vehicle), otherwise the circuits share the
+    /// difference.
+    pub fn circuit_pressures(&self, strut_p: [f64; 2]) -> [f64; 2] {
+        let [a, b] = [self.struts[0].params(), self.struts[1].params()];
+        let d = a.a_hc * b.a_hc - a.a_ann() * b.a_ann();
+        let dp = strut_p[1] - strut_p[0];
+        [
+            strut_p[0] + dp * a.a_ann() * b.a_hr / d,
+            strut_p[1] - dp * b.a_ann() * a.a_hr / d,
+        ]
+    }
+
+    /// Hand-derived quasi-static stiffness matrix (N/m) of the pair at rest with circuit
+    /// `k` at pressure `p[k]` and the struts at deflections `z` (`docs/layouts.md`):
+    /// `K = G^T diag(1/C_0, 1/C_1) G`, `G = [[A_hc,0, -A_ann,1], [-A_ann,0, A_hc,1]]`
+    /// (row `k`: the oil the struts' compressions push into circuit `k`), `C_k` the
+    /// compliance of circuit `k` (strut `k`'s piston side gas and emulsion, the other
+    /// strut's rod-side emulsion, line `k`'s accumulator and oil); `dF = K dz`.
+    pub fn stiffness_matrix(&self, p: [f64; 2], z: [f64; 2]) -> Result<[[f64; 2]; 2], HpsError> {
+        let mut s = [0.0; MAX_PAIR_STATES];
+        let n = self.n_states();
+        if n > MAX_PAIR_STATES {
+            return Err(HpsError::InvalidExcitation(format!(
+                "the pair has {n} states, the hand stiffness takes up to {MAX_PAIR_STATES}"
+            )));
         }
-        let mut s = vec![0.0; self.n0];
-        self.struts[0].rest_state_at_pressure(p, &mut s)?;
-        let strut = self.struts[0].chamber_compliances(z, &s);
-        let c = strut.piston + strut.rod + self.line.compliance(self.line.gas_volume_at(p)?);
-        let a_ann = sp.a_hc - sp.a_hr;
-        Ok((sp.a_hr * sp.a_hr / c, (sp.a_hc + a_ann).powi(2) / c))
+        self.rest_state_at(p, &mut s[..n])?;
+        let c = [0, 1].map(|k| {
+            let at = self.strut_state(k);
+            self.struts[k].chamber_compliances(z[k], &s[at..at + self.struts[k].n_states()])
+        });
+        let circuit = [0, 1]
+            .map(|k| c[k].piston + c[1 - k].rod + self.lines[k].compliance(s[self.line_state(k)]));
+        let [a, b] = [self.struts[0].params(), self.struts[1].params()];
+        let g = [[a.a_hc, -b.a_ann()], [-a.a_ann(), b.a_hc]];
+        let mut k = [[0.0; 2]; 2];
+        for (i, row) in k.iter_mut().enumerate() {
+            for (j, kij) in row.iter_mut().enumerate() {
+                *kij = (0..2).map(|c| g[c][i] * g[c][j] / circuit[c]).sum();
+            }
+        }
+        Ok(k)
+    }
+
+    /// Hand-derived quasi-static stiffness (N/m per strut) of the motion `shape` (bounce
+    /// `[1, 1]`; roll or pitch `[1, -1]`): the Rayleigh quotient `u^T K u / u^T u` of
+    /// [`CrossCoupledPair::stiffness_matrix`]. For two equal struts at one pressure it is
+    /// `A_hr^2 / C` in bounce and `(A_hc + A_ann)^2 / C` against it.
+    pub fn mode_stiffness(
+        &self,
+        p: [f64; 2],
+        z: [f64; 2],
+        shape: [f64; 2],
+    ) -> Result<f64, HpsError> {
+        let k = self.stiffness_matrix(p, z)?;
+        let ku = [0, 1].map(|i| k[i][0] * shape[0] + k[i][1] * shape[1]);
+        Ok((shape[0] * ku[0] + shape[1] * ku[1]) / (shape[0] * shape[0] + shape[1] * shape[1]))
     }
 }
+
+/// Largest pair state [`CrossCoupledPair::stiffness_matrix`] takes (two struts with every
+/// extension and two lines).
+const MAX_PAIR_STATES: usize = 18;
+
+/// Index of the rod-side pressure in a strut's state (Eq 5.6's state, [`HpsStrut`]).
+const ROD_PRESSURE: usize = 1;
 
 #[cfg(test)]
 mod tests;

@@ -1,16 +1,22 @@
-//! Roll interconnection of the two front struts (issue 23, `docs/layouts.md`,
-//! "Interconnected struts"): the front-axle HPS with each strut's piston sealed and two
-//! cross lines with accumulators ([`hps_emulsion::interconnect`]) joining the left strut's
-//! piston side to the right strut's rod side and the mirror.
+//! Hydraulic interconnection of the 3-D vehicle's struts (issue 23, `docs/layouts.md`,
+//! "Interconnected struts" and "Pitch interconnection"): struts with sealed pistons joined
+//! in cross-coupled pairs by two lines with accumulators each
+//! ([`hps_emulsion::interconnect`]), a line joining one strut's piston side to the other's
+//! rod side.
 //!
-//! [`LinkedVehicle`] extends a [`Vehicle`] built with the front-axle HPS: its state is the
-//! vehicle's with the two accumulator gas volumes appended. The vehicle's right-hand side
+//! - [`Link::Roll`]: the two front struts (left-right), one pair.
+//! - [`Link::Pitch`]: on each side the front and the rear strut (front-rear), two pairs; the
+//!   vehicle has struts on both axles.
+//!
+//! [`LinkedVehicle`] extends a [`Vehicle`] with suspended axles: its state is the vehicle's
+//! with each pair's two accumulator gas volumes appended. The vehicle's right-hand side
 //! gives everything (the strut forces depend on the chamber pressures, friction and travel,
-//! not on the flow paths, so they are the vehicle's own); the struts' state rates are then
-//! replaced by those of the interconnected pair, and the accumulators' rates appended. The
+//! not on the flow paths, so they are the vehicle's own); the linked struts' state rates
+//! are then replaced by those of their pair, and the accumulators' rates appended. The
 //! vehicle without a link is untouched: nothing here runs in its right-hand side. The
-//! Rosenbrock-W method treats the two struts and both lines as one implicit block (the
-//! lines couple the rod side of one strut to the other's piston side).
+//! Rosenbrock-W method treats each pair's two struts and two lines as one implicit block
+//! (the lines couple the rod side of one strut to the other's piston side); a strut outside
+//! every pair keeps its own block.
 
 use hps_emulsion::interconnect::{sealed_piston, CrossCoupledPair, LineParams};
 use hps_emulsion::HpsStrut;
@@ -27,55 +33,223 @@ use crate::scenarios::{
     YawSpec, OUTPUT_DT_S, RUN_IN_M,
 };
 use crate::simulate::{simulate_system, typical, RunOptions, RunRecord};
+use crate::suspension::AxleStruts;
 use crate::tires::TireTracks;
 use crate::vehicle::{Vehicle, VehicleOptions};
 use std::sync::Arc;
 
-/// Largest state count of one strut the pair block holds (the strut with every extension
+/// Largest state count of one strut a pair block holds (the strut with every extension
 /// has 5).
 const MAX_STRUT_STATES: usize = 8;
 /// Largest pair state: two struts and two lines.
 const MAX_PAIR: usize = 2 * MAX_STRUT_STATES + 2;
 
-/// A front-HPS vehicle with its front struts cross-connected (module docs).
+/// Which struts are interconnected, and by which lines.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub enum Link {
+    /// The two front struts, left-right: one line design for both lines
+    /// ([`LineParams::front_axle_roll`]).
+    Roll(LineParams),
+    /// On each side the front and the rear strut: `[the line at the front strut's piston
+    /// side, the line at the rear strut's piston side]`, both sides alike
+    /// ([`LineParams::side_pitch`], [`Link::pitch_of`]).
+    Pitch([LineParams; 2]),
+}
+
+impl Link {
+    /// The generic pitch link of `p`, whose rear axle is suspended
+    /// ([`VehicleParams::rear_hps`]): [`LineParams::side_pitch`] at the ratio of the rear
+    /// strut's rod area to the front strut's (1.457 for the prototype's scaled rear strut).
+    pub fn pitch_of(p: &VehicleParams) -> Result<Self, VehicleError> {
+        let rear = p.rear_hps.ok_or_else(|| {
+            rejected(
+                "rear_hps",
+                f64::NAN,
+                "the pitch interconnection needs struts on the rear axle",
+            )
+        })?;
+        Ok(Self::Pitch(LineParams::side_pitch(rear.a_hr / p.hps.a_hr)?))
+    }
+
+    /// Validate the lines (the error names the field).
+    pub fn validate(&self) -> Result<(), VehicleError> {
+        match self {
+            Self::Roll(l) => l.validate()?,
+            Self::Pitch(ls) => {
+                for l in ls {
+                    l.validate()?;
+                }
+            }
+        }
+        Ok(())
+    }
+}
+
+/// A line design alone is the front roll link (the runs below take either).
+impl From<&LineParams> for Link {
+    fn from(line: &LineParams) -> Self {
+        Self::Roll(*line)
+    }
+}
+
+impl From<&Link> for Link {
+    fn from(link: &Link) -> Self {
+        *link
+    }
+}
+
+/// One cross-coupled pair of the vehicle's struts: where its struts' and lines' states
+/// sit in the linked state, and how its struts move.
+#[derive(Debug)]
+struct LinkedPair {
+    pair: CrossCoupledPair,
+    /// Each strut's first state in the vehicle's state.
+    states_at: [usize; 2],
+    /// Each strut's carrier joint `(q, v)`.
+    carrier: [(usize, usize); 2],
+    /// Each strut's static travel (m).
+    static_travel: [f64; 2],
+    /// The pair's first accumulator state (line 0; line 1 follows).
+    lines_at: usize,
+}
+
+impl LinkedPair {
+    /// The pair of `axles[k]`'s strut on side `sides[k]`, lines `lines`, its accumulators
+    /// at `lines_at`.
+    fn new(
+        axles: [&AxleStruts; 2],
+        sides: [usize; 2],
+        lines: [&LineParams; 2],
+        lines_at: usize,
+    ) -> Result<Self, VehicleError> {
+        let mut struts = Vec::with_capacity(2);
+        for a in axles {
+            let s = HpsStrut::ported(&sealed_piston(a.strut.params()), a.strut.extensions())?;
+            if s.n_states() > MAX_STRUT_STATES {
+                return Err(rejected(
+                    "hps",
+                    s.n_states() as f64,
+                    "too many strut states",
+                ));
+            }
+            struts.push(s);
+        }
+        let struts: [HpsStrut; 2] = [struts[0].clone(), struts[1].clone()];
+        Ok(Self {
+            pair: CrossCoupledPair::with_lines(struts, lines)?,
+            states_at: [0, 1].map(|k| axles[k].states(sides[k]).start),
+            carrier: [0, 1].map(|k| axles[k].carriers[sides[k]]),
+            static_travel: axles.map(|a| a.static_travel_m),
+            lines_at,
+        })
+    }
+
+    /// The pair's state indices in the linked state, in the pair's order.
+    fn block(&self) -> Vec<usize> {
+        let mut b = Vec::with_capacity(self.pair.n_states());
+        for k in 0..2 {
+            let n = self.pair.struts()[k].n_states();
+            b.extend(self.states_at[k]..self.states_at[k] + n);
+        }
+        b.extend([self.lines_at, self.lines_at + 1]);
+        b
+    }
+
+    /// The pair's state gathered from `y` (velocities from `v_at`), and the struts'
+    /// travels and rates.
+    #[inline]
+    fn gather(
+        &self,
+        y: &[f64],
+        v_at: usize,
+        s: &mut [f64; MAX_PAIR],
+    ) -> ([f64; 2], [f64; 2], usize) {
+        let mut m = 0;
+        for k in 0..2 {
+            let n = self.pair.struts()[k].n_states();
+            s[m..m + n].copy_from_slice(&y[self.states_at[k]..self.states_at[k] + n]);
+            m += n;
+        }
+        s[m..m + 2].copy_from_slice(&y[self.lines_at..self.lines_at + 2]);
+        let z = [0, 1].map(|k| self.static_travel[k] + y[self.carrier[k].0]);
+        let zdot = self.carrier.map(|(_, vi)| y[v_at + vi]);
+        (z, zdot, m + 2)
+    }
+
+    /// The pair's rates `d` (in the pair's order) scattered into `dydt`.
+    #[inline]
+    fn scatter(&self, d: &[f64], dydt: &mut [f64]) {
+        let mut m = 0;
+        for k in 0..2 {
+            let n = self.pair.struts()[k].n_states();
+            dydt[self.states_at[k]..self.states_at[k] + n].copy_from_slice(&d[m..m + n]);
+            m += n;
+        }
+        dydt[self.lines_at..self.lines_at + 2].copy_from_slice(&d[m..m + 2]);
+    }
+}
+
+/// A vehicle with struts interconnected by a [`Link`] (module docs).
 #[derive(Debug)]
 pub struct LinkedVehicle {
     vehicle: Vehicle,
-    pair: CrossCoupledPair,
-    carrier: [(usize, usize); 2],
+    link: Link,
+    pairs: Vec<LinkedPair>,
     blocks: Vec<Vec<usize>>,
+    /// The vehicle's own stiff blocks kept (struts outside every pair), by the vehicle's
+    /// block index, after the pairs' blocks.
+    own_blocks: Vec<usize>,
 }
 
 impl LinkedVehicle {
-    /// Link the front struts of `vehicle` (built with [`FrontAxle::Suspended`]) by two lines
-    /// of `line`: the struts become [`HpsStrut::ported`] with sealed pistons, their other
-    /// parameters and extensions the vehicle's.
-    pub fn new(vehicle: Vehicle, line: &LineParams) -> Result<Self, VehicleError> {
-        let (Some(strut), Some(carrier)) = (vehicle.hps_strut(), vehicle.joints().carrier) else {
-            return Err(rejected(
-                "front_link",
-                f64::NAN,
-                "the roll interconnection needs the front-axle HPS",
-            ));
+    /// Link the struts of `vehicle` by `link`: [`Link::Roll`] needs the front-axle HPS
+    /// ([`FrontAxle::Suspended`]), [`Link::Pitch`] struts on both axles. The linked struts
+    /// become [`HpsStrut::ported`] with sealed pistons, their other parameters and
+    /// extensions the vehicle's.
+    pub fn new(vehicle: Vehicle, link: &Link) -> Result<Self, VehicleError> {
+        link.validate()?;
+        let dim = vehicle.offsets().dim;
+        let [front, rear] = vehicle.axle_struts();
+        let (pairs, own_blocks) = match (link, front, rear) {
+            (Link::Roll(line), Some(f), _) => (
+                vec![LinkedPair::new([f, f], [0, 1], [line, line], dim)?],
+                (2..vehicle.stiff_blocks().len()).collect(),
+            ),
+            (Link::Pitch([at_front, at_rear]), Some(f), Some(r)) => (
+                (0..2)
+                    .map(|side| {
+                        LinkedPair::new([f, r], [side, side], [at_front, at_rear], dim + 2 * side)
+                    })
+                    .collect::<Result<Vec<_>, _>>()?,
+                Vec::new(),
+            ),
+            (Link::Roll(_), None, _) => {
+                return Err(rejected(
+                    "link",
+                    f64::NAN,
+                    "the roll interconnection needs the front-axle HPS",
+                ))
+            }
+            (Link::Pitch(_), _, _) => {
+                return Err(rejected(
+                    "link",
+                    f64::NAN,
+                    "the pitch interconnection needs struts on both axles",
+                ))
+            }
         };
-        let ported = HpsStrut::ported(&sealed_piston(strut.params()), strut.extensions())?;
-        let n = ported.n_states();
-        if n > MAX_STRUT_STATES {
-            return Err(rejected("hps", n as f64, "too many strut states"));
-        }
-        let pair = CrossCoupledPair::new([ported.clone(), ported], line)?;
-        let o = vehicle.offsets();
-        let mut block: Vec<usize> = (o.hps..o.hps + 2 * n).collect();
-        block.extend([o.dim, o.dim + 1]);
-        // the pair first, then the vehicle's own blocks after its two front struts' (the
-        // rear struts of a vehicle suspended on both axles)
-        let mut blocks = vec![block];
-        blocks.extend(vehicle.stiff_blocks().iter().skip(2).cloned());
+        let mut blocks: Vec<Vec<usize>> = pairs.iter().map(LinkedPair::block).collect();
+        blocks.extend(
+            own_blocks
+                .iter()
+                .map(|&b| vehicle.stiff_blocks()[b].clone()),
+        );
         Ok(Self {
             vehicle,
-            pair,
-            carrier,
+            link: *link,
+            pairs,
             blocks,
+            own_blocks,
         })
     }
 
@@ -84,44 +258,53 @@ impl LinkedVehicle {
         &self.vehicle
     }
 
-    /// The interconnected strut pair.
-    pub fn pair(&self) -> &CrossCoupledPair {
-        &self.pair
+    /// The link.
+    pub fn link(&self) -> &Link {
+        &self.link
     }
 
-    /// The static state: the vehicle's (both struts at their static pressure) with both
-    /// accumulators at that pressure.
+    /// The interconnected strut pairs: [`Link::Roll`] one (left strut, right strut),
+    /// [`Link::Pitch`] two (left side, right side; each front strut, rear strut).
+    pub fn pairs(&self) -> impl Iterator<Item = &CrossCoupledPair> {
+        self.pairs.iter().map(|p| &p.pair)
+    }
+
+    /// Index of pair `i`'s line `k` accumulator state in the linked state.
+    pub fn line_state(&self, i: usize, k: usize) -> usize {
+        self.pairs[i].lines_at + k
+    }
+
+    /// The static state: the vehicle's, every strut at its static travel carrying its
+    /// static force, with each pair's circuits at the pressures
+    /// ([`CrossCoupledPair::circuit_pressures`]) at which the pair carries what its struts
+    /// carry alone at their static pressures (the lines charged at the static state). When
+    /// a pair's struts rest at one pressure this is the vehicle's state with the
+    /// accumulators at that pressure: bit for bit for the roll pair (one strut design), to
+    /// round-off for the pitch pairs of a loaded vehicle with the similar rear strut.
     pub fn initial_state(&self) -> Result<Vec<f64>, VehicleError> {
         let mut y = self.vehicle.initial_state();
-        let p_s = y[self.vehicle.offsets().hps + 1];
-        if !p_s.is_finite() {
-            return Err(rejected(
-                "hps",
-                p_s,
-                "no static equilibrium of the front struts",
-            ));
+        y.resize(self.dim(), 0.0);
+        let mut s = [0.0; MAX_PAIR];
+        for lp in &self.pairs {
+            // at rest a strut's rod-side state is its (static) pressure
+            let p = lp.states_at.map(|at| y[at + 1]);
+            if !p.iter().all(|v| v.is_finite()) {
+                return Err(rejected(
+                    "hps",
+                    f64::NAN,
+                    "no static equilibrium of the linked struts",
+                ));
+            }
+            let q = lp.pair.circuit_pressures(p);
+            let m = lp.pair.n_states();
+            lp.pair.rest_state_at(q, &mut s[..m])?;
+            lp.scatter(&s[..m], &mut y);
         }
-        let v = self.pair.line().gas_volume_at(p_s)?;
-        y.extend([v, v]);
         Ok(y)
     }
 
-    /// The pair's state (left strut, right strut, both lines) gathered from `y`, and the
-    /// struts' travels and rates.
-    #[inline]
-    fn gather(&self, y: &[f64], s: &mut [f64; MAX_PAIR]) -> ([f64; 2], [f64; 2], usize) {
-        let o = self.vehicle.offsets();
-        let n2 = 2 * o.hps_states;
-        s[..n2].copy_from_slice(&y[o.hps..o.hps + n2]);
-        s[n2..n2 + 2].copy_from_slice(&y[o.dim..o.dim + 2]);
-        let z0 = self.vehicle.hps_static_travel_m();
-        let z = self.carrier.map(|(qi, _)| z0 + y[o.q + qi]);
-        let zdot = self.carrier.map(|(_, vi)| y[o.v + vi]);
-        (z, zdot, n2 + 2)
-    }
-
     /// Run from `y0` (the state of [`LinkedVehicle::initial_state`], perhaps perturbed),
-    /// recorded as the vehicle's run with the two lines' node pressures.
+    /// recorded as the vehicle's run with every line's node pressure.
     pub fn simulate_from(
         &self,
         y0: &[f64],
@@ -129,13 +312,16 @@ impl LinkedVehicle {
     ) -> Result<LinkedRun, VehicleError> {
         let dim = self.vehicle.offsets().dim;
         let mut t = typical(&self.vehicle);
-        let v = y0[dim];
-        t.extend([v, v]);
-        let line = self.pair.line();
-        let mut node = [Vec::new(), Vec::new()];
+        t.extend_from_slice(&y0[dim..]);
+        let lines: Vec<(usize, &hps_emulsion::HydraulicLine)> = self
+            .pairs
+            .iter()
+            .flat_map(|lp| (0..2).map(move |k| (lp.lines_at + k, lp.pair.line(k))))
+            .collect();
+        let mut node = vec![Vec::new(); lines.len()];
         let record = simulate_system(&self.vehicle, self, y0, t, options, |y| {
-            for (k, ch) in node.iter_mut().enumerate() {
-                ch.push(line.pressure(y[dim + k]));
+            for (ch, (at, line)) in node.iter_mut().zip(&lines) {
+                ch.push(line.pressure(y[*at]));
             }
         })?;
         Ok(LinkedRun {
@@ -147,7 +333,7 @@ impl LinkedVehicle {
 
 impl OdeSystem for LinkedVehicle {
     fn dim(&self) -> usize {
-        self.vehicle.offsets().dim + 2
+        self.vehicle.offsets().dim + 2 * self.pairs.len()
     }
 
     fn rhs(&self, t: f64, y: &[f64], dydt: &mut [f64]) {
@@ -155,11 +341,11 @@ impl OdeSystem for LinkedVehicle {
         self.vehicle.rhs(t, &y[..o.dim], &mut dydt[..o.dim]);
         let mut s = [0.0; MAX_PAIR];
         let mut d = [0.0; MAX_PAIR];
-        let (z, zdot, m) = self.gather(y, &mut s);
-        self.pair.evaluate(z, zdot, &s[..m], &mut d[..m]);
-        let n2 = m - 2;
-        dydt[o.hps..o.hps + n2].copy_from_slice(&d[..n2]);
-        dydt[o.dim..o.dim + 2].copy_from_slice(&d[n2..m]);
+        for lp in &self.pairs {
+            let (z, zdot, m) = lp.gather(y, o.v, &mut s);
+            lp.pair.evaluate(z, zdot, &s[..m], &mut d[..m]);
+            lp.scatter(&d[..m], dydt);
+        }
         if dydt[..o.dim].iter().any(|v| v.is_nan()) {
             dydt.fill(f64::NAN);
         }
@@ -169,30 +355,35 @@ impl OdeSystem for LinkedVehicle {
         &self.blocks
     }
 
-    /// The pair block's Jacobian by forward differences of the pair's evaluate with the
-    /// struts' travels and rates held; a rear strut's block is the vehicle's own.
+    /// A pair block's Jacobian by forward differences of the pair's evaluate with the
+    /// struts' travels and rates held; a kept strut's block is the vehicle's own.
     fn block_jacobian(&self, t: f64, y: &[f64], block: usize, jac: &mut [f64]) -> bool {
-        if block != 0 {
+        let Some(lp) = self.pairs.get(block) else {
             let dim = self.vehicle.offsets().dim;
-            return block < self.blocks.len()
-                && self.vehicle.block_jacobian(t, &y[..dim], block + 1, jac);
-        }
+            return match self.own_blocks.get(block - self.pairs.len()) {
+                Some(&b) => self.vehicle.block_jacobian(t, &y[..dim], b, jac),
+                None => false,
+            };
+        };
         let mut s = [0.0; MAX_PAIR];
-        let (z, zdot, m) = self.gather(y, &mut s);
+        let (z, zdot, m) = lp.gather(y, self.vehicle.offsets().v, &mut s);
         let (mut f0, mut f1) = ([0.0; MAX_PAIR], [0.0; MAX_PAIR]);
-        self.pair.evaluate(z, zdot, &s[..m], &mut f0[..m]);
-        let strut = &self.pair.struts()[0];
-        let n = strut.n_states();
+        lp.pair.evaluate(z, zdot, &s[..m], &mut f0[..m]);
+        let [s0, s1] = lp.pair.struts();
+        let n0 = s0.n_states();
+        let n01 = n0 + s1.n_states();
         for c in 0..m {
-            let typical = if c < 2 * n {
-                strut.state_typical(c % n)
+            let typical = if c < n0 {
+                s0.state_typical(c)
+            } else if c < n01 {
+                s1.state_typical(c - n0)
             } else {
                 s[c].abs()
             };
             let base = s[c];
             let h = f64::EPSILON.sqrt() * base.abs().max(typical);
             s[c] = base + h;
-            self.pair.evaluate(z, zdot, &s[..m], &mut f1[..m]);
+            lp.pair.evaluate(z, zdot, &s[..m], &mut f1[..m]);
             s[c] = base;
             for r in 0..m {
                 jac[r * m + c] = (f1[r] - f0[r]) / h;
@@ -207,20 +398,23 @@ impl OdeSystem for LinkedVehicle {
 pub struct LinkedRun {
     /// The vehicle's record ([`crate::simulate`]).
     pub record: RunRecord,
-    /// Node (accumulator) pressure of line 0 (left piston side to right rod side) and line
-    /// 1 (the mirror) at each sample (Pa).
-    pub node_pressure_pa: [Vec<f64>; 2],
+    /// Node (accumulator) pressure of every line at each sample (Pa): entry `2 i + k` is
+    /// pair `i`'s line `k` ([`LinkedVehicle::pairs`]). Roll: line 0 from the left piston side
+    /// to the right rod side, line 1 the mirror. Pitch: the left side's pair, then the
+    /// right's; line 0 from the front piston side to the rear rod side, line 1 from the
+    /// rear piston side to the front rod side.
+    pub node_pressure_pa: Vec<Vec<f64>>,
 }
 
-/// D1 (section 6.4) with the front struts interconnected by `line`: the record and its
-/// measures, on the terrain of `seed` (the same tracks as [`crate::scenarios::ride`]).
+/// D1 (section 6.4) with the struts interconnected by `link` (a [`Link`], or a
+/// `&LineParams` for the front roll link): the record and its measures, on the terrain of `seed` (the same tracks as [`crate::scenarios::ride`]).
 pub fn ride_linked(
     p: &VehicleParams,
     spec: &RideSpec,
     seed: u64,
-    line: &LineParams,
+    link: impl Into<Link>,
 ) -> Result<(LinkedRun, RideMeasures), VehicleError> {
-    ride_linked_on(p, spec, ride_tracks(p, spec, seed)?, line)
+    ride_linked_on(p, spec, ride_tracks(p, spec, seed)?, link.into())
 }
 
 /// [`ride_linked`] on the enveloping cache `tracks` of [`crate::scenarios::ride_tracks`]
@@ -229,11 +423,11 @@ pub fn ride_linked_on(
     p: &VehicleParams,
     spec: &RideSpec,
     tracks: Arc<TireTracks>,
-    line: &LineParams,
+    link: impl Into<Link>,
 ) -> Result<(LinkedRun, RideMeasures), VehicleError> {
     let speed = spec.speed_kmh / 3.6;
     let v = Vehicle::on_tracks(p, spec.load, ride_options(spec), tracks)?;
-    let linked = LinkedVehicle::new(v, line)?;
+    let linked = LinkedVehicle::new(v, &link.into())?;
     let rec = linked.simulate_from(
         &linked.initial_state()?,
         &RunOptions {
@@ -246,14 +440,14 @@ pub fn ride_linked_on(
     Ok((rec, m))
 }
 
-/// D2 (section 6.4) to rollover with the front struts interconnected by `line`.
+/// D2 (section 6.4) to rollover with the struts interconnected by `link`.
 pub fn roll_linked(
     p: &VehicleParams,
     spec: &RollSpec,
     seed: u64,
-    line: &LineParams,
+    link: impl Into<Link>,
 ) -> Result<(LinkedRun, RollMeasures), VehicleError> {
-    roll_linked_on(p, spec, roll_tracks(p, spec, seed)?, line)
+    roll_linked_on(p, spec, roll_tracks(p, spec, seed)?, link.into())
 }
 
 /// [`roll_linked`] on the enveloping cache `tracks` of [`crate::scenarios::roll_tracks`].
@@ -261,10 +455,10 @@ pub fn roll_linked_on(
     p: &VehicleParams,
     spec: &RollSpec,
     tracks: Arc<TireTracks>,
-    line: &LineParams,
+    link: impl Into<Link>,
 ) -> Result<(LinkedRun, RollMeasures), VehicleError> {
     let v = Vehicle::on_tracks(p, spec.load, roll_options(spec), tracks)?;
-    let linked = LinkedVehicle::new(v, line)?;
+    let linked = LinkedVehicle::new(v, &link.into())?;
     let rec = linked.simulate_from(
         &linked.initial_state()?,
         &RunOptions {
@@ -278,12 +472,12 @@ pub fn roll_linked_on(
     Ok((rec, m))
 }
 
-/// D3 (section 6.4, smooth ground) with the front struts interconnected by `line`: the
+/// D3 (section 6.4, smooth ground) with the struts interconnected by `link`: the
 /// yaw-mode run of [`crate::scenarios::yaw`] (its terrain must be smooth).
 pub fn yaw_linked(
     p: &VehicleParams,
     spec: &YawSpec,
-    line: &LineParams,
+    link: impl Into<Link>,
 ) -> Result<(LinkedRun, YawMeasures), VehicleError> {
     if spec.terrain.is_some() {
         return Err(measure(
@@ -300,7 +494,7 @@ pub fn yaw_linked(
         &flat,
         0.5 * p.front_track_m,
     )?;
-    let linked = LinkedVehicle::new(v, line)?;
+    let linked = LinkedVehicle::new(v, &link.into())?;
     let rec = linked.simulate_from(
         &linked.initial_state()?,
         &RunOptions {
@@ -327,6 +521,19 @@ pub fn suspension_roll_rad(p: &VehicleParams, rec: &RunRecord) -> Vec<f64> {
         .collect()
 }
 
+/// Suspension pitch travel (m) at each sample of `rec`: the mean travel of the front
+/// struts less that of the rear struts (compression positive; the front travel alone on a
+/// rigid rear axle). Bounce moves it little, pitch of the units over their axles fully.
+pub fn suspension_pitch_travel_m(rec: &RunRecord) -> Vec<f64> {
+    (0..rec.len())
+        .map(|i| {
+            0.5 * (rec.hps_travel_m[0][i] + rec.hps_travel_m[1][i]
+                - rec.rear_hps_travel_m[0][i]
+                - rec.rear_hps_travel_m[1][i])
+        })
+        .collect()
+}
+
 /// How the front unit is set moving for a free response.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
 pub enum Kick {
@@ -334,14 +541,17 @@ pub enum Kick {
     Roll,
     /// A vertical velocity of the front unit (m/s).
     Bounce,
+    /// A pitch rate of the front unit (rad/s, nose down positive about the body y axis).
+    Pitch,
 }
 
-/// The free response of the loaded front-HPS vehicle (linked by `line`, or plain) rolling
-/// at 20 km/h on smooth ground for `t_end_s`, released from its static state with the
-/// front unit's roll rate (rad/s) or vertical velocity (m/s) raised by `size`.
+/// The free response of the loaded vehicle with the front-axle HPS (and the rear struts of
+/// `p.rear_hps`, if any), linked by `link` or plain, rolling at 20 km/h on smooth ground
+/// for `t_end_s`, released from its static state with the front unit's roll rate, pitch
+/// rate (rad/s) or vertical velocity (m/s) raised by `size`.
 pub fn free_response(
     p: &VehicleParams,
-    line: Option<&LineParams>,
+    link: Option<&Link>,
     kick: Kick,
     size: f64,
     t_end_s: f64,
@@ -363,9 +573,10 @@ pub fn free_response(
     // the floating base's velocity is (angular, linear) in body axes
     let at = match kick {
         Kick::Roll => o.v,
+        Kick::Pitch => o.v + 1,
         Kick::Bounce => o.v + 5,
     };
-    match line {
+    match link {
         Some(l) => {
             let linked = LinkedVehicle::new(v, l)?;
             let mut y0 = linked.initial_state()?;

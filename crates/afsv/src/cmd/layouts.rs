@@ -28,6 +28,10 @@ pub const LAYOUT_NAMES: &[(&str, &str)] = &[
         "front-rear-roll",
         "front-rear-hps with the front struts roll-interconnected",
     ),
+    (
+        "front-rear-pitch",
+        "front-rear-hps with each side's front and rear struts pitch-interconnected (sealed pistons, two cross lines with accumulators per side)",
+    ),
 ];
 
 /// Options of `afsv study layouts`.
@@ -39,10 +43,11 @@ pub struct LayoutArgs {
     /// front-hps (the description's front-axle strut, or its candidate strut),
     /// front-rear-hps (and the description's rear strut, or the front strut scaled for the
     /// rear static load), front-roll and front-rear-roll (those with the front struts
-    /// roll-interconnected; docs/layouts.md).
+    /// roll-interconnected), front-rear-pitch (front-rear-hps with each side's front and
+    /// rear struts pitch-interconnected; docs/layouts.md).
     #[arg(
         long,
-        default_value = "rigid,front-hps,front-rear-hps,front-roll,front-rear-roll"
+        default_value = "rigid,front-hps,front-rear-hps,front-roll,front-rear-roll,front-rear-pitch"
     )]
     pub layouts: String,
     /// The cab and seat of the seat rows: `generic` (docs/layouts.md), `off` (frame rows
@@ -115,13 +120,20 @@ fn build_layouts(v: &afsv_vehicle::ArticulatedVehicle, text: &str) -> Result<Vec
         }
         out.push(Layout {
             name: name.into(),
-            params,
             front_axle: if suspended {
                 FrontAxle::Suspended
             } else {
                 FrontAxle::Rigid
             },
             front_link: name.ends_with("-roll").then(LineParams::front_axle_roll),
+            pitch_link: match (name.ends_with("-pitch"), &params.rear_hps) {
+                (true, Some(rear)) => Some(
+                    LineParams::side_pitch(rear.a_hr / params.hps.a_hr)
+                        .map_err(|e| format!("--layouts {name}: the pitch lines: {e}"))?,
+                ),
+                _ => None,
+            },
+            params,
         });
     }
     Ok(out)
@@ -303,16 +315,18 @@ mod tests {
         };
         let l = build_layouts(
             &v,
-            "rigid, front-hps,front-rear-hps,front-roll,front-rear-roll",
+            "rigid, front-hps,front-rear-hps,front-roll,front-rear-roll,front-rear-pitch",
         )
         .unwrap();
-        assert_eq!(l.len(), 5);
+        assert_eq!(l.len(), 6);
         assert_eq!(l[0].front_axle, FrontAxle::Rigid);
         assert!(l[1..].iter().all(|l| l.front_axle == FrontAxle::Suspended));
         let rear: Vec<bool> = l.iter().map(|l| l.params.rear_hps.is_some()).collect();
-        assert_eq!(rear, [false, false, true, false, true]);
+        assert_eq!(rear, [false, false, true, false, true, true]);
         let link: Vec<bool> = l.iter().map(|l| l.front_link.is_some()).collect();
-        assert_eq!(link, [false, false, false, true, true]);
+        assert_eq!(link, [false, false, false, true, true, false]);
+        let pitch: Vec<bool> = l.iter().map(|l| l.pitch_link.is_some()).collect();
+        assert_eq!(pitch, [false, false, false, false, false, true]);
         assert!(build_layouts(&v, "rigid,rigid")
             .unwrap_err()
             .contains("twice"));
