@@ -484,7 +484,7 @@ impl LayoutProblem {
                 return Err(shape("variables", format!("`{}` is named twice", v.name)));
             }
             let (t, lo, hi) = d.target(&v.name).map_err(|e| shape("variables", e))?;
-            if !(v.lower < v.upper) {
+            if v.lower >= v.upper || v.lower.is_nan() || v.upper.is_nan() {
                 return Err(shape(
                     "variables",
                     format!(
