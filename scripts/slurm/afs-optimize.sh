@@ -1,70 +1,7 @@
 #!/usr/bin/env bash
-# The chapter-4 AFS design optimisation (`afsv optimize afs`) on a Slurm cluster, one job
-# array per batch of design points, the array index being the shard:
-#
-#   loop:  afsv optimize afs OPTIONS --state STATE --ask BATCH        (on the submit host)
-#          sbatch --array=1-SHARDS --wait THIS_SCRIPT task ...        (array task I runs
-#                 afsv batch evaluate BATCH --shard I/SHARDS -o results-I.jsonl)
-#          afsv optimize afs OPTIONS --state STATE --tell results-*.jsonl
-#   until the batch file's header says "finished": true; then the report
-#   (the in-process run's JSON) is in WORKDIR/report.json.
-#
+# The chapter-4 AFS design optimisation (`afsv optimize afs`) on a Slurm cluster:
+# `scripts/slurm/optimize.sh afs` (its header documents the loop and the environment).
 # Usage:
 #   scripts/slurm/afs-optimize.sh [afsv optimize afs OPTIONS...]
-# Environment:
-#   AFSV         the afsv binary, visible from every node (default: afsv on PATH)
-#   SHARDS       array tasks per batch (default 4)
-#   WORKDIR      state, batches, results, logs, report; on a shared file system
-#                (default ./afs-optimize-run)
-#   SBATCH_OPTS  extra sbatch options, e.g. "--partition=short --time=00:10:00"
-#
-# The state file WORKDIR/state.json is the single source of truth: if the driver is
-# stopped, run the script again with the same options and WORKDIR and it continues from
-# the last batch told (an asked batch is asked again, the same points with the same ids).
-# A failed array task makes `sbatch --wait` fail and stops the script.
-# Documentation: docs/optimisation.md, "Running on a cluster". Tested end to end on a
-# single-node Slurm by `cargo xtask slurm-test`.
 set -euo pipefail
-
-if [[ "${1:-}" == "task" ]]; then
-    # One array task: evaluate shard SLURM_ARRAY_TASK_ID of the batch.
-    afsv=$2 batch=$3 shards=$4 out=$5
-    i=${SLURM_ARRAY_TASK_ID:?task mode runs as a Slurm array task}
-    exec "$afsv" --quiet batch evaluate "$batch" --shard "$i/$shards" \
-        -o "$out/results-$i.jsonl" --json
-fi
-
-AFSV=${AFSV:-afsv}
-SHARDS=${SHARDS:-4}
-WORKDIR=${WORKDIR:-./afs-optimize-run}
-SBATCH_OPTS=${SBATCH_OPTS:-}
-mkdir -p "$WORKDIR/logs"
-WORKDIR=$(cd "$WORKDIR" && pwd)
-AFSV=$(command -v "$AFSV")
-script=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)/$(basename "${BASH_SOURCE[0]}")
-state=$WORKDIR/state.json
-batch=$WORKDIR/batch.jsonl
-
-while true; do
-    "$AFSV" --quiet optimize afs "$@" --state "$state" --ask "$batch" --json \
-        > "$WORKDIR/ask.json"
-    if head -n 1 "$batch" | grep -q '"finished":true'; then
-        mv "$WORKDIR/ask.json" "$WORKDIR/report.json"
-        echo "afs-optimize: finished; report in $WORKDIR/report.json" >&2
-        break
-    fi
-    n=$(head -n 1 "$batch" | sed -n 's/.*"batch":\([0-9]*\).*/\1/p')
-    echo "afs-optimize: batch $n: $(grep -c '"id"' "$batch") points in $SHARDS shards" >&2
-    # Results of an earlier batch would be refused by --tell; clear them first.
-    rm -f "$WORKDIR"/results-*.jsonl
-    # shellcheck disable=SC2086 # SBATCH_OPTS is a list of options
-    sbatch --quiet --wait --array="1-$SHARDS" --job-name=afs-optimize \
-        --chdir="$WORKDIR" --output="$WORKDIR/logs/batch-$n-%a.out" $SBATCH_OPTS \
-        "$script" task "$AFSV" "$batch" "$SHARDS" "$WORKDIR"
-    results=()
-    for i in $(seq 1 "$SHARDS"); do
-        results+=("$WORKDIR/results-$i.jsonl")
-    done
-    "$AFSV" --quiet optimize afs "$@" --state "$state" --tell "${results[@]}" --json \
-        > "$WORKDIR/tell.json"
-done
+exec "$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)/optimize.sh" afs "$@"

@@ -18,8 +18,9 @@
 //!   10,000) generated bad inputs and fail on any panic, hang, abort, non-finite output or
 //!   modified input (see `fuzz.rs`).
 //! - `slurm-test [--bin PATH]`: as root, install Debian's slurm-wlm and munge, start a
-//!   single-node Slurm and run `scripts/slurm/afs-optimize.sh` end to end; its report must
-//!   equal the in-process `afsv optimize afs` (see `slurm.rs`); prints "skipped" without
+//!   single-node Slurm and run `scripts/slurm/optimize.sh` end to end for `afsv optimize
+//!   afs` and a tiny `afsv optimize layout`; each report must equal the in-process run's
+//!   (see `slurm.rs`); prints "skipped" without
 //!   root, apt-get or network. `--bin` runs that `afsv` binary instead of building one.
 
 mod commands;
@@ -52,7 +53,7 @@ fn main() -> ExitCode {
     }
 }
 
-const HELP: &str = "usage: cargo xtask <task>\n\ntasks:\n  bench [--summary] [--commands] [--runs N] [--profile release|dist] [ARGS...]  run the criterion benches (ARGS go to the bench harness) and print mean times and real-time factors, then time whole afsv commands (median of N runs, default 20); --commands: only those; --profile dist: built with fat LTO and one codegen unit (Cargo.toml)\n  validate [--fixtures DIR] [--out DIR] [--quick]  compare the models with fixtures/reported/ and write target/validation/report.md; --quick skips the chapter-6 design studies (Table 6.4, the GA of Table 6.5, the D4 sweep: about two minutes)\n  fuzz [--cases N] [--seed S] [--jobs J] [--timeout SECS] [--mem-mib MIB] [--bin PATH] [--only GROUPS] [--skip GROUPS] [--keep]  run afsv on N generated bad inputs (default 10000); fail on panics, hangs, aborts, non-finite output or modified inputs\n  discover-matrix  run the discovery workflow on every catalogue effect of both models and print the detection table (minutes)\n  slurm-test [--bin PATH]  as root: install slurm-wlm and munge, start a single-node Slurm, run scripts/slurm/afs-optimize.sh end to end and compare with the in-process optimum (skipped without root, apt-get or network); --bin: run that afsv binary instead of building one";
+const HELP: &str = "usage: cargo xtask <task>\n\ntasks:\n  bench [--summary] [--commands] [--runs N] [--profile release|dist] [ARGS...]  run the criterion benches (ARGS go to the bench harness) and print mean times and real-time factors, then time whole afsv commands (median of N runs, default 20); --commands: only those; --profile dist: built with fat LTO and one codegen unit (Cargo.toml)\n  validate [--fixtures DIR] [--out DIR] [--quick]  compare the models with fixtures/reported/ and write target/validation/report.md; --quick skips the chapter-6 design studies (Table 6.4, the GA of Table 6.5, the D4 sweep: about two minutes)\n  fuzz [--cases N] [--seed S] [--jobs J] [--timeout SECS] [--mem-mib MIB] [--bin PATH] [--only GROUPS] [--skip GROUPS] [--keep]  run afsv on N generated bad inputs (default 10000); fail on panics, hangs, aborts, non-finite output or modified inputs\n  discover-matrix  run the discovery workflow on every catalogue effect of both models and print the detection table (minutes)\n  slurm-test [--bin PATH]  as root: install slurm-wlm and munge, start a single-node Slurm, run scripts/slurm/optimize.sh end to end for `optimize afs` and a tiny `optimize layout` and compare each with the in-process optimum (skipped without root, apt-get or network); --bin: run that afsv binary instead of building one";
 
 /// The full detection matrix of the discovery workflow (the slow tests of
 /// `crates/afsv-discovery/tests/discover_matrix.rs`).

@@ -1,6 +1,9 @@
 //! `cargo xtask slurm-test`: a real single-node Slurm on this machine runs
-//! `scripts/slurm/afs-optimize.sh` end to end, and its report must equal the in-process
-//! `afsv optimize afs` with the same options, byte for byte (wall-clock times left out).
+//! `scripts/slurm/optimize.sh` end to end for two problems, and each report must equal the
+//! in-process run with the same options, byte for byte (wall-clock times left out): the
+//! reduced chapter-4 `afsv optimize afs` and a tiny `afsv optimize layout` (the prototype's
+//! front and rear HPS with the generic seat, both bleed orifices varied, the front strut
+//! travel minimised with a seat constraint; 4 batches of at most 4 designs, ~10 s).
 //!
 //! As root it installs Debian's `slurm-wlm` and `munge` (apt-get, non-interactive) unless
 //! they are there, writes a minimal `slurm.conf` into a temporary folder (one node named
@@ -22,6 +25,13 @@ use std::time::{Duration, Instant};
 /// The reduced chapter-4 run (the one of `crates/afsv/tests/cli_cluster.rs`): 20 batches.
 const OPTIONS: &str =
     "--starts 0 --search-points 5 --screen-mesh 0.125 --min-mesh 0.0625 --sqp-calls 3";
+
+/// The tiny layout run (the one of `crates/afsv/tests/cli_optimize_layout.rs`): a
+/// two-axle HPS layout with a seat constraint, 4 batches (the nominal, the initial
+/// population of 4, two generations).
+const LAYOUT_OPTIONS: &str = "--vary front.a_b=5e-6..3e-5 --vary rear.a_b=5e-6..3e-5 \
+    --objective strut_travel --constraint awz_seat<=1.1*nominal --speed-kmh 30 \
+    --ride-length-m 15 --population 4 --generations 2 --seed 7";
 
 /// The daemons this task started; stopped (SIGTERM, then SIGKILL) when dropped.
 struct Daemons(Vec<(&'static str, Child)>);
@@ -224,6 +234,71 @@ fn build_afsv(root: &Path) -> Result<PathBuf, String> {
     Ok(root.join("target").join("release").join("afsv"))
 }
 
+/// What running the script and the in-process command needs.
+struct Env<'a> {
+    root: &'a Path,
+    conf: &'a Path,
+    afsv: &'a Path,
+    cpus: usize,
+    log: &'a Path,
+}
+
+impl Env<'_> {
+    /// `scripts/slurm/optimize.sh PROBLEM OPTIONS` on the Slurm, in `run`.
+    fn script(&self, problem: &str, options: &str, run: &Path) -> Result<(), String> {
+        let status = Command::new(self.root.join("scripts/slurm/optimize.sh"))
+            .arg(problem)
+            .args(options.split_whitespace())
+            .env("SLURM_CONF", self.conf)
+            .env("AFSV", self.afsv)
+            .env("SHARDS", self.cpus.to_string())
+            .env("WORKDIR", run)
+            .status()
+            .map_err(|e| format!("cannot run the script: {e}"))?;
+        if status.success() {
+            Ok(())
+        } else {
+            Err(format!(
+                "scripts/slurm/optimize.sh {problem} failed ({status}); logs in {} and {}",
+                self.log.display(),
+                run.display()
+            ))
+        }
+    }
+
+    /// The report of the Slurm run in `run` against `afsv optimize PROBLEM --json OPTIONS`
+    /// in this process, both through `normal` (text, what) first.
+    fn compare(
+        &self,
+        problem: &str,
+        options: &str,
+        run: &Path,
+        normal: &dyn Fn(&str, &str) -> Result<String, String>,
+    ) -> Result<(), String> {
+        let in_process = Command::new(self.afsv)
+            .args(["--quiet", "optimize", problem, "--json"])
+            .args(options.split_whitespace())
+            .output()
+            .map_err(|e| format!("cannot run afsv: {e}"))?;
+        let path = run.join("report.json");
+        let report =
+            std::fs::read_to_string(&path).map_err(|e| format!("{}: {e}", path.display()))?;
+        let ours = normal(&report, &format!("report.json of the Slurm {problem} run"))?;
+        let theirs = normal(
+            &String::from_utf8_lossy(&in_process.stdout),
+            &format!("in-process {problem} run"),
+        )?;
+        if ours == theirs {
+            Ok(())
+        } else {
+            Err(format!(
+                "the Slurm run's report {} differs from the in-process run's",
+                path.display()
+            ))
+        }
+    }
+}
+
 /// The task; `args` may name the `afsv` binary to run (`--bin PATH`).
 pub fn slurm_test(args: &[String], root: &Path) -> Result<(), String> {
     let given = given_binary(args)?;
@@ -309,47 +384,34 @@ pub fn slurm_test(args: &[String], root: &Path) -> Result<(), String> {
     .map_err(|e| format!("{e}; logs in {}", log.display()))?;
     let up = start.elapsed().as_secs_f64();
     eprintln!(
-        "slurm-test: single-node Slurm up on {host} ({cpus} CPUs) in {up:.1} s; running scripts/slurm/afs-optimize.sh"
+        "slurm-test: single-node Slurm up on {host} ({cpus} CPUs) in {up:.1} s; running scripts/slurm/optimize.sh afs, then layout"
     );
-    let run = dir.join("run");
-    let status = Command::new(root.join("scripts/slurm/afs-optimize.sh"))
-        .args(OPTIONS.split_whitespace())
-        .env("SLURM_CONF", &conf)
-        .env("AFSV", &afsv)
-        .env("SHARDS", cpus.to_string())
-        .env("WORKDIR", &run)
-        .status()
-        .map_err(|e| format!("cannot run the script: {e}"))?;
-    if !status.success() {
-        return Err(format!(
-            "scripts/slurm/afs-optimize.sh failed ({status}); logs in {} and {}",
-            log.display(),
-            run.display()
-        ));
-    }
+    let env = Env {
+        root,
+        conf: &conf,
+        afsv: &afsv,
+        cpus,
+        log: &log,
+    };
+    let afs_run = dir.join("run");
+    env.script("afs", OPTIONS, &afs_run)?;
+    let afs_s = start.elapsed().as_secs_f64() - up;
+    let layout_run = dir.join("run-layout");
+    env.script("layout", LAYOUT_OPTIONS, &layout_run)?;
     let on_slurm = start.elapsed().as_secs_f64() - up;
     drop(daemons);
-    let in_process = Command::new(&afsv)
-        .args(["--quiet", "optimize", "afs", "--json"])
-        .args(OPTIONS.split_whitespace())
-        .output()
-        .map_err(|e| format!("cannot run afsv: {e}"))?;
-    let report = std::fs::read_to_string(run.join("report.json")).map_err(io)?;
-    let ours = without_seconds(&report, "report.json of the Slurm run")?;
-    let theirs = without_seconds(
-        &String::from_utf8_lossy(&in_process.stdout),
-        "in-process run",
-    )?;
-    if ours != theirs {
-        return Err(format!(
-            "the Slurm run's report {} differs from the in-process run's",
-            run.join("report.json").display()
-        ));
-    }
+    env.compare("afs", OPTIONS, &afs_run, &|t, w| without_seconds(t, w))?;
+    env.compare("layout", LAYOUT_OPTIONS, &layout_run, &|t, w| {
+        serde_json::from_str::<serde_json::Value>(t)
+            .map(|v| v.to_string())
+            .map_err(|e| format!("{w}: not JSON: {e}"))
+    })?;
+    let run = afs_run;
     let batches = std::fs::read_dir(run.join("logs")).map_or(0, |d| d.count()) / cpus.max(1);
     let _ = std::fs::remove_dir_all(&dir);
     println!(
-        "slurm-test: passed: the job-array run ({batches} batches x {cpus} shards) equals the in-process optimum byte for byte; install {installed:.1} s, Slurm up {:.1} s, run {on_slurm:.1} s, total {:.1} s",
+        "slurm-test: passed: the job-array runs (afs: {batches} batches x {cpus} shards, {afs_s:.1} s; layout: {:.1} s) equal the in-process optima byte for byte; install {installed:.1} s, Slurm up {:.1} s, runs {on_slurm:.1} s, total {:.1} s",
+        on_slurm - afs_s,
         up - installed,
         start.elapsed().as_secs_f64()
     );

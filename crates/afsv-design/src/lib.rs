@@ -23,6 +23,9 @@
 //!   strut, terrain) of one vehicle description;
 //! - [`layouts`]: `afsv study layouts`, several suspension layouts of one vehicle through
 //!   D1-D4 on common seeds, on the frame and at the seat;
+//! - [`layout_optimum`]: `afsv optimize layout`, a GA over registry-named parameters of
+//!   one layout with constraints on its measures; [`layout_ask_tell`]: the same run split
+//!   into ask and tell, with its batch, results and state files;
 //! - [`fan_out`]: the one scheduler of the studies on the 3-D vehicle (per-case caches
 //!   built once, runs in parallel, results in order) and the plain seed fan-out.
 //!
@@ -45,6 +48,8 @@ pub mod hps_design;
 pub mod hps_optimum;
 pub mod hps_sensitivity;
 pub mod hps_speed_sweep;
+pub mod layout_ask_tell;
+pub mod layout_optimum;
 pub mod layouts;
 pub mod measures;
 pub mod objective;
@@ -63,6 +68,11 @@ pub use hps_design::HpsDesign;
 pub use hps_optimum::{optimise_hps, HpsGaSettings, HpsOptimum};
 pub use hps_sensitivity::{hps_sensitivity, HpsSensitivity, HpsVariable, StudyScope};
 pub use hps_speed_sweep::{hps_speed_sweep, SpeedSweep};
+pub use layout_ask_tell::{LayoutAsk, LayoutAskTell, LayoutAskTellState, LayoutRunState};
+pub use layout_optimum::{
+    optimise_layout, LayoutConstraint, LayoutGaSettings, LayoutMeasure, LayoutOptimum,
+    LayoutProblem, LayoutProblemDesc, LayoutVariable,
+};
 pub use measures::{DesignMeasures, Measure, MeasureRatios};
 pub use objective::Objective;
 pub use sweep::{parabolic_peak, SweepPeak};

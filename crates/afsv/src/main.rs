@@ -57,10 +57,10 @@ enum Command {
     /// Parameter sets and vehicle descriptions: `dump` the nominal set, `check` a file, `list` the named parameters.
     #[command(subcommand)]
     Params(cmd::params::Command),
-    /// Design optimisation: `afs` (Chapter 4 frame steering, pattern search + SQP), `hps` (Chapter 6 front-axle strut, GA).
+    /// Design optimisation: `afs` (Chapter 4 frame steering, pattern search + SQP), `hps` (Chapter 6 front-axle strut, GA), `layout` (any suspension layout over registry-named parameters with constraints on its measures, GA; ask/tell for a cluster).
     #[command(subcommand)]
     Optimize(cmd::optimize::Command),
-    /// Batches of design points from `afsv optimize afs --ask`: `evaluate` one shard of a batch (e.g. one Slurm array task).
+    /// Batches of design points from `afsv optimize afs --ask` or `afsv optimize layout --ask`: `evaluate` one shard of a batch (e.g. one Slurm array task).
     #[command(subcommand)]
     Batch(cmd::batch::Command),
 }

@@ -130,8 +130,21 @@ impl<'a, P: ConstrainedProblem + ?Sized> GeneticAlgorithm<'a, P> {
     }
 
     /// The initial population: the `seeds` (problem units, projected onto the bounds; at
-    /// most `population`) and a Latin hypercube for the rest, evaluated and ranked.
+    /// most `population`) and a Latin hypercube for the rest, evaluated and ranked
+    /// ([`GeneticAlgorithm::initial`], then [`GeneticAlgorithm::start_told`]).
     pub fn start(&self, seeds: &[Vec<f64>]) -> Result<GaState, OptimizeError> {
+        let units = self.initial(seeds)?;
+        let b = self.problem.bounds();
+        let xs: Vec<Vec<f64>> = units.iter().map(|u| b.from_unit(u)).collect();
+        let evals = evaluate_batch(self.problem, &xs);
+        self.start_told(units, evals)
+    }
+
+    /// The initial population in unit-cube coordinates, before any evaluation: the
+    /// `seeds` (problem units, projected onto the bounds; at most `population`), then a
+    /// Latin hypercube of seed `seed` for the rest. Evaluate them anywhere (in order) and
+    /// hand the results to [`GeneticAlgorithm::start_told`].
+    pub fn initial(&self, seeds: &[Vec<f64>]) -> Result<Vec<Vec<f64>>, OptimizeError> {
         let b = self.problem.bounds();
         let n = b.dim();
         require(
@@ -159,7 +172,35 @@ impl<'a, P: ConstrainedProblem + ?Sized> GeneticAlgorithm<'a, P> {
                 maximin_candidates: 1,
             })?);
         }
-        let population = self.evaluate(units);
+        Ok(units)
+    }
+
+    /// The state of generation 0 from the initial population `units`
+    /// ([`GeneticAlgorithm::initial`]) and their evaluations, in its order, ranked.
+    pub fn start_told(
+        &self,
+        units: Vec<Vec<f64>>,
+        evals: Vec<Evaluation>,
+    ) -> Result<GaState, OptimizeError> {
+        let (n, nc) = (self.problem.bounds().dim(), self.problem.n_constraints());
+        require(
+            units.len() == self.options.population
+                && evals.len() == units.len()
+                && units.iter().all(|u| u.len() == n)
+                && evals.iter().all(|e| e.constraints.len() == nc),
+            "evals",
+            "one evaluation per initial individual, with every constraint",
+        )?;
+        let b = self.problem.bounds();
+        let population: Vec<Individual> = units
+            .into_iter()
+            .zip(evals)
+            .map(|(u, eval)| Individual {
+                x: b.from_unit(&u),
+                u,
+                eval,
+            })
+            .collect();
         let evaluations = population.len();
         let mut s = GaState {
             generation: 0,
@@ -273,18 +314,6 @@ impl<'a, P: ConstrainedProblem + ?Sized> GeneticAlgorithm<'a, P> {
             })?;
         }
         Ok(s)
-    }
-
-    fn evaluate(&self, units: Vec<Vec<f64>>) -> Vec<Individual> {
-        let b = self.problem.bounds();
-        let xs: Vec<Vec<f64>> = units.iter().map(|u| b.from_unit(u)).collect();
-        let evals = evaluate_batch(self.problem, &xs);
-        units
-            .into_iter()
-            .zip(xs)
-            .zip(evals)
-            .map(|((u, x), eval)| Individual { u, x, eval })
-            .collect()
     }
 
     /// Bounded polynomial mutation of each variable with the mutation probability.

@@ -36,7 +36,7 @@ use crate::simulate::RunRecord;
 const SUBSTEPS: f64 = 4.0;
 
 /// A cab and seat and where the cab sits on the front unit.
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, serde::Deserialize)]
 pub struct CabSeatLayout {
     /// The cab on its mounts.
     pub cab: CabParams,

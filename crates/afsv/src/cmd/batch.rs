@@ -1,27 +1,32 @@
 //! `afsv batch evaluate`: evaluates one shard of a batch of design points that
-//! `afsv optimize afs --ask` wrote (docs/optimisation.md, "Running on a cluster"). The
-//! formats and the shard's evaluation are `afsv_design::afs_batch`.
+//! `afsv optimize afs --ask` or `afsv optimize layout --ask` wrote (docs/optimisation.md,
+//! "Running on a cluster"); the batch header's `format` tells which. The formats and the
+//! shard's evaluation are `afsv_design::afs_batch` and `afsv_design::layout_ask_tell`.
 
 use super::CmdResult;
 use afsv::output::{OutputGuard, OutputKind};
 use afsv_design::afs_batch::{
     evaluate_shard, in_shard, read_batch, ResultsHeader, FORMAT_VERSION, MAX_SHARDS, RESULTS_FORMAT,
 };
+use afsv_design::layout_ask_tell::{
+    evaluate_layout_shard, read_layout_batch, LayoutResultsHeader, LAYOUT_BATCH_FORMAT,
+    LAYOUT_FORMAT_VERSION, LAYOUT_RESULTS_FORMAT,
+};
 use afsv_records::jsonl::write_jsonl;
-use std::io::IsTerminal;
-use std::path::PathBuf;
+use std::io::{BufRead, IsTerminal, Read};
+use std::path::{Path, PathBuf};
 
 /// `afsv batch` subcommands.
 #[derive(clap::Subcommand)]
 pub enum Command {
-    /// Evaluate one shard of a batch file written by `afsv optimize afs --ask` and write its results (JSON Lines) for `--tell`.
+    /// Evaluate one shard of a batch file written by `afsv optimize afs --ask` or `afsv optimize layout --ask` and write its results (JSON Lines) for `--tell`.
     Evaluate(EvaluateArgs),
 }
 
 /// Options of `afsv batch evaluate`.
 #[derive(clap::Args)]
 pub struct EvaluateArgs {
-    /// The batch file (JSON Lines) written by `afsv optimize afs --ask`.
+    /// The batch file (JSON Lines) written by `afsv optimize afs --ask` or `afsv optimize layout --ask`.
     pub batch: PathBuf,
     /// The shard "I/N" (1 <= I <= N): the points whose 0-based index is I-1 modulo N.
     #[arg(long, default_value = "1/1", value_parser = shard)]
@@ -58,12 +63,30 @@ pub fn run(cmd: Command) -> CmdResult {
     }
 }
 
+/// Whether the batch file's header (its first line) says it is a layout batch; anything
+/// else, unreadable files included, goes to the chapter-4 reader and its errors.
+fn is_layout_batch(path: &Path) -> bool {
+    let Ok(file) = std::fs::File::open(path) else {
+        return false;
+    };
+    let mut line = String::new();
+    let read = std::io::BufReader::new(file)
+        .take(afsv_records::jsonl::MAX_LINE_BYTES as u64)
+        .read_line(&mut line);
+    read.is_ok()
+        && serde_json::from_str::<serde_json::Value>(&line)
+            .is_ok_and(|v| v["format"] == LAYOUT_BATCH_FORMAT)
+}
+
 fn evaluate(a: &EvaluateArgs) -> CmdResult {
-    let (shard_i, shard_n) = a.shard;
     let mut guard = OutputGuard::new(a.force);
     guard.input("BATCH", &a.batch)?;
     guard.output("-o", &a.output, OutputKind::JsonLines)?;
     let t = std::time::Instant::now();
+    if is_layout_batch(&a.batch) {
+        return evaluate_layout(a, t);
+    }
+    let (shard_i, shard_n) = a.shard;
     let (header, points) = read_batch("BATCH", &a.batch)?;
     let mine = (0..points.len()).filter(|&i| in_shard(i, a.shard)).count();
     let progress = afsv::progress::Progress::new("afsv batch evaluate", "points", Some(mine));
@@ -83,9 +106,49 @@ fn evaluate(a: &EvaluateArgs) -> CmdResult {
         problems: header.problems.clone(),
     };
     write_jsonl(&a.output, &out, &lines)?;
-    let count = |s: &str| lines.iter().filter(|l| l.status == s).count();
+    summary(a, header.batch, &shard_text, t, &|s| {
+        lines.iter().filter(|l| l.status == s).count()
+    })
+}
+
+/// One shard of a layout batch (`afsv optimize layout --ask`).
+fn evaluate_layout(a: &EvaluateArgs, t: std::time::Instant) -> CmdResult {
+    let (header, points) = read_layout_batch("BATCH", &a.batch)?;
+    let mine = (0..points.len()).filter(|&i| in_shard(i, a.shard)).count();
+    let progress = afsv::progress::Progress::new("afsv batch evaluate", "designs", Some(mine));
+    let label = format!("BATCH {}", a.batch.display());
+    let lines = evaluate_layout_shard(&label, &header, &points, a.shard, &|| progress.step(""))?;
+    progress.finish();
+    let shard_text = format!("{}/{}", a.shard.0, a.shard.1);
+    let out = LayoutResultsHeader {
+        format: LAYOUT_RESULTS_FORMAT.into(),
+        version: LAYOUT_FORMAT_VERSION,
+        written_by: "afsv batch evaluate".into(),
+        sign_convention: afsv_records::SIGN_CONVENTION.into(),
+        batch: header.batch,
+        state_sha256: header.state_sha256.clone(),
+        shard: shard_text.clone(),
+        points: lines.len(),
+        problem: header.problem.clone(),
+    };
+    write_jsonl(&a.output, &out, &lines)?;
+    summary(a, header.batch, &shard_text, t, &|s| {
+        lines.iter().filter(|l| l.status == s).count()
+    })
+}
+
+/// The shard's summary on stdout: JSON, or a line on a terminal; `count` gives the points
+/// of a status.
+fn summary(
+    a: &EvaluateArgs,
+    batch: usize,
+    shard_text: &str,
+    t: std::time::Instant,
+    count: &dyn Fn(&str) -> usize,
+) -> CmdResult {
+    let points = count("evaluated") + count("screened") + count("failed");
     let summary = serde_json::json!({
-        "batch": header.batch, "shard": shard_text, "points": lines.len(),
+        "batch": batch, "shard": shard_text, "points": points,
         "evaluated": count("evaluated"), "screened": count("screened"), "failed": count("failed"),
         "results": a.output.display().to_string(), "seconds": t.elapsed().as_secs_f64(),
     });
@@ -93,9 +156,7 @@ fn evaluate(a: &EvaluateArgs) -> CmdResult {
         afsv::output::print_json(&summary)?;
     } else {
         println!(
-            "batch {} shard {shard_text}: {} points ({} evaluated, {} screened, {} failed) written to {} in {:.1} s",
-            header.batch,
-            lines.len(),
+            "batch {batch} shard {shard_text}: {points} points ({} evaluated, {} screened, {} failed) written to {} in {:.1} s",
             count("evaluated"),
             count("screened"),
             count("failed"),

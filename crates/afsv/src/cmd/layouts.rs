@@ -83,7 +83,10 @@ pub struct LayoutArgs {
 }
 
 /// The layouts `text` names, built from the described vehicle `v`.
-fn build_layouts(v: &afsv_vehicle::ArticulatedVehicle, text: &str) -> Result<Vec<Layout>, String> {
+pub(crate) fn build_layouts(
+    v: &afsv_vehicle::ArticulatedVehicle,
+    text: &str,
+) -> Result<Vec<Layout>, String> {
     let mut out: Vec<Layout> = Vec::new();
     for name in text.split(',').map(str::trim) {
         if out.iter().any(|l| l.name == name) {
@@ -140,7 +143,7 @@ fn build_layouts(v: &afsv_vehicle::ArticulatedVehicle, text: &str) -> Result<Vec
 }
 
 /// The cab and seat of `--seat`.
-fn seat_of(
+pub(crate) fn seat_of(
     v: &afsv_vehicle::ArticulatedVehicle,
     flag: Option<&str>,
 ) -> Result<Option<CabSeatLayout>, String> {

@@ -4,7 +4,8 @@
 //! same run goes ask/tell: `--ask` writes the next batch of design points (JSON Lines,
 //! evaluated by `afsv batch evaluate`, possibly in shards on a cluster), `--tell` reads the
 //! results and advances the state file; once finished `--ask` prints the report
-//! (`afsv_design::afs_ask_tell`, formats in `afsv_design::afs_batch`).
+//! (`afsv_design::afs_ask_tell`, formats in `afsv_design::afs_batch`). `afsv optimize hps`
+//! and `afsv optimize layout` are in their own modules.
 
 use super::CmdResult;
 use afsv::output::{NotEarned, OutputGuard, OutputKind};
@@ -23,6 +24,7 @@ use std::path::PathBuf;
 
 mod ask_tell;
 mod hps;
+mod layout;
 mod report;
 
 use ask_tell::AskTell;
@@ -37,6 +39,8 @@ pub enum Command {
     Afs(AfsArgs),
     /// Chapter 6: optimise the front-axle HPS [A_hc, A_v, A_b] (Eq 6.19 with a_wz <= 0.85 m/s², Eq 6.20) on the 3-D vehicle by a genetic algorithm, then re-evaluate over terrain seeds.
     Hps(hps::HpsArgs),
+    /// Beyond the dissertation: optimise any suspension layout of `afsv study layouts` over parameters named in the registries (e.g. `front.a_b=5e-6..3e-5`), minimising one of its measures subject to constraints on any (e.g. 'awz_seat <= 0.5', 'sp_drt >= 0.96 * nominal'), by a genetic algorithm; in-process or ask/tell (--state, --ask, --tell) for a cluster.
+    Layout(layout::LayoutArgs),
 }
 
 /// Options of `afsv optimize afs`.
@@ -142,6 +146,7 @@ pub fn run(cmd: Command) -> CmdResult {
     match cmd {
         Command::Afs(a) => run_afs(&a),
         Command::Hps(a) => hps::run(&a),
+        Command::Layout(a) => layout::run(&a),
     }
 }
 

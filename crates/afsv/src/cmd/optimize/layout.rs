@@ -1,0 +1,407 @@
+//! `afsv optimize layout`: a GA over registry-named parameters of one suspension layout of
+//! `afsv study layouts`, with constraints on its measures (`afsv_design::layout_optimum`,
+//! docs/layouts.md "Optimising a layout"). In this process, or ask/tell with `--state`:
+//! `--ask` writes the next batch (JSON Lines) for `afsv batch evaluate`, `--tell` reads the
+//! shards' results; once finished `--ask` prints the report, the in-process one byte for
+//! byte (`afsv_design::layout_ask_tell`).
+
+use crate::cmd::CmdResult;
+use afsv::output::{NotEarned, OutputGuard, OutputKind};
+use afsv_design::afs_batch::MAX_SHARDS;
+use afsv_design::layout_ask_tell::{
+    batch_points, LayoutBatchHeader, LAYOUT_BATCH_FORMAT, LAYOUT_FORMAT_VERSION,
+};
+use afsv_design::layout_optimum::{LayoutMeasure, Measured};
+use afsv_design::{
+    optimise_layout, LayoutAsk, LayoutAskTell, LayoutAskTellState, LayoutConstraint,
+    LayoutGaSettings, LayoutOptimum, LayoutProblem, LayoutProblemDesc, LayoutVariable,
+};
+use afsv_records::jsonl::write_jsonl;
+use afsv_records::lock::RunLock;
+use afsv_records::stored::{read_stored, write_json};
+use serde_json::json;
+use std::io::IsTerminal;
+use std::path::{Path, PathBuf};
+use vehicle_3d::Load;
+
+/// Options of `afsv optimize layout`.
+#[derive(clap::Args)]
+pub struct LayoutArgs {
+    #[arg(long, help = crate::cmd::described::HELP)]
+    pub vehicle: Option<PathBuf>,
+    /// The layout (as `afsv study layouts --layouts` names it): rigid, front-hps,
+    /// front-rear-hps, front-roll, front-rear-roll.
+    #[arg(long, default_value = "front-rear-hps")]
+    pub layout: String,
+    /// The cab and seat: `generic`, `off`, or `described` (the description's); default:
+    /// the description's when it has them, else generic.
+    #[arg(long)]
+    pub seat: Option<String>,
+    /// A design variable NAME=LO..HI (repeat): `front.NAME` or `rear.NAME` of the strut
+    /// registry (`afsv params list strut`), or a 3-D vehicle name (`afsv params list
+    /// vehicle-3d`), e.g. `front.a_b=5e-6..3e-5`.
+    #[arg(long = "vary", required = true)]
+    pub vary: Vec<String>,
+    /// The measure to minimise: awz_frame, awz_seat, seat, strut_travel,
+    /// rear_strut_travel, sp_drt, omega_z.
+    #[arg(long)]
+    pub objective: String,
+    /// Maximise the objective instead.
+    #[arg(long)]
+    pub maximise: bool,
+    /// A constraint (repeat): `MEASURE <= BOUND` or `MEASURE >= BOUND`, BOUND a number or
+    /// `F * nominal` (the un-varied layout's value), e.g. 'sp_drt >= 0.96 * nominal'.
+    #[arg(long = "constraint")]
+    pub constraints: Vec<String>,
+    /// Speed of the rides (km/h), 5 to 100.
+    #[arg(long, default_value_t = 20.0)]
+    pub speed_kmh: f64,
+    /// Measured window of the rides (m), 10 to 1000 (D1: 100).
+    #[arg(long, default_value_t = 100.0)]
+    pub ride_length_m: f64,
+    /// Load case of the rides (D2 and D3 are loaded by definition).
+    #[arg(long, default_value = "loaded")]
+    pub load: Load,
+    /// Terrain seeds of every design, 1 to 100 (each measure is the mean over them).
+    #[arg(long, default_value_t = 1)]
+    pub seeds: usize,
+    /// First terrain seed.
+    #[arg(long, default_value_t = 1)]
+    pub terrain_seed: u64,
+    /// GA population (even, 4 to 1000).
+    #[arg(long, default_value_t = 20)]
+    pub population: usize,
+    /// GA generations (1 to 1000); each costs `population` designs.
+    #[arg(long, default_value_t = 10)]
+    pub generations: usize,
+    /// Seed of the GA.
+    #[arg(long, default_value_t = 1)]
+    pub seed: u64,
+    /// Ask/tell state file (JSON): created by the first --ask, advanced by each --tell; give the same options every time.
+    #[arg(long)]
+    pub state: Option<PathBuf>,
+    /// With --state: write the next batch of designs (JSON Lines) for `afsv batch evaluate`; once the run has finished, a batch of no point (header "finished": true) and the report.
+    #[arg(long, requires = "state", conflicts_with = "tell")]
+    pub ask: Option<PathBuf>,
+    /// With --state: the results files of the asked batch (every shard's), to advance the state.
+    #[arg(long, requires = "state", num_args = 1..)]
+    pub tell: Vec<PathBuf>,
+    /// Replace existing output files afsv did not write.
+    #[arg(long)]
+    pub force: bool,
+    /// Print JSON even on a terminal.
+    #[arg(long)]
+    pub json: bool,
+}
+
+/// The problem the options define.
+fn problem_desc(a: &LayoutArgs) -> Result<LayoutProblemDesc, String> {
+    if a.layout.contains(',') {
+        return Err(format!("--layout {}: one layout", a.layout));
+    }
+    let v = crate::cmd::described::articulated(a.vehicle.as_deref())?;
+    let layout = crate::cmd::layouts::build_layouts(&v, &a.layout)?
+        .pop()
+        .ok_or("--layout: no layout named")?;
+    if a.seeds == 0 || a.seeds > afsv_design::layout_optimum::MAX_SEEDS {
+        return Err(format!("--seeds {}: must be 1 to 100", a.seeds));
+    }
+    let flag = |f: &'static str| move |e: String| format!("--{f}: {e}");
+    Ok(LayoutProblemDesc {
+        vehicle: v.name.clone(),
+        layout: layout.name,
+        params: layout.params,
+        front_axle: layout.front_axle,
+        front_link: layout.front_link,
+        seat: crate::cmd::layouts::seat_of(&v, a.seat.as_deref())?,
+        load: a.load,
+        speed_kmh: a.speed_kmh,
+        ride_length_m: a.ride_length_m,
+        seeds: (0..a.seeds as u64)
+            .map(|i| a.terrain_seed.wrapping_add(i))
+            .collect(),
+        variables: a
+            .vary
+            .iter()
+            .map(|t| LayoutVariable::parse(t).map_err(flag("vary")))
+            .collect::<Result<_, _>>()?,
+        objective: LayoutMeasure::parse(&a.objective).map_err(flag("objective"))?,
+        maximise: a.maximise,
+        constraints: a
+            .constraints
+            .iter()
+            .map(|t| LayoutConstraint::parse(t).map_err(flag("constraint")))
+            .collect::<Result<_, _>>()?,
+    })
+}
+
+/// GA progress: one step per generation.
+struct Generations(afsv::progress::Progress);
+
+impl optimize::Progress for Generations {
+    fn report(&self, _phase: &str, done: usize, _total: usize, best: f64) {
+        self.0.step(&format!("generation {done}, best {best:.5}"));
+    }
+}
+
+/// Run `afsv optimize layout`.
+pub fn run(a: &LayoutArgs) -> CmdResult {
+    if a.state.is_some() && a.ask.is_none() && a.tell.is_empty() {
+        return Err("--state: give --ask FILE or --tell RESULTS...".into());
+    }
+    if a.tell.len() > MAX_SHARDS {
+        return Err(format!("--tell: more than {MAX_SHARDS} results files").into());
+    }
+    let ga = LayoutGaSettings {
+        population: a.population,
+        generations: a.generations,
+        seed: a.seed,
+    };
+    ga.options()?;
+    let (_lock, stored) = match &a.state {
+        Some(p) => (
+            Some(RunLock::take("--state", p)?),
+            read_stored("--state", p)?,
+        ),
+        None => (None, None),
+    };
+    let mut guard = OutputGuard::new(a.force);
+    if let Some(v) = a
+        .vehicle
+        .as_deref()
+        .filter(|v| crate::cmd::described::is_file(v))
+    {
+        guard.input("--vehicle", v)?;
+    }
+    let mut told = Vec::with_capacity(a.tell.len());
+    for f in &a.tell {
+        let c = afsv::output::canonical_path(f)?;
+        if told.contains(&c) {
+            return Err(format!("--tell {}: given twice", f.display()).into());
+        }
+        told.push(c);
+        guard.input("--tell", f)?;
+    }
+    if let Some(p) = &a.state {
+        guard.output("--state", p, OutputKind::Sidecar)?;
+    }
+    if let Some(p) = &a.ask {
+        guard.output("--ask", p, OutputKind::JsonLines)?;
+    }
+    let desc = problem_desc(a)?;
+    let problem = desc.problem()?;
+    if let Some(state) = &a.state {
+        return ask_tell(a, &problem, &ga, state, stored);
+    }
+    let progress = Generations(afsv::progress::Progress::new(
+        "afsv optimize layout",
+        "generations",
+        Some(a.generations),
+    ));
+    let r = optimise_layout(&problem, &ga, &progress)?;
+    progress.0.finish();
+    report(a, &r)
+}
+
+/// The report on stdout (JSON, or text on a terminal); [`NotEarned`] when the optimum is
+/// infeasible or a variable lies on a bound.
+fn report(a: &LayoutArgs, r: &LayoutOptimum) -> CmdResult {
+    if a.json || !std::io::stdout().is_terminal() {
+        afsv::output::print_json(r)?;
+    } else {
+        print!("{}", text(r));
+    }
+    r.earned().map_err(|why| {
+        NotEarned(format!(
+            "optimize layout: the best design found is printed, not an optimum: {why}"
+        ))
+        .into()
+    })
+}
+
+/// One `--ask` or `--tell` against the state file `path` (its text `stored`, read under
+/// the run lock).
+fn ask_tell(
+    a: &LayoutArgs,
+    problem: &LayoutProblem,
+    ga: &LayoutGaSettings,
+    path: &Path,
+    stored: Option<String>,
+) -> CmdResult {
+    let driver = LayoutAskTell::new(problem, *ga)?;
+    let mut state = LayoutAskTellState::read(
+        "--state",
+        path,
+        stored.as_deref(),
+        a.ask.is_some(),
+        problem.desc(),
+        ga,
+    )?;
+    // The identity of what this state asks: the SHA-256 of the file's content (as it is,
+    // or as a new state will be written).
+    let created = stored.is_none();
+    let text = match stored {
+        Some(t) => t,
+        None => serde_json::to_string(&state)?,
+    };
+    let sha = afsv_records::provenance::sha256_hex(text.as_bytes());
+    let asked = driver.ask(&state.run)?;
+    let machine = a.json || !std::io::stdout().is_terminal();
+    if let Some(batch_path) = &a.ask {
+        let (phase, points) = match &asked {
+            LayoutAsk::Evaluate(b) => {
+                (b.phase.name(), batch_points(problem.desc(), state.batch, b))
+            }
+            LayoutAsk::Finished => (String::new(), Vec::new()),
+        };
+        let header = LayoutBatchHeader {
+            format: LAYOUT_BATCH_FORMAT.into(),
+            version: LAYOUT_FORMAT_VERSION,
+            written_by: "afsv optimize layout --ask".into(),
+            sign_convention: afsv_records::SIGN_CONVENTION.into(),
+            batch: state.batch,
+            state_sha256: sha,
+            finished: asked == LayoutAsk::Finished,
+            phase: phase.clone(),
+            points: points.len(),
+            problem: problem.desc().clone(),
+        };
+        write_jsonl(batch_path, &header, &points)?;
+        if created {
+            afsv_records::atomic::write(path, &text)
+                .map_err(|e| format!("{}: {e}", path.display()))?;
+        }
+        if asked == LayoutAsk::Finished {
+            if !afsv::progress::is_quiet() {
+                eprintln!(
+                    "afsv optimize layout: the run has finished after {} batches; {} holds no point; the report follows",
+                    state.batch,
+                    batch_path.display()
+                );
+            }
+            return report(a, &driver.finish(&state.run)?);
+        }
+        let status = json!({"batch": state.batch, "finished": false, "phase": phase,
+            "points": points.len(), "batch_file": batch_path.display().to_string()});
+        if machine {
+            afsv::output::print_json(&status)?;
+        } else {
+            println!(
+                "batch {} ({phase}): {} points written to {}",
+                state.batch,
+                points.len(),
+                batch_path.display()
+            );
+        }
+        return Ok(());
+    }
+    let LayoutAsk::Evaluate(b) = asked else {
+        return Err(format!(
+            "--state {}: the run has finished; --ask prints its report",
+            path.display()
+        )
+        .into());
+    };
+    let points = batch_points(problem.desc(), state.batch, &b);
+    let results = state.results(&a.tell, &sha, &points)?;
+    driver.tell(&mut state.run, results)?;
+    state.batch += 1;
+    write_json(path, &state)?;
+    let finished = driver.ask(&state.run)? == LayoutAsk::Finished;
+    let status = json!({"told": state.batch - 1, "points": points.len(), "next_batch": state.batch, "finished": finished});
+    if machine {
+        afsv::output::print_json(&status)?;
+    } else {
+        println!(
+            "batch {} told ({} points); {}",
+            state.batch - 1,
+            points.len(),
+            if finished {
+                "the run has finished: --ask prints the report"
+            } else {
+                "next: --ask"
+            }
+        );
+    }
+    Ok(())
+}
+
+/// A number with 4 significant digits, or "n/a".
+fn num(x: f64) -> String {
+    if !x.is_finite() {
+        "n/a".into()
+    } else if x != 0.0 && (x.abs() < 1e-2 || x.abs() >= 1e5) {
+        format!("{x:.3e}")
+    } else {
+        format!("{x:.4}")
+    }
+}
+
+fn value(m: &Measured, k: LayoutMeasure) -> f64 {
+    m.get(&k).copied().unwrap_or(f64::NAN)
+}
+
+/// The report as text.
+fn text(r: &LayoutOptimum) -> String {
+    let mut s = format!(
+        "Layout `{}` of `{}`{}: {} rides at {} km/h ({} m window, class E), {} terrain seed(s) from {}; GA {} x {} generations ({} designs)\n",
+        r.layout,
+        r.vehicle,
+        if r.seat { " with cab and seat" } else { "" },
+        r.load,
+        r.speed_kmh,
+        r.ride_length_m,
+        r.seeds.len(),
+        r.seeds[0],
+        r.ga.population,
+        r.ga.generations,
+        r.evaluations
+    );
+    s += &format!(
+        "{} {} ({})\n\n",
+        if r.maximise { "Maximise" } else { "Minimise" },
+        r.objective.name(),
+        r.objective.unit()
+    );
+    s += &format!(
+        "  {:<28} {:>11} {:>11} {:>11} {:>11}\n",
+        "variable", "lower", "upper", "nominal", "optimum"
+    );
+    for v in &r.variables {
+        s += &format!(
+            "  {:<28} {:>11} {:>11} {:>11} {:>11}{}\n",
+            v.name,
+            num(v.lower),
+            num(v.upper),
+            num(v.nominal),
+            num(v.optimum),
+            if v.on_bound { "  ON A BOUND" } else { "" }
+        );
+    }
+    s += &format!(
+        "\n  {:<28} {:>11} {:>11}\n",
+        "measure", "nominal", "optimum"
+    );
+    for (k, v) in &r.optimum {
+        s += &format!(
+            "  {:<28} {:>11} {:>11}\n",
+            format!("{} ({})", k.name(), k.unit()),
+            num(value(&r.nominal, *k)),
+            num(*v)
+        );
+    }
+    for c in &r.constraints {
+        s += &format!(
+            "  constraint {}: bound {}, optimum {} ({})\n",
+            c.constraint,
+            num(c.bound),
+            num(c.optimum),
+            if c.met { "met" } else { "NOT met" }
+        );
+    }
+    s += &match r.earned() {
+        Ok(()) => "The optimum is feasible and inside the bounds.\n".to_string(),
+        Err(why) => format!("Not an optimum: {why}.\n"),
+    };
+    s
+}
