@@ -22,7 +22,6 @@
 //! The same search runs ask/tell ([`crate::layout_ask_tell`]) for a cluster.
 
 use crate::error::DesignError;
-use hps_emulsion::interconnect::LineParams;
 use optimize::ga::{GaOptions, GeneticAlgorithm};
 use optimize::{Bounds, ConstrainedProblem, Evaluation, Progress};
 use rayon::prelude::*;
@@ -30,7 +29,7 @@ use serde::{Deserialize, Serialize};
 use std::collections::{BTreeMap, BTreeSet};
 use std::sync::{Arc, OnceLock};
 use vehicle_3d::cab_ride::{seat_ride_measures, CabSeatLayout};
-use vehicle_3d::interconnect::{ride_linked_on, roll_linked_on, yaw_linked};
+use vehicle_3d::interconnect::{ride_linked_on, roll_linked_on, yaw_linked, Link};
 use vehicle_3d::scenarios::{
     ride_on, ride_tracks, roll_on, roll_tracks, yaw, RideSpec, RollSpec, YawSpec, RUN_IN_M,
 };
@@ -293,8 +292,9 @@ pub struct LayoutProblemDesc {
     pub params: VehicleParams,
     /// The front axle.
     pub front_axle: FrontAxle,
-    /// The front struts' roll interconnection, if any.
-    pub front_link: Option<LineParams>,
+    /// The layout's strut interconnection (the front struts' roll link or each side's
+    /// pitch link), if any.
+    pub link: Option<Link>,
     /// The cab and seat (needed by `awz_seat` and `seat`).
     pub seat: Option<CabSeatLayout>,
     /// Load case of the rides (D2 and D3 are loaded).
@@ -457,13 +457,18 @@ impl LayoutProblem {
         }
         let sim = |e: String| DesignError::Simulation(format!("layout `{}`: {e}", d.layout));
         d.params.validate().map_err(|e| sim(e.to_string()))?;
-        if let Some(line) = &d.front_link {
+        if let Some(link) = &d.link {
             if d.front_axle != FrontAxle::Suspended {
                 return Err(sim(
-                    "the roll interconnection needs the front-axle HPS".into()
+                    "the strut interconnection needs the front-axle HPS".into()
                 ));
             }
-            line.validate().map_err(|e| sim(e.to_string()))?;
+            if matches!(link, Link::Pitch(_)) && d.params.rear_hps.is_none() {
+                return Err(sim(
+                    "the pitch interconnection needs struts on the rear axle".into(),
+                ));
+            }
+            link.validate().map_err(|e| sim(e.to_string()))?;
         }
         if let Some(s) = &d.seat {
             s.build(&d.params)
@@ -660,10 +665,10 @@ impl LayoutProblem {
                     let t = self.cached(&self.ride[k], &p, &|q| {
                         ride_tracks(q, &ride_spec, seed).map_err(sim)
                     })?;
-                    let (rec, m) = match &d.front_link {
+                    let (rec, m) = match &d.link {
                         None => ride_on(&p, &ride_spec, t).map_err(sim)?,
-                        Some(line) => {
-                            let (run, m) = ride_linked_on(&p, &ride_spec, t, line).map_err(sim)?;
+                        Some(link) => {
+                            let (run, m) = ride_linked_on(&p, &ride_spec, t, link).map_err(sim)?;
                             (run.record, m)
                         }
                     };
@@ -685,9 +690,9 @@ impl LayoutProblem {
                     let t = self.cached(&self.roll[k], &p, &|q| {
                         roll_tracks(q, &roll_spec, seed).map_err(sim)
                     })?;
-                    let m = match &d.front_link {
+                    let m = match &d.link {
                         None => roll_on(&p, &roll_spec, t).map_err(sim)?.1,
-                        Some(line) => roll_linked_on(&p, &roll_spec, t, line).map_err(sim)?.1,
+                        Some(link) => roll_linked_on(&p, &roll_spec, t, link).map_err(sim)?.1,
                     };
                     out.push((LayoutMeasure::SpDrt, m.sp_drt_m_s2));
                 }
@@ -707,9 +712,9 @@ impl LayoutProblem {
         }
         if needs(Run::Yaw) {
             let spec = YawSpec::d3(d.front_axle);
-            let m = match &d.front_link {
+            let m = match &d.link {
                 None => yaw(&p, &spec, 0).map_err(sim)?.1,
-                Some(line) => yaw_linked(&p, &spec, line).map_err(sim)?.1,
+                Some(link) => yaw_linked(&p, &spec, link).map_err(sim)?.1,
             };
             sums.insert(LayoutMeasure::OmegaZ, m.omega_z_hz);
         }
@@ -993,7 +998,7 @@ pub(crate) mod tests {
             layout: "front-rear-hps".into(),
             params,
             front_axle: FrontAxle::Suspended,
-            front_link: None,
+            link: None,
             seat: Some(CabSeatLayout::generic()),
             load: Load::Loaded,
             speed_kmh: 30.0,
@@ -1007,6 +1012,24 @@ pub(crate) mod tests {
             maximise: false,
             constraints: vec![LayoutConstraint::parse("awz_seat <= 1.1 * nominal").unwrap()],
         }
+    }
+
+    #[test]
+    fn a_pitch_link_is_carried_and_needs_the_rear_struts() {
+        let mut d = tiny();
+        let link = Link::pitch_of(&d.params).unwrap();
+        d.link = Some(link);
+        let text = serde_json::to_string(&d).unwrap();
+        let back: LayoutProblemDesc = serde_json::from_str(&text).unwrap();
+        assert_eq!(back.link, Some(link));
+        assert!(LayoutProblem::new(d.clone()).is_ok());
+        d.params.rear_hps = None;
+        d.variables.truncate(1);
+        let e = LayoutProblem::new(d).err().unwrap().to_string();
+        assert!(
+            e.contains("pitch interconnection needs struts on the rear axle"),
+            "{e}"
+        );
     }
 
     #[test]

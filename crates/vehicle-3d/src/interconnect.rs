@@ -21,7 +21,7 @@
 use hps_emulsion::interconnect::{sealed_piston, CrossCoupledPair, LineParams};
 use hps_emulsion::HpsStrut;
 use odeint::OdeSystem;
-use serde::Serialize;
+use serde::{Deserialize, Serialize};
 use vehicle_components::FlatTerrain;
 
 use crate::error::{measure, rejected, VehicleError};
@@ -45,7 +45,7 @@ const MAX_STRUT_STATES: usize = 8;
 const MAX_PAIR: usize = 2 * MAX_STRUT_STATES + 2;
 
 /// Which struts are interconnected, and by which lines.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 pub enum Link {
     /// The two front struts, left-right: one line design for both lines
     /// ([`LineParams::front_axle_roll`]).

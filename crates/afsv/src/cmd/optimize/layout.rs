@@ -112,7 +112,7 @@ fn problem_desc(a: &LayoutArgs) -> Result<LayoutProblemDesc, String> {
         layout: layout.name,
         params: layout.params,
         front_axle: layout.front_axle,
-        front_link: layout.front_link,
+        link: layout.link(),
         seat: crate::cmd::layouts::seat_of(&v, a.seat.as_deref())?,
         load: a.load,
         speed_kmh: a.speed_kmh,
