@@ -107,12 +107,13 @@ fn problem_desc(a: &LayoutArgs) -> Result<LayoutProblemDesc, String> {
         return Err(format!("--seeds {}: must be 1 to 100", a.seeds));
     }
     let flag = |f: &'static str| move |e: String| format!("--{f}: {e}");
+    let link = layout.link();
     Ok(LayoutProblemDesc {
         vehicle: v.name.clone(),
         layout: layout.name,
         params: layout.params,
         front_axle: layout.front_axle,
-        link: layout.link(),
+        link,
         seat: crate::cmd::layouts::seat_of(&v, a.seat.as_deref())?,
         load: a.load,
         speed_kmh: a.speed_kmh,
