@@ -27,8 +27,8 @@
 //!   dh = [ V_g (T_g/T_ref - 1) + V_e (T_b/T_ref - 1) + beta_T V_oil (T_b - T_ref) + V_lev ] / A_hr
 //! ```
 //!
-//! (`V_g`, `V_e`, `V_oil`: free gas, entrapped gas (Eq 5.9) and oil (Eq 5.8) at `P` and the
-//! charge temperature `T_ref`; `V_lev` the oil a levelling valve has added). The static
+//! (`V_g`, `V_e`, `V_oil`: free gas (isothermal at rest: `V_g0 P_h0 / P`), entrapped gas
+//! (Eq 5.9) and oil (Eq 5.8) at `P` and the charge temperature `T_ref`; `V_lev` the oil a levelling valve has added). The static
 //! stiffness is `A_hr^2` over the compliance `(V_g(T_g) + V_e(T_b)) / (n P) + V_oil / beta_h`
 //! (Eqs 5.4, 5.8-5.11 linearised at `P`): a hot strut is softer, and levelling oil does not
 //! give the stiffness back.
@@ -301,10 +301,12 @@ pub struct ThermalStrut {
 
 impl ThermalStrut {
     /// The strut `params` carrying the static load `load_n` (N) at the charge temperature,
-    /// with the thermal nodes `thermal`: the static state is the strut's own
-    /// ([`HpsStrut::initial_state`] at the deflection where its static force is the load),
-    /// the gas mass `m_g = P V_g / (R T_ref)` the one that state holds. Errors name the
-    /// offending parameter; a load the strut cannot carry within its travel is refused.
+    /// with the thermal nodes `thermal`. The static state is the strut's own with the fast
+    /// gas law [`crate::HeatTransfer`] (`thermal.gas`), whose gas at rest is isothermal
+    /// ([`HpsStrut::initial_state`] at the deflection where its static force is the load):
+    /// `V_g = V_g0 P_h0 / P`, so the gas mass `m_g = P V_g / (R T_ref) = P_h0 V_g0 / (R T_ref)`
+    /// is the charge's at every load. Errors name the offending parameter; a load the strut
+    /// cannot carry within its travel is refused.
     pub fn new(
         params: &StrutParams,
         thermal: &ThermalParams,
@@ -312,7 +314,15 @@ impl ThermalStrut {
     ) -> Result<Self, HpsError> {
         thermal.validate()?;
         crate::error::positive("load_n", load_n)?;
-        let strut = HpsStrut::new(params, &HpsExtensions::none())?;
+        // Over hours the gas is isothermal at rest: the strut with the fast heat-transfer
+        // law has that static equilibrium (`HpsStrut::static_pressure`, gas exponent 1).
+        let strut = HpsStrut::new(
+            params,
+            &HpsExtensions {
+                heat_transfer: Some(thermal.gas),
+                ..HpsExtensions::none()
+            },
+        )?;
         let z = static_deflection(&strut, load_n)?;
         let mut state = vec![0.0; strut.n_states()];
         strut.initial_state(z, &mut state)?;
@@ -374,7 +384,9 @@ impl ThermalStrut {
     }
 
     /// Static deflection at the charge temperature (m, compression positive from
-    /// mid-stroke).
+    /// mid-stroke), with the isothermal gas of a strut at rest for hours (the pseudo-static
+    /// exponent `n` of `HpsStrut::new`'s statics sits a few mm lower: 5.7 mm on the loaded
+    /// prototype's front strut).
     pub fn static_travel_m(&self) -> f64 {
         self.static_travel_m
     }
@@ -448,8 +460,9 @@ impl ThermalStrut {
 
     /// Static stiffness (N/m) at the temperatures and levelled oil: `A_hr^2` over the
     /// compliance `(V_g(T_g) + V_e(T_b)) / (n P) + V_oil / beta_h` (Eqs 5.4, 5.8-5.11
-    /// linearised at the fixed pressure; at the charge temperature it is
-    /// [`HpsStrut::static_stiffness`] at the static deflection).
+    /// linearised at the fixed pressure, the polytropic gas of the ride's motions; at the
+    /// charge temperature it is `A_hr^2` over the sum of [`HpsStrut::chamber_compliances`]
+    /// at the static state).
     pub fn stiffness_n_m(&self, gas_k: f64, body_k: f64, levelled_m3: f64) -> f64 {
         let p = &self.params;
         let t_ref = self.thermal.charge_temperature_k;

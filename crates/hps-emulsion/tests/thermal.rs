@@ -32,16 +32,39 @@ fn static_pressure_gas_and_ride_height_per_kelvin_by_hand() {
         "{}",
         s.pressure_pa()
     );
-    // the strut's static gas law (Eq 5.4, exponent n) from the charge to that pressure
-    let v_g = p.v_g0 * (p.p_h0 / pressure).powf(1.0 / p.n);
+    // at rest for hours the gas is isothermal: Boyle from the charge to that pressure,
+    // and the gas mass is the charge's, at any load
+    let v_g = p.v_g0 * p.p_h0 / pressure;
     assert!((s.gas_volume_m3() / v_g - 1.0).abs() < 1e-6);
     let t_ref = KELVIN_AT_0C + 20.0;
-    let m = pressure * v_g / (R_NITROGEN * t_ref);
+    let m = p.p_h0 * p.v_g0 / (R_NITROGEN * t_ref);
     assert!(
         (s.gas_mass_kg() / m - 1.0).abs() < 1e-6,
         "{}",
         s.gas_mass_kg()
     );
+    // the pseudo-static strut (exponent n, `HpsStrut::new`'s statics, vehicle_3d's static
+    // travel) holds less gas at the load and sits lower by the volume difference over A_hr
+    let base = HpsStrut::new(&p, &HpsExtensions::none()).unwrap();
+    let (mut lo, mut hi) = (-p.travel, p.travel);
+    for _ in 0..60 {
+        let mid = 0.5 * (lo + hi);
+        if base.static_force(mid).unwrap() < LOAD_N {
+            lo = mid;
+        } else {
+            hi = mid;
+        }
+    }
+    let v_poly = p.v_g0 * (p.p_h0 / pressure).powf(1.0 / p.n);
+    let shift = lo - s.static_travel_m();
+    assert!(
+        (shift / ((v_g - v_poly) / p.a_hr) - 1.0).abs() < 0.02,
+        "{shift}"
+    );
+    assert!((0.005..0.006).contains(&shift), "{shift}");
+    let light = ThermalStrut::new(&p, &ThermalParams::front_axle(), 0.8 * LOAD_N).unwrap();
+    assert!((light.gas_mass_kg() / m - 1.0).abs() < 1e-6);
+    assert!(light.static_travel_m() < s.static_travel_m() - 0.02);
     // 10 K warmer, uniformly: ideal gas at constant pressure (free and entrapped, Eq 5.9)
     // plus the oil's thermal expansion (Eq 5.8 for the oil at the pressure)
     let (oil_c, oil_r) = p.oil_volumes();
@@ -64,8 +87,20 @@ fn static_pressure_gas_and_ride_height_per_kelvin_by_hand() {
 #[test]
 fn stiffness_at_the_charge_temperature_is_the_struts_and_falls_when_hot() {
     let s = front();
-    let strut = HpsStrut::new(&StrutParams::front_axle(), &HpsExtensions::none()).unwrap();
-    let k_strut = strut.static_stiffness(s.static_travel_m()).unwrap();
+    // the strut at rest (isothermal statics of the heat-transfer law), its chambers'
+    // compliances (polytropic gas, emulsion of Eq 5.11) in parallel: both at one pressure
+    let ext = HpsExtensions {
+        heat_transfer: Some(s.thermal().gas),
+        ..HpsExtensions::none()
+    };
+    let strut = HpsStrut::new(&StrutParams::front_axle(), &ext).unwrap();
+    let mut state = vec![0.0; strut.n_states()];
+    strut
+        .initial_state(s.static_travel_m(), &mut state)
+        .unwrap();
+    let c = strut.chamber_compliances(s.static_travel_m(), &state);
+    let a_hr = s.params().a_hr;
+    let k_strut = a_hr * a_hr / (c.piston + c.rod);
     let t_ref = s.thermal().charge_temperature_k;
     let k = s.stiffness_n_m(t_ref, t_ref, 0.0);
     assert!((k / k_strut - 1.0).abs() < 1e-3, "{k} vs {k_strut}");
