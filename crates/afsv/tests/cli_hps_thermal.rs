@@ -117,3 +117,18 @@ fn refused_input_is_one_line() {
         assert!(!err.contains("panicked"), "{err}");
     }
 }
+
+#[test]
+fn a_d1_ride_sets_the_dissipation() {
+    let v = json(&afsv(&[
+        "hps", "thermal", "--ride", "--hours", "1", "--json",
+    ]));
+    let a = &v["axles"][0];
+    let p = num(&a["power_w"]);
+    // a class E ride at 20 km/h works the strut: tens to hundreds of watts
+    assert!((10.0..2000.0).contains(&p), "{p}");
+    assert!(a["power_source"].as_str().unwrap().starts_with("D1 ride"));
+    // --ride and --power-w exclude each other
+    let out = afsv(&["hps", "thermal", "--ride", "--power-w", "100"]);
+    assert!(!out.status.success());
+}

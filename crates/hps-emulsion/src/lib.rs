@@ -69,4 +69,7 @@ pub use simulate::{
     StrutRecord,
 };
 pub use strut::{ChamberCompliance, ChamberInflow, HpsStrut, StrutOutputs};
-pub use thermal::{LevellingValve, ThermalConditions, ThermalParams, ThermalRecord, ThermalStrut};
+pub use thermal::{
+    mean_dissipation_w, LevellingValve, ThermalConditions, ThermalParams, ThermalRecord,
+    ThermalStrut,
+};

@@ -538,6 +538,53 @@ impl ThermalStrut {
     }
 }
 
+/// Mean power (W) the strut `params` turns into heat along a displacement record (`time_s`
+/// strictly increasing, `displacement_m` the deflection `z_s`, compression positive, e.g. a
+/// vehicle ride's strut travel): the record replayed through the strut
+/// ([`crate::simulate_displacement`], sampled excitation, velocity by central differences,
+/// starting at rest in static equilibrium), `P_d = (int F z' dt - int_{z_0}^{z_end} F_s dz)
+/// / T`: the work done on the strut less the change of its static spring energy (`F_s` the
+/// static force, [`HpsStrut::static_force`], Simpson's rule). What is left is the orifice,
+/// leakage and friction losses (Eqs 5.1-5.12) plus the change of the dynamic part of the
+/// stored energy, which does not grow with the record's length.
+pub fn mean_dissipation_w(
+    params: &StrutParams,
+    time_s: &[f64],
+    displacement_m: &[f64],
+) -> Result<f64, HpsError> {
+    let exc = crate::Excitation::Samples {
+        time_s: time_s.to_vec(),
+        displacement_m: displacement_m.to_vec(),
+        velocity_m_s: None,
+    };
+    let ext = HpsExtensions::none();
+    let rec = crate::simulate_displacement(params, &ext, &exc, &crate::SimOptions::default())?;
+    let mut work = 0.0;
+    for i in 1..rec.time.len() {
+        let dt = rec.time[i] - rec.time[i - 1];
+        work +=
+            0.5 * dt * (rec.force[i] * rec.velocity[i] + rec.force[i - 1] * rec.velocity[i - 1]);
+    }
+    let strut = HpsStrut::new(params, &ext)?;
+    let (z0, z1) = (displacement_m[0], displacement_m[displacement_m.len() - 1]);
+    let intervals = 16;
+    let h = (z1 - z0) / intervals as f64;
+    let mut spring = 0.0;
+    for k in 0..=intervals {
+        let w = if k == 0 || k == intervals {
+            1.0
+        } else if k % 2 == 1 {
+            4.0
+        } else {
+            2.0
+        };
+        spring += w * strut.static_force(z0 + k as f64 * h)?;
+    }
+    spring *= h / 3.0;
+    let duration = time_s[time_s.len() - 1] - time_s[0];
+    Ok((work - spring) / duration)
+}
+
 /// Deflection (m) at which `strut`'s static force is `load` (N), by bisection over the
 /// travel; a load outside the travel is refused.
 fn static_deflection(strut: &HpsStrut, load: f64) -> Result<f64, HpsError> {

@@ -4,19 +4,21 @@
 //!
 //! The vehicle part: each suspended axle's strut carries its static load from the hand
 //! statics of `vehicle_3d::Statics` (tire load less the wheel end); the strut's thermal data
-//! are `ThermalParams::for_strut`'s; the dissipation is given (`--power-w`) or read from a
+//! are `ThermalParams::for_strut`'s; the dissipation is given (`--power-w`), read from a D1
+//! ride of the vehicle (`--ride`: each strut's travel replayed through it) or from a
 //! simulated harmonic stroke of that strut (`--stroke-hz`, `--stroke-mm`).
 
 use super::{args, CmdResult};
 use afsv::output::OutputGuard;
 use hps_emulsion::thermal::KELVIN_AT_0C;
 use hps_emulsion::{
-    run_harmonic, HarmonicTest, HpsError, HpsExtensions, LevellingValve, SimOptions, StrutParams,
-    ThermalConditions, ThermalParams, ThermalRecord, ThermalStrut,
+    mean_dissipation_w, run_harmonic, HarmonicTest, HpsError, HpsExtensions, LevellingValve,
+    SimOptions, StrutParams, ThermalConditions, ThermalParams, ThermalRecord, ThermalStrut,
 };
 use serde_json::{json, Value};
 use std::path::PathBuf;
-use vehicle_3d::{Load, Statics};
+use vehicle_3d::scenarios::{RideSpec, RUN_IN_M};
+use vehicle_3d::{FrontAxle, Load, Statics, VehicleParams};
 
 /// Longest shift (h).
 const MAX_HOURS: f64 = 72.0;
@@ -47,6 +49,16 @@ pub struct ThermalArgs {
     /// read from a simulated harmonic stroke (--stroke-hz, --stroke-mm).
     #[arg(long = "power-w", allow_hyphen_values = true, value_parser = args::nonneg_f64)]
     pub power_w: Option<f64>,
+    /// Read each strut's dissipation from a D1 ride of the vehicle (class E terrain, the
+    /// struts' recorded travel replayed through the strut) instead of a harmonic stroke.
+    #[arg(long, conflicts_with = "power_w")]
+    pub ride: bool,
+    /// Speed of that ride (km/h), in (0, 80].
+    #[arg(long = "speed-kmh", default_value_t = 20.0, allow_hyphen_values = true, value_parser = args::positive_f64, requires = "ride")]
+    pub speed_kmh: f64,
+    /// Terrain seed of that ride.
+    #[arg(long, default_value_t = 1, requires = "ride")]
+    pub seed: u64,
     /// Frequency of the harmonic stroke that sets the dissipation (Hz).
     #[arg(long = "stroke-hz", default_value_t = 1.0, allow_hyphen_values = true, value_parser = args::positive_f64)]
     pub stroke_hz: f64,
@@ -134,6 +146,16 @@ pub fn run(a: ThermalArgs) -> CmdResult {
     if let Some(r) = rear {
         axles.push(("rear", r, statics.rear_strut_force_n(&params)));
     }
+    let ride = if a.ride {
+        if a.speed_kmh > 80.0 {
+            return Err(format!("--speed-kmh {}: at most 80", args::show(a.speed_kmh)).into());
+        }
+        let mut p = params.clone();
+        p.rear_hps = rear;
+        Some(ride_powers(&p, a.load, a.speed_kmh, a.seed)?)
+    } else {
+        None
+    };
     let mut runs = Vec::with_capacity(axles.len());
     let mut skipped = Vec::new();
     for (name, strut_params, load_n) in axles {
@@ -155,9 +177,17 @@ pub fn run(a: ThermalArgs) -> CmdResult {
             }
             Err(e) => return Err(format!("{name} strut: {e}").into()),
         };
-        let (power_w, power_source) = match a.power_w {
-            Some(p) => (p, "--power-w".to_string()),
-            None => (
+        let (power_w, power_source) = match (a.power_w, &ride) {
+            (Some(p), _) => (p, "--power-w".to_string()),
+            (None, Some(r)) => (
+                if name == "front" { r[0] } else { r[1] },
+                format!(
+                    "D1 ride, class E, {} km/h, seed {}: the strut travel replayed through the strut, mean of left and right",
+                    args::show(a.speed_kmh),
+                    a.seed
+                ),
+            ),
+            (None, None) => (
                 stroke_power(&strut_params, a.stroke_hz, a.stroke_mm)?,
                 format!(
                     "simulated harmonic stroke {} Hz, {} mm about mid-stroke (mean dissipated power)",
@@ -192,6 +222,42 @@ pub fn run(a: ThermalArgs) -> CmdResult {
         .into());
     }
     emit(&a, &v.name, &runs, &skipped, &valve)
+}
+
+/// Mean dissipated power (W) per strut, front then rear (0 without rear struts), in one D1
+/// ride of `p` (front axle suspended) at `speed_kmh` on terrain `seed`: each strut's
+/// recorded travel after the run-in replayed through it
+/// ([`hps_emulsion::mean_dissipation_w`]), left and right averaged.
+fn ride_powers(
+    p: &VehicleParams,
+    load: Load,
+    speed_kmh: f64,
+    seed: u64,
+) -> Result<[f64; 2], String> {
+    let spec = RideSpec {
+        speed_kmh,
+        ..RideSpec::d1(load, FrontAxle::Suspended)
+    };
+    let (rec, _) =
+        vehicle_3d::scenarios::ride(p, &spec, seed).map_err(|e| format!("--ride: {e}"))?;
+    let i0 = rec
+        .t_s
+        .partition_point(|&t| t < RUN_IN_M / (speed_kmh / 3.6));
+    let time = &rec.t_s[i0..];
+    let mean = |strut: &StrutParams, travel: &[Vec<f64>; 2]| -> Result<f64, String> {
+        let mut sum = 0.0;
+        for side in travel {
+            sum += mean_dissipation_w(strut, time, &side[i0..])
+                .map_err(|e| format!("--ride: replaying the strut travel: {e}"))?;
+        }
+        Ok(0.5 * sum)
+    };
+    let front = mean(&p.hps, &rec.hps_travel_m)?;
+    let rear = match &p.rear_hps {
+        Some(r) => mean(r, &rec.rear_hps_travel_m)?,
+        None => 0.0,
+    };
+    Ok([front, rear])
 }
 
 /// Mean dissipated power (W) of `strut` in a harmonic stroke about mid-stroke: the last of
@@ -246,6 +312,13 @@ fn emit(
         );
         let [fast, slow] = s.time_constants_s();
         let steady = s.steady_temperature_k(KELVIN_AT_0C + a.ambient_c, r.power_w);
+        // the largest drift of the shift against the travel: past it the strut is on its
+        // stop and the drift law no longer holds
+        let within = r
+            .drift
+            .ride_height_m
+            .iter()
+            .all(|h| (s.static_travel_m() - h).abs() <= s.params().travel);
         let end = json!({
             "gas_c": celsius(r.drift.gas_k[n]),
             "body_c": celsius(r.drift.body_k[n]),
@@ -253,7 +326,7 @@ fn emit(
             "levelled_ride_height_mm": r.levelled.ride_height_m[n] * 1e3,
             "levelled_oil_l": r.levelled.levelled_m3[n] * 1e3,
             "stiffness_ratio": r.drift.stiffness_n_m[n] / k0,
-            "within_travel": (s.static_travel_m() - r.drift.ride_height_m[n]).abs() <= s.params().travel,
+            "within_travel": within,
             "levelled_stiffness_ratio": r.levelled.stiffness_n_m[n] / k0,
         });
         summary += &format!(
@@ -262,7 +335,11 @@ fn emit(
             s.load_n() * 1e-3,
             s.pressure_pa() * 1e-6,
             r.power_w,
-            if a.power_w.is_some() { "given" } else { "stroke" },
+            match (a.power_w, a.ride) {
+                (Some(_), _) => "given",
+                (None, true) => "D1 ride",
+                (None, false) => "stroke",
+            },
             celsius(steady),
             slow / 3600.0,
             args::show(a.hours),
@@ -272,6 +349,14 @@ fn emit(
             r.drift.stiffness_n_m[n] / k0,
             s.ride_height_per_kelvin() * 1e3,
         );
+        if !within {
+            summary += &format!(
+                "  {} strut: the unlevelled drift passes the end of the travel (static travel {:.1} mm of +-{:.0} mm): past it the strut rests on its stop and the drift law does not hold\n",
+                r.name,
+                s.static_travel_m() * 1e3,
+                s.params().travel * 1e3
+            );
+        }
         let (cg, cb) = s.capacities_j_k();
         let (ggb, gba) = s.conductances_w_k();
         axles.push(json!({
