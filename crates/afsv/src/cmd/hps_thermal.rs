@@ -139,6 +139,9 @@ pub fn run(a: ThermalArgs) -> CmdResult {
         time_constant_s: a.levelling_tau_s,
         max_flow_m3_s: a.levelling_flow_l_min * 1e-3 / 60.0,
     };
+    valve
+        .validate()
+        .map_err(|e| format!("--deadband-mm, --levelling-tau-s, --levelling-flow-l-min: {e}"))?;
     let ambient_k = KELVIN_AT_0C + a.ambient_c;
     let start_k = KELVIN_AT_0C + a.start_c.unwrap_or(a.ambient_c);
     let duration = a.hours * 3600.0;
