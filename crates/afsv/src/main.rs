@@ -30,7 +30,7 @@ enum Command {
     Discover(cmd::discover::DiscoverArgs),
     /// Write measurement-like records from a truth model with hidden effects and sensor noise.
     Synth(cmd::discover::SynthArgs),
-    /// Hydro-pneumatic suspension strut with gas-oil emulsion: `harmonic`, `characterize`, `identify`.
+    /// Hydro-pneumatic suspension strut with gas-oil emulsion: `harmonic`, `characterize`, `identify`, `thermal` (temperatures and ride height over a shift).
     #[command(subcommand)]
     Hps(cmd::hps::Command),
     /// Performance measures on records: `weighting` (ISO 2631-1 filters), `wbv` (exposure), `decay` (free-decay fit), `step` (step metrics), `check` (the weightings against the standard's table).

@@ -21,6 +21,8 @@
 //! - [`HpsExtensions`]: switchable physical extensions for the model-discrepancy workflow.
 //! - [`interconnect`]: two struts cross-connected by hydraulic lines with accumulators (roll
 //!   or pitch interconnection, `docs/layouts.md`).
+//! - [`thermal`]: the loaded strut's gas and body temperatures over hours, the ride height
+//!   they set, and a levelling valve (`docs/layouts.md`).
 //!
 //! See `docs/hps-emulsion.md` for the equation-to-code map and every modelling choice.
 
@@ -43,6 +45,7 @@ pub mod params;
 pub mod registry;
 pub mod simulate;
 pub mod strut;
+pub mod thermal;
 
 pub use characterize::{
     characterize, front_axle_summary, lab_programme, loop_metrics, run_harmonic, summary,
@@ -66,3 +69,7 @@ pub use simulate::{
     StrutRecord,
 };
 pub use strut::{ChamberCompliance, ChamberInflow, HpsStrut, StrutOutputs};
+pub use thermal::{
+    mean_dissipation_w, LevellingValve, ThermalConditions, ThermalParams, ThermalRecord,
+    ThermalStrut,
+};

@@ -1,6 +1,7 @@
 //! `afsv hps`: the hydro-pneumatic suspension strut with gas-oil emulsion (chapter 5):
-//! harmonic runs with loops, the laboratory characterisation programme, and parameter
-//! identification from a measured record.
+//! harmonic runs with loops, the laboratory characterisation programme, parameter
+//! identification from a measured record, and the struts' temperatures and ride height over a
+//! shift (`thermal`, in `hps_thermal`).
 
 use super::{args, CmdResult};
 use afsv::output::{OutputGuard, OutputKind};
@@ -135,6 +136,10 @@ pub enum Command {
     /// Fit model parameters to a measured strut record (CSV with time_s, displacement_m and
     /// any of force_n, p_piston_pa, p_rod_pa); print fitted values, standard errors and NRMSE.
     Identify(IdentifyArgs),
+    /// Gas and strut-body temperatures of a vehicle's struts over a working shift and the
+    /// ride-height drift they set, without and with a levelling valve (a table on a
+    /// terminal, JSON on a pipe or with --json, CSV with -o; docs/layouts.md).
+    Thermal(super::hps_thermal::ThermalArgs),
 }
 
 /// Options of `afsv hps harmonic`.
@@ -224,6 +229,7 @@ pub fn run(cmd: Command) -> CmdResult {
         Command::Harmonic(a) => harmonic(a),
         Command::Characterize(a) => characterize_cmd(a),
         Command::Identify(a) => identify_cmd(a),
+        Command::Thermal(a) => super::hps_thermal::run(a),
     }
 }
 

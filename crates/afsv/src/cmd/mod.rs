@@ -9,6 +9,7 @@ pub mod design_measures;
 pub mod discover;
 pub mod evaluate;
 pub mod hps;
+pub mod hps_thermal;
 pub mod layouts;
 pub mod measures;
 pub mod optimize;
