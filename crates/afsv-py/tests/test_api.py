@@ -153,7 +153,8 @@ def test_runs_release_the_gil() -> None:
     time.sleep(0.01)
     before = len(ticks)
     t0 = time.perf_counter()
-    afsv.simulate_vehicle(terrain_class="E", duration=20)
+    # long enough to last well over 0.1 s on a fast machine (20 s of it took 0.09 s)
+    afsv.simulate_vehicle(terrain_class="E", duration=120)
     elapsed = time.perf_counter() - t0
     during = len(ticks) - before
     stop.set()
