@@ -26,6 +26,8 @@
 //! - [`layout_optimum`]: `afsv optimize layout`, a GA over registry-named parameters of
 //!   one layout with constraints on its measures; [`layout_ask_tell`]: the same run split
 //!   into ask and tell, with its batch, results and state files;
+//! - [`strut_shift`]: `afsv hps thermal`, a vehicle's struts over a working shift (gas and
+//!   body temperatures, ride height and stiffness, with and without a levelling valve);
 //! - [`fan_out`]: the one scheduler of the studies on the 3-D vehicle (per-case caches
 //!   built once, runs in parallel, results in order) and the plain seed fan-out.
 //!
@@ -53,6 +55,7 @@ pub mod layout_optimum;
 pub mod layouts;
 pub mod measures;
 pub mod objective;
+pub mod strut_shift;
 pub mod sweep;
 
 pub use afs_ask_tell::{AfsAsk, AfsAskTell, AfsBatch, AfsPhase};

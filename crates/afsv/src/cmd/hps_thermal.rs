@@ -2,23 +2,18 @@
 //! temperatures and the ride height these set, with and without a levelling valve
 //! (`hps_emulsion::thermal`, docs/layouts.md "HPS temperature and ride height").
 //!
-//! The vehicle part: each suspended axle's strut carries its static load from the hand
-//! statics of `vehicle_3d::Statics` (tire load less the wheel end); the strut's thermal data
-//! are `ThermalParams::for_strut`'s; the dissipation is given (`--power-w`), read from a D1
-//! ride of the vehicle (`--ride`: each strut's travel replayed through it) or from a
-//! simulated harmonic stroke of that strut (`--stroke-hz`, `--stroke-mm`).
+//! The shift is `afsv_design::strut_shift`'s; the dissipation is given (`--power-w`), read
+//! from a D1 ride of the vehicle (`--ride`: each strut's travel replayed through it) or from
+//! a simulated harmonic stroke of that strut (`--stroke-hz`, `--stroke-mm`).
 
 use super::{args, CmdResult};
 use afsv::output::OutputGuard;
+use afsv_design::strut_shift::{strut_shift, HeatInput, Shift, ShiftSpec};
 use hps_emulsion::thermal::KELVIN_AT_0C;
-use hps_emulsion::{
-    mean_dissipation_w, run_harmonic, HarmonicTest, HpsError, HpsExtensions, LevellingValve,
-    SimOptions, StrutParams, ThermalConditions, ThermalParams, ThermalRecord, ThermalStrut,
-};
+use hps_emulsion::LevellingValve;
 use serde_json::{json, Value};
 use std::path::PathBuf;
-use vehicle_3d::scenarios::{RideSpec, RUN_IN_M};
-use vehicle_3d::{FrontAxle, Load, Statics, VehicleParams};
+use vehicle_3d::Load;
 
 /// Longest shift (h).
 const MAX_HOURS: f64 = 72.0;
@@ -88,20 +83,13 @@ pub struct ThermalArgs {
     pub table: afsv::table::TableOutput,
 }
 
-/// One suspended axle's strut over the shift, without and with levelling.
-struct AxleRun {
-    name: &'static str,
-    strut: ThermalStrut,
-    power_w: f64,
-    power_source: String,
-    drift: ThermalRecord,
-    levelled: ThermalRecord,
-}
-
 /// Run `afsv hps thermal`.
 pub fn run(a: ThermalArgs) -> CmdResult {
     if a.hours > MAX_HOURS {
         return Err(format!("--hours {}: at most {MAX_HOURS}", args::show(a.hours)).into());
+    }
+    if a.ride && a.speed_kmh > 80.0 {
+        return Err(format!("--speed-kmh {}: at most 80", args::show(a.speed_kmh)).into());
     }
     let step_s = a.step_min * 60.0;
     args::check_samples(
@@ -121,19 +109,12 @@ pub fn run(a: ThermalArgs) -> CmdResult {
     a.table.declare(&mut guard)?;
     let v = super::described::articulated(a.vehicle.as_deref())?;
     let mut params = v.params.clone();
-    let front = v.front_strut.ok_or_else(|| {
+    params.hps = v.front_strut.ok_or_else(|| {
         format!(
             "--vehicle: `{}` gives the front axle no strut (add `strut = \"front-axle\"` or a strut file to its front [[axle]])",
             v.name
         )
     })?;
-    params.hps = front;
-    let statics = Statics::of(&params, a.load)?;
-    let rear = match (&params.rear_hps, a.with_rear) {
-        (Some(r), _) => Some(*r),
-        (None, true) => Some(params.default_rear_strut()?),
-        (None, false) => None,
-    };
     let valve = LevellingValve {
         deadband_m: a.deadband_mm * 1e-3,
         time_constant_s: a.levelling_tau_s,
@@ -142,156 +123,49 @@ pub fn run(a: ThermalArgs) -> CmdResult {
     valve
         .validate()
         .map_err(|e| format!("--deadband-mm, --levelling-tau-s, --levelling-flow-l-min: {e}"))?;
-    let ambient_k = KELVIN_AT_0C + a.ambient_c;
-    let start_k = KELVIN_AT_0C + a.start_c.unwrap_or(a.ambient_c);
-    let duration = a.hours * 3600.0;
-    let mut axles = vec![("front", front, statics.front_strut_force_n(&params))];
-    if let Some(r) = rear {
-        axles.push(("rear", r, statics.rear_strut_force_n(&params)));
-    }
-    let ride = if a.ride {
-        if a.speed_kmh > 80.0 {
-            return Err(format!("--speed-kmh {}: at most 80", args::show(a.speed_kmh)).into());
-        }
-        let mut p = params.clone();
-        p.rear_hps = rear;
-        Some(ride_powers(&p, a.load, a.speed_kmh, a.seed)?)
-    } else {
-        None
+    let heat = match (a.power_w, a.ride) {
+        (Some(p), _) => HeatInput::Given(p),
+        (None, true) => HeatInput::Ride {
+            speed_kmh: a.speed_kmh,
+            seed: a.seed,
+        },
+        (None, false) => HeatInput::Stroke {
+            frequency_hz: a.stroke_hz,
+            amplitude_m: a.stroke_mm * 1e-3,
+        },
     };
-    let mut runs = Vec::with_capacity(axles.len());
-    let mut skipped = Vec::new();
-    for (name, strut_params, load_n) in axles {
-        let mut thermal = ThermalParams::for_strut(&strut_params)?;
-        thermal.charge_temperature_k = KELVIN_AT_0C + a.charge_c;
-        let strut = match ThermalStrut::new(&strut_params, &thermal, load_n) {
-            Ok(s) => s,
-            // A strut scaled for the loaded rear axle tops out unloaded (docs/layouts.md,
-            // "HPS on any axle"): on its end stop the ride height cannot drift.
-            Err(HpsError::InvalidParameter {
-                field: "load_n", ..
-            }) => {
-                skipped.push(json!({
-                    "axle": name,
-                    "strut_load_n": load_n,
-                    "reason": "the strut cannot carry this static load within its travel: it rests on an end stop, where the ride height does not drift",
-                }));
-                continue;
-            }
-            Err(e) => return Err(format!("{name} strut: {e}").into()),
-        };
-        let (power_w, power_source) = match (a.power_w, &ride) {
-            (Some(p), _) => (p, "--power-w".to_string()),
-            (None, Some(r)) => (
-                if name == "front" { r[0] } else { r[1] },
-                format!(
-                    "D1 ride, class E, {} km/h, seed {}: the strut travel replayed through the strut, mean of left and right",
-                    args::show(a.speed_kmh),
-                    a.seed
-                ),
-            ),
-            (None, None) => (
-                stroke_power(&strut_params, a.stroke_hz, a.stroke_mm)?,
-                format!(
-                    "simulated harmonic stroke {} Hz, {} mm about mid-stroke (mean dissipated power)",
-                    args::show(a.stroke_hz),
-                    args::show(a.stroke_mm)
-                ),
-            ),
-        };
-        let cond = ThermalConditions {
-            ambient_k,
-            power_w,
-            initial_gas_k: start_k,
-            initial_body_k: start_k,
-        };
-        let drift = strut.run(&cond, duration, step_s)?;
-        let levelled_strut = strut.clone().with_levelling(valve)?;
-        let levelled = levelled_strut.run(&cond, duration, step_s)?;
-        runs.push(AxleRun {
-            name,
-            strut,
-            power_w,
-            power_source,
-            drift,
-            levelled,
-        });
-    }
-    if runs.is_empty() {
-        return Err(format!(
-            "no strut of `{}` carries its static load within its travel",
-            v.name
-        )
-        .into());
-    }
-    emit(&a, &v.name, &runs, &skipped, &valve)
-}
-
-/// Mean dissipated power (W) per strut, front then rear (0 without rear struts), in one D1
-/// ride of `p` (front axle suspended) at `speed_kmh` on terrain `seed`: each strut's
-/// recorded travel after the run-in replayed through it
-/// ([`hps_emulsion::mean_dissipation_w`]), left and right averaged.
-fn ride_powers(
-    p: &VehicleParams,
-    load: Load,
-    speed_kmh: f64,
-    seed: u64,
-) -> Result<[f64; 2], String> {
-    let spec = RideSpec {
-        speed_kmh,
-        ..RideSpec::d1(load, FrontAxle::Suspended)
+    let spec = ShiftSpec {
+        load: a.load,
+        with_rear: a.with_rear,
+        ambient_k: KELVIN_AT_0C + a.ambient_c,
+        charge_k: KELVIN_AT_0C + a.charge_c,
+        start_k: KELVIN_AT_0C + a.start_c.unwrap_or(a.ambient_c),
+        duration_s: a.hours * 3600.0,
+        step_s,
+        valve,
+        heat,
     };
-    let (rec, _) =
-        vehicle_3d::scenarios::ride(p, &spec, seed).map_err(|e| format!("--ride: {e}"))?;
-    let i0 = rec
-        .t_s
-        .partition_point(|&t| t < RUN_IN_M / (speed_kmh / 3.6));
-    let time = &rec.t_s[i0..];
-    let mean = |strut: &StrutParams, travel: &[Vec<f64>; 2]| -> Result<f64, String> {
-        let mut sum = 0.0;
-        for side in travel {
-            sum += mean_dissipation_w(strut, time, &side[i0..])
-                .map_err(|e| format!("--ride: replaying the strut travel: {e}"))?;
-        }
-        Ok(0.5 * sum)
-    };
-    let front = mean(&p.hps, &rec.hps_travel_m)?;
-    let rear = match &p.rear_hps {
-        Some(r) => mean(r, &rec.rear_hps_travel_m)?,
-        None => 0.0,
-    };
-    Ok([front, rear])
-}
-
-/// Mean dissipated power (W) of `strut` in a harmonic stroke about mid-stroke: the last of
-/// three cycles' `closed integral F dz` times the frequency.
-fn stroke_power(strut: &StrutParams, hz: f64, mm: f64) -> Result<f64, String> {
-    let test = HarmonicTest {
-        frequency_hz: hz,
-        amplitude_m: mm * 1e-3,
-    };
-    let (_, m) = run_harmonic(
-        strut,
-        &HpsExtensions::none(),
-        &test,
-        3.0,
-        &SimOptions::default(),
-    )
-    .map_err(|e| format!("--stroke-hz/--stroke-mm: {e}"))?;
-    Ok(m.dissipated_energy_j * hz)
+    let shift = strut_shift(&params, &spec).map_err(|e| format!("`{}`: {e}", v.name))?;
+    emit(&a, &v.name, &shift, &valve)
 }
 
 fn celsius(k: f64) -> f64 {
     k - KELVIN_AT_0C
 }
 
-fn emit(
-    a: &ThermalArgs,
-    vehicle: &str,
-    runs: &[AxleRun],
-    skipped: &[Value],
-    valve: &LevellingValve,
-) -> CmdResult {
+fn emit(a: &ThermalArgs, vehicle: &str, shift: &Shift, valve: &LevellingValve) -> CmdResult {
+    let runs = &shift.axles;
+    let skipped: Vec<Value> = shift
+        .on_stop
+        .iter()
+        .map(|k| {
+            json!({
+                "axle": k.axle,
+                "strut_load_n": k.load_n,
+                "reason": "the strut cannot carry this static load within its travel: it rests on an end stop, where the ride height does not drift",
+            })
+        })
+        .collect();
     let t_ref = a.charge_c;
     let mut summary = format!(
         "{vehicle}, {}, ambient {} degC, charged at {} degC, start {} degC, {} h\n",
@@ -334,7 +208,7 @@ fn emit(
         });
         summary += &format!(
             "{} strut: load {:.1} kN at {:.2} MPa, {:.0} W ({}); steady {:.1} degC (body time constant {:.2} h); after {} h: body {:.1} degC, ride height {:+.1} mm ({:+.1} mm levelled), stiffness x{:.3}; {:.2} mm/K\n",
-            r.name,
+            r.axle,
             s.load_n() * 1e-3,
             s.pressure_pa() * 1e-6,
             r.power_w,
@@ -355,7 +229,7 @@ fn emit(
         if !within {
             summary += &format!(
                 "  {} strut: the unlevelled drift passes the end of the travel (static travel {:.1} mm of +-{:.0} mm): past it the strut rests on its stop and the drift law does not hold\n",
-                r.name,
+                r.axle,
                 s.static_travel_m() * 1e3,
                 s.params().travel * 1e3
             );
@@ -363,7 +237,7 @@ fn emit(
         let (cg, cb) = s.capacities_j_k();
         let (ggb, gba) = s.conductances_w_k();
         axles.push(json!({
-            "axle": r.name,
+            "axle": r.axle,
             "strut_load_n": s.load_n(),
             "pressure_pa": s.pressure_pa(),
             "static_travel_m": s.static_travel_m(),
@@ -383,7 +257,7 @@ fn emit(
             "end": end,
         }));
     }
-    for k in skipped {
+    for k in &skipped {
         summary += &format!(
             "{} strut: {}\n",
             k["axle"].as_str().unwrap_or("?"),
@@ -395,7 +269,7 @@ fn emit(
     for i in 0..front.drift.time_s.len() {
         let mut row = json!({ "time_h": front.drift.time_s[i] / 3600.0 });
         for r in runs {
-            let p = r.name;
+            let p = r.axle;
             row[format!("{p}_gas_c")] = json!(celsius(r.drift.gas_k[i]));
             row[format!("{p}_body_c")] = json!(celsius(r.drift.body_k[i]));
             row[format!("{p}_ride_height_mm")] = json!(r.drift.ride_height_m[i] * 1e3);
@@ -420,7 +294,7 @@ fn emit(
             "levelled_mm",
             "stiffness_ratio",
         ] {
-            names.push(format!("{}_{c}", r.name));
+            names.push(format!("{}_{c}", r.axle));
         }
     }
     let name_refs: Vec<&str> = names.iter().map(String::as_str).collect();
