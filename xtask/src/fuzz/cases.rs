@@ -17,6 +17,7 @@ pub(crate) const GROUPS: &[(&str, u32)] = &[
     ("hps harmonic", 8),
     ("hps characterize", 2),
     ("hps identify", 6),
+    ("hps thermal", 3),
     ("tire sweep", 8),
     ("tire envelope", 4),
     ("terrain generate", 8),
@@ -48,6 +49,7 @@ pub(crate) const GROUPS: &[(&str, u32)] = &[
     ("params check vehicle", 3),
     ("batch evaluate", 3),
     ("study speed-sweep", 2),
+    ("optimize layout", 3),
 ];
 
 pub(crate) fn make_case(
@@ -92,6 +94,7 @@ pub(crate) fn make_case(
         "measures" => measures_case(&mut g, group),
         "batch" => batch_case(&mut g),
         "study" => sweep_case(&mut g),
+        "optimize" => optimize_layout_case(&mut g),
         _ => other_case(&mut g, group),
     }
     Case {
@@ -241,7 +244,101 @@ fn hps_case(g: &mut Gen<'_>, group: &str) {
                 g.push_opt("--strut", &s);
             }
         }
+        "hps thermal" => {
+            // a success is cheap (a shift of hours on the slow thermal model)
+            g.num("--ambient-c", "35", 0.2);
+            g.num("--power-w", "500", 0.2);
+            g.num("--hours", "8", 0.2);
+            g.num("--step-min", "30", 0.2);
+            g.num("--deadband-mm", "5", 0.15);
+            g.num("--levelling-flow-l-min", "6", 0.15);
+            if g.rng.chance(0.3) {
+                let v = g.rng.pick(&["bogus", "", "chapter2-truck"]).to_string();
+                g.push_opt("--vehicle", &v);
+            }
+            if g.rng.chance(0.4) {
+                let o = g.output("shift.csv", &["in.json"]);
+                g.push_opt("-o", &o);
+            }
+        }
         _ => unreachable!("group {group}"),
+    }
+}
+
+/// The options of one `afsv optimize layout` case: always one value it must refuse, since a
+/// valid problem runs a genetic algorithm over 3-D vehicle runs.
+fn optimize_layout_case(g: &mut Gen<'_>) {
+    let bad_slot = g.rng.below(5);
+    let vary = if bad_slot == 0 {
+        g.rng
+            .pick(&[
+                "bogus=1..2",
+                "front.a_b=3e-5..5e-6",
+                "front.a_b",
+                "",
+                "front.a_b=5e-6..1e3",
+                "front.a_b=nan..3e-5",
+                "front.a_b=-inf..3e-5",
+                "a_b=5e-6..3e-5",
+                "front.a_b=5e-6..3e-5,rear.a_b=5e-6..3e-5",
+            ])
+            .to_string()
+    } else {
+        "front.a_b=5e-6..3e-5".to_string()
+    };
+    g.push_opt("--vary", &vary);
+    let objective = if bad_slot == 1 {
+        g.rng
+            .pick(&["bogus", "", "awz", "awz_seat,seat"])
+            .to_string()
+    } else {
+        "awz_seat".to_string()
+    };
+    g.push_opt("--objective", &objective);
+    if bad_slot == 2 {
+        let c = g
+            .rng
+            .pick(&[
+                "awz < 0.5",
+                "bogus <= 1",
+                "awz_seat <= 2 * 3",
+                "",
+                "<= 1",
+                "awz_seat <= nan",
+                "awz_seat <= -inf",
+                "sp_drt >= 0 * nominal",
+                "sp_drt >= -1 * nominal",
+            ])
+            .to_string();
+        g.push_opt("--constraint", &c);
+    }
+    if bad_slot == 3 {
+        let (flag, v) = match g.rng.below(4) {
+            0 => (
+                "--population",
+                g.rng.pick(&["3", "5", "0", "-4", "1e9", "x"]),
+            ),
+            1 => ("--generations", g.rng.pick(&["0", "-1", "1001", "x"])),
+            2 => ("--seeds", g.rng.pick(&["0", "101", "-1", "x"])),
+            _ => ("--speed-kmh", g.rng.pick(&["0", "nan", "1e308", "-20"])),
+        };
+        g.push_opt(flag, v);
+    } else {
+        g.push_opt("--population", "4");
+        g.push_opt("--generations", "1");
+    }
+    if bad_slot == 4 {
+        let l = g
+            .rng
+            .pick(&["bogus", "", "rigid,front-hps", "front-rear-hps,"])
+            .to_string();
+        g.push_opt("--layout", &l);
+    }
+    if g.rng.chance(0.3) {
+        g.file("state.json", b"{\"mine\": true}\n".to_vec());
+        g.push_opt("--state", "state.json");
+        let o = g.output("batch.jsonl", &["state.json"]);
+        g.push_opt("--ask", &o);
     }
 }
 

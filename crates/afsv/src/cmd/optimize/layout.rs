@@ -30,7 +30,7 @@ pub struct LayoutArgs {
     #[arg(long, help = crate::cmd::described::HELP)]
     pub vehicle: Option<PathBuf>,
     /// The layout (as `afsv study layouts --layouts` names it): rigid, front-hps,
-    /// front-rear-hps, front-roll, front-rear-roll.
+    /// front-rear-hps, front-roll, front-rear-roll, front-rear-pitch.
     #[arg(long, default_value = "front-rear-hps")]
     pub layout: String,
     /// The cab and seat: `generic`, `off`, or `described` (the description's); default:
