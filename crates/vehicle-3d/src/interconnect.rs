@@ -436,7 +436,12 @@ pub fn ride_linked_on(
             ..RunOptions::default()
         },
     )?;
-    let m = ride_measures(&rec.record, RUN_IN_M / speed, spec.front_axle)?;
+    let m = ride_measures(
+        &rec.record,
+        RUN_IN_M / speed,
+        spec.front_axle,
+        p.rear_hps.is_some(),
+    )?;
     Ok((rec, m))
 }
 

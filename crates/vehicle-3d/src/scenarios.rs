@@ -280,12 +280,12 @@ pub fn ride_on(
             ..RunOptions::default()
         },
     )?;
-    let t_start = RUN_IN_M / speed;
-    let mut m = ride_measures(&rec, t_start, spec.front_axle)?;
-    if p.rear_hps.is_some() {
-        let i0 = rec.t_s.partition_point(|&t| t < t_start);
-        m.rear_strut_travel_p2p_m = Some(largest_p2p(&rec.rear_hps_travel_m, i0));
-    }
+    let m = ride_measures(
+        &rec,
+        RUN_IN_M / speed,
+        spec.front_axle,
+        p.rear_hps.is_some(),
+    )?;
     Ok((rec, m))
 }
 
@@ -311,12 +311,13 @@ fn largest_p2p(travel: &[Vec<f64>; 2], i0: usize) -> f64 {
         .fold(0.0, f64::max)
 }
 
-/// Ride measures of `rec` from `t_start_s` on (module docs; the rear struts' travel is
-/// [`ride_on`]'s, which knows the axle).
+/// Ride measures of `rec` from `t_start_s` on (module docs), with the front struts' travel
+/// on a suspended front axle and the rear struts' with `rear_suspended`.
 pub fn ride_measures(
     rec: &RunRecord,
     t_start_s: f64,
     front_axle: FrontAxle,
+    rear_suspended: bool,
 ) -> Result<RideMeasures, VehicleError> {
     let i0 = rec.t_s.partition_point(|&t| t < t_start_s);
     if rec.len() < i0 + 64 {
@@ -338,7 +339,7 @@ pub fn ride_measures(
         a_wz_m_s2: rms(&weighted)?,
         a_z_rms_m_s2: rms(az)?,
         strut_travel_p2p_m: travel,
-        rear_strut_travel_p2p_m: None,
+        rear_strut_travel_p2p_m: rear_suspended.then(|| largest_p2p(&rec.rear_hps_travel_m, i0)),
         vertical_peak_hz: psd_peak(az, fs)?,
         pitch_peak_hz: psd_peak(&rec.front_angular_accel_rad_s2[1][i0..], fs)?,
     })

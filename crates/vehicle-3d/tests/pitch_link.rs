@@ -176,6 +176,38 @@ fn the_link_holds_the_pitch_and_softens_the_bounce() {
     assert!(bounce1 > 1.1 * bounce0, "{bounce0} -> {bounce1}");
 }
 
+/// A linked ride of a vehicle with rear struts measures the rear struts' travel too, as
+/// the plain ride does, from the same record channel (either link).
+#[test]
+fn a_linked_ride_measures_the_rear_struts_travel() {
+    use vehicle_3d::interconnect::ride_linked;
+    use vehicle_3d::scenarios::{RideSpec, RUN_IN_M};
+    let p = both_axles();
+    let spec = RideSpec {
+        speed_kmh: 30.0,
+        length_m: 12.0,
+        ..RideSpec::d1(Load::Loaded, FrontAxle::Suspended)
+    };
+    for link in [
+        Link::Roll(LineParams::front_axle_roll()),
+        Link::pitch_of(&p).unwrap(),
+    ] {
+        let (run, m) = ride_linked(&p, &spec, 1, link).unwrap();
+        let rec = &run.record;
+        let i0 = rec
+            .t_s
+            .partition_point(|&t| t < RUN_IN_M / (spec.speed_kmh / 3.6));
+        let p2p = |z: &[f64]| {
+            let w = &z[i0..];
+            w.iter().fold(f64::MIN, |a, b| a.max(*b)) - w.iter().fold(f64::MAX, |a, b| a.min(*b))
+        };
+        let expected = p2p(&rec.rear_hps_travel_m[0]).max(p2p(&rec.rear_hps_travel_m[1]));
+        let rear = m.rear_strut_travel_p2p_m.expect("rear strut travel");
+        assert!(expected > 1e-4, "{link:?}: the rear struts did not move");
+        assert_eq!(rear, expected, "{link:?}");
+    }
+}
+
 #[test]
 fn a_mirrored_roll_gives_the_mirrored_response() {
     // a roll kick and its mirror on the pitch-linked vehicle: each strut's travel is the

@@ -47,7 +47,7 @@ fn a_wz_is_converged_in_the_integrator_tolerance() {
             },
         )
         .unwrap();
-        ride_measures(&rec, RUN_IN_M / speed, FrontAxle::Rigid).unwrap()
+        ride_measures(&rec, RUN_IN_M / speed, FrontAxle::Rigid, false).unwrap()
     };
     let d = RunOptions::default();
     let (fast, fine) = (run(d.rtol, d.max_step_s), run(1e-7, 0.005));
