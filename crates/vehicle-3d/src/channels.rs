@@ -81,10 +81,7 @@ impl RunRecord {
 
     /// Every channel of [`RECORD_CHANNELS`], in order, in the `afsv-v1` convention.
     pub fn afsv_v1_columns(&self) -> Vec<(&'static str, Vec<f64>)> {
-        RECORD_CHANNELS
-            .iter()
-            .filter_map(|&name| Some((name, self.afsv_v1_channel(name)?)))
-            .collect()
+        vehicle_run::columns(&RECORD_CHANNELS, |name| self.afsv_v1_channel(name))
     }
 }
 

@@ -1,11 +1,14 @@
 //! The run harness the multibody vehicles share (`roll-truck`, Chapter 2; `vehicle-3d`,
 //! Chapter 6): one error type ([`RunError`]) with its parameter checks, the checks of a
 //! run's settings and its output grid ([`RunSpan`]), and the integrator every run is
-//! integrated with ([`integrator`], [`run_error`]). Each vehicle keeps what is its own: its
+//! integrated with ([`integrator`], [`run_error`]), and a run's record as named columns
+//! ([`columns`]). Each vehicle keeps what is its own: its
 //! state, its recorded channels and its events.
 
 mod error;
+mod record;
 mod run;
 
 pub use error::{finite, measure, non_negative, positive, rejected, RunError};
+pub use record::columns;
 pub use run::{integrator, run_error, RunSpan};

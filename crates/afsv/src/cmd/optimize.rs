@@ -43,6 +43,60 @@ pub enum Command {
     Layout(layout::LayoutArgs),
 }
 
+/// The ask/tell options of the optimisations that run across processes (`afs`, `layout`):
+/// `--ask` writes the next batch for `afsv batch evaluate`, `--tell` reads its results.
+#[derive(clap::Args)]
+pub struct AskTellArgs {
+    /// Ask/tell state file (JSON): created by the first --ask, advanced by each --tell; give the same options every time.
+    #[arg(long)]
+    pub state: Option<PathBuf>,
+    /// With --state: write the next batch of points (JSON Lines) for `afsv batch evaluate`; once the run has finished, write a batch of no point (header "finished": true) and print the report.
+    #[arg(long, requires = "state", conflicts_with = "tell")]
+    pub ask: Option<PathBuf>,
+    /// With --state: the results files of the asked batch (every shard's), to advance the state.
+    #[arg(long, requires = "state", num_args = 1..)]
+    pub tell: Vec<PathBuf>,
+}
+
+impl AskTellArgs {
+    /// Refuse `--state` without `--ask` or `--tell`, and more than [`MAX_SHARDS`] results
+    /// files.
+    fn check(&self) -> Result<(), String> {
+        if self.state.is_some() && self.ask.is_none() && self.tell.is_empty() {
+            return Err("--state: give --ask FILE or --tell RESULTS...".into());
+        }
+        if self.tell.len() > MAX_SHARDS {
+            return Err(format!("--tell: more than {MAX_SHARDS} results files"));
+        }
+        Ok(())
+    }
+
+    /// Declare the results files as inputs, each given once.
+    fn declare_inputs(&self, guard: &mut OutputGuard) -> CmdResult {
+        let mut told = Vec::with_capacity(self.tell.len());
+        for f in &self.tell {
+            let c = afsv::output::canonical_path(f)?;
+            if told.contains(&c) {
+                return Err(format!("--tell {}: given twice", f.display()).into());
+            }
+            told.push(c);
+            guard.input("--tell", f)?;
+        }
+        Ok(())
+    }
+
+    /// Declare the state file and the asked batch as outputs.
+    fn declare_outputs(&self, guard: &mut OutputGuard) -> CmdResult {
+        if let Some(p) = &self.state {
+            guard.output("--state", p, OutputKind::Sidecar)?;
+        }
+        if let Some(p) = &self.ask {
+            guard.output("--ask", p, OutputKind::JsonLines)?;
+        }
+        Ok(())
+    }
+}
+
 /// Options of `afsv optimize afs`.
 #[derive(clap::Args)]
 pub struct AfsArgs {
@@ -102,15 +156,8 @@ pub struct AfsArgs {
     /// Checkpoint file: written after every iteration; an existing one is resumed.
     #[arg(long, conflicts_with = "state")]
     pub checkpoint: Option<PathBuf>,
-    /// Ask/tell state file (JSON): created by the first --ask, advanced by each --tell; give the same options every time.
-    #[arg(long)]
-    pub state: Option<PathBuf>,
-    /// With --state: write the next batch of design points (JSON Lines) for `afsv batch evaluate`; once the run has finished, write a batch of no point (header "finished": true) and print the report.
-    #[arg(long, requires = "state", conflicts_with = "tell")]
-    pub ask: Option<PathBuf>,
-    /// With --state: the results files of the asked batch (every shard's), to advance the state.
-    #[arg(long, requires = "state", num_args = 1..)]
-    pub tell: Vec<PathBuf>,
+    #[command(flatten)]
+    pub ask_tell: AskTellArgs,
     /// Replace existing output files afsv did not write.
     #[arg(long)]
     pub force: bool,
@@ -230,15 +277,10 @@ fn run_afs(a: &AfsArgs) -> CmdResult {
         )
         .into());
     }
-    if a.state.is_some() && a.ask.is_none() && a.tell.is_empty() {
-        return Err("--state: give --ask FILE or --tell RESULTS...".into());
-    }
-    if a.tell.len() > MAX_SHARDS {
-        return Err(format!("--tell: more than {} results files", MAX_SHARDS).into());
-    }
+    a.ask_tell.check()?;
     // One run at a time on a checkpoint or state file; the lock is held until the command
     // returns, and taken before the file is read.
-    let (_lock, stored) = match (&a.checkpoint, &a.state) {
+    let (_lock, stored) = match (&a.checkpoint, &a.ask_tell.state) {
         (Some(p), _) => (
             Some(RunLock::take("--checkpoint", p)?),
             read_stored("--checkpoint", p)?,
@@ -250,15 +292,7 @@ fn run_afs(a: &AfsArgs) -> CmdResult {
         (None, None) => (None, None),
     };
     let mut guard = OutputGuard::new(a.force);
-    let mut told = Vec::with_capacity(a.tell.len());
-    for f in &a.tell {
-        let c = afsv::output::canonical_path(f)?;
-        if told.contains(&c) {
-            return Err(format!("--tell {}: given twice", f.display()).into());
-        }
-        told.push(c);
-        guard.input("--tell", f)?;
-    }
+    a.ask_tell.declare_inputs(&mut guard)?;
     for (label, p) in [
         ("--plot-step", &a.plot_step),
         ("--plot-pulse", &a.plot_pulse),
@@ -270,12 +304,7 @@ fn run_afs(a: &AfsArgs) -> CmdResult {
     if let Some(p) = &a.checkpoint {
         guard.output("--checkpoint", p, OutputKind::Sidecar)?;
     }
-    if let Some(p) = &a.state {
-        guard.output("--state", p, OutputKind::Sidecar)?;
-    }
-    if let Some(p) = &a.ask {
-        guard.output("--ask", p, OutputKind::JsonLines)?;
-    }
+    a.ask_tell.declare_outputs(&mut guard)?;
     let mut settings = AfsOptimisationSettings {
         extra_starts: a.starts,
         seed: a.seed,
@@ -307,7 +336,7 @@ fn run_afs(a: &AfsArgs) -> CmdResult {
         .iter()
         .map(|(label, arm)| desc_of(a, label, *arm, &vehicle))
         .collect();
-    if let Some(state) = &a.state {
+    if let Some(state) = &a.ask_tell.state {
         let problems: Vec<AfsProblem> = descs
             .iter()
             .map(ProblemDesc::problem)

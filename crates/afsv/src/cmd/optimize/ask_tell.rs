@@ -40,7 +40,7 @@ impl AskTell<'_> {
             "--state",
             self.state_path,
             self.stored.as_deref(),
-            self.args.ask.is_some(),
+            self.args.ask_tell.ask.is_some(),
             &self.settings,
             &self.settings_json,
             self.problems,
@@ -52,7 +52,7 @@ impl AskTell<'_> {
             None => serde_json::to_string(&state)?,
         };
         let sha = afsv_records::provenance::sha256_hex(text.as_bytes());
-        match &self.args.ask {
+        match &self.args.ask_tell.ask {
             Some(path) => self.ask(&drivers, &state, created.then_some(&text), &sha, path),
             None => self.tell(&drivers, state, &sha),
         }
@@ -148,7 +148,13 @@ impl AskTell<'_> {
             )
         })?;
         let mut evals = state
-            .results(&self.args.tell, sha, &asked, &self.descs, self.problems)?
+            .results(
+                &self.args.ask_tell.tell,
+                sha,
+                &asked,
+                &self.descs,
+                self.problems,
+            )?
             .into_iter();
         for ((d, run), n) in drivers
             .iter()

@@ -5,9 +5,9 @@
 //! shards' results; once finished `--ask` prints the report, the in-process one byte for
 //! byte (`afsv_design::layout_ask_tell`).
 
+use super::AskTellArgs;
 use crate::cmd::CmdResult;
-use afsv::output::{NotEarned, OutputGuard, OutputKind};
-use afsv_design::afs_batch::MAX_SHARDS;
+use afsv::output::{NotEarned, OutputGuard};
 use afsv_design::layout_ask_tell::{
     batch_points, LayoutBatchHeader, LAYOUT_BATCH_FORMAT, LAYOUT_FORMAT_VERSION,
 };
@@ -77,15 +77,8 @@ pub struct LayoutArgs {
     /// Seed of the GA.
     #[arg(long, default_value_t = 1)]
     pub seed: u64,
-    /// Ask/tell state file (JSON): created by the first --ask, advanced by each --tell; give the same options every time.
-    #[arg(long)]
-    pub state: Option<PathBuf>,
-    /// With --state: write the next batch of designs (JSON Lines) for `afsv batch evaluate`; once the run has finished, a batch of no point (header "finished": true) and the report.
-    #[arg(long, requires = "state", conflicts_with = "tell")]
-    pub ask: Option<PathBuf>,
-    /// With --state: the results files of the asked batch (every shard's), to advance the state.
-    #[arg(long, requires = "state", num_args = 1..)]
-    pub tell: Vec<PathBuf>,
+    #[command(flatten)]
+    pub ask_tell: AskTellArgs,
     /// Replace existing output files afsv did not write.
     #[arg(long)]
     pub force: bool,
@@ -147,19 +140,14 @@ impl optimize::Progress for Generations {
 
 /// Run `afsv optimize layout`.
 pub fn run(a: &LayoutArgs) -> CmdResult {
-    if a.state.is_some() && a.ask.is_none() && a.tell.is_empty() {
-        return Err("--state: give --ask FILE or --tell RESULTS...".into());
-    }
-    if a.tell.len() > MAX_SHARDS {
-        return Err(format!("--tell: more than {MAX_SHARDS} results files").into());
-    }
+    a.ask_tell.check()?;
     let ga = LayoutGaSettings {
         population: a.population,
         generations: a.generations,
         seed: a.seed,
     };
     ga.options()?;
-    let (_lock, stored) = match &a.state {
+    let (_lock, stored) = match &a.ask_tell.state {
         Some(p) => (
             Some(RunLock::take("--state", p)?),
             read_stored("--state", p)?,
@@ -174,24 +162,11 @@ pub fn run(a: &LayoutArgs) -> CmdResult {
     {
         guard.input("--vehicle", v)?;
     }
-    let mut told = Vec::with_capacity(a.tell.len());
-    for f in &a.tell {
-        let c = afsv::output::canonical_path(f)?;
-        if told.contains(&c) {
-            return Err(format!("--tell {}: given twice", f.display()).into());
-        }
-        told.push(c);
-        guard.input("--tell", f)?;
-    }
-    if let Some(p) = &a.state {
-        guard.output("--state", p, OutputKind::Sidecar)?;
-    }
-    if let Some(p) = &a.ask {
-        guard.output("--ask", p, OutputKind::JsonLines)?;
-    }
+    a.ask_tell.declare_inputs(&mut guard)?;
+    a.ask_tell.declare_outputs(&mut guard)?;
     let desc = problem_desc(a)?;
     let problem = desc.problem()?;
-    if let Some(state) = &a.state {
+    if let Some(state) = &a.ask_tell.state {
         return ask_tell(a, &problem, &ga, state, stored);
     }
     let progress = Generations(afsv::progress::Progress::new(
@@ -234,7 +209,7 @@ fn ask_tell(
         "--state",
         path,
         stored.as_deref(),
-        a.ask.is_some(),
+        a.ask_tell.ask.is_some(),
         problem.desc(),
         ga,
     )?;
@@ -248,7 +223,7 @@ fn ask_tell(
     let sha = afsv_records::provenance::sha256_hex(text.as_bytes());
     let asked = driver.ask(&state.run)?;
     let machine = a.json || !std::io::stdout().is_terminal();
-    if let Some(batch_path) = &a.ask {
+    if let Some(batch_path) = &a.ask_tell.ask {
         let (phase, points) = match &asked {
             LayoutAsk::Evaluate(b) => {
                 (b.phase.name(), batch_points(problem.desc(), state.batch, b))
@@ -304,7 +279,7 @@ fn ask_tell(
         .into());
     };
     let points = batch_points(problem.desc(), state.batch, &b);
-    let results = state.results(&a.tell, &sha, &points)?;
+    let results = state.results(&a.ask_tell.tell, &sha, &points)?;
     driver.tell(&mut state.run, results)?;
     state.batch += 1;
     write_json(path, &state)?;
