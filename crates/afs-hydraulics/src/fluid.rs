@@ -52,7 +52,11 @@ pub fn chamber_energy_const(v: f64, p: f64, b: f64, p_ref: f64) -> f64 {
 
 /// Stored compression energy (J) for a pressure-dependent bulk modulus `b(p)`, relative to
 /// `p_ref`: E = V e^{Λ(p)} ∫_{p_ref}^{p} p' e^{-Λ(p')}/b(p') dp', Λ(p) = ∫_{p_ref}^{p} dp'/b,
-/// integrated with `steps` classical Runge-Kutta steps in p (no allocation).
+/// integrated with `steps` classical Runge-Kutta steps (no allocation).
+///
+/// When both pressures are positive the steps are uniform in s = ln p (dp = p ds): they
+/// crowd at low pressure, where an entrained-air modulus (roughly proportional to p) changes
+/// fastest. Otherwise they are uniform in p.
 pub fn chamber_energy_general<F: Fn(f64) -> f64>(
     v: f64,
     p: f64,
@@ -61,22 +65,33 @@ pub fn chamber_energy_general<F: Fn(f64) -> f64>(
     steps: usize,
 ) -> f64 {
     let n = steps.max(1);
-    let h = (p - p_ref) / n as f64;
-    // state (Λ, F); dΛ/dp = 1/b, dF/dp = p e^{-Λ}/b
-    let f = |pp: f64, lam: f64| {
-        let bb = b(pp);
-        (1.0 / bb, pp * (-lam).exp() / bb)
+    let logarithmic = p > 0.0 && p_ref > 0.0;
+    // integration variable u: p itself, or ln p; dp/du = 1 or p
+    let (u0, u1) = if logarithmic {
+        (p_ref.ln(), p.ln())
+    } else {
+        (p_ref, p)
+    };
+    let h = (u1 - u0) / n as f64;
+    // state (Λ, F); dΛ/du = (dp/du)/b, dF/du = (dp/du) p e^{-Λ}/b
+    let f = |u: f64, lam: f64| {
+        let (pp, dp_du) = if logarithmic {
+            (u.exp(), u.exp())
+        } else {
+            (u, 1.0)
+        };
+        let w = dp_du / b(pp);
+        (w, w * pp * (-lam).exp())
     };
     let (mut lam, mut acc) = (0.0_f64, 0.0_f64);
-    let mut pp = p_ref;
-    for _ in 0..n {
-        let (k1l, k1f) = f(pp, lam);
-        let (k2l, k2f) = f(pp + 0.5 * h, lam + 0.5 * h * k1l);
-        let (k3l, k3f) = f(pp + 0.5 * h, lam + 0.5 * h * k2l);
-        let (k4l, k4f) = f(pp + h, lam + h * k3l);
+    for i in 0..n {
+        let u = u0 + i as f64 * h;
+        let (k1l, k1f) = f(u, lam);
+        let (k2l, k2f) = f(u + 0.5 * h, lam + 0.5 * h * k1l);
+        let (k3l, k3f) = f(u + 0.5 * h, lam + 0.5 * h * k2l);
+        let (k4l, k4f) = f(u + h, lam + h * k3l);
         lam += h / 6.0 * (k1l + 2.0 * k2l + 2.0 * k3l + k4l);
         acc += h / 6.0 * (k1f + 2.0 * k2f + 2.0 * k3f + k4f);
-        pp += h;
     }
     v * lam.exp() * acc
 }
@@ -90,7 +105,7 @@ mod tests {
         let (v, b, pref) = (7.6e-3, 1.6e9, 1.0e5);
         for p in [2.0e4, 1.0e6, 1.2e7] {
             let e1 = chamber_energy_const(v, p, b, pref);
-            let e2 = chamber_energy_general(v, p, pref, |_| b, 200);
+            let e2 = chamber_energy_general(v, p, pref, |_| b, 400);
             assert!((e1 - e2).abs() <= 1e-9 * e1.abs().max(1e-3), "{e1} vs {e2}");
         }
         // small-strain limit: V (p - p_ref)^2 / (2B) + p_ref V (p - p_ref)/B
