@@ -11,6 +11,8 @@
 
 use std::ops::Range;
 
+use vehicle_components::StateLayout;
+
 use hps_emulsion::{emulsion::emulsion, HpsExtensions, HpsStrut, StrutParams};
 
 use crate::error::{positive, rejected, VehicleError};
@@ -128,6 +130,20 @@ impl AxleStruts {
             carriers,
             states_at,
         })
+    }
+
+    /// Append both struts' state blocks to `layout`, labelled `labels` (left, right); the
+    /// layout must be `states_at` long.
+    pub(crate) fn add_states(
+        &self,
+        layout: &mut StateLayout,
+        labels: [&str; 2],
+    ) -> Result<(), VehicleError> {
+        debug_assert_eq!(layout.len(), self.states_at);
+        for label in labels {
+            layout.add(label, self.strut.states())?;
+        }
+        Ok(())
     }
 
     /// States per strut.
