@@ -282,10 +282,7 @@ impl TruckVehicle {
 
     /// Name of state `i` in messages (a collapsing step names its state).
     pub fn state_name(&self, i: usize) -> String {
-        self.states
-            .names()
-            .get(i)
-            .map_or_else(|| format!("state {i}"), Clone::clone)
+        vehicle_run::states::state_name(&self.states, i)
     }
 
     /// The tire mounts, in [`crate::model::TIRE_NAMES`] order.

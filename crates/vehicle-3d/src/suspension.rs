@@ -11,9 +11,9 @@
 
 use std::ops::Range;
 
-use vehicle_components::StateLayout;
+use vehicle_components::{Component, StateLayout};
 
-use hps_emulsion::{emulsion::emulsion, HpsExtensions, HpsStrut, StrutParams};
+use hps_emulsion::{emulsion::emulsion, HpsExtensions, HpsStrut, StrutMotion, StrutParams};
 
 use crate::error::{positive, rejected, VehicleError};
 use crate::params::{Load, VehicleParams};
@@ -180,7 +180,11 @@ impl AxleStruts {
         for side in 0..2 {
             let (z, zdot) = self.motion(y, v_at, side);
             let at = self.states(side);
-            let out = self.strut.evaluate(z, zdot, &y[at.clone()], &mut dydt[at]);
+            let motion = StrutMotion {
+                deflection_m: z,
+                velocity_m_s: zdot,
+            };
+            let out = Component::evaluate(&self.strut, &motion, &y[at.clone()], &mut dydt[at]);
             let stop = end_stop_force(z, zdot, self.strut.params().travel);
             tau[self.carriers[side].1] -= out.force + stop;
             travel[side] = z;

@@ -11,10 +11,12 @@
 //!
 //! One right-hand-side evaluation, allocation free:
 //! 1. kinematics of the tree;
-//! 2. strut lengths and rates from the mount points, the AFS flows and strut forces, applied
-//!    along the strut axes ([`crate::steering`]);
+//! 2. strut lengths and rates from the mount points, the AFS flows and strut forces
+//!    (`AfsSystem` through `vehicle_components::Component::evaluate`), applied along the
+//!    strut axes ([`crate::steering`]);
 //! 3. with the HPS, each strut's force from its travel `z_s = z_static + c` (c the carrier
-//!    coordinate, positive up = compression), acting between its unit and the carrier;
+//!    coordinate, positive up = compression; `HpsStrut` through `Component::evaluate`),
+//!    acting between its unit and the carrier;
 //! 4. per tire ([`crate::tires`]): the contact on its effective track, the normal force with
 //!    damping (Eq 2.1 form with the nonlinear load curve), the slips and their lags, the
 //!    Fiala forces and moments, applied at the contact point;
@@ -465,10 +467,7 @@ impl Vehicle {
     /// in [`Vehicle::state_layout`], `state i` past its end (a state an extension appends,
     /// [`crate::interconnect`]).
     pub fn state_name(&self, i: usize) -> String {
-        self.states
-            .names()
-            .get(i)
-            .map_or_else(|| format!("state {i}"), Clone::clone)
+        vehicle_run::states::state_name(&self.states, i)
     }
 
     /// Static deflection of the front struts (m, compression positive; 0 without the HPS).
@@ -550,9 +549,12 @@ impl Vehicle {
             vel_right: g.rate[1],
             steer_wheel: steer,
         };
-        let afs =
-            self.afs
-                .strut_derivatives(&input, &y[o.afs..o.afs + 3], &mut dydt[o.afs..o.afs + 3]);
+        let afs = Component::evaluate(
+            &self.afs,
+            &input,
+            &y[o.afs..o.tires],
+            &mut dydt[o.afs..o.tires],
+        );
         apply_strut_forces(ws, &g, [afs.force_left, afs.force_right]);
         snap.steer_wheel_rad = steer;
         snap.strut_disp_m = [input.disp_left, input.disp_right];

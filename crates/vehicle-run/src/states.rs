@@ -5,7 +5,7 @@
 //! magnitudes set the run's absolute tolerances ([`crate::integrator`]) and whose names
 //! name a state in an error ([`crate::run_error`]).
 
-use vehicle_components::StateInfo;
+use vehicle_components::{StateInfo, StateLayout};
 
 /// The floating base's configuration: the origin's world position (typical 1 m) and the
 /// unit quaternion, scalar first (typical 1).
@@ -39,10 +39,18 @@ pub const DRIVE: [StateInfo; 2] = [
     StateInfo::new("path_m", "m", 1.0),
 ];
 
+/// Name of state `i` of `layout` in messages (a collapsing step names its state): its
+/// name in the layout, `state i` past its end (a state an extension appends).
+pub fn state_name(layout: &StateLayout, i: usize) -> String {
+    layout
+        .names()
+        .get(i)
+        .map_or_else(|| format!("state {i}"), Clone::clone)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
-    use vehicle_components::StateLayout;
 
     #[test]
     fn the_shared_states_lay_out_under_one_label() {
@@ -54,5 +62,7 @@ mod tests {
         assert_eq!(l.names()[7], "base_roll_rate_rad_s");
         assert_eq!(l.typicals()[7..13], [0.1, 0.1, 0.1, 1.0, 1.0, 1.0]);
         assert_eq!(l.index_of("path_m"), Some(14));
+        assert_eq!(state_name(&l, 14), "path_m");
+        assert_eq!(state_name(&l, 15), "state 15");
     }
 }
