@@ -9,7 +9,7 @@
 
 use vehicle_components::{StateInfo, StateLayout};
 
-use crate::error::VehicleError;
+use crate::error::{rejected, VehicleError};
 use crate::model::TIRE_NAMES;
 use crate::vehicle::Joints;
 
@@ -102,11 +102,17 @@ pub(crate) fn add_tree_states(
         v.into_iter().map(|(_, s)| s).collect()
     };
     let (q, v) = (ordered(|j| j.0, 0), ordered(|j| j.1, 1));
-    debug_assert_eq!(vehicle_run::states::FLOATING_Q.len() + q.len(), nq);
+    let base_v = vehicle_run::states::floating_v(0.1, 0.1);
+    let named = vehicle_run::states::FLOATING_Q.len() + q.len() + base_v.len() + v.len();
+    if named != nq + nv {
+        return Err(rejected(
+            "layout",
+            named as f64,
+            "the tree has coordinates the state layout does not name",
+        ));
+    }
     layout.add("base", &vehicle_run::states::FLOATING_Q)?;
     layout.add("", &q)?;
-    let base_v = vehicle_run::states::floating_v(0.1, 0.1);
-    debug_assert_eq!(base_v.len() + v.len(), nv);
     layout.add("base", &base_v)?;
     layout.add("", &v)?;
     Ok(())
