@@ -190,16 +190,6 @@ fn sprung_accelerations(
     (a.dot(&lat), specific.dot(&body_y))
 }
 
-/// Typical magnitudes of the states (for the absolute tolerances).
-fn typical() -> [f64; state::DIM] {
-    let mut t = [1.0; state::DIM];
-    t[7..11].fill(0.05);
-    t[state::V..state::V + 3].fill(0.1);
-    t[state::V + 6..state::V + NV].fill(0.1);
-    t[state::LAG..state::LAG + 6].fill(0.1);
-    t
-}
-
 /// One restart of a run at a located kink ([`RunOptions::locate_kinks`]).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct KinkRestart {
@@ -314,7 +304,8 @@ pub fn simulate_with_stats(
     ];
     let n_events = if options.locate_kinks { 2 } else { 1 };
     let breakpoints = [vehicle.params.ramp_start_s];
-    let mut integrator = vehicle_run::integrator(Solver::Dopri5, &span, typical());
+    let typical = vehicle.state_layout().typicals().iter().copied();
+    let mut integrator = vehicle_run::integrator(Solver::Dopri5, &span, typical);
     let mut ws = odeint::Workspace::with_events(state::DIM, 2);
     let mut rec = RunRecord::default();
     let mut stats = RunStats::default();
@@ -342,30 +333,32 @@ pub fn simulate_with_stats(
         let mut restart = None;
         let mut emitted = 0;
         let mut y_next = [0.0; state::DIM];
-        let piece_stats = integrator.run(vehicle, &problem, &mut ws, |s| {
-            if s.kind == SampleKind::Event(1) {
-                restart = Some((s.t, switching(s.t, s.y).map(|(_, i)| i)));
-                y_next.copy_from_slice(s.y);
-                return Control::Stop;
-            }
-            let tires = push_sample(vehicle, s.t, s.y, options.acceleration_channels, &mut rec);
-            emitted += 1;
-            if let SampleKind::Event(_) = s.kind {
-                rec.rollover_s = Some(s.t);
-                return Control::Continue;
-            }
-            // a switch that crossed and came back inside one step: restart on the pieces
-            // that hold here
-            let outside = tires
-                .zip(pieces.get())
-                .is_some_and(|(tires, p)| vehicle.switching(s.y, &tires, &p).0 < 0.0);
-            if outside {
-                restart = Some((s.t, None));
-                y_next.copy_from_slice(s.y);
-                return Control::Stop;
-            }
-            Control::Continue
-        })?;
+        let piece_stats = integrator
+            .run(vehicle, &problem, &mut ws, |s| {
+                if s.kind == SampleKind::Event(1) {
+                    restart = Some((s.t, switching(s.t, s.y).map(|(_, i)| i)));
+                    y_next.copy_from_slice(s.y);
+                    return Control::Stop;
+                }
+                let tires = push_sample(vehicle, s.t, s.y, options.acceleration_channels, &mut rec);
+                emitted += 1;
+                if let SampleKind::Event(_) = s.kind {
+                    rec.rollover_s = Some(s.t);
+                    return Control::Continue;
+                }
+                // a switch that crossed and came back inside one step: restart on the pieces
+                // that hold here
+                let outside = tires
+                    .zip(pieces.get())
+                    .is_some_and(|(tires, p)| vehicle.switching(s.y, &tires, &p).0 < 0.0);
+                if outside {
+                    restart = Some((s.t, None));
+                    y_next.copy_from_slice(s.y);
+                    return Control::Stop;
+                }
+                Control::Continue
+            })
+            .map_err(|e| vehicle_run::run_error(e, |i| vehicle.state_name(i)))?;
         add(&mut stats.integration, &piece_stats);
         next_out += emitted;
         let (Some((t, switch)), Some(before)) = (restart, pieces.get()) else {

@@ -17,7 +17,7 @@ use multibody::Workspace;
 use nalgebra::Vector3;
 use tire_fiala::relaxation::contact_velocity_lag_rate;
 use tire_fiala::{EffectiveTrack, LoadDeflectionTable, Track, VerticalContact};
-use vehicle_components::Terrain;
+use vehicle_components::{StateInfo, StateLayout, Terrain};
 
 use crate::driver::{RampSteer, SpeedController, SteerDirection};
 use crate::error::{positive, TruckError};
@@ -27,7 +27,8 @@ use crate::statics::Statics;
 use crate::suspension::Suspension;
 use crate::tires::{circle_line_track, lateral_force};
 
-/// Offsets of the state blocks.
+/// Offsets of the state blocks: the plain indices of [`truck_states`], fixed at compile
+/// time so the right-hand side works on fixed-size arrays.
 pub mod state {
     /// Configuration q (11).
     pub const Q: usize = 0;
@@ -41,6 +42,46 @@ pub mod state {
     pub const PATH: usize = 28;
     /// State dimension.
     pub const DIM: usize = 29;
+}
+
+/// The joints after the floating base, in the tree's order ([`crate::model`]): the front
+/// carriers' travels, the rear axle's bounce and roll (typical 0.05 m or rad, rates 0.1).
+const JOINTS: [[StateInfo; 2]; 4] = [
+    [
+        StateInfo::new("front_left_carrier_m", "m", 0.05),
+        StateInfo::new("front_left_carrier_rate_m_s", "m/s", 0.1),
+    ],
+    [
+        StateInfo::new("front_right_carrier_m", "m", 0.05),
+        StateInfo::new("front_right_carrier_rate_m_s", "m/s", 0.1),
+    ],
+    [
+        StateInfo::new("rear_bounce_m", "m", 0.05),
+        StateInfo::new("rear_bounce_rate_m_s", "m/s", 0.1),
+    ],
+    [
+        StateInfo::new("rear_roll_rad", "rad", 0.05),
+        StateInfo::new("rear_roll_rate_rad_s", "rad/s", 0.1),
+    ],
+];
+
+/// The truck's state vector as one [`StateLayout`] (module docs; its blocks start at the
+/// indices of [`state`]): the floating base of the sprung mass (`vehicle_run::states`, its
+/// velocity typical 1 m/s), the joints, each tire's lagged lateral contact velocity of
+/// Eq 2.7 (`tire_fiala::relaxation::CONTACT_VELOCITY_LAG_STATE`, in
+/// [`crate::model::TIRE_NAMES`] order) and the drive's states. Every state has its name
+/// with unit, its unit and the typical magnitude that sets its absolute tolerance.
+pub fn truck_states() -> Result<StateLayout, TruckError> {
+    let mut l = StateLayout::new();
+    l.add("base", &vehicle_run::states::FLOATING_Q)?;
+    l.add("", &JOINTS.map(|j| j[0]))?;
+    l.add("base", &vehicle_run::states::floating_v(0.1, 1.0))?;
+    l.add("", &JOINTS.map(|j| j[1]))?;
+    for name in crate::model::TIRE_NAMES {
+        l.add(name, &[tire_fiala::relaxation::CONTACT_VELOCITY_LAG_STATE])?;
+    }
+    l.add("", &vehicle_run::states::DRIVE)?;
+    Ok(l)
 }
 
 /// How the truck is put on its terrain.
@@ -134,6 +175,8 @@ pub struct TruckVehicle {
     /// The frozen pieces of the force laws, or `None` for the laws as written.
     pieces: Cell<Option<Pieces>>,
     pub(crate) mounts: [TireMount; 6],
+    /// Names, units and typical magnitudes of the states ([`truck_states`]).
+    states: StateLayout,
     /// Effective tracks: left, right.
     tracks: [EffectiveTrack; 2],
     vertical: VerticalContact,
@@ -201,6 +244,7 @@ impl TruckVehicle {
             ws,
             pieces: Cell::new(None),
             mounts,
+            states: truck_states()?,
             tracks,
             vertical,
             coefficient: params.cornering_coefficient_per_rad(),
@@ -228,6 +272,17 @@ impl TruckVehicle {
     /// The struts.
     pub fn suspension(&self) -> &Suspension {
         &self.suspension
+    }
+
+    /// The state vector's layout: every state's name, unit and typical magnitude, in
+    /// order ([`truck_states`]).
+    pub fn state_layout(&self) -> &StateLayout {
+        &self.states
+    }
+
+    /// Name of state `i` in messages (a collapsing step names its state).
+    pub fn state_name(&self, i: usize) -> String {
+        vehicle_run::states::state_name(&self.states, i)
     }
 
     /// The tire mounts, in [`crate::model::TIRE_NAMES`] order.
@@ -486,5 +541,33 @@ impl odeint::OdeSystem for TruckVehicle {
         }
         dydt[state::PI] = self.speed.error(tires.speed);
         dydt[state::PATH] = tires.path_rate;
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_layout_puts_every_block_at_its_offset() {
+        let l = truck_states().unwrap();
+        assert_eq!(l.len(), state::DIM);
+        let at = |name: &str| l.index_of(name).unwrap_or_else(|| panic!("{name}"));
+        assert_eq!(at("base_x_m"), state::Q);
+        assert_eq!(at("front_left_carrier_m"), state::Q + 7);
+        assert_eq!(at("rear_roll_rad"), state::Q + NQ - 1);
+        assert_eq!(at("base_roll_rate_rad_s"), state::V);
+        assert_eq!(at("rear_roll_rate_rad_s"), state::V + NV - 1);
+        assert_eq!(at("front_left_lateral_velocity_lag_m_s"), state::LAG);
+        assert_eq!(
+            at("rear_right_outer_lateral_velocity_lag_m_s"),
+            state::LAG + 5
+        );
+        assert_eq!(at("speed_error_integral_m"), state::PI);
+        assert_eq!(at("path_m"), state::PATH);
+        // the absolute tolerances: the sprung mass's velocity at 1 m/s, its rates at 0.1
+        assert_eq!(l.typicals()[state::V + 3], 1.0);
+        assert_eq!(l.typicals()[state::V], 0.1);
+        assert_eq!(l.typicals()[state::Q + 7], 0.05);
     }
 }

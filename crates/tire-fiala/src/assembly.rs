@@ -38,7 +38,7 @@ use crate::error::TireError;
 use crate::fiala::Fiala;
 use crate::model::TireForces;
 use crate::params::TireParams;
-use crate::relaxation::{regularised_speed, Relaxation};
+use crate::relaxation::{regularised_speed, Relaxation, SLIP_LAG_STATES};
 use crate::terrain::Profile;
 use crate::vertical::VerticalContact;
 
@@ -78,11 +78,6 @@ pub struct TireOutput {
     /// The effective contact on the wheel's line (its x coordinates are along the line).
     pub contact: EffectiveContact,
 }
-
-const STATES: [StateInfo; 2] = [
-    StateInfo::new("slip_ratio", "-", 0.1),
-    StateInfo::new("slip_angle_rad", "rad", 0.05),
-];
 
 const CHANNELS: [ChannelInfo; 8] = [
     ChannelInfo::new("force_x_n", "N"),
@@ -219,7 +214,7 @@ impl<T: Terrain> Component for TireAssembly<T> {
 
     /// `[slip_ratio, slip_angle_rad]`, the lagged slips of Eq 3.16.
     fn states(&self) -> &[StateInfo] {
-        &STATES
+        &SLIP_LAG_STATES
     }
 
     fn channels(&self) -> &[ChannelInfo] {

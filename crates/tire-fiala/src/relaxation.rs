@@ -10,8 +10,24 @@
 //! zero. The error this introduces is below 0.5 % above 1 m/s. The same law lags the slip
 //! ratio with the longitudinal relaxation length.
 
+use vehicle_components::StateInfo;
+
 use crate::error::{positive, TireError};
 use crate::params::TireParams;
+
+/// The states of the slip lags of Eq 3.16 for one tire, in the order of
+/// [`Relaxation::rates`]: the lagged slip ratio kappa and slip angle alpha, both with the
+/// typical magnitude 0.05 (a slip ratio of 5 %, a slip angle of 3 deg).
+pub const SLIP_LAG_STATES: [StateInfo; 2] = [
+    StateInfo::new("slip_ratio", "-", 0.05),
+    StateInfo::new("slip_angle_rad", "rad", 0.05),
+];
+
+/// The state of the contact-velocity lag of Eq 2.7 for one tire
+/// ([`contact_velocity_lag_rate`]): the lagged lateral contact velocity V_sy, typical
+/// magnitude 0.1 m/s.
+pub const CONTACT_VELOCITY_LAG_STATE: StateInfo =
+    StateInfo::new("lateral_velocity_lag_m_s", "m/s", 0.1);
 
 /// Speed u_0 (m/s) of the low-speed regularisation `|u|_eff = sqrt(u^2 + u_0^2)`.
 pub const LOW_SPEED_REGULARISATION: f64 = 0.1;

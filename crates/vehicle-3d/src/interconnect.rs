@@ -32,7 +32,7 @@ use crate::scenarios::{
     yaw_measures, yaw_options, RideMeasures, RideSpec, RollMeasures, RollSpec, YawMeasures,
     YawSpec, OUTPUT_DT_S, RUN_IN_M,
 };
-use crate::simulate::{simulate_system, typical, RunOptions, RunRecord};
+use crate::simulate::{simulate_system, RunOptions, RunRecord};
 use crate::suspension::AxleStruts;
 use crate::tires::TireTracks;
 use crate::vehicle::{Vehicle, VehicleOptions};
@@ -311,7 +311,7 @@ impl LinkedVehicle {
         options: &RunOptions,
     ) -> Result<LinkedRun, VehicleError> {
         let dim = self.vehicle.offsets().dim;
-        let mut t = typical(&self.vehicle);
+        let mut t = self.vehicle.state_layout().typicals().to_vec();
         t.extend_from_slice(&y0[dim..]);
         let lines: Vec<(usize, &hps_emulsion::HydraulicLine)> = self
             .pairs
@@ -591,7 +591,14 @@ pub fn free_response(
         None => {
             let mut y0 = v.initial_state();
             y0[at] += size;
-            simulate_system(&v, &v, &y0, typical(&v), &run, |_| {})
+            simulate_system(
+                &v,
+                &v,
+                &y0,
+                v.state_layout().typicals().to_vec(),
+                &run,
+                |_| {},
+            )
         }
     }
 }

@@ -34,7 +34,7 @@ pub mod path_change;
 pub mod registry;
 pub mod scenarios;
 pub mod simulate;
-mod state_names;
+mod state_layout;
 pub mod statics;
 pub mod steering;
 mod stiff_block;

@@ -206,32 +206,6 @@ fn push_sample(vehicle: &Vehicle, t: f64, y: &[f64], rec: &mut RunRecord) {
     rec.drive_torque_n_m.push(snap.drive_torque_n_m);
 }
 
-/// Typical magnitudes of the states (for the absolute tolerances).
-pub(crate) fn typical(vehicle: &Vehicle) -> Vec<f64> {
-    let o = vehicle.offsets;
-    let mut t = vec![1.0; o.dim];
-    // joint coordinates after the floating base: small angles and travels
-    t[7..o.v].fill(0.05);
-    for &(qi, _) in &vehicle.joints.spin {
-        t[qi] = 10.0;
-    }
-    t[o.v..o.v + 6].fill(0.1);
-    t[o.v + 6..o.afs].fill(0.1);
-    for &(_, vi) in &vehicle.joints.spin {
-        t[o.v + vi] = 10.0;
-    }
-    t[o.afs..o.afs + 3].copy_from_slice(&afs_hydraulics::AfsSystem::STATE_TYPICAL);
-    t[o.tires..o.tires + 8].fill(0.05);
-    for axle in vehicle.axle_struts().into_iter().flatten() {
-        for side in 0..2 {
-            for (k, i) in axle.states(side).enumerate() {
-                t[i] = axle.strut.state_typical(k);
-            }
-        }
-    }
-    t
-}
-
 /// Integrate `vehicle` from its static state at the target speed (module docs).
 pub fn simulate(vehicle: &Vehicle, options: &RunOptions) -> Result<RunRecord, VehicleError> {
     options.validate()?;
@@ -243,7 +217,8 @@ pub fn simulate(vehicle: &Vehicle, options: &RunOptions) -> Result<RunRecord, Ve
             "no static equilibrium of the struts",
         ));
     }
-    simulate_system(vehicle, vehicle, &y0, typical(vehicle), options, |_| {})
+    let typical = vehicle.state_layout().typicals().to_vec();
+    simulate_system(vehicle, vehicle, &y0, typical, options, |_| {})
 }
 
 /// Integrate `sys` from `y0` and record it as `vehicle`'s run: `sys` is the vehicle or a

@@ -11,7 +11,9 @@
 
 use std::ops::Range;
 
-use hps_emulsion::{emulsion::emulsion, HpsExtensions, HpsStrut, StrutParams};
+use vehicle_components::{Component, StateLayout};
+
+use hps_emulsion::{emulsion::emulsion, HpsExtensions, HpsStrut, StrutMotion, StrutParams};
 
 use crate::error::{positive, rejected, VehicleError};
 use crate::params::{Load, VehicleParams};
@@ -130,6 +132,20 @@ impl AxleStruts {
         })
     }
 
+    /// Append both struts' state blocks to `layout`, labelled `labels` (left, right); the
+    /// layout must be `states_at` long.
+    pub(crate) fn add_states(
+        &self,
+        layout: &mut StateLayout,
+        labels: [&str; 2],
+    ) -> Result<(), VehicleError> {
+        debug_assert_eq!(layout.len(), self.states_at);
+        for label in labels {
+            layout.add(label, self.strut.states())?;
+        }
+        Ok(())
+    }
+
     /// States per strut.
     pub fn n_states(&self) -> usize {
         self.strut.n_states()
@@ -164,7 +180,11 @@ impl AxleStruts {
         for side in 0..2 {
             let (z, zdot) = self.motion(y, v_at, side);
             let at = self.states(side);
-            let out = self.strut.evaluate(z, zdot, &y[at.clone()], &mut dydt[at]);
+            let motion = StrutMotion {
+                deflection_m: z,
+                velocity_m_s: zdot,
+            };
+            let out = Component::evaluate(&self.strut, &motion, &y[at.clone()], &mut dydt[at]);
             let stop = end_stop_force(z, zdot, self.strut.params().travel);
             tau[self.carriers[side].1] -= out.force + stop;
             travel[side] = z;

@@ -5,15 +5,18 @@
 //!
 //! State `y = [q, v, AFS (P_c, P_r, theta_h), tire lags (kappa, alpha) x 4, front HPS
 //! states x 2 (front HPS only), rear HPS states x 2 (rear HPS only), speed-error integral,
-//! path coordinate, steering-wheel angle (driver only)]`;
-//! [`Offsets`] gives the blocks.
+//! path coordinate, steering-wheel angle (driver only)]`, laid out in one
+//! `StateLayout` from the components' states (module `state_layout`); [`Offsets`] gives
+//! the blocks as plain indices.
 //!
 //! One right-hand-side evaluation, allocation free:
 //! 1. kinematics of the tree;
-//! 2. strut lengths and rates from the mount points, the AFS flows and strut forces, applied
-//!    along the strut axes ([`crate::steering`]);
+//! 2. strut lengths and rates from the mount points, the AFS flows and strut forces
+//!    (`AfsSystem` through `vehicle_components::Component::evaluate`), applied along the
+//!    strut axes ([`crate::steering`]);
 //! 3. with the HPS, each strut's force from its travel `z_s = z_static + c` (c the carrier
-//!    coordinate, positive up = compression), acting between its unit and the carrier;
+//!    coordinate, positive up = compression; `HpsStrut` through `Component::evaluate`),
+//!    acting between its unit and the carrier;
 //! 4. per tire ([`crate::tires`]): the contact on its effective track, the normal force with
 //!    damping (Eq 2.1 form with the nonlinear load curve), the slips and their lags, the
 //!    Fiala forces and moments, applied at the contact point;
@@ -35,12 +38,12 @@ use hps_emulsion::HpsStrut;
 use multibody::{Model, Workspace};
 use nalgebra::Vector3;
 use tire_fiala::{EnvelopeMethod, Fiala, LoadDeflectionTable, Relaxation, VerticalContact};
-use vehicle_components::Terrain;
-use vehicle_components::{Course, PathDriver, SteerInput};
+use vehicle_components::{Component, Course, PathDriver, StateLayout, SteerInput, Terrain};
 
 use crate::error::{finite, positive, rejected, VehicleError};
 use crate::model::{body, build_tree, FrontAxle, Layout, TIRE_MOUNTS};
 use crate::params::{Load, VehicleParams};
+use crate::state_layout::{add_drive_states, add_tire_states, add_tree_states, STRUT_LABELS};
 use crate::statics::Statics;
 use crate::steering::{apply_strut_forces, strut_geometry, StrutGeometry};
 use crate::suspension::AxleStruts;
@@ -230,6 +233,8 @@ pub struct Vehicle {
     pub(crate) model: Model,
     pub(crate) layout: Layout,
     pub(crate) ws: RefCell<Workspace>,
+    /// Names, units and typical magnitudes of the states (module `state_layout`).
+    states: StateLayout,
     pub(crate) offsets: Offsets,
     pub(crate) joints: Joints,
     afs: AfsSystem,
@@ -321,10 +326,13 @@ impl Vehicle {
                 .rear_hps
                 .map(|_| [joint(body::CARRIER_RL), joint(body::CARRIER_RR)]),
         };
-        let (nq, nv) = (model.nq(), model.nv());
-        let afs_at = nq + nv;
-        let tires_at = afs_at + AfsSystem::N_STATES;
-        let hps_at = tires_at + 8;
+        let afs = AfsSystem::new(params.steering.clone())?;
+        let mut states = StateLayout::new();
+        add_tree_states(&mut states, &joints, model.nq(), model.nv())?;
+        let afs_at = states.len();
+        states.add("steering", Component::states(&afs))?;
+        let tires_at = add_tire_states(&mut states)?;
+        let hps_at = states.len();
         let front_struts = match joints.carrier {
             None => None,
             Some(c) => Some(AxleStruts::new(
@@ -335,8 +343,10 @@ impl Vehicle {
                 hps_at,
             )?),
         };
-        let hps_states = front_struts.as_ref().map_or(0, AxleStruts::n_states);
-        let rear_at = hps_at + 2 * hps_states;
+        if let Some(a) = &front_struts {
+            a.add_states(&mut states, STRUT_LABELS[0])?;
+        }
+        let rear_at = states.len();
         let rear_struts = match (joints.rear_carrier, &params.rear_hps) {
             (Some(c), Some(strut)) => Some(AxleStruts::new(
                 strut,
@@ -347,26 +357,27 @@ impl Vehicle {
             )?),
             _ => None,
         };
-        let rear_hps_states = rear_struts.as_ref().map_or(0, AxleStruts::n_states);
-        let pi = rear_at + 2 * rear_hps_states;
+        if let Some(a) = &rear_struts {
+            a.add_states(&mut states, STRUT_LABELS[1])?;
+        }
+        let (pi, driver) = add_drive_states(&mut states, options.driver.is_some())?;
         let offsets = Offsets {
             q: 0,
-            v: nq,
+            v: model.nq(),
             afs: afs_at,
             tires: tires_at,
             hps: hps_at,
-            hps_states,
+            hps_states: front_struts.as_ref().map_or(0, AxleStruts::n_states),
             rear_hps: rear_at,
-            rear_hps_states,
+            rear_hps_states: rear_struts.as_ref().map_or(0, AxleStruts::n_states),
             pi,
             path: pi + 1,
-            driver: options.driver.map(|_| pi + 2),
-            dim: pi + 2 + usize::from(options.driver.is_some()),
+            driver,
+            dim: states.len(),
         };
         if offsets.dim > MAX_DIM {
             return Err(rejected("hps", offsets.dim as f64, "too many states"));
         }
-        let afs = AfsSystem::new(params.steering.clone())?;
         let l0 = afs.initial_strut_length();
         let radius = params.tire.unloaded_radius_m;
         let vertical = VerticalContact::new(
@@ -390,6 +401,7 @@ impl Vehicle {
             model,
             layout,
             ws,
+            states,
             offsets,
             joints,
             afs,
@@ -443,6 +455,19 @@ impl Vehicle {
     /// Joint coordinate indices.
     pub fn joints(&self) -> &Joints {
         &self.joints
+    }
+
+    /// The state vector's layout: every state's name, unit and typical magnitude, in
+    /// order (module `state_layout`).
+    pub fn state_layout(&self) -> &StateLayout {
+        &self.states
+    }
+
+    /// Name of state `i` in messages (a divergence names the state that left): its name
+    /// in [`Vehicle::state_layout`], `state i` past its end (a state an extension appends,
+    /// [`crate::interconnect`]).
+    pub fn state_name(&self, i: usize) -> String {
+        vehicle_run::states::state_name(&self.states, i)
     }
 
     /// Static deflection of the front struts (m, compression positive; 0 without the HPS).
@@ -524,9 +549,12 @@ impl Vehicle {
             vel_right: g.rate[1],
             steer_wheel: steer,
         };
-        let afs =
-            self.afs
-                .strut_derivatives(&input, &y[o.afs..o.afs + 3], &mut dydt[o.afs..o.afs + 3]);
+        let afs = Component::evaluate(
+            &self.afs,
+            &input,
+            &y[o.afs..o.tires],
+            &mut dydt[o.afs..o.tires],
+        );
         apply_strut_forces(ws, &g, [afs.force_left, afs.force_right]);
         snap.steer_wheel_rad = steer;
         snap.strut_disp_m = [input.disp_left, input.disp_right];

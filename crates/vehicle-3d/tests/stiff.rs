@@ -11,20 +11,49 @@ fn vehicle(p: &VehicleParams, options: VehicleOptions) -> Vehicle {
     Vehicle::new(p, Load::Loaded, options, &flat, 0.5 * p.front_track_m).unwrap()
 }
 
+/// The state layout names every state once, with a unit and a typical magnitude, in the
+/// blocks the right-hand side reads at its offsets: both axles suspended, with the driver.
 #[test]
-fn every_state_has_its_own_name() {
+fn every_state_has_its_own_name_in_its_block() {
+    let mut p = VehicleParams::nominal();
+    p.rear_hps = Some(p.hps);
     let options = VehicleOptions {
         front_axle: FrontAxle::Suspended,
+        driver: Some(vehicle_components::PathDriver::new(
+            vehicle_components::Course::path_change_fig_3_6(),
+        )),
         ..VehicleOptions::default()
     };
-    let v = vehicle(&VehicleParams::nominal(), options);
-    let names: Vec<String> = (0..v.offsets().dim).map(|i| v.state_name(i)).collect();
+    let v = vehicle(&p, options);
+    let (l, o) = (v.state_layout(), v.offsets());
+    assert_eq!(l.len(), o.dim);
+    let names: Vec<String> = (0..o.dim).map(|i| v.state_name(i)).collect();
     for (i, n) in names.iter().enumerate() {
-        assert!(!n.starts_with("state ") && !n.contains('?'), "{i}: {n}");
         assert_eq!(names.iter().filter(|m| *m == n).count(), 1, "{n} twice");
+        assert!(!l.units()[i].is_empty() && l.typicals()[i] > 0.0, "{n}");
     }
-    assert!(names.iter().any(|n| n.starts_with("left HPS strut")));
-    assert_eq!(names[v.offsets().afs], "steering pressure P_c");
+    let at = |name: &str| l.index_of(name).unwrap_or_else(|| panic!("{name}"));
+    let j = v.joints();
+    assert_eq!(at("base_x_m"), o.q);
+    assert_eq!(at("articulation_rad"), j.articulation.0);
+    assert_eq!(at("base_roll_rate_rad_s"), o.v);
+    assert_eq!(at("articulation_rate_rad_s"), o.v + j.articulation.1);
+    assert_eq!(at("front_right_spin_rate_rad_s"), o.v + j.spin[1].1);
+    assert_eq!(at("rear_left_carrier_m"), j.rear_carrier.unwrap()[0].0);
+    assert_eq!(at("steering_p_c_pa"), o.afs);
+    assert_eq!(at("front_left_slip_ratio"), o.tires);
+    assert_eq!(at("rear_right_slip_angle_rad"), o.tires + 7);
+    assert_eq!(at("front_left_hps_gas_volume_m3"), o.hps);
+    assert_eq!(at("front_right_hps_gas_volume_m3"), o.hps + o.hps_states);
+    assert_eq!(at("rear_left_hps_gas_volume_m3"), o.rear_hps);
+    assert_eq!(at("speed_error_integral_m"), o.pi);
+    assert_eq!(at("path_m"), o.path);
+    assert_eq!(Some(at("driver_steer_wheel_rad")), o.driver);
+    // the absolute tolerances: small joint motions, spinning wheels, MPa pressures
+    assert_eq!(l.typicals()[j.spin[0].0], 10.0);
+    assert_eq!(l.typicals()[j.articulation.0], 0.05);
+    assert_eq!(l.typicals()[o.afs], 1e6);
+    assert_eq!(v.state_name(o.dim), format!("state {}", o.dim));
 }
 
 #[test]
@@ -46,7 +75,7 @@ fn a_stiff_steering_circuit_ends_the_run_early_and_is_named() {
     };
     match simulate(&v, &run) {
         Err(VehicleError::Stiff { state, source }) => {
-            assert!(state.starts_with("steering pressure"), "{state}");
+            assert!(state.starts_with("steering_p_"), "{state}");
             let odeint::OdeError::StepSizeCollapsed { t, .. } = source else {
                 panic!("{source}")
             };

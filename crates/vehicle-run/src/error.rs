@@ -52,6 +52,9 @@ pub enum RunError {
     /// The steering input is invalid.
     #[error("steering input: {0}")]
     Input(#[from] vehicle_components::InputError),
+    /// The state layout could not be built (a component's state description).
+    #[error("state layout: {0}")]
+    Layout(#[from] vehicle_components::ComponentError),
     /// A measure could not be computed from the run.
     #[error("measure `{measure}`: {reason}")]
     Measure {

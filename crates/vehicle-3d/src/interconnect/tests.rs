@@ -354,7 +354,7 @@ fn the_pitch_lines_only_dissipate() {
         output_dt_s: 0.01,
         ..RunOptions::default()
     };
-    let mut t = typical(v);
+    let mut t = v.state_layout().typicals().to_vec();
     t.extend_from_slice(&y[o.dim..]);
     simulate_system(v, &linked, &y, t, &run, |y| e.push(energy(y))).unwrap();
     let rise = e.windows(2).fold(f64::MIN, |m, w| m.max(w[1] - w[0]));
