@@ -230,7 +230,7 @@ mod tests {
             Box::new(vehicle_3d::VehicleError::Integration(diverged())),
             Box::new(vehicle_3d::VehicleError::Integration(limit())),
             Box::new(vehicle_3d::VehicleError::Stiff {
-                state: "steering pressure P_c".into(),
+                state: "steering_p_c_pa".into(),
                 source: odeint::OdeError::StepSizeCollapsed {
                     t: 1.25,
                     h: 1e-12,
