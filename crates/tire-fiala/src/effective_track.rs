@@ -89,16 +89,20 @@ impl EffectiveTrack {
                 z = profile.height_at(s) + radius - reference_deflection;
             }
             // Newton on the wheel height, d(delta)/dz = -cos(theta), warm-started from the
-            // previous grid point (one step is usually enough).
-            let mut c = envelope.contact(profile, s, z);
-            for _ in 0..NEWTON_ITERATIONS {
-                let step = (c.deflection - reference_deflection) / c.slope.cos().max(0.1);
-                z += step;
-                c = envelope.contact(profile, s, z);
-                if step.abs() < NEWTON_TOLERANCE_M {
-                    break;
+            // previous grid point (one step is usually enough); the profile under the
+            // wheel is sampled once for all its iterations.
+            let c = envelope.contacts_at(profile, s, |contact| {
+                let mut c = contact(z);
+                for _ in 0..NEWTON_ITERATIONS {
+                    let step = (c.deflection - reference_deflection) / c.slope.cos().max(0.1);
+                    z += step;
+                    c = contact(z);
+                    if step.abs() < NEWTON_TOLERANCE_M {
+                        break;
+                    }
                 }
-            }
+                c
+            });
             wheel_z.push(z);
             slope.push(c.slope);
         }

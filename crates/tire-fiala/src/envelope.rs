@@ -169,6 +169,20 @@ impl Envelope {
         x_c: f64,
         z_c: f64,
     ) -> EffectiveContact {
+        self.contacts_at(profile, x_c, |contact| contact(z_c))
+    }
+
+    /// Calls `solve` with the contact at `x_c` as a function of the wheel-centre height:
+    /// the profile window is sampled once (and, for the cams, the segment data and the
+    /// central cam's base computed once) for every height `solve` asks, so a search for the
+    /// height of a given deflection (a Newton or bisection on `z_c`) pays the sampling once.
+    /// Each contact equals [`Envelope::contact`] at that height, bit for bit.
+    pub fn contacts_at<P: Profile + ?Sized, R>(
+        &self,
+        profile: &P,
+        x_c: f64,
+        solve: impl FnOnce(&dyn Fn(f64) -> EffectiveContact) -> R,
+    ) -> R {
         let mut buf = [0.0f64; MAX_SAMPLES];
         let half = self.window_half_width();
         let i0 = ((x_c - half) / self.spacing).ceil();
@@ -184,8 +198,21 @@ impl Envelope {
             z: &buf[..n],
         };
         match self.method {
-            EnvelopeMethod::CircleLine => self.circle_line(profile, &samples, x_c, z_c),
-            EnvelopeMethod::TandemCams => self.tandem_cams(&samples, x_c, z_c),
+            EnvelopeMethod::CircleLine => {
+                solve(&|z_c| self.circle_line(profile, &samples, x_c, z_c))
+            }
+            EnvelopeMethod::TandemCams => {
+                let mut cams = Cams {
+                    s: &samples,
+                    rc: self.cam_radius,
+                    slope: [0.0; MAX_SAMPLES],
+                    offset: [0.0; MAX_SAMPLES],
+                    lift: [0.0; MAX_SAMPLES],
+                };
+                cams.fill_segments();
+                let central = cams.base(x_c);
+                solve(&|z_c| self.tandem_cams(&cams, central, x_c, z_c))
+            }
         }
     }
 
@@ -243,49 +270,12 @@ impl Envelope {
         finish(p1, p2, r, x_c, z_c)
     }
 
-    fn tandem_cams(&self, s: &Samples, x_c: f64, z_c: f64) -> EffectiveContact {
+    /// The cams' contact at wheel-centre height `z_c`; `central` is the base of the cam
+    /// centred under the wheel, `cams.base(x_c)`, which does not depend on `z_c`.
+    fn tandem_cams(&self, cams: &Cams, central: f64, x_c: f64, z_c: f64) -> EffectiveContact {
         let r = self.radius;
-        let rc = self.cam_radius;
-        // Per-segment slope m, tangent offset rc m / sqrt(1 + m^2) and base lift
-        // rc (sqrt(1 + m^2) - 1), computed once for all cam evaluations.
-        let nseg = s.z.len().saturating_sub(1);
-        let mut slope = [0.0f64; MAX_SAMPLES];
-        let mut offset = [0.0f64; MAX_SAMPLES];
-        let mut lift = [0.0f64; MAX_SAMPLES];
-        for i in 0..nseg {
-            let m = (s.z[i + 1] - s.z[i]) / s.h;
-            let q = (1.0 + m * m).sqrt();
-            slope[i] = m;
-            offset[i] = rc * m / q;
-            lift[i] = rc * (q - 1.0);
-        }
-        let base = |xj: f64| -> f64 {
-            let lo = (((xj - rc) - s.x0) / s.h).ceil().max(0.0) as usize;
-            let hi = ((((xj + rc) - s.x0) / s.h).floor().max(-1.0) + 1.0) as usize;
-            let hi = hi.min(s.z.len());
-            let mut b = f64::NEG_INFINITY;
-            // Vertices of the sampled profile under the cam.
-            for i in lo..hi {
-                let d = s.x(i) - xj;
-                let v = s.z[i] - (rc - (rc * rc - d * d).max(0.0).sqrt());
-                if v > b {
-                    b = v;
-                }
-            }
-            // Segments between samples (linear): the cam touches a segment of slope m at
-            // x_j + rc m / sqrt(1 + m^2), base z_line(x_j) - rc + rc sqrt(1 + m^2).
-            for i in lo.saturating_sub(1)..hi.min(nseg) {
-                let xt = xj + offset[i];
-                if xt >= s.x(i) && xt <= s.x(i + 1) {
-                    let v = s.z[i] + slope[i] * (xj - s.x(i)) + lift[i];
-                    if v > b {
-                        b = v;
-                    }
-                }
-            }
-            b
-        };
-        let b0 = base(x_c);
+        let base = |xj: f64| cams.base(xj);
+        let b0 = central;
         let b0 = if b0.is_finite() { b0 } else { z_c - r - 1.0 };
         let mut delta = r - (z_c - b0);
         if delta <= 0.0 {
@@ -337,38 +327,50 @@ impl Envelope {
                 reason: "must be finite, >= 0 and below the radius",
             });
         }
-        let f = |z: f64| self.contact(profile, x_c, z).deflection - deflection;
         let z0 = profile.height_at(x_c);
         let z0 = if z0.is_finite() { z0 } else { 0.0 };
-        let (mut lo, mut hi) = (z0 + r - deflection, z0 + r - deflection);
-        let step = 0.25 * r;
-        let mut k = 0;
-        while f(lo) < 0.0 && k < 64 {
-            lo -= step;
-            k += 1;
+        Ok(self.contacts_at(profile, x_c, |contact| {
+            place(contact, z0 + r - deflection, 0.25 * r, deflection)
+        }))
+    }
+}
+
+/// The wheel height at which `contact` gives `deflection` (bisection: the deflection falls
+/// as the wheel rises), starting from `z_start` and widening by `step`.
+fn place(
+    contact: &dyn Fn(f64) -> EffectiveContact,
+    z_start: f64,
+    step: f64,
+    deflection: f64,
+) -> EnvelopedPoint {
+    let f = |z: f64| contact(z).deflection - deflection;
+    let (mut lo, mut hi) = (z_start, z_start);
+    let mut k = 0;
+    while f(lo) < 0.0 && k < 64 {
+        lo -= step;
+        k += 1;
+    }
+    k = 0;
+    while f(hi) > 0.0 && k < 64 {
+        hi += step;
+        k += 1;
+    }
+    // f decreases with the wheel height: f(lo) >= 0 >= f(hi).
+    for _ in 0..60 {
+        let mid = 0.5 * (lo + hi);
+        if f(mid) > 0.0 {
+            lo = mid;
+        } else {
+            hi = mid;
         }
-        k = 0;
-        while f(hi) > 0.0 && k < 64 {
-            hi += step;
-            k += 1;
+        if hi - lo < 1e-12 {
+            break;
         }
-        // f decreases with the wheel height: f(lo) >= 0 >= f(hi).
-        for _ in 0..60 {
-            let mid = 0.5 * (lo + hi);
-            if f(mid) > 0.0 {
-                lo = mid;
-            } else {
-                hi = mid;
-            }
-            if hi - lo < 1e-12 {
-                break;
-            }
-        }
-        let wheel_z = 0.5 * (lo + hi);
-        Ok(EnvelopedPoint {
-            wheel_z,
-            contact: self.contact(profile, x_c, wheel_z),
-        })
+    }
+    let wheel_z = 0.5 * (lo + hi);
+    EnvelopedPoint {
+        wheel_z,
+        contact: contact(wheel_z),
     }
 }
 
@@ -383,6 +385,61 @@ impl Samples<'_> {
     #[inline]
     fn x(&self, i: usize) -> f64 {
         self.x0 + i as f64 * self.h
+    }
+}
+
+/// The cams of section 6.2.2 on one sampled window: per segment the slope m, the tangent
+/// offset rc m / sqrt(1 + m^2) and the base lift rc (sqrt(1 + m^2) - 1), computed once for
+/// all cam evaluations.
+struct Cams<'a> {
+    s: &'a Samples<'a>,
+    rc: f64,
+    slope: [f64; MAX_SAMPLES],
+    offset: [f64; MAX_SAMPLES],
+    lift: [f64; MAX_SAMPLES],
+}
+
+impl Cams<'_> {
+    fn fill_segments(&mut self) {
+        let (s, rc) = (self.s, self.rc);
+        for i in 0..s.z.len().saturating_sub(1) {
+            let m = (s.z[i + 1] - s.z[i]) / s.h;
+            let q = (1.0 + m * m).sqrt();
+            self.slope[i] = m;
+            self.offset[i] = rc * m / q;
+            self.lift[i] = rc * (q - 1.0);
+        }
+    }
+
+    /// Height of the base of a cam centred at `xj` resting on the profile (minus infinity
+    /// when no sample lies under it).
+    fn base(&self, xj: f64) -> f64 {
+        let (s, rc) = (self.s, self.rc);
+        let nseg = s.z.len().saturating_sub(1);
+        let lo = (((xj - rc) - s.x0) / s.h).ceil().max(0.0) as usize;
+        let hi = ((((xj + rc) - s.x0) / s.h).floor().max(-1.0) + 1.0) as usize;
+        let hi = hi.min(s.z.len());
+        let mut b = f64::NEG_INFINITY;
+        // Vertices of the sampled profile under the cam.
+        for i in lo..hi {
+            let d = s.x(i) - xj;
+            let v = s.z[i] - (rc - (rc * rc - d * d).max(0.0).sqrt());
+            if v > b {
+                b = v;
+            }
+        }
+        // Segments between samples (linear): the cam touches a segment of slope m at
+        // x_j + rc m / sqrt(1 + m^2), base z_line(x_j) - rc + rc sqrt(1 + m^2).
+        for i in lo.saturating_sub(1)..hi.min(nseg) {
+            let xt = xj + self.offset[i];
+            if xt >= s.x(i) && xt <= s.x(i + 1) {
+                let v = s.z[i] + self.slope[i] * (xj - s.x(i)) + self.lift[i];
+                if v > b {
+                    b = v;
+                }
+            }
+        }
+        b
     }
 }
 
