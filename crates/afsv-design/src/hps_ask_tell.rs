@@ -237,17 +237,11 @@ impl<'a> HpsAskTell<'a> {
         GeneticAlgorithm::new(&self.problem, self.options).expect("options checked in new")
     }
 
-    /// The initial population in problem units.
-    fn initial(&self) -> Result<(Vec<Vec<f64>>, Vec<Vec<f64>>), DesignError> {
-        let units = self
-            .ga()
+    /// The initial population in unit-cube coordinates.
+    fn initial(&self) -> Result<Vec<Vec<f64>>, DesignError> {
+        self.ga()
             .initial(&[nominal_x(&self.desc.params)])
-            .map_err(opt)?;
-        let xs = units
-            .iter()
-            .map(|u| self.problem.bounds.from_unit(u))
-            .collect();
-        Ok((units, xs))
+            .map_err(opt)
     }
 
     /// The search ride of `x`.
@@ -297,15 +291,20 @@ impl<'a> HpsAskTell<'a> {
     pub fn ask(&self, run: &HpsRunState) -> Result<HpsAsk, DesignError> {
         let b = &self.problem.bounds;
         let Some(st) = self.state(run)? else {
-            let (_, xs) = self.initial()?;
             let mut points = vec![self.search(&nominal_x(&self.desc.params))];
-            points.extend(xs.iter().map(|x| self.search(x)));
+            points.extend(self.initial()?.iter().map(|u| self.search(&b.from_unit(u))));
             return Ok(HpsAsk::Evaluate(HpsBatch {
                 phase: HpsPhase::Initial,
                 points,
             }));
         };
         if st.generation < self.options.generations {
+            if run.reevaluated.is_some() {
+                return Err(DesignError::Shape {
+                    field: "state",
+                    reason: "a re-evaluation stored before the GA's last generation".into(),
+                });
+            }
             return Ok(HpsAsk::Evaluate(HpsBatch {
                 phase: HpsPhase::Generation(st.generation + 1),
                 points: self
@@ -371,7 +370,7 @@ impl<'a> HpsAskTell<'a> {
                     .iter()
                     .map(|v| score(v, &nominal.ride()))
                     .collect();
-                let (units, _) = self.initial()?;
+                let units = self.initial()?;
                 run.ga = Some(self.ga().start_told(units, evals).map_err(opt)?);
                 run.nominal = Some(nominal);
             }
