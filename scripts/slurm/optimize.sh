@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
-# A design optimisation of `afsv optimize afs` (chapter 4) or `afsv optimize layout` (any
-# suspension layout) on a Slurm cluster, one job array per batch of design points, the
-# array index being the shard:
+# A design optimisation of `afsv optimize afs` (chapter 4), `afsv optimize hps` (chapter 6:
+# the GA over the front struts, then the re-evaluation over terrain seeds) or `afsv
+# optimize layout` (any suspension layout) on a Slurm cluster, one job array per batch of
+# design points (hps: of vehicle runs), the array index being the shard:
 #
 #   loop:  afsv optimize PROBLEM OPTIONS --state STATE --ask BATCH      (on the submit host)
 #          sbatch --array=1-SHARDS --wait THIS_SCRIPT task ...          (array task I runs
@@ -11,7 +12,7 @@
 #   (the in-process run's JSON) is in WORKDIR/report.json.
 #
 # Usage:
-#   scripts/slurm/optimize.sh afs|layout [afsv optimize PROBLEM OPTIONS...]
+#   scripts/slurm/optimize.sh afs|hps|layout [afsv optimize PROBLEM OPTIONS...]
 # Environment:
 #   AFSV         the afsv binary, visible from every node (default: afsv on PATH)
 #   SHARDS       array tasks per batch (default 4)
@@ -23,7 +24,8 @@
 # stopped, run the script again with the same options and WORKDIR and it continues from
 # the last batch told (an asked batch is asked again, the same points with the same ids).
 # A failed array task makes `sbatch --wait` fail and stops the script. A report that is
-# "not earned" (afsv exit 3: no feasible design, or a layout variable on its bound) is
+# "not earned" (afsv exit 3: no feasible design, an hps optimum above the a_wz limit, or a
+# layout variable on its bound) is
 # still written to WORKDIR/report.json, and the script exits 3 too.
 # Documentation: docs/optimisation.md, "Running on a cluster". Tested end to end on a
 # single-node Slurm by `cargo xtask slurm-test` (both problems).
@@ -39,9 +41,9 @@ fi
 
 problem=${1:-}
 case "$problem" in
-    afs | layout) shift ;;
+    afs | hps | layout) shift ;;
     *)
-        echo "usage: $0 afs|layout [afsv optimize PROBLEM OPTIONS...]" >&2
+        echo "usage: $0 afs|hps|layout [afsv optimize PROBLEM OPTIONS...]" >&2
         exit 2
         ;;
 esac

@@ -10,6 +10,7 @@
 //! batch file, and a tell checks that the results belong to the problem and batch it asked
 //! for.
 
+use crate::batch_files::{read_batch_file, BatchHeaderFields, BatchKind, PointId};
 use crate::{
     AfsDesignBounds, AfsProblem, AfsProblemSpec, AfsVariable, AhpHierarchy, DesignError,
     InterferenceGeometry, Objective,
@@ -172,19 +173,12 @@ pub fn variable_names() -> Vec<String> {
 /// and its points (count as the header says, ids in order, problem indices in range).
 pub fn read_batch(label: &str, path: &Path) -> Result<(BatchHeader, Vec<BatchPoint>), String> {
     let bad = |what: String| format!("{label} {}: {what}", path.display());
+    let kind = BatchKind {
+        what: "batch file",
+        format: BATCH_FORMAT,
+        version: FORMAT_VERSION,
+    };
     let check = |h: &BatchHeader| {
-        if h.format != BATCH_FORMAT || h.version != FORMAT_VERSION {
-            return Err(bad(format!(
-                "not a batch file of version {FORMAT_VERSION} (format {:?}, version {})",
-                h.format, h.version
-            )));
-        }
-        if !is_sha256_hex(&h.state_sha256) {
-            return Err(bad(format!(
-                "state_sha256 {:?} is not a SHA-256 in hex",
-                h.state_sha256
-            )));
-        }
         if h.variables != variable_names() {
             return Err(bad(format!(
                 "variables {:?}, expected {:?}",
@@ -195,26 +189,46 @@ pub fn read_batch(label: &str, path: &Path) -> Result<(BatchHeader, Vec<BatchPoi
         Ok(())
     };
     let (h, lines): (BatchHeader, Vec<(usize, BatchPoint)>) =
-        afsv_records::jsonl::read_jsonl(label, path, MAX_BATCH_POINTS, &check)?;
-    if h.points != lines.len() {
+        read_batch_file(label, path, &kind, &check)?;
+    if let Some((line, p)) = lines.iter().find(|(_, p)| p.problem >= h.problems.len()) {
         return Err(bad(format!(
-            "the header announces {} points, the file holds {}",
-            h.points,
-            lines.len()
+            "line {line}: point {:?} of problem {}: expected a problem below {}",
+            p.id,
+            p.problem,
+            h.problems.len()
         )));
     }
-    for (i, (line, p)) in lines.iter().enumerate() {
-        if p.id != point_id(h.batch, i) || p.problem >= h.problems.len() {
-            return Err(bad(format!(
-                "line {line}: point {:?} of problem {}: expected id {:?} and a problem below {}",
-                p.id,
-                p.problem,
-                point_id(h.batch, i),
-                h.problems.len()
-            )));
-        }
-    }
     Ok((h, lines.into_iter().map(|(_, p)| p).collect()))
+}
+
+impl BatchHeaderFields for BatchHeader {
+    fn format(&self) -> &str {
+        &self.format
+    }
+    fn version(&self) -> u32 {
+        self.version
+    }
+    fn state_sha256(&self) -> &str {
+        &self.state_sha256
+    }
+    fn batch(&self) -> usize {
+        self.batch
+    }
+    fn points(&self) -> usize {
+        self.points
+    }
+}
+
+impl PointId for BatchPoint {
+    fn id(&self) -> &str {
+        &self.id
+    }
+}
+
+impl PointId for PointResult {
+    fn id(&self) -> &str {
+        &self.id
+    }
 }
 
 /// Whether `s` is a SHA-256 digest in lower-case hex (64 digits).

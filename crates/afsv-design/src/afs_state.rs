@@ -7,12 +7,12 @@ use crate::afs_batch::{
     point_id, BatchPoint, PointResult, ProblemDesc, ResultsHeader, FORMAT_VERSION,
     MAX_BATCH_POINTS, RESULTS_FORMAT,
 };
+use crate::batch_files::collect_results;
 use crate::{AfsAsk, AfsAskTell, AfsOptimisationSettings, AfsProblem, AfsRunState, AfsVariable};
 use afsv_records::stored::{parse_stored, same_settings};
 use optimize::Evaluation;
 use serde::{Deserialize, Serialize};
 use serde_json::{json, Value};
-use std::collections::HashMap;
 use std::path::{Path, PathBuf};
 
 /// The ask/tell state file: one run state per configuration, the settings it belongs to,
@@ -160,83 +160,46 @@ impl AskTellState {
         descs: &[ProblemDesc],
         problems: &[AfsProblem],
     ) -> Result<Vec<Evaluation>, String> {
-        let index: HashMap<&str, usize> = asked
-            .points
-            .iter()
-            .enumerate()
-            .map(|(i, p)| (p.id.as_str(), i))
-            .collect();
-        let mut found: Vec<Option<(Evaluation, String)>> = vec![None; asked.points.len()];
-        for path in tell {
-            let file = path.display();
-            let check = |h: &ResultsHeader| {
-                if h.format != RESULTS_FORMAT || h.version != FORMAT_VERSION {
-                    return Err(format!(
-                        "--tell {file}: not a results file of version {} (format {:?}, version {})",
-                        FORMAT_VERSION, h.format, h.version
-                    ));
-                }
-                if h.problems != descs {
-                    return Err(format!("--tell {file}: results of another problem or other settings than this state's"));
-                }
-                if h.batch != self.batch {
-                    return Err(format!(
-                        "--tell {file}: results of batch {}, the state asked batch {}",
-                        h.batch, self.batch
-                    ));
-                }
-                if h.state_sha256 != sha {
-                    return Err(format!(
-                        "--tell {file}: results of batch {} as another state asked it (state SHA-256 {}..., this state's {}...): they belong to another run or an older copy of this state; evaluate this state's batch (--ask) and tell its results",
-                        h.batch,
-                        h.state_sha256.get(..12).unwrap_or(&h.state_sha256),
-                        &sha[..12]
-                    ));
-                }
-                Ok(())
-            };
-            let (_, lines): (ResultsHeader, Vec<(usize, PointResult)>) =
-                afsv_records::jsonl::read_jsonl("--tell", path, asked.points.len(), &check)?;
-            for (line, r) in lines {
-                let Some(&i) = index.get(r.id.as_str()) else {
-                    return Err(format!(
-                        "--tell {file}:{line}: id {:?} was not asked in batch {}",
-                        r.id, self.batch
-                    ));
-                };
-                let nc = problems[asked.points[i].problem].constraints().len();
-                if r.constraints.len() != nc {
-                    return Err(format!(
-                        "--tell {file}:{line}: id {:?}: {} constraint values, the problem has {nc}",
-                        r.id,
-                        r.constraints.len()
-                    ));
-                }
-                if let Some((_, first)) = &found[i] {
-                    return Err(format!(
-                        "--tell {file}:{line}: id {:?} already came in {first}",
-                        r.id
-                    ));
-                }
-                found[i] = Some((r.evaluation(), format!("{file}:{line}")));
+        let check = |h: &ResultsHeader, file: &str| {
+            if h.format != RESULTS_FORMAT || h.version != FORMAT_VERSION {
+                return Err(format!(
+                    "--tell {file}: not a results file of version {} (format {:?}, version {})",
+                    FORMAT_VERSION, h.format, h.version
+                ));
             }
-        }
-        let missing: Vec<&str> = asked
-            .points
-            .iter()
-            .zip(&found)
-            .filter(|(_, f)| f.is_none())
-            .map(|(p, _)| p.id.as_str())
-            .collect();
-        if let Some(first) = missing.first() {
-            return Err(format!(
-                "--tell: {} of the {} asked points of batch {} have no result (first: {first}); give every shard's results file",
-                missing.len(),
-                asked.points.len(),
-                self.batch
-            ));
-        }
-        Ok(found.into_iter().flatten().map(|(e, _)| e).collect())
+            if h.problems != descs {
+                return Err(format!(
+                    "--tell {file}: results of another problem or other settings than this state's"
+                ));
+            }
+            if h.batch != self.batch {
+                return Err(format!(
+                    "--tell {file}: results of batch {}, the state asked batch {}",
+                    h.batch, self.batch
+                ));
+            }
+            if h.state_sha256 != sha {
+                return Err(format!(
+                    "--tell {file}: results of batch {} as another state asked it (state SHA-256 {}..., this state's {}...): they belong to another run or an older copy of this state; evaluate this state's batch (--ask) and tell its results",
+                    h.batch,
+                    h.state_sha256.get(..12).unwrap_or(&h.state_sha256),
+                    &sha[..12]
+                ));
+            }
+            Ok(())
+        };
+        let take = |r: &PointResult, i: usize| {
+            let nc = problems[asked.points[i].problem].constraints().len();
+            if r.constraints.len() != nc {
+                return Err(format!(
+                    "{} constraint values, the problem has {nc}",
+                    r.constraints.len()
+                ));
+            }
+            Ok(r.evaluation())
+        };
+        let ids: Vec<&str> = asked.points.iter().map(|p| p.id.as_str()).collect();
+        collect_results(tell, self.batch, &ids, &check, &take)
     }
 }
 

@@ -13,9 +13,9 @@
 
 use std::sync::Arc;
 
-use optimize::ga::{GaOptions, GeneticAlgorithm};
+use optimize::ga::{GaOptions, GeneticAlgorithm, Individual};
 use optimize::{Bounds, ConstrainedProblem, Evaluation, Progress};
-use serde::Serialize;
+use serde::{Deserialize, Serialize};
 use vehicle_3d::scenarios::{
     ride_on, ride_tracks, roll_over_seeds, yaw, RideSpec, RollSpec, Spread, YawSpec,
 };
@@ -25,7 +25,8 @@ use crate::error::DesignError;
 use crate::hps_design::HpsDesign;
 
 /// Settings of the optimisation.
-#[derive(Debug, Clone, PartialEq, Serialize)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
 pub struct HpsGaSettings {
     /// GA population size. Default 20.
     pub population: usize,
@@ -72,10 +73,47 @@ pub struct RideValues {
     pub d_s_m: f64,
 }
 
+/// a_wz and d_s of design `x` = [A_hc, A_v, A_b] on the search seed's enveloping cache
+/// `tracks` (D1, unloaded, suspended front axle); d_s is NaN when the record has no strut
+/// travel.
+pub(crate) fn search_ride(
+    base: &VehicleParams,
+    tracks: Arc<TireTracks>,
+    x: &[f64],
+) -> Result<RideValues, DesignError> {
+    let p = with_design(base, x)?;
+    let (_, m) =
+        ride_on(&p, &search_spec(), tracks).map_err(|e| DesignError::Simulation(e.to_string()))?;
+    Ok(RideValues {
+        a_wz_m_s2: m.a_wz_m_s2,
+        d_s_m: m.strut_travel_p2p_m.unwrap_or(f64::NAN),
+    })
+}
+
+/// The ride of the search: D1, unloaded, suspended front axle.
+pub(crate) fn search_spec() -> RideSpec {
+    RideSpec::d1(Load::Unloaded, FrontAxle::Suspended)
+}
+
+/// Eq 6.19 and the constraint of Eq 6.20 of a design's search ride `r` against the
+/// nominal's; a failed run or a non-finite measure is a failed evaluation.
+pub(crate) fn evaluation(
+    r: Result<RideValues, DesignError>,
+    nominal: &RideValues,
+    limit: f64,
+) -> Evaluation {
+    match r {
+        Ok(r) if r.a_wz_m_s2.is_finite() && r.d_s_m.is_finite() => Evaluation {
+            f: r.a_wz_m_s2 / nominal.a_wz_m_s2 + r.d_s_m / nominal.d_s_m,
+            constraints: vec![r.a_wz_m_s2 - limit],
+        },
+        _ => Evaluation::failed(1),
+    }
+}
+
 /// The problem of the module docs.
 struct HpsProblem {
     base: VehicleParams,
-    spec: RideSpec,
     tracks: Arc<TireTracks>,
     nominal: RideValues,
     bounds: Bounds,
@@ -84,14 +122,7 @@ struct HpsProblem {
 
 impl HpsProblem {
     fn ride(&self, x: &[f64]) -> Result<RideValues, DesignError> {
-        let mut p = self.base.clone();
-        p.hps = HpsDesign::new(x[0], x[1], x[2])?.apply(&self.base.hps)?;
-        let (_, m) = ride_on(&p, &self.spec, Arc::clone(&self.tracks))
-            .map_err(|e| DesignError::Simulation(e.to_string()))?;
-        Ok(RideValues {
-            a_wz_m_s2: m.a_wz_m_s2,
-            d_s_m: m.strut_travel_p2p_m.unwrap_or(f64::NAN),
-        })
+        search_ride(&self.base, Arc::clone(&self.tracks), x)
     }
 }
 
@@ -105,13 +136,7 @@ impl ConstrainedProblem for HpsProblem {
     }
 
     fn evaluate(&self, x: &[f64]) -> Evaluation {
-        match self.ride(x) {
-            Ok(r) if r.a_wz_m_s2.is_finite() && r.d_s_m.is_finite() => Evaluation {
-                f: r.a_wz_m_s2 / self.nominal.a_wz_m_s2 + r.d_s_m / self.nominal.d_s_m,
-                constraints: vec![r.a_wz_m_s2 - self.limit],
-            },
-            _ => Evaluation::failed(1),
-        }
+        evaluation(self.ride(x), &self.nominal, self.limit)
     }
 }
 
@@ -153,24 +178,118 @@ pub struct HpsOptimum {
 
 fn assess(p: &VehicleParams, seeds: &[u64], roll: bool) -> Result<HpsAssessment, DesignError> {
     let sim = |e: vehicle_3d::VehicleError| DesignError::Simulation(e.to_string());
-    let ride = vehicle_3d::scenarios::ride_over_seeds(
-        p,
-        &RideSpec::d1(Load::Unloaded, FrontAxle::Suspended),
-        seeds,
-    )
-    .map_err(sim)?;
+    let ride = vehicle_3d::scenarios::ride_over_seeds(p, &search_spec(), seeds).map_err(sim)?;
     let roll = if roll {
         roll_over_seeds(p, &RollSpec::d2(FrontAxle::Suspended), seeds).map_err(sim)?
     } else {
         Vec::new()
     };
     let (_, y) = yaw(p, &YawSpec::d3(FrontAxle::Suspended), 0).map_err(sim)?;
-    let spread = |v: Vec<f64>| Spread::of_measured(&v).map_err(sim);
+    assessment(
+        &ride.iter().map(|m| m.a_wz_m_s2).collect::<Vec<_>>(),
+        &roll.iter().map(|m| m.sp_drt_m_s2).collect::<Vec<_>>(),
+        y.omega_z_hz,
+    )
+}
+
+/// The assessment of a design's a_wz and SP-DRT, each in seed order, and omega_z.
+pub(crate) fn assessment(
+    a_wz: &[f64],
+    sp_drt: &[f64],
+    omega_z_hz: f64,
+) -> Result<HpsAssessment, DesignError> {
+    let spread =
+        |v: &[f64]| Spread::of_measured(v).map_err(|e| DesignError::Simulation(e.to_string()));
     Ok(HpsAssessment {
-        a_wz_m_s2: spread(ride.iter().map(|m| m.a_wz_m_s2).collect())?,
-        sp_drt_m_s2: spread(roll.iter().map(|m| m.sp_drt_m_s2).collect())?,
-        omega_z_hz: y.omega_z_hz,
+        a_wz_m_s2: spread(a_wz)?,
+        sp_drt_m_s2: spread(sp_drt)?,
+        omega_z_hz,
     })
+}
+
+/// The terrain seeds of the re-evaluation: `terrain_seed` and the ones after it.
+pub(crate) fn reevaluation_seeds(settings: &HpsGaSettings) -> Vec<u64> {
+    (0..settings.reevaluation_seeds as u64)
+        .map(|i| settings.terrain_seed.wrapping_add(i))
+        .collect()
+}
+
+/// Refuses settings the optimisation cannot run: re-evaluation seeds outside 1 to 100.
+pub(crate) fn check_settings(settings: &HpsGaSettings) -> Result<(), DesignError> {
+    if settings.reevaluation_seeds == 0 || settings.reevaluation_seeds > 100 {
+        return Err(DesignError::Shape {
+            field: "reevaluation_seeds",
+            reason: format!("1 to 100, got {}", settings.reevaluation_seeds),
+        });
+    }
+    Ok(())
+}
+
+/// The GA options of `settings`.
+pub(crate) fn ga_options(settings: &HpsGaSettings) -> GaOptions {
+    GaOptions {
+        population: settings.population,
+        generations: settings.generations,
+        seed: settings.ga_seed,
+        ..GaOptions::default()
+    }
+}
+
+/// The nominal design of `base` as the GA's seed individual (problem units).
+pub(crate) fn nominal_x(base: &VehicleParams) -> Vec<f64> {
+    let n = HpsDesign::of(&base.hps);
+    vec![n.a_hc, n.a_v, n.a_b]
+}
+
+/// The bounds of the search (Eq 6.20 and the assumed upper bounds).
+pub(crate) fn search_bounds(settings: &HpsGaSettings) -> Result<Bounds, DesignError> {
+    Bounds::new(settings.lower.to_vec(), settings.upper.to_vec())
+        .map_err(|e| DesignError::Simulation(e.to_string()))
+}
+
+/// What a finished search and its re-evaluation found.
+pub(crate) struct Found<'a> {
+    /// The GA's best individual.
+    pub best: &'a Individual,
+    /// The GA's evaluations.
+    pub evaluations: usize,
+    /// The nominal's search ride.
+    pub nominal_ride: RideValues,
+    /// The optimum's search ride, run once more.
+    pub optimum_ride: RideValues,
+    /// The nominal over the re-evaluation seeds.
+    pub nominal_over_seeds: HpsAssessment,
+    /// The optimum over the re-evaluation seeds.
+    pub optimum_over_seeds: HpsAssessment,
+}
+
+/// The result of `found` for `base` (the nominal design and the optimum's runs: two more
+/// than the GA's evaluations).
+pub(crate) fn result(
+    base: &VehicleParams,
+    settings: &HpsGaSettings,
+    found: Found,
+) -> Result<HpsOptimum, DesignError> {
+    let x = &found.best.x;
+    Ok(HpsOptimum {
+        settings: settings.clone(),
+        nominal_design: HpsDesign::of(&base.hps),
+        design: HpsDesign::new(x[0], x[1], x[2])?,
+        objective: found.best.eval.f,
+        feasible: found.best.eval.is_feasible(),
+        nominal_ride: found.nominal_ride,
+        optimum_ride: found.optimum_ride,
+        evaluations: found.evaluations + 2,
+        nominal_over_seeds: found.nominal_over_seeds,
+        optimum_over_seeds: found.optimum_over_seeds,
+    })
+}
+
+/// `base` with the HPS design `x` = [A_hc, A_v, A_b].
+pub(crate) fn with_design(base: &VehicleParams, x: &[f64]) -> Result<VehicleParams, DesignError> {
+    let mut p = base.clone();
+    p.hps = HpsDesign::new(x[0], x[1], x[2])?.apply(&base.hps)?;
+    Ok(p)
 }
 
 /// The optimisation of the module docs for `base` (its `hps` is the nominal design).
@@ -180,65 +299,38 @@ pub fn optimise_hps(
     progress: &dyn Progress,
 ) -> Result<HpsOptimum, DesignError> {
     let sim = |e: vehicle_3d::VehicleError| DesignError::Simulation(e.to_string());
-    if settings.reevaluation_seeds == 0 || settings.reevaluation_seeds > 100 {
-        return Err(DesignError::Shape {
-            field: "reevaluation_seeds",
-            reason: format!("1 to 100, got {}", settings.reevaluation_seeds),
-        });
-    }
-    let spec = RideSpec::d1(Load::Unloaded, FrontAxle::Suspended);
-    let tracks = ride_tracks(base, &spec, settings.terrain_seed).map_err(sim)?;
-    let nominal_design = HpsDesign::of(&base.hps);
-    let bounds = Bounds::new(settings.lower.to_vec(), settings.upper.to_vec())
-        .map_err(|e| DesignError::Simulation(e.to_string()))?;
+    check_settings(settings)?;
+    let tracks = ride_tracks(base, &search_spec(), settings.terrain_seed).map_err(sim)?;
     let mut problem = HpsProblem {
         base: base.clone(),
-        spec,
         tracks,
         nominal: RideValues {
             a_wz_m_s2: 1.0,
             d_s_m: 1.0,
         },
-        bounds,
+        bounds: search_bounds(settings)?,
         limit: settings.a_wz_limit_m_s2,
     };
-    problem.nominal =
-        problem.ride(&[nominal_design.a_hc, nominal_design.a_v, nominal_design.a_b])?;
-    let options = GaOptions {
-        population: settings.population,
-        generations: settings.generations,
-        seed: settings.ga_seed,
-        ..GaOptions::default()
-    };
+    problem.nominal = problem.ride(&nominal_x(base))?;
     let opt = |e: optimize::OptimizeError| DesignError::Simulation(e.to_string());
-    let ga = GeneticAlgorithm::new(&problem, options).map_err(opt)?;
+    let ga = GeneticAlgorithm::new(&problem, ga_options(settings)).map_err(opt)?;
     // the nominal design is one of the initial individuals (in problem units)
-    let start = ga
-        .start(&[vec![
-            nominal_design.a_hc,
-            nominal_design.a_v,
-            nominal_design.a_b,
-        ]])
-        .map_err(opt)?;
+    let start = ga.start(&[nominal_x(base)]).map_err(opt)?;
     let end = ga.run(start, progress, &mut |_| Ok(())).map_err(opt)?;
-    let best = end.best().clone();
-    let design = HpsDesign::new(best.x[0], best.x[1], best.x[2])?;
+    let best = end.best();
     let optimum_ride = problem.ride(&best.x)?;
-    let seeds: Vec<u64> = (0..settings.reevaluation_seeds as u64)
-        .map(|i| settings.terrain_seed.wrapping_add(i))
-        .collect();
-    let mut optimum_params = base.clone();
-    optimum_params.hps = design.apply(&base.hps)?;
-    Ok(HpsOptimum {
-        settings: settings.clone(),
-        nominal_design,
-        design,
-        objective: best.eval.f,
-        feasible: best.eval.is_feasible(),
-        nominal_ride: problem.nominal,
-        optimum_ride,
-        evaluations: end.evaluations + 2,
-        nominal_over_seeds: assess(base, &seeds, settings.reevaluate_roll)?,
-        optimum_over_seeds: assess(&optimum_params, &seeds, settings.reevaluate_roll)?,
-    })
+    let seeds = reevaluation_seeds(settings);
+    let optimum_params = with_design(base, &best.x)?;
+    result(
+        base,
+        settings,
+        Found {
+            best,
+            evaluations: end.evaluations,
+            nominal_ride: problem.nominal,
+            optimum_ride,
+            nominal_over_seeds: assess(base, &seeds, settings.reevaluate_roll)?,
+            optimum_over_seeds: assess(&optimum_params, &seeds, settings.reevaluate_roll)?,
+        },
+    )
 }

@@ -17,7 +17,8 @@
 //! nothing but its batch file; a tell takes results only for its own state's batch (the
 //! state's SHA-256 and batch number).
 
-use crate::afs_batch::{in_shard, is_sha256_hex, point_id, MAX_BATCH_POINTS};
+use crate::afs_batch::{in_shard, point_id};
+use crate::batch_files::{collect_results, read_batch_file, BatchHeaderFields, BatchKind, PointId};
 use crate::error::DesignError;
 use crate::layout_optimum::{
     result, LayoutGaSettings, LayoutOptimum, LayoutProblem, LayoutProblemDesc, Measured, Scored,
@@ -26,7 +27,7 @@ use optimize::ga::{GaOptions, GaState, GeneticAlgorithm};
 use optimize::{Evaluation, OptimizeError};
 use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
-use std::collections::{BTreeMap, HashMap};
+use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 
 /// Version of the layout batch, results and state formats.
@@ -398,41 +399,43 @@ pub fn read_layout_batch(
     label: &str,
     path: &Path,
 ) -> Result<(LayoutBatchHeader, Vec<LayoutBatchPoint>), String> {
-    let bad = |what: String| format!("{label} {}: {what}", path.display());
-    let check = |h: &LayoutBatchHeader| {
-        if h.format != LAYOUT_BATCH_FORMAT || h.version != LAYOUT_FORMAT_VERSION {
-            return Err(bad(format!(
-                "not a layout batch file of version {LAYOUT_FORMAT_VERSION} (format {:?}, version {})",
-                h.format, h.version
-            )));
-        }
-        if !is_sha256_hex(&h.state_sha256) {
-            return Err(bad(format!(
-                "state_sha256 {:?} is not a SHA-256 in hex",
-                h.state_sha256
-            )));
-        }
-        Ok(())
+    let kind = BatchKind {
+        what: "layout batch file",
+        format: LAYOUT_BATCH_FORMAT,
+        version: LAYOUT_FORMAT_VERSION,
     };
-    let (h, lines): (LayoutBatchHeader, Vec<(usize, LayoutBatchPoint)>) =
-        afsv_records::jsonl::read_jsonl(label, path, MAX_BATCH_POINTS, &check)?;
-    if h.points != lines.len() {
-        return Err(bad(format!(
-            "the header announces {} points, the file holds {}",
-            h.points,
-            lines.len()
-        )));
-    }
-    for (i, (line, p)) in lines.iter().enumerate() {
-        if p.id != point_id(h.batch, i) {
-            return Err(bad(format!(
-                "line {line}: point {:?}, expected id {:?}",
-                p.id,
-                point_id(h.batch, i)
-            )));
-        }
-    }
+    let (h, lines) = read_batch_file(label, path, &kind, &|_: &LayoutBatchHeader| Ok(()))?;
     Ok((h, lines.into_iter().map(|(_, p)| p).collect()))
+}
+
+impl BatchHeaderFields for LayoutBatchHeader {
+    fn format(&self) -> &str {
+        &self.format
+    }
+    fn version(&self) -> u32 {
+        self.version
+    }
+    fn state_sha256(&self) -> &str {
+        &self.state_sha256
+    }
+    fn batch(&self) -> usize {
+        self.batch
+    }
+    fn points(&self) -> usize {
+        self.points
+    }
+}
+
+impl PointId for LayoutBatchPoint {
+    fn id(&self) -> &str {
+        &self.id
+    }
+}
+
+impl PointId for LayoutPointResult {
+    fn id(&self) -> &str {
+        &self.id
+    }
 }
 
 /// Measures the points of shard `shard` of a layout batch in parallel, in the batch's
@@ -560,62 +563,34 @@ impl LayoutAskTellState {
         sha: &str,
         asked: &[LayoutBatchPoint],
     ) -> Result<Vec<Result<Measured, String>>, String> {
-        let index: HashMap<&str, usize> = asked
-            .iter()
-            .enumerate()
-            .map(|(i, p)| (p.id.as_str(), i))
-            .collect();
-        let mut found: Vec<Option<(Result<Measured, String>, String)>> = vec![None; asked.len()];
-        for path in tell {
-            let file = path.display();
-            let check = |h: &LayoutResultsHeader| {
-                if h.format != LAYOUT_RESULTS_FORMAT || h.version != LAYOUT_FORMAT_VERSION {
-                    return Err(format!(
-                        "--tell {file}: not a layout results file of version {LAYOUT_FORMAT_VERSION} (format {:?}, version {})",
-                        h.format, h.version
-                    ));
-                }
-                if h.problem != self.problem {
-                    return Err(format!(
-                        "--tell {file}: results of another problem than this state's"
-                    ));
-                }
-                if h.batch != self.batch || h.state_sha256 != sha {
-                    return Err(format!(
-                        "--tell {file}: results of batch {} as another state asked it; this state asks batch {} (evaluate this state's batch, --ask, and tell its results)",
-                        h.batch, self.batch
-                    ));
-                }
-                Ok(())
-            };
-            let (_, lines): (LayoutResultsHeader, Vec<(usize, LayoutPointResult)>) =
-                afsv_records::jsonl::read_jsonl("--tell", path, asked.len(), &check)?;
-            for (line, r) in lines {
-                let Some(&i) = index.get(r.id.as_str()) else {
-                    return Err(format!(
-                        "--tell {file}:{line}: id {:?} was not asked in batch {}",
-                        r.id, self.batch
-                    ));
-                };
-                if let Some((_, first)) = &found[i] {
-                    return Err(format!(
-                        "--tell {file}:{line}: id {:?} already came in {first}",
-                        r.id
-                    ));
-                }
-                found[i] = Some((r.outcome(), format!("{file}:{line}")));
+        let check = |h: &LayoutResultsHeader, file: &str| {
+            if h.format != LAYOUT_RESULTS_FORMAT || h.version != LAYOUT_FORMAT_VERSION {
+                return Err(format!(
+                    "--tell {file}: not a layout results file of version {LAYOUT_FORMAT_VERSION} (format {:?}, version {})",
+                    h.format, h.version
+                ));
             }
-        }
-        let missing = found.iter().filter(|f| f.is_none()).count();
-        if let Some(first) = asked.iter().zip(&found).find(|(_, f)| f.is_none()) {
-            return Err(format!(
-                "--tell: {missing} of the {} asked points of batch {} have no result (first: {}); give every shard's results file",
-                asked.len(),
-                self.batch,
-                first.0.id
-            ));
-        }
-        Ok(found.into_iter().flatten().map(|(m, _)| m).collect())
+            if h.problem != self.problem {
+                return Err(format!(
+                    "--tell {file}: results of another problem than this state's"
+                ));
+            }
+            if h.batch != self.batch || h.state_sha256 != sha {
+                return Err(format!(
+                    "--tell {file}: results of batch {} as another state asked it; this state asks batch {} (evaluate this state's batch, --ask, and tell its results)",
+                    h.batch, self.batch
+                ));
+            }
+            Ok(())
+        };
+        let ids: Vec<&str> = asked.iter().map(|p| p.id.as_str()).collect();
+        collect_results(
+            tell,
+            self.batch,
+            &ids,
+            &check,
+            &|r: &LayoutPointResult, _| Ok(r.outcome()),
+        )
     }
 }
 
@@ -625,6 +600,7 @@ mod tests {
     use crate::layout_optimum::tests::tiny;
     use crate::optimise_layout;
     use optimize::Silent;
+    use std::collections::HashMap;
 
     /// In-process and ask/tell through the files' JSON give the same optimum, bit for bit.
     #[test]

@@ -16,6 +16,11 @@
 //! - [`afs_batch`]: the problem descriptions, batch and results files (JSON Lines) of
 //!   that split, and the evaluation of one shard of a batch; [`afs_state`]: its state
 //!   file, the batch a state asks for and the results that answer it;
+//! - [`hps_optimum`]: `afsv optimize hps`, the chapter-6 GA over [A_hc, A_v, A_b] (Eq
+//!   6.19-6.20) and the re-evaluation over terrain seeds; [`hps_ask_tell`]: the same run
+//!   split into ask and tell, with its batch, results and state files;
+//! - [`batch_files`]: the checks shared by the batch and results files of every ask/tell
+//!   optimisation (afs, layout, HPS);
 //! - [`hps_design`]: the chapter-6 design vector [A_hc, A_v, A_b] (Table 6.5) applied to
 //!   a strut parameter set;
 //! - [`sweep`]: the optimum of a one-variable design sweep (parabolic peak);
@@ -42,10 +47,12 @@ pub mod afs_problem;
 pub mod afs_resume;
 pub mod afs_state;
 pub mod ahp;
+pub mod batch_files;
 pub mod design_3d;
 pub mod error;
 pub mod evaluate;
 pub mod fan_out;
+pub mod hps_ask_tell;
 pub mod hps_design;
 pub mod hps_optimum;
 pub mod hps_sensitivity;
@@ -67,6 +74,7 @@ pub use afs_problem::{
 pub use afs_resume::check_run_state;
 pub use ahp::{AhpHierarchy, AhpLevels, GoalComparison};
 pub use error::DesignError;
+pub use hps_ask_tell::{HpsAsk, HpsAskTell, HpsAskTellState, HpsProblemDesc, HpsRunState};
 pub use hps_design::HpsDesign;
 pub use hps_optimum::{optimise_hps, HpsGaSettings, HpsOptimum};
 pub use hps_sensitivity::{hps_sensitivity, HpsSensitivity, HpsVariable, StudyScope};

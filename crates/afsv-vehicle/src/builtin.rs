@@ -108,6 +108,7 @@ pub fn prototype() -> Articulated {
             unloaded: afsv_dynamics::VehicleParams::unloaded(),
         }),
         seat: None,
+        link: None,
     }
 }
 

@@ -17,9 +17,11 @@ use vehicle_components::ParamSet;
 use crate::error::DescriptionError;
 use crate::read::{at_path, quoted_key};
 use crate::schema::{
-    Articulated, Axle, RigidTruck, StrutSource, Suspension, UnitName, VehicleDescription,
-    YawPlaneCases,
+    Articulated, Axle, LinkKind, LinkSection, RigidTruck, StrutSource, Suspension, UnitName,
+    VehicleDescription, YawPlaneCases,
 };
+use hps_emulsion::interconnect::LineParams;
+use vehicle_3d::interconnect::Link;
 
 /// Largest strut file read (bytes).
 const MAX_STRUT_BYTES: u64 = 1 << 20;
@@ -49,6 +51,8 @@ pub struct ArticulatedVehicle {
     pub yaw_plane_derived: bool,
     /// The cab on mounts and the seat (`[cab.body]`, `[seat]`), when described.
     pub cab_seat: Option<vehicle_3d::cab_ride::CabSeatLayout>,
+    /// The struts' interconnection (`[link]`), when described.
+    pub link: Option<Link>,
 }
 
 impl ArticulatedVehicle {
@@ -294,8 +298,13 @@ fn articulated(a: &Articulated, o: &Origin<'_>) -> Result<ArticulatedVehicle, De
         ),
     };
     let cab_seat = crate::cab_seat::layout(a, &params, o)?;
+    let link = match &a.link {
+        Some(l) => Some(link(l, [front.suspension, rear.suspension], &params, o)?),
+        None => None,
+    };
     Ok(ArticulatedVehicle {
         cab_seat,
+        link,
         name: a.name.clone(),
         params,
         front_suspension: front.suspension,
@@ -306,6 +315,64 @@ fn articulated(a: &Articulated, o: &Origin<'_>) -> Result<ArticulatedVehicle, De
         yaw_plane,
         yaw_plane_derived,
     })
+}
+
+/// The interconnection `l` of a vehicle with axles suspended as `suspensions` (front, rear)
+/// and parameters `params` (both struts resolved): the kind's struts must be there, the
+/// lines given only as the kind takes them (`line` for roll, two `lines` for pitch; the
+/// defaults otherwise), each line valid (`LineParams::validate`).
+fn link(
+    l: &LinkSection,
+    suspensions: [Suspension; 2],
+    params: &VehicleParams,
+    o: &Origin<'_>,
+) -> Result<Link, DescriptionError> {
+    let check = |path: &str, line: &LineParams| {
+        line.validate()
+            .map_err(|e| o.err(path, format!("{e} (docs/vehicles.md, \"[link]\")")))
+    };
+    match l.kind {
+        LinkKind::Roll => {
+            if suspensions[0] != Suspension::Hps {
+                return Err(o.err(
+                    "link.kind",
+                    "a roll link joins the two front struts: the front [[axle]] needs suspension = \"hps\"",
+                ));
+            }
+            if l.lines.is_some() {
+                return Err(o.err(
+                    "link.lines",
+                    "two lines per side are a pitch link's; a roll link takes one [link.line]",
+                ));
+            }
+            let line = l.line.unwrap_or_else(LineParams::front_axle_roll);
+            check("link.line", &line)?;
+            Ok(Link::Roll(line))
+        }
+        LinkKind::Pitch => {
+            if suspensions != [Suspension::Hps, Suspension::Hps] {
+                return Err(o.err(
+                    "link.kind",
+                    "a pitch link joins the front and the rear strut on each side: both [[axle]] need suspension = \"hps\"",
+                ));
+            }
+            if l.line.is_some() {
+                return Err(o.err(
+                    "link.line",
+                    "one line is a roll link's; a pitch link takes two [[link.lines]] (front piston side, then rear) or none",
+                ));
+            }
+            match l.lines {
+                Some(lines) => {
+                    for (i, line) in lines.iter().enumerate() {
+                        check(&format!("link.lines[{i}]"), line)?;
+                    }
+                    Ok(Link::Pitch(lines))
+                }
+                None => Link::pitch_of(params).map_err(|e| o.err("link", e.to_string())),
+            }
+        }
+    }
 }
 
 /// The two axles: front on the front unit, rear on the rear unit, the rear rigid.

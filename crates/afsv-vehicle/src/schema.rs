@@ -13,6 +13,7 @@
 use std::collections::BTreeMap;
 
 use afs_hydraulics::AfsParams;
+use hps_emulsion::interconnect::LineParams;
 use hps_emulsion::StrutParams;
 use roll_truck::TruckParams;
 use serde::de::{self, MapAccess, Visitor};
@@ -272,6 +273,37 @@ pub struct Articulated {
     /// The operator's suspension seat on the cab (with `[cab.body]`).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub seat: Option<SeatSection>,
+    /// The struts' hydraulic interconnection (`[link]`); absent: none.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub link: Option<LinkSection>,
+}
+
+/// Which struts a `[link]` joins (`vehicle_3d::interconnect::Link`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "lowercase")]
+pub enum LinkKind {
+    /// The two front struts, left-right (needs an `hps` front axle).
+    Roll,
+    /// On each side the front and the rear strut (needs `hps` on both axles).
+    Pitch,
+}
+
+/// The struts' interconnection: cross-coupled pairs of sealed-piston struts joined by two
+/// lines with accumulators each (docs/layouts.md, "Interconnected struts").
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct LinkSection {
+    /// `roll` or `pitch`.
+    pub kind: LinkKind,
+    /// Roll: the design of both lines (`[link.line]`); default
+    /// `LineParams::front_axle_roll` (a 38 mm line, an 8.4 L accumulator at 2.4 MPa).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub line: Option<LineParams>,
+    /// Pitch: `[[link.lines]]`, the line at the front strut's piston side, then the one at
+    /// the rear strut's; default `LineParams::side_pitch` at the ratio of the rear strut's
+    /// rod area to the front strut's.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub lines: Option<[LineParams; 2]>,
 }
 
 /// A rigid two-axle truck (Chapter 2).

@@ -209,3 +209,123 @@ fn without_yaw_plane_tables_the_yaw_plane_data_are_derived_from_the_units() {
     assert!(l.c_alpha_r_n_per_rad > u.c_alpha_r_n_per_rad);
     assert!(u.k_mz_f_nm_per_rad > 0.0);
 }
+
+/// The prototype's dump with both axles' suspension as given, and `link` appended.
+fn with_link(front: &str, rear: &str, link: &str) -> String {
+    let text = dump("prototype");
+    let mut seen = 0;
+    let lines: Vec<String> = text
+        .lines()
+        .map(|l| {
+            if l.starts_with("suspension = ") {
+                seen += 1;
+                format!("suspension = \"{}\"", if seen == 1 { front } else { rear })
+            } else {
+                l.to_string()
+            }
+        })
+        .collect();
+    lines.join("\n") + "\n" + link
+}
+
+const LINE: &str = "diameter_m = 0.03\nviscosity_pa_s = 0.027\nport_cd = 0.7\n\
+    accumulator_volume_m3 = 5e-3\nprecharge_pa = 2e6\npiston_end = { length_m = 0.3, port_area_m2 = 3e-4 }\n\
+    rod_end = { length_m = 2.0, port_area_m2 = 6e-5 }\n";
+
+#[test]
+fn a_link_reads_with_its_default_or_given_lines_and_is_refused_with_its_field_path() {
+    use hps_emulsion::interconnect::LineParams;
+    use vehicle_3d::interconnect::Link;
+    let read = |text: &str| load_str(text, "v.toml", Path::new("."));
+    let link_of = |text: &str| articulated(&read(text).unwrap().vehicle).link;
+    // no [link]: none, as before
+    assert_eq!(link_of(&with_link("hps", "rigid", "")), None);
+    assert_eq!(
+        link_of(&with_link("hps", "rigid", "[link]\nkind = \"roll\"\n")),
+        Some(Link::Roll(LineParams::front_axle_roll()))
+    );
+    let given = link_of(&with_link(
+        "hps",
+        "rigid",
+        &format!("[link]\nkind = \"roll\"\n[link.line]\n{LINE}"),
+    ));
+    assert!(matches!(given, Some(Link::Roll(l)) if l.diameter_m == 0.03));
+    // pitch: the default lines at the struts' rod-area ratio, or two given
+    let d = read(&with_link("hps", "hps", "[link]\nkind = \"pitch\"\n")).unwrap();
+    let a = articulated(&d.vehicle);
+    assert_eq!(a.link, Some(Link::pitch_of(&a.params).unwrap()));
+    let two = format!("[link]\nkind = \"pitch\"\n[[link.lines]]\n{LINE}[[link.lines]]\n{LINE}");
+    assert!(matches!(
+        link_of(&with_link("hps", "hps", &two)),
+        Some(Link::Pitch(_))
+    ));
+    // refusals, one line each, naming the field
+    for (front, rear, link, path, says) in [
+        (
+            "rigid",
+            "rigid",
+            "[link]\nkind = \"roll\"\n",
+            "`link.kind`",
+            "front [[axle]] needs",
+        ),
+        (
+            "hps",
+            "rigid",
+            "[link]\nkind = \"pitch\"\n",
+            "`link.kind`",
+            "both [[axle]]",
+        ),
+        (
+            "hps",
+            "rigid",
+            "[link]\nkind = \"yaw\"\n",
+            "`link.kind`",
+            "unknown variant",
+        ),
+        (
+            "hps",
+            "rigid",
+            "[link]\nkind = \"roll\"\nlength_m = 1.0\n",
+            "`link",
+            "unknown field",
+        ),
+        (
+            "hps",
+            "hps",
+            &format!("[link]\nkind = \"pitch\"\n[link.line]\n{LINE}"),
+            "`link.line`",
+            "pitch link takes two",
+        ),
+        (
+            "hps",
+            "rigid",
+            &two.replace("pitch", "roll"),
+            "`link.lines`",
+            "roll link takes one",
+        ),
+        (
+            "hps",
+            "rigid",
+            &format!(
+                "[link]\nkind = \"roll\"\n[link.line]\n{}",
+                LINE.replace("0.03", "-1.0")
+            ),
+            "`link.line`",
+            "diameter_m",
+        ),
+        (
+            "hps",
+            "hps",
+            &format!(
+                "[link]\nkind = \"pitch\"\n[[link.lines]]\n{LINE}[[link.lines]]\n{}",
+                LINE.replace("5e-3", "0.0")
+            ),
+            "`link.lines[1]`",
+            "accumulator_volume_m3",
+        ),
+    ] {
+        let e = read(&with_link(front, rear, link)).unwrap_err().to_string();
+        assert!(e.contains(path) && e.contains(says), "{link}: {e}");
+        assert_eq!(e.lines().count(), 1, "{e}");
+    }
+}

@@ -47,6 +47,7 @@ pub(crate) const GROUPS: &[(&str, u32)] = &[
     ("vehicle measures", 1),
     ("params check vehicle-3d", 2),
     ("params check vehicle", 3),
+    ("params check vehicle (link)", 2),
     ("batch evaluate", 3),
     ("study speed-sweep", 2),
     ("optimize layout", 3),
@@ -78,13 +79,15 @@ pub(crate) fn make_case(
         }
         k -= w;
     }
-    for w in group.split(' ') {
+    // the words of the subcommand; a parenthesised tag tells groups of one subcommand apart
+    for w in group.split(" (").next().unwrap_or(group).split(' ') {
         g.arg(w);
     }
     match group.split(' ').next().unwrap_or(group) {
         _ if group == "params check truck" => roll_case(&mut g, group),
         _ if group == "params check vehicle-3d" => vehicle_case(&mut g, group),
         _ if group == "params check vehicle" => described::check_case(&mut g),
+        _ if group == "params check vehicle (link)" => described::link_case(&mut g),
         "vehicle" => vehicle_case(&mut g, group),
         "roll" => roll_case(&mut g, group),
         "yaw" => yaw_case(&mut g, group),

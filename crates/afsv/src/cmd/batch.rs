@@ -1,12 +1,17 @@
 //! `afsv batch evaluate`: evaluates one shard of a batch of design points that
-//! `afsv optimize afs --ask` or `afsv optimize layout --ask` wrote (docs/optimisation.md,
-//! "Running on a cluster"); the batch header's `format` tells which. The formats and the
-//! shard's evaluation are `afsv_design::afs_batch` and `afsv_design::layout_ask_tell`.
+//! `afsv optimize afs --ask`, `afsv optimize hps --ask` or `afsv optimize layout --ask`
+//! wrote (docs/optimisation.md, "Running on a cluster"); the batch header's `format` tells
+//! which. The formats and the shard's evaluation are `afsv_design::afs_batch`,
+//! `afsv_design::hps_ask_tell` and `afsv_design::layout_ask_tell`.
 
 use super::CmdResult;
 use afsv::output::{OutputGuard, OutputKind};
 use afsv_design::afs_batch::{
     evaluate_shard, in_shard, read_batch, ResultsHeader, FORMAT_VERSION, MAX_SHARDS, RESULTS_FORMAT,
+};
+use afsv_design::hps_ask_tell::{
+    evaluate_hps_shard, read_hps_batch, HpsResultsHeader, HPS_BATCH_FORMAT, HPS_FORMAT_VERSION,
+    HPS_RESULTS_FORMAT,
 };
 use afsv_design::layout_ask_tell::{
     evaluate_layout_shard, read_layout_batch, LayoutResultsHeader, LAYOUT_BATCH_FORMAT,
@@ -19,14 +24,14 @@ use std::path::{Path, PathBuf};
 /// `afsv batch` subcommands.
 #[derive(clap::Subcommand)]
 pub enum Command {
-    /// Evaluate one shard of a batch file written by `afsv optimize afs --ask` or `afsv optimize layout --ask` and write its results (JSON Lines) for `--tell`.
+    /// Evaluate one shard of a batch file written by `afsv optimize afs|hps|layout --ask` and write its results (JSON Lines) for `--tell`.
     Evaluate(EvaluateArgs),
 }
 
 /// Options of `afsv batch evaluate`.
 #[derive(clap::Args)]
 pub struct EvaluateArgs {
-    /// The batch file (JSON Lines) written by `afsv optimize afs --ask` or `afsv optimize layout --ask`.
+    /// The batch file (JSON Lines) written by `afsv optimize afs|hps|layout --ask`.
     pub batch: PathBuf,
     /// The shard "I/N" (1 <= I <= N): the points whose 0-based index is I-1 modulo N.
     #[arg(long, default_value = "1/1", value_parser = shard)]
@@ -63,19 +68,17 @@ pub fn run(cmd: Command) -> CmdResult {
     }
 }
 
-/// Whether the batch file's header (its first line) says it is a layout batch; anything
-/// else, unreadable files included, goes to the chapter-4 reader and its errors.
-fn is_layout_batch(path: &Path) -> bool {
-    let Ok(file) = std::fs::File::open(path) else {
-        return false;
-    };
+/// The `format` the batch file's header (its first line) names; `None` for anything
+/// else, unreadable files included, which goes to the chapter-4 reader and its errors.
+fn batch_format(path: &Path) -> Option<String> {
+    let file = std::fs::File::open(path).ok()?;
     let mut line = String::new();
-    let read = std::io::BufReader::new(file)
+    std::io::BufReader::new(file)
         .take(afsv_records::jsonl::MAX_LINE_BYTES as u64)
-        .read_line(&mut line);
-    read.is_ok()
-        && serde_json::from_str::<serde_json::Value>(&line)
-            .is_ok_and(|v| v["format"] == LAYOUT_BATCH_FORMAT)
+        .read_line(&mut line)
+        .ok()?;
+    let v = serde_json::from_str::<serde_json::Value>(&line).ok()?;
+    v["format"].as_str().map(str::to_string)
 }
 
 fn evaluate(a: &EvaluateArgs) -> CmdResult {
@@ -83,8 +86,10 @@ fn evaluate(a: &EvaluateArgs) -> CmdResult {
     guard.input("BATCH", &a.batch)?;
     guard.output("-o", &a.output, OutputKind::JsonLines)?;
     let t = std::time::Instant::now();
-    if is_layout_batch(&a.batch) {
-        return evaluate_layout(a, t);
+    match batch_format(&a.batch).as_deref() {
+        Some(LAYOUT_BATCH_FORMAT) => return evaluate_layout(a, t),
+        Some(HPS_BATCH_FORMAT) => return evaluate_hps(a, t),
+        _ => {}
     }
     let (shard_i, shard_n) = a.shard;
     let (header, points) = read_batch("BATCH", &a.batch)?;
@@ -123,6 +128,31 @@ fn evaluate_layout(a: &EvaluateArgs, t: std::time::Instant) -> CmdResult {
     let out = LayoutResultsHeader {
         format: LAYOUT_RESULTS_FORMAT.into(),
         version: LAYOUT_FORMAT_VERSION,
+        written_by: "afsv batch evaluate".into(),
+        sign_convention: afsv_records::SIGN_CONVENTION.into(),
+        batch: header.batch,
+        state_sha256: header.state_sha256.clone(),
+        shard: shard_text.clone(),
+        points: lines.len(),
+        problem: header.problem.clone(),
+    };
+    write_jsonl(&a.output, &out, &lines)?;
+    summary(a, header.batch, &shard_text, t, &|s| {
+        lines.iter().filter(|l| l.status == s).count()
+    })
+}
+
+/// One shard of an HPS batch (`afsv optimize hps --ask`).
+fn evaluate_hps(a: &EvaluateArgs, t: std::time::Instant) -> CmdResult {
+    let (header, points) = read_hps_batch("BATCH", &a.batch)?;
+    let mine = (0..points.len()).filter(|&i| in_shard(i, a.shard)).count();
+    let progress = afsv::progress::Progress::new("afsv batch evaluate", "runs", Some(mine));
+    let lines = evaluate_hps_shard(&header, &points, a.shard, &|| progress.step(""));
+    progress.finish();
+    let shard_text = format!("{}/{}", a.shard.0, a.shard.1);
+    let out = HpsResultsHeader {
+        format: HPS_RESULTS_FORMAT.into(),
+        version: HPS_FORMAT_VERSION,
         written_by: "afsv batch evaluate".into(),
         sign_convention: afsv_records::SIGN_CONVENTION.into(),
         batch: header.batch,

@@ -5,7 +5,7 @@
 //! evaluated by `afsv batch evaluate`, possibly in shards on a cluster), `--tell` reads the
 //! results and advances the state file; once finished `--ask` prints the report
 //! (`afsv_design::afs_ask_tell`, formats in `afsv_design::afs_batch`). `afsv optimize hps`
-//! and `afsv optimize layout` are in their own modules.
+//! and `afsv optimize layout` (both ask/tell too) are in their own modules.
 
 use super::CmdResult;
 use afsv::output::{NotEarned, OutputGuard, OutputKind};
@@ -37,13 +37,14 @@ use report::{to_json, to_text, write_plots, Bar};
 pub enum Command {
     /// Chapter 4: optimise the frame-steering design [A_0, l_1, l_2, a_v, B_eff] (Eq 4.8 with the AHP weights of Eq 4.17, Eq 4.10 and a minimum full-lock steering arm as constraints) by multi-start pattern search and SQP.
     Afs(AfsArgs),
-    /// Chapter 6: optimise the front-axle HPS [A_hc, A_v, A_b] (Eq 6.19 with a_wz <= 0.85 m/s², Eq 6.20) on the 3-D vehicle by a genetic algorithm, then re-evaluate over terrain seeds.
+    /// Chapter 6: optimise the front-axle HPS [A_hc, A_v, A_b] (Eq 6.19 with a_wz <= 0.85 m/s², Eq 6.20) on the 3-D vehicle by a genetic algorithm, then re-evaluate over terrain seeds; in-process or ask/tell (--state, --ask, --tell) for a cluster.
     Hps(hps::HpsArgs),
     /// Beyond the dissertation: optimise any suspension layout of `afsv study layouts` over parameters named in the registries (e.g. `front.a_b=5e-6..3e-5`), minimising one of its measures subject to constraints on any (e.g. 'awz_seat <= 0.5', 'sp_drt >= 0.96 * nominal'), by a genetic algorithm; in-process or ask/tell (--state, --ask, --tell) for a cluster.
     Layout(layout::LayoutArgs),
 }
 
-/// The ask/tell options of the optimisations that run across processes (`afs`, `layout`):
+/// The ask/tell options of the optimisations that run across processes (`afs`, `hps`,
+/// `layout`):
 /// `--ask` writes the next batch for `afsv batch evaluate`, `--tell` reads its results.
 #[derive(clap::Args)]
 pub struct AskTellArgs {
@@ -95,6 +96,95 @@ impl AskTellArgs {
         }
         Ok(())
     }
+}
+
+/// What an ask/tell state asks, identified: whether the state is new, its text (as stored,
+/// or as the new state will be written) and that text's SHA-256, which every batch header
+/// carries and every results file must carry back.
+struct StateIdentity {
+    created: bool,
+    text: String,
+    sha: String,
+}
+
+impl StateIdentity {
+    /// The identity of `state`, read as `stored` (`None`: a new state).
+    fn of<S: Serialize>(stored: Option<String>, state: &S) -> Result<Self, String> {
+        let created = stored.is_none();
+        let text = match stored {
+            Some(t) => t,
+            None => serde_json::to_string(state).map_err(|e| e.to_string())?,
+        };
+        let sha = afsv_records::provenance::sha256_hex(text.as_bytes());
+        Ok(Self { created, text, sha })
+    }
+
+    /// After an `--ask`: writes a new state's file at `path` (an existing one is left).
+    fn write_if_new(&self, path: &std::path::Path) -> Result<(), String> {
+        if self.created {
+            afsv_records::atomic::write(path, &self.text)
+                .map_err(|e| format!("{}: {e}", path.display()))?;
+        }
+        Ok(())
+    }
+}
+
+/// Whether the status goes out as JSON (`--json`, or stdout not a terminal).
+fn machine(json: bool) -> bool {
+    json || !std::io::stdout().is_terminal()
+}
+
+/// On stderr (unless quiet): `command`'s run has finished after `batches`, the report
+/// follows.
+fn finished_notice(command: &str, batches: usize, batch_path: &std::path::Path) {
+    if !afsv::progress::is_quiet() {
+        eprintln!(
+            "afsv optimize {command}: the run has finished after {batches} batches; {} holds no point; the report follows",
+            batch_path.display()
+        );
+    }
+}
+
+/// The status of an `--ask` that wrote batch `batch` (`points` of `unit`, `phase`) to
+/// `batch_path`.
+fn print_asked(
+    json: bool,
+    batch: usize,
+    phase: &str,
+    points: usize,
+    unit: &str,
+    batch_path: &std::path::Path,
+) -> CmdResult {
+    let status = json!({"batch": batch, "finished": false, "phase": phase,
+        "points": points, "batch_file": batch_path.display().to_string()});
+    if machine(json) {
+        afsv::output::print_json(&status)?;
+    } else {
+        println!(
+            "batch {batch} ({phase}): {points} {unit} written to {}",
+            batch_path.display()
+        );
+    }
+    Ok(())
+}
+
+/// The status of a `--tell` of batch `told` (`points` of `unit`).
+fn print_told(json: bool, told: usize, points: usize, unit: &str, finished: bool) -> CmdResult {
+    let status =
+        json!({"told": told, "points": points, "next_batch": told + 1, "finished": finished});
+    if machine(json) {
+        afsv::output::print_json(&status)?;
+    } else {
+        println!(
+            "batch {told} told ({points} {unit}); {}",
+            if finished {
+                "the run has finished: --ask prints the report"
+            } else {
+                "next: --ask"
+            }
+        );
+    }
+    Ok(())
 }
 
 /// Options of `afsv optimize afs`.

@@ -252,7 +252,8 @@ fn dump_vehicle(name: &str, output: Option<&Path>) -> CmdResult {
 fn check_vehicle(file: &Path) -> Result<Value, String> {
     let d = afsv_vehicle::load_file(file).map_err(|e| e.to_string())?;
     Ok(match d.vehicle {
-        afsv_vehicle::Vehicle::Articulated(a) => json!({
+        afsv_vehicle::Vehicle::Articulated(a) => {
+            let mut v = json!({
             "name": a.name,
             "kind": "articulated",
             "front_suspension": a.front_suspension,
@@ -261,7 +262,12 @@ fn check_vehicle(file: &Path) -> Result<Value, String> {
             "rear_strut": a.rear_strut_source,
             "yaw_plane": if a.yaw_plane_derived { "derived from the units and tire" } else { "as given" },
             "parameters": named(&a.params),
-        }),
+            });
+            if let Some(l) = &a.link {
+                v["link"] = json!(l);
+            }
+            v
+        }
         afsv_vehicle::Vehicle::RigidTruck(t) => json!({
             "name": t.name,
             "kind": "rigid-truck",

@@ -32,6 +32,7 @@ use simulate::simulate_cmd;
 use std::io::IsTerminal;
 use std::path::{Path, PathBuf};
 use vehicle_3d::cab_ride::SeatRideMeasures;
+use vehicle_3d::interconnect::{roll_linked, yaw_linked, Link};
 use vehicle_3d::scenarios::{
     self, RideMeasures, RideSpec, RollMeasures, RollSpec, Spread, TerrainSpec, YawMeasures,
     YawSpec, RUN_IN_M,
@@ -345,6 +346,62 @@ fn vehicle_params(case: &CaseArgs) -> Result<(VehicleParams, FrontAxle), String>
     Ok((p, axle))
 }
 
+/// The struts' interconnection of the description (`[link]`, docs/vehicles.md) the runs
+/// of `afsv vehicle ride|roll|yaw|simulate` use: `None` without one, and for a raw
+/// `--params` set; refused with the front axle made rigid (`--hps off`), which leaves the
+/// link no front struts.
+fn described_link(case: &CaseArgs, axle: FrontAxle) -> Result<Option<Link>, String> {
+    if case.params.is_some() {
+        return Ok(None);
+    }
+    let Some(link) = super::described::articulated(case.vehicle.as_deref())?.link else {
+        return Ok(None);
+    };
+    if axle == FrontAxle::Rigid {
+        return Err(
+            "--hps off: the vehicle description's [link] interconnects the front struts; leave --hps out or give a strut file"
+                .into(),
+        );
+    }
+    Ok(Some(link))
+}
+
+/// Refuses a description with a `[link]` in a command that runs the vehicle without it.
+fn unlinked(case: &CaseArgs, command: &str) -> Result<(), String> {
+    if case.params.is_none()
+        && super::described::articulated(case.vehicle.as_deref())?
+            .link
+            .is_some()
+    {
+        return Err(format!(
+            "afsv vehicle {command}: the vehicle description has a [link]; linked struts run in afsv vehicle ride|roll|yaw|simulate (remove the [link] to run {command})"
+        ));
+    }
+    Ok(())
+}
+
+/// What the report says of `link`: a JSON value and a text line.
+fn link_note(link: &Link) -> (Value, String) {
+    let text = match link {
+        Link::Roll(_) => "front struts interconnected left-right (roll link, [link])",
+        Link::Pitch(_) => "front and rear struts interconnected on each side (pitch link, [link])",
+    };
+    (json!(link), format!("{text}\n"))
+}
+
+/// [`print_result`] of a run of a vehicle whose struts `link` interconnects (the report of
+/// a vehicle without one unchanged).
+fn print_linked(json_out: bool, mut value: Value, text: &str, link: Option<&Link>) -> CmdResult {
+    match link {
+        None => print_result(json_out, &value, text),
+        Some(l) => {
+            let (v, line) = link_note(l);
+            value["link"] = v;
+            print_result(json_out, &value, &(line + text))
+        }
+    }
+}
+
 /// The strut parameter file of `--hps`, validated; `expected` names the accepted values in
 /// the error of an unreadable file.
 pub(crate) fn read_strut(file: &Path, expected: &str) -> Result<StrutParams, String> {
@@ -531,6 +588,7 @@ fn prepare(case: &CaseArgs, study: &StudyArgs) -> Result<(VehicleParams, FrontAx
 
 fn roll_cmd(case: &CaseArgs, study: &StudyArgs, ramp_deg_s: f64, duration: f64) -> CmdResult {
     let (p, axle) = prepare(case, study)?;
+    let link = described_link(case, axle)?;
     let (terrain, seeds) =
         terrain_and_seeds(case, study.seeds, study.seed, Some(TerrainSpec::default()))?;
     let speed = case.speed_kmh.unwrap_or(50.0);
@@ -545,7 +603,11 @@ fn roll_cmd(case: &CaseArgs, study: &StudyArgs, ramp_deg_s: f64, duration: f64) 
     let want_record = study.plot.is_some();
     let runs: Vec<(RollMeasures, Option<RunRecord>)> =
         over_seeds("afsv vehicle roll", &terrain, &seeds, |i, s| {
-            let (rec, m) = scenarios::roll(&p, &spec, s).map_err(|e| e.to_string())?;
+            let (rec, m) = match &link {
+                Some(l) => roll_linked(&p, &spec, s, l).map(|(r, m)| (r.record, m)),
+                None => scenarios::roll(&p, &spec, s),
+            }
+            .map_err(|e| e.to_string())?;
             Ok((m, (want_record && i == 0).then_some(rec)))
         })?;
     let measures: Vec<RollMeasures> = runs.iter().map(|r| r.0).collect();
@@ -608,11 +670,12 @@ fn roll_cmd(case: &CaseArgs, study: &StudyArgs, ramp_deg_s: f64, duration: f64) 
             )
         }
     }
-    print_result(study.json, &v, &text)
+    print_linked(study.json, v, &text, link.as_ref())
 }
 
 fn yaw_cmd(case: &CaseArgs, study: &StudyArgs, pulse_deg: f64) -> CmdResult {
     let (p, axle) = prepare(case, study)?;
+    let link = described_link(case, axle)?;
     let (terrain, seeds) = terrain_and_seeds(case, study.seeds, study.seed, None)?;
     let speed = case.speed_kmh.unwrap_or(50.0);
     let spec = YawSpec {
@@ -625,7 +688,11 @@ fn yaw_cmd(case: &CaseArgs, study: &StudyArgs, pulse_deg: f64) -> CmdResult {
     let want_record = study.plot.is_some();
     let runs: Vec<(YawMeasures, Option<RunRecord>)> =
         over_seeds("afsv vehicle yaw", &terrain, &seeds, |i, s| {
-            let (rec, m) = scenarios::yaw(&p, &spec, s).map_err(|e| e.to_string())?;
+            let (rec, m) = match &link {
+                Some(l) => yaw_linked(&p, &spec, l).map(|(r, m)| (r.record, m)),
+                None => scenarios::yaw(&p, &spec, s),
+            }
+            .map_err(|e| e.to_string())?;
             Ok((m, (want_record && i == 0).then_some(rec)))
         })?;
     let measures: Vec<YawMeasures> = runs.iter().map(|r| r.0).collect();
@@ -670,7 +737,7 @@ fn yaw_cmd(case: &CaseArgs, study: &StudyArgs, pulse_deg: f64) -> CmdResult {
         text += &format!("note: {caveat}\n");
         v["fit_caveat"] = json!(caveat);
     }
-    print_result(study.json, &v, &text)
+    print_linked(study.json, v, &text, link.as_ref())
 }
 
 #[cfg(test)]

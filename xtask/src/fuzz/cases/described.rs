@@ -7,7 +7,11 @@ use super::super::gen::*;
 
 /// A built-in description as commented TOML: the prototype or the Chapter 2 truck.
 fn template(rng: &mut Rng) -> String {
-    let name = rng.pick(&["prototype", "prototype", "chapter2-truck"]);
+    template_of(rng.pick(&["prototype", "prototype", "chapter2-truck"]))
+}
+
+/// The built-in description `name` as commented TOML.
+fn template_of(name: &str) -> String {
     let d = afsv_vehicle::builtin(name).expect("a built-in vehicle");
     afsv_vehicle::to_commented_toml(&d).expect("the built-in descriptions serialise")
 }
@@ -85,5 +89,39 @@ pub(crate) fn description_file(g: &mut Gen<'_>) {
 /// `afsv params check vehicle v.toml`.
 pub(super) fn check_case(g: &mut Gen<'_>) {
     description_file(g);
+    g.arg("v.toml");
+}
+
+/// One interconnection line as TOML table lines (`LineParams::front_axle_roll`).
+const LINE: &str = "diameter_m = 0.038\nviscosity_pa_s = 0.027\nport_cd = 0.7\n\
+    accumulator_volume_m3 = 8.4e-3\nprecharge_pa = 2.4e6\n\
+    piston_end = { length_m = 0.3, port_area_m2 = 3.3e-4 }\n\
+    rod_end = { length_m = 2.5, port_area_m2 = 6.2e-5 }\n";
+
+/// `afsv params check vehicle v.toml` on the prototype with a `[link]` (docs/vehicles.md):
+/// a roll or pitch link (or another kind), its line tables given, mismatched or left out,
+/// the axles suspended or not, then the link's lines damaged as a hand-edited file can be.
+pub(super) fn link_case(g: &mut Gen<'_>) {
+    let mut text = template_of("prototype");
+    for _ in 0..g.rng.below(3) {
+        text = text.replacen("suspension = \"rigid\"", "suspension = \"hps\"", 1);
+    }
+    let kind = g
+        .rng
+        .pick(&["roll", "roll", "pitch", "pitch", "yaw", ""])
+        .to_string();
+    let mut link = format!("[link]\nkind = \"{kind}\"\n");
+    match g.rng.below(4) {
+        0 => {}
+        1 => link += &format!("[link.line]\n{LINE}"),
+        2 => link += &format!("[[link.lines]]\n{LINE}[[link.lines]]\n{LINE}"),
+        _ => link += &format!("[[link.lines]]\n{LINE}"),
+    }
+    let link = if g.rng.chance(0.2) {
+        link
+    } else {
+        mutate_toml(&mut g.rng, &link)
+    };
+    g.file("v.toml", (text + "\n" + &link).into_bytes());
     g.arg("v.toml");
 }

@@ -12,7 +12,6 @@ use afsv_records::jsonl::write_jsonl;
 use afsv_records::stored::write_json;
 use optimize::Evaluation;
 use serde_json::{json, Value};
-use std::io::IsTerminal;
 use std::path::Path;
 
 /// One `--ask` or `--tell` of an ask/tell run.
@@ -35,7 +34,6 @@ impl AskTell<'_> {
             .iter()
             .map(|p| AfsAskTell::new(p, self.settings))
             .collect::<Result<_, _>>()?;
-        let created = self.stored.is_none();
         let state = AskTellState::read(
             "--state",
             self.state_path,
@@ -45,27 +43,20 @@ impl AskTell<'_> {
             &self.settings_json,
             self.problems,
         )?;
-        // The identity of what this state asks: the SHA-256 of the file's content (as it
-        // is, or as a new state will be written).
-        let text = match &self.stored {
-            Some(t) => t.clone(),
-            None => serde_json::to_string(&state)?,
-        };
-        let sha = afsv_records::provenance::sha256_hex(text.as_bytes());
+        let id = super::StateIdentity::of(self.stored.clone(), &state)?;
         match &self.args.ask_tell.ask {
-            Some(path) => self.ask(&drivers, &state, created.then_some(&text), &sha, path),
-            None => self.tell(&drivers, state, &sha),
+            Some(path) => self.ask(&drivers, &state, &id, path),
+            None => self.tell(&drivers, state, &id.sha),
         }
     }
 
-    /// Writes the next batch (identified by `sha`, the state's SHA-256, and its number),
-    /// and a new state's file (`created`: its text); once finished, the report.
+    /// Writes the next batch (identified by `id`, the state's SHA-256, and its number),
+    /// and a new state's file; once finished, the report.
     fn ask(
         &self,
         drivers: &[AfsAskTell],
         state: &AskTellState,
-        created: Option<&String>,
-        sha: &str,
+        id: &super::StateIdentity,
         path: &Path,
     ) -> CmdResult {
         let asked = state.asked(drivers, &self.descs)?;
@@ -76,25 +67,16 @@ impl AskTell<'_> {
             written_by: "afsv optimize afs --ask".into(),
             sign_convention: afsv_records::SIGN_CONVENTION.into(),
             batch: state.batch,
-            state_sha256: sha.into(),
+            state_sha256: id.sha.clone(),
             finished: asked.is_none(),
             points: points.len(),
             variables: variable_names(),
             problems: self.descs.clone(),
         };
         write_jsonl(path, &header, points)?;
-        if let Some(text) = created {
-            afsv_records::atomic::write(self.state_path, text)
-                .map_err(|e| format!("{}: {e}", self.state_path.display()))?;
-        }
+        id.write_if_new(self.state_path)?;
         let Some(asked) = asked else {
-            if !afsv::progress::is_quiet() {
-                eprintln!(
-                "afsv optimize afs: the run has finished after {} batches; {} holds no point; the report follows",
-                state.batch,
-                path.display()
-            );
-            }
+            super::finished_notice("afs", state.batch, path);
             let outcomes = drivers
                 .iter()
                 .zip(&state.runs)
@@ -116,7 +98,7 @@ impl AskTell<'_> {
             "batch": state.batch, "finished": false, "points": asked.points.len(),
             "batch_file": path.display().to_string(), "phases": asked.phases,
         });
-        if self.args.json || !std::io::stdout().is_terminal() {
+        if super::machine(self.args.json) {
             afsv::output::print_json(&status)?;
         } else {
             println!(
@@ -169,21 +151,12 @@ impl AskTell<'_> {
         state.batch += 1;
         write_json(self.state_path, &state)?;
         let finished = state.asked(drivers, &self.descs)?.is_none();
-        let status = json!({"told": state.batch - 1, "points": asked.points.len(), "next_batch": state.batch, "finished": finished});
-        if self.args.json || !std::io::stdout().is_terminal() {
-            afsv::output::print_json(&status)?;
-        } else {
-            println!(
-                "batch {} told ({} points); {}",
-                state.batch - 1,
-                asked.points.len(),
-                if finished {
-                    "the run has finished: --ask prints the report"
-                } else {
-                    "next: --ask"
-                }
-            );
-        }
-        Ok(())
+        super::print_told(
+            self.args.json,
+            state.batch - 1,
+            asked.points.len(),
+            "points",
+            finished,
+        )
     }
 }

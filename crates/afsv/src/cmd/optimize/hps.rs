@@ -1,11 +1,25 @@
 //! `afsv optimize hps`: the chapter-6 HPS design optimisation (Eqs 6.19-6.20) on the 3-D
 //! vehicle by a genetic algorithm (`afsv_design::hps_optimum`), then the optimum and the
-//! nominal design re-evaluated over terrain seeds with SP-DRT and omega_z.
+//! nominal design re-evaluated over terrain seeds with SP-DRT and omega_z. In this
+//! process, or ask/tell with `--state`: `--ask` writes the next batch of vehicle runs
+//! (JSON Lines) for `afsv batch evaluate`, `--tell` reads the shards' results; once
+//! finished `--ask` prints the report, the in-process one byte for byte
+//! (`afsv_design::hps_ask_tell`).
 
+use super::AskTellArgs;
 use crate::cmd::CmdResult;
+use afsv::output::OutputGuard;
+use afsv_design::hps_ask_tell::{
+    batch_points, HpsBatchHeader, HPS_BATCH_FORMAT, HPS_FORMAT_VERSION,
+};
 use afsv_design::hps_optimum::{optimise_hps, HpsGaSettings, HpsOptimum};
 use afsv_design::hps_speed_sweep::hps_speed_sweep;
+use afsv_design::{HpsAsk, HpsAskTell, HpsAskTellState, HpsProblemDesc};
+use afsv_records::jsonl::write_jsonl;
+use afsv_records::lock::RunLock;
+use afsv_records::stored::{read_stored, write_json};
 use std::io::IsTerminal;
+use std::path::Path;
 
 /// Options of `afsv optimize hps`.
 #[derive(clap::Args)]
@@ -41,6 +55,8 @@ pub struct HpsArgs {
     pub speed_sweep: bool,
     #[arg(long, help = crate::cmd::described::HELP)]
     pub vehicle: Option<std::path::PathBuf>,
+    #[command(flatten)]
+    pub ask_tell: AskTellArgs,
     /// Print JSON even on a terminal.
     #[arg(long)]
     pub json: bool,
@@ -73,6 +89,7 @@ pub fn run(a: &HpsArgs) -> CmdResult {
         )
         .into());
     }
+    a.ask_tell.check()?;
     let settings = HpsGaSettings {
         population: a.population,
         generations: a.generations,
@@ -82,12 +99,14 @@ pub fn run(a: &HpsArgs) -> CmdResult {
         reevaluate_roll: !a.no_roll,
         ..HpsGaSettings::default()
     };
-    let progress = Generations(afsv::progress::Progress::new(
-        "afsv optimize hps",
-        "generations",
-        Some(a.generations),
-    ));
-    let mut guard = afsv::output::OutputGuard::new(a.force);
+    let (_lock, stored) = match &a.ask_tell.state {
+        Some(p) => (
+            Some(RunLock::take("--state", p)?),
+            read_stored("--state", p)?,
+        ),
+        None => (None, None),
+    };
+    let mut guard = OutputGuard::new(a.force);
     if let Some(v) = a
         .vehicle
         .as_deref()
@@ -95,12 +114,34 @@ pub fn run(a: &HpsArgs) -> CmdResult {
     {
         guard.input("--vehicle", v)?;
     }
+    a.ask_tell.declare_inputs(&mut guard)?;
     if let Some(path) = &a.strut_out {
         guard.output("--strut-out", path, afsv::output::OutputKind::Other)?;
     }
+    a.ask_tell.declare_outputs(&mut guard)?;
     let base = crate::cmd::described::with_front_strut(a.vehicle.as_deref(), "optimize hps")?;
+    if let Some(state) = &a.ask_tell.state {
+        let desc = HpsProblemDesc {
+            vehicle: crate::cmd::described::articulated(a.vehicle.as_deref())?.name,
+            params: base,
+            settings,
+        };
+        return ask_tell(a, &desc, state, stored);
+    }
+    let progress = Generations(afsv::progress::Progress::new(
+        "afsv optimize hps",
+        "generations",
+        Some(a.generations),
+    ));
     let r = optimise_hps(&base, &settings, &progress)?;
     progress.0.finish();
+    report(a, &base, &r)
+}
+
+/// The finished run's outputs: the optimum's strut file, the D4 sweep when asked, the
+/// report on stdout (JSON, or text on a terminal); [`afsv::output::NotEarned`] when the
+/// optimum misses the a_wz limit.
+fn report(a: &HpsArgs, base: &vehicle_3d::VehicleParams, r: &HpsOptimum) -> CmdResult {
     let mut best = base.clone();
     best.hps = r.design.apply(&base.hps)?;
     if let Some(path) = &a.strut_out {
@@ -120,13 +161,13 @@ pub fn run(a: &HpsArgs) -> CmdResult {
         None
     };
     if a.json || !std::io::stdout().is_terminal() {
-        let mut v = serde_json::to_value(&r)?;
+        let mut v = serde_json::to_value(r)?;
         if let Some(s) = &sweep {
             v["speed_sweep"] = serde_json::to_value(s)?;
         }
         afsv::output::print_json(&v)?;
     } else {
-        print!("{}", text(&r));
+        print!("{}", text(r));
         if let Some(s) = &sweep {
             print!("\n{}", crate::cmd::study::sweep_text(s));
         }
@@ -140,6 +181,67 @@ pub fn run(a: &HpsArgs) -> CmdResult {
         ))
         .into())
     }
+}
+
+/// One `--ask` or `--tell` against the state file `path` (its text `stored`, read under
+/// the run lock).
+fn ask_tell(a: &HpsArgs, desc: &HpsProblemDesc, path: &Path, stored: Option<String>) -> CmdResult {
+    let driver = HpsAskTell::new(desc)?;
+    let mut state = HpsAskTellState::read(
+        "--state",
+        path,
+        stored.as_deref(),
+        a.ask_tell.ask.is_some(),
+        desc,
+    )?;
+    let id = super::StateIdentity::of(stored, &state)?;
+    let asked = driver.ask(&state.run)?;
+    if let Some(batch_path) = &a.ask_tell.ask {
+        let (phase, points) = match &asked {
+            HpsAsk::Evaluate(b) => (b.phase.name(), batch_points(state.batch, b)),
+            HpsAsk::Finished => (String::new(), Vec::new()),
+        };
+        let header = HpsBatchHeader {
+            format: HPS_BATCH_FORMAT.into(),
+            version: HPS_FORMAT_VERSION,
+            written_by: "afsv optimize hps --ask".into(),
+            sign_convention: afsv_records::SIGN_CONVENTION.into(),
+            batch: state.batch,
+            state_sha256: id.sha.clone(),
+            finished: asked == HpsAsk::Finished,
+            phase: phase.clone(),
+            points: points.len(),
+            problem: desc.clone(),
+        };
+        write_jsonl(batch_path, &header, &points)?;
+        id.write_if_new(path)?;
+        if asked == HpsAsk::Finished {
+            super::finished_notice("hps", state.batch, batch_path);
+            return report(a, &desc.params, &driver.finish(&state.run)?);
+        }
+        return super::print_asked(
+            a.json,
+            state.batch,
+            &phase,
+            points.len(),
+            "runs",
+            batch_path,
+        );
+    }
+    let HpsAsk::Evaluate(b) = asked else {
+        return Err(format!(
+            "--state {}: the run has finished; --ask prints its report",
+            path.display()
+        )
+        .into());
+    };
+    let points = batch_points(state.batch, &b);
+    let results = state.results(&a.ask_tell.tell, &id.sha, &points)?;
+    driver.tell(&mut state.run, results)?;
+    state.batch += 1;
+    write_json(path, &state)?;
+    let finished = driver.ask(&state.run)? == HpsAsk::Finished;
+    super::print_told(a.json, state.batch - 1, points.len(), "runs", finished)
 }
 
 /// A value or "n/a".

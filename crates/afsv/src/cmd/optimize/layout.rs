@@ -19,7 +19,6 @@ use afsv_design::{
 use afsv_records::jsonl::write_jsonl;
 use afsv_records::lock::RunLock;
 use afsv_records::stored::{read_stored, write_json};
-use serde_json::json;
 use std::io::IsTerminal;
 use std::path::{Path, PathBuf};
 use vehicle_3d::Load;
@@ -213,16 +212,8 @@ fn ask_tell(
         problem.desc(),
         ga,
     )?;
-    // The identity of what this state asks: the SHA-256 of the file's content (as it is,
-    // or as a new state will be written).
-    let created = stored.is_none();
-    let text = match stored {
-        Some(t) => t,
-        None => serde_json::to_string(&state)?,
-    };
-    let sha = afsv_records::provenance::sha256_hex(text.as_bytes());
+    let id = super::StateIdentity::of(stored, &state)?;
     let asked = driver.ask(&state.run)?;
-    let machine = a.json || !std::io::stdout().is_terminal();
     if let Some(batch_path) = &a.ask_tell.ask {
         let (phase, points) = match &asked {
             LayoutAsk::Evaluate(b) => {
@@ -236,40 +227,26 @@ fn ask_tell(
             written_by: "afsv optimize layout --ask".into(),
             sign_convention: afsv_records::SIGN_CONVENTION.into(),
             batch: state.batch,
-            state_sha256: sha,
+            state_sha256: id.sha.clone(),
             finished: asked == LayoutAsk::Finished,
             phase: phase.clone(),
             points: points.len(),
             problem: problem.desc().clone(),
         };
         write_jsonl(batch_path, &header, &points)?;
-        if created {
-            afsv_records::atomic::write(path, &text)
-                .map_err(|e| format!("{}: {e}", path.display()))?;
-        }
+        id.write_if_new(path)?;
         if asked == LayoutAsk::Finished {
-            if !afsv::progress::is_quiet() {
-                eprintln!(
-                    "afsv optimize layout: the run has finished after {} batches; {} holds no point; the report follows",
-                    state.batch,
-                    batch_path.display()
-                );
-            }
+            super::finished_notice("layout", state.batch, batch_path);
             return report(a, &driver.finish(&state.run)?);
         }
-        let status = json!({"batch": state.batch, "finished": false, "phase": phase,
-            "points": points.len(), "batch_file": batch_path.display().to_string()});
-        if machine {
-            afsv::output::print_json(&status)?;
-        } else {
-            println!(
-                "batch {} ({phase}): {} points written to {}",
-                state.batch,
-                points.len(),
-                batch_path.display()
-            );
-        }
-        return Ok(());
+        return super::print_asked(
+            a.json,
+            state.batch,
+            &phase,
+            points.len(),
+            "points",
+            batch_path,
+        );
     }
     let LayoutAsk::Evaluate(b) = asked else {
         return Err(format!(
@@ -279,27 +256,12 @@ fn ask_tell(
         .into());
     };
     let points = batch_points(problem.desc(), state.batch, &b);
-    let results = state.results(&a.ask_tell.tell, &sha, &points)?;
+    let results = state.results(&a.ask_tell.tell, &id.sha, &points)?;
     driver.tell(&mut state.run, results)?;
     state.batch += 1;
     write_json(path, &state)?;
     let finished = driver.ask(&state.run)? == LayoutAsk::Finished;
-    let status = json!({"told": state.batch - 1, "points": points.len(), "next_batch": state.batch, "finished": finished});
-    if machine {
-        afsv::output::print_json(&status)?;
-    } else {
-        println!(
-            "batch {} told ({} points); {}",
-            state.batch - 1,
-            points.len(),
-            if finished {
-                "the run has finished: --ask prints the report"
-            } else {
-                "next: --ask"
-            }
-        );
-    }
-    Ok(())
+    super::print_told(a.json, state.batch - 1, points.len(), "points", finished)
 }
 
 /// A number with 4 significant digits, or "n/a".

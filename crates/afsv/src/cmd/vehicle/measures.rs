@@ -43,6 +43,7 @@ pub(super) fn measures_cmd(
     let mut guard = OutputGuard::new(false);
     declare_inputs(case, &mut guard)?;
     let seeds = measure_seeds(seeds, seed)?;
+    super::unlinked(case, "measures")?;
     let (p, axle) = vehicle_params(case)?;
     let runs = seeds.len() * 2 + 1;
     let progress = Progress::new("afsv vehicle measures", "runs", Some(runs));

@@ -41,6 +41,7 @@ pub(super) fn path_change_cmd(
     if let Some(p) = out.plot.as_deref() {
         guard.output("--plot", p, OutputKind::Svg)?;
     }
+    super::unlinked(case, "path-change")?;
     let (p, axle) = vehicle_params(case)?;
     let (terrain, seeds) = terrain_and_seeds(case, None, seed, None)?;
     let seeds = &seeds[..1];

@@ -2,6 +2,7 @@
 //! vehicle has one.
 
 use super::*;
+use vehicle_3d::interconnect::ride_linked;
 
 pub(super) fn ride_cmd(
     case: &CaseArgs,
@@ -20,6 +21,7 @@ pub(super) fn ride_cmd(
         );
     }
     let (p, axle) = prepare(case, study)?;
+    let link = described_link(case, axle)?;
     let layout = seat::layout(case, seat)?;
     let speed = case.speed_kmh.unwrap_or(20.0);
     let t_window = RUN_IN_M / (speed / 3.6);
@@ -38,11 +40,18 @@ pub(super) fn ride_cmd(
             length_m,
             ..RideSpec::d1(case.load, axle)
         };
-        let (rec, m, ground) = road::ride(&p, &spec, road)?;
+        let (rec, m, ground) = road::ride(&p, &spec, road, link.as_ref())?;
         let seats: Vec<_> = seat::of_run(&p, &rec, t_window, layout.as_ref())?
             .into_iter()
             .collect();
-        return ride_report(case, study, (&spec, &p), &[m], &seats, ground);
+        return ride_report(
+            case,
+            study,
+            (&spec, &p, link.as_ref()),
+            &[m],
+            &seats,
+            ground,
+        );
     }
     let (terrain, seeds) =
         terrain_and_seeds(case, study.seeds, study.seed, Some(TerrainSpec::default()))?;
@@ -58,7 +67,11 @@ pub(super) fn ride_cmd(
     let want_psd = study.plot.is_some();
     type RideRun = (RideMeasures, Option<RidePsd>, Option<SeatRideMeasures>);
     let runs: Vec<RideRun> = over_seeds("afsv vehicle ride", &Some(terrain), &seeds, |_, s| {
-        let (rec, m) = scenarios::ride(&p, &spec, s).map_err(|e| e.to_string())?;
+        let (rec, m) = match &link {
+            Some(l) => ride_linked(&p, &spec, s, l).map(|(r, m)| (r.record, m)),
+            None => scenarios::ride(&p, &spec, s),
+        }
+        .map_err(|e| e.to_string())?;
         let psd = if want_psd {
             Some(ride_psd(&rec, t_window)?)
         } else {
@@ -80,14 +93,21 @@ pub(super) fn ride_cmd(
         ),
         per_run: per_seed(&Some(terrain), &seeds, &measures, NO_STRUT),
     };
-    ride_report(case, study, (&spec, &p), &measures, &seats, ground)
+    ride_report(
+        case,
+        study,
+        (&spec, &p, link.as_ref()),
+        &measures,
+        &seats,
+        ground,
+    )
 }
 
 /// The ride's measures over its runs (seeds, or one measured road) as JSON or text.
 fn ride_report(
     case: &CaseArgs,
     study: &StudyArgs,
-    (spec, p): (&RideSpec, &VehicleParams),
+    (spec, p, link): (&RideSpec, &VehicleParams, Option<&Link>),
     measures: &[RideMeasures],
     seats: &[SeatRideMeasures],
     ground: road::Ground,
@@ -176,5 +196,5 @@ fn ride_report(
     text += &spread_text("dominant vertical frequency", &vertical, "Hz");
     text += &spread_text("dominant pitch frequency", &pitch, "Hz");
     seat::report(seats, &mut v, &mut text)?;
-    print_result(study.json, &v, &text)
+    print_linked(study.json, v, &text, link)
 }

@@ -34,6 +34,7 @@ pub(super) fn ride(
     p: &VehicleParams,
     spec: &RideSpec,
     file: &Path,
+    link: Option<&vehicle_3d::interconnect::Link>,
 ) -> Result<(RunRecord, RideMeasures, Ground), String> {
     OutputGuard::new(false).record_input("--road", file)?;
     let shown = file.display();
@@ -47,7 +48,13 @@ pub(super) fn ride(
     };
     let (dx, n) = (profile.dx_m, profile.len());
     let tracks = measured_ride_tracks(p, spec, profile).map_err(|e| format!("{shown}: {e}"))?;
-    let (rec, m) = ride_on(p, spec, tracks).map_err(|e| e.to_string())?;
+    let (rec, m) = match link {
+        Some(l) => {
+            vehicle_3d::interconnect::ride_linked_on(p, spec, tracks, l).map(|(r, m)| (r.record, m))
+        }
+        None => ride_on(p, spec, tracks),
+    }
+    .map_err(|e| e.to_string())?;
     let length = dx * (n - 1) as f64;
     let mut road = json!({
         "kind": "measured two-track road",

@@ -4,11 +4,14 @@
 use super::super::args;
 use super::options::{steer_input, steer_label};
 use super::CmdResult;
-use super::{declare_inputs, terrain_and_seeds, terrain_json, vehicle_params, CaseArgs};
+use super::{
+    declare_inputs, described_link, terrain_and_seeds, terrain_json, vehicle_params, CaseArgs,
+};
 use afsv::output::{OutputGuard, OutputKind};
 use afsv_records::Record;
 use serde_json::json;
 use std::path::Path;
+use vehicle_3d::interconnect::LinkedVehicle;
 use vehicle_3d::{RunOptions, Vehicle, VehicleOptions};
 use vehicle_components::FlatTerrain;
 
@@ -35,6 +38,7 @@ pub(super) fn simulate_cmd(
     declare_inputs(case, &mut guard)?;
     guard.output("-o", output, OutputKind::Record)?;
     let (p, axle) = vehicle_params(case)?;
+    let link = described_link(case, axle)?;
     let (terrain, seeds) = terrain_and_seeds(case, None, seed, None)?;
     // one run: the given seed, else the first of the default list (1)
     let seeds = &seeds[..1];
@@ -53,15 +57,22 @@ pub(super) fn simulate_cmd(
         ..RunOptions::default()
     };
     let half = 0.5 * p.front_track_m;
-    let rec = match &terrain {
+    let vehicle = match &terrain {
         None => {
             let flat = FlatTerrain::new(0.0, vehicle_components::DEFAULT_FRICTION)?;
-            vehicle_3d::simulate(&Vehicle::new(&p, case.load, options, &flat, half)?, &run)?
+            Vehicle::new(&p, case.load, options, &flat, half)?
         }
         Some(t) => {
             let length = options.start_s_m + options.path_length_m + 50.0;
             let ground = t.build(&p, length, seeds[0])?;
-            vehicle_3d::simulate(&Vehicle::new(&p, case.load, options, &ground, half)?, &run)?
+            Vehicle::new(&p, case.load, options, &ground, half)?
+        }
+    };
+    let rec = match &link {
+        None => vehicle_3d::simulate(&vehicle, &run)?,
+        Some(l) => {
+            let linked = LinkedVehicle::new(vehicle, l)?;
+            linked.simulate_from(&linked.initial_state()?, &run)?.record
         }
     };
     let mut out = Record::from_columns(rec.afsv_v1_columns())?;
@@ -80,6 +91,9 @@ pub(super) fn simulate_cmd(
         "axes": AXES,
         "params": p,
     });
+    if let Some(l) = &link {
+        out.meta["link"] = json!(l);
+    }
     afsv::provenance::stamp_record(&mut out);
     out.write(output)?;
     afsv::output::print_json(&json!({

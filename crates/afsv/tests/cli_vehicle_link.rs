@@ -1,0 +1,60 @@
+//! A vehicle description with a `[link]` (docs/vehicles.md): `afsv vehicle yaw` runs the
+//! linked vehicle and says so, the same description without the link runs as before, and
+//! the commands that cannot run the link, or `--hps off`, refuse it in one line.
+
+mod cli_support;
+use cli_support::{afsv, json, scratch};
+
+/// The prototype's description with an `hps` front axle, and `extra` appended.
+fn description(name: &str, extra: &str) -> std::path::PathBuf {
+    let out = afsv(&["params", "dump", "vehicle"]);
+    assert!(out.status.success());
+    let text = String::from_utf8(out.stdout).unwrap();
+    let text = text.replacen("suspension = \"rigid\"", "suspension = \"hps\"", 1);
+    let path = scratch("link", name);
+    std::fs::write(&path, text + extra).unwrap();
+    path
+}
+
+fn stderr(out: &std::process::Output) -> String {
+    String::from_utf8_lossy(&out.stderr).into_owned()
+}
+
+#[test]
+fn a_roll_link_runs_in_vehicle_yaw_and_is_refused_where_it_cannot_run() {
+    let plain = description("plain.toml", "");
+    let linked = description("roll.toml", "\n[link]\nkind = \"roll\"\n");
+    let yaw = |v: &std::path::Path| {
+        json(&afsv(&[
+            "--quiet",
+            "vehicle",
+            "yaw",
+            "--json",
+            "--vehicle",
+            v.to_str().unwrap(),
+        ]))
+    };
+    let (a, b) = (yaw(&plain), yaw(&linked));
+    assert!(a.get("link").is_none());
+    assert!(
+        b["link"]["Roll"]["diameter_m"].as_f64() == Some(0.038),
+        "{}",
+        b["link"]
+    );
+    let omega = |v: &serde_json::Value| v["omega_z_hz"]["mean"].as_f64().unwrap();
+    assert!(omega(&a).is_finite() && omega(&b).is_finite());
+    assert_ne!(omega(&a), omega(&b), "the link changes the run");
+    let l = linked.to_str().unwrap();
+    for (args, says) in [
+        (
+            vec!["vehicle", "yaw", "--vehicle", l, "--hps", "off"],
+            "--hps off",
+        ),
+        (vec!["vehicle", "measures", "--vehicle", l], "has a [link]"),
+    ] {
+        let out = afsv(&args);
+        assert_eq!(out.status.code(), Some(1), "{args:?}");
+        assert!(stderr(&out).contains(says), "{}", stderr(&out));
+        assert_eq!(stderr(&out).lines().count(), 1, "{}", stderr(&out));
+    }
+}
