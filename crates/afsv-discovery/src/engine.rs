@@ -332,23 +332,25 @@ pub fn discover<M: DiscoveryModel + ?Sized>(
         &holdout_names,
     )?;
     // Step 0a: each reading of each switch calibrated, the better kept.
-    let calibrate_reading = |choice: &[usize]| -> Result<(Fitted, f64), DiscoveryError> {
-        let read = WithReadings {
-            inner: model,
-            choice: choice.to_vec(),
+    let calibrate_reading =
+        |choice: &[usize], start: Option<&[f64]>| -> Result<(Fitted, f64), DiscoveryError> {
+            let read = WithReadings {
+                inner: model,
+                choice: choice.to_vec(),
+            };
+            let wrapped = WithPlacebos::new(&read);
+            let ctx = context(&wrapped, train, &tp, holdout, &hp, opts, wrapped.real)?;
+            let nominal = nominal_config(&ctx);
+            let fitted = ctx.fit(
+                Config {
+                    free_baseline: (0..nominal.baseline.len()).collect(),
+                    baseline: start.map_or(nominal.baseline, <[f64]>::to_vec),
+                    ..nominal
+                },
+                None,
+            )?;
+            Ok((fitted, ctx.holdout.noise_mse()))
         };
-        let wrapped = WithPlacebos::new(&read);
-        let ctx = context(&wrapped, train, &tp, holdout, &hp, opts, wrapped.real)?;
-        let nominal = nominal_config(&ctx);
-        let fitted = ctx.fit(
-            Config {
-                free_baseline: (0..nominal.baseline.len()).collect(),
-                ..nominal
-            },
-            None,
-        )?;
-        Ok((fitted, ctx.holdout.noise_mse()))
-    };
     let (choice, reading_choices, switched_fit) = if switches.is_empty() {
         (Vec::new(), Vec::new(), None)
     } else {
@@ -469,17 +471,18 @@ pub fn discover<M: DiscoveryModel + ?Sized>(
 }
 
 /// Step 0a: the calibration switches, one after another: each other reading of a switch is
-/// calibrated (`calibrate` gives the fit and the held-out noise floor) with the other
-/// switches at their readings so far, and replaces the current one when it is
-/// [`readings::better`]. Returns the readings kept, what each switch tried, and the
-/// calibration under the readings kept.
+/// calibrated (`calibrate` gives the fit and the held-out noise floor; the default readings
+/// from the nominal values, every other reading from the current readings' calibration,
+/// which saves most of its iterations) with the other switches at their readings so far,
+/// and replaces the current one when it is [`readings::better`]. Returns the readings
+/// kept, what each switch tried, and the calibration under the readings kept.
 fn choose_readings(
     switches: &[super::LawSwitch],
     opts: &DiscoveryOptions,
-    calibrate: impl Fn(&[usize]) -> Result<(Fitted, f64), DiscoveryError>,
+    calibrate: impl Fn(&[usize], Option<&[f64]>) -> Result<(Fitted, f64), DiscoveryError>,
 ) -> Result<(Vec<usize>, Vec<ReadingChoice>, Fitted), DiscoveryError> {
     let mut choice = vec![0; switches.len()];
-    let (mut best, noise) = calibrate(&choice)?;
+    let (mut best, noise) = calibrate(&choice, None)?;
     let score = |reading: &str, f: &Fitted| ReadingScore {
         reading: reading.to_string(),
         train_mse: f.0.train_mse,
@@ -492,7 +495,7 @@ fn choose_readings(
         for r in (0..sw.readings.len()).filter(|&r| r != choice[k]) {
             let mut c = choice.clone();
             c[k] = r;
-            let (f, _) = calibrate(&c)?;
+            let (f, _) = calibrate(&c, Some(&best.1.baseline))?;
             tried.push(score(&sw.readings[r], &f));
             let reference = kept.as_ref().map_or(&best, |(_, f)| f);
             if readings::better(
