@@ -264,7 +264,10 @@ fn cubic_derivative_weights(m: usize) -> Vec<f64> {
 
 /// The calibrated baseline of the strut, by the names of the strut registry
 /// ([`hps_emulsion::STRUT_PARAMS`], which gives each one's unit, bounds and typical size), in
-/// the order of [`DiscoveryModel::baseline_params`]. `gamma0` comes last: it is applied with
+/// the order of [`DiscoveryModel::baseline_params`]. The last two have their own rules:
+/// `v_r0` (the chamber split of Table 6.3's 11.4 L, which sets the rod-side dead volume;
+/// window [`ROD_DEAD_LENGTH_WINDOW_M`]) is applied with [`StrutParams::with_rod_volume`],
+/// which takes the oil from the piston side, and `gamma0` last with
 /// [`StrutParams::with_gamma0`], which moves gas between the free volume and the emulsion.
 pub const CALIBRATED: [&str; 9] = [
     "n",
