@@ -5,6 +5,7 @@ use super::fitting::{finalists, spanning_subset, Config, Context, Fitted, Scoute
 use super::form::{self, FormRule, NamingTests, Outcome};
 use super::layout::{channel_scales, RecordSet};
 use super::placebo::WithPlacebos;
+use super::readings::{self, ReadingChoice, ReadingScore, WithReadings};
 use super::signature::{channel_signature, ChannelSignature};
 use super::stats::{self, SignificanceRule};
 use super::{ActiveEffect, DiscoveryError, DiscoveryModel};
@@ -45,6 +46,10 @@ pub struct DiscoveryOptions {
     pub finalists: usize,
     /// The naming tests a significant candidate must pass to be named ([`form`]).
     pub form: FormRule,
+    /// Calibrate every reading of the model's calibration switches
+    /// ([`DiscoveryModel::switches`]) and keep the better one; `false` runs the default
+    /// readings only (the comparison of docs/discovery.md).
+    pub switches: bool,
 }
 
 /// Levenberg-Marquardt iterations of a scouting fit (see [`DiscoveryOptions::starts`]).
@@ -64,6 +69,7 @@ impl Default for DiscoveryOptions {
             polish_iterations: 6,
             finalists: 3,
             form: FormRule::default(),
+            switches: true,
         }
     }
 }
@@ -188,6 +194,9 @@ pub struct Discovery {
     pub nominal: FitOutcome,
     /// Calibrated baseline.
     pub calibrated: FitOutcome,
+    /// The reading each calibration switch took in step 0 (empty for a model without
+    /// switches or with [`DiscoveryOptions::switches`] off).
+    pub readings: Vec<ReadingChoice>,
     /// Where the calibrated baseline disagrees, per training and held-out record and channel.
     pub signatures: Vec<(String, ChannelSignature)>,
     /// Greedy rounds.
@@ -257,7 +266,9 @@ fn prepare_all<M: DiscoveryModel + ?Sized>(
         .collect()
 }
 
-/// Calibrate the baseline's uncertain parameters on `train` (step 0 of the workflow).
+/// Calibrate the baseline's uncertain parameters on `train` (step 0 of the workflow), at
+/// the model's default readings ([`discover`] also calibrates the other readings of its
+/// calibration switches and keeps the better).
 pub fn calibrate<M: DiscoveryModel + ?Sized>(
     model: &M,
     train: &[Record],
@@ -301,14 +312,58 @@ pub fn discover<M: DiscoveryModel + ?Sized>(
         return Err(DiscoveryError::NoRecords);
     }
     check_candidates(model, opts)?;
-    // Placebo candidates follow the catalogue; only the naming tests fit them.
-    let wrapped = WithPlacebos::new(model);
-    let real = wrapped.real;
-    let model = &wrapped;
+    let switches = if opts.switches {
+        model.switches()
+    } else {
+        Vec::new()
+    };
     let train_names = super::layout::labels(train_names, train.len(), "train");
     let holdout_names = super::layout::labels(holdout_names, holdout.len(), "holdout");
-    let tp = prepare_all(model, train, &train_names)?;
-    let hp = prepare_all(model, holdout, &holdout_names)?;
+    // Placebo candidates follow the catalogue; only the naming tests fit them. Records are
+    // prepared once: a reading changes the replay, not the prepared inputs.
+    let default_reading = WithReadings {
+        inner: model,
+        choice: vec![0; switches.len()],
+    };
+    let tp = prepare_all(&WithPlacebos::new(&default_reading), train, &train_names)?;
+    let hp = prepare_all(
+        &WithPlacebos::new(&default_reading),
+        holdout,
+        &holdout_names,
+    )?;
+    // Step 0a: each reading of each switch calibrated, the better kept.
+    let calibrate_reading =
+        |choice: &[usize], start: Option<&[f64]>| -> Result<(Fitted, f64), DiscoveryError> {
+            let read = WithReadings {
+                inner: model,
+                choice: choice.to_vec(),
+            };
+            let wrapped = WithPlacebos::new(&read);
+            let ctx = context(&wrapped, train, &tp, holdout, &hp, opts, wrapped.real)?;
+            let nominal = nominal_config(&ctx);
+            let fitted = ctx.fit(
+                Config {
+                    free_baseline: (0..nominal.baseline.len()).collect(),
+                    baseline: start.map_or(nominal.baseline, <[f64]>::to_vec),
+                    ..nominal
+                },
+                None,
+            )?;
+            Ok((fitted, ctx.holdout.noise_mse()))
+        };
+    let (choice, reading_choices, switched_fit) = if switches.is_empty() {
+        (Vec::new(), Vec::new(), None)
+    } else {
+        let (c, r, f) = choose_readings(&switches, opts, calibrate_reading)?;
+        (c, r, Some(f))
+    };
+    let read = WithReadings {
+        inner: model,
+        choice,
+    };
+    let wrapped = WithPlacebos::new(&read);
+    let real = wrapped.real;
+    let model = &wrapped;
     let ctx = context(model, train, &tp, holdout, &hp, opts, real)?;
     let mut conditions = Vec::new();
     for (set, names, prep) in [
@@ -331,7 +386,10 @@ pub fn discover<M: DiscoveryModel + ?Sized>(
         free_baseline: (0..nominal_cfg.baseline.len()).collect(),
         ..nominal_cfg.clone()
     };
-    let calibrated_fit = ctx.fit(start, None)?;
+    let calibrated_fit = match switched_fit {
+        Some(f) => f,
+        None => ctx.fit(start, None)?,
+    };
     progress.fit_done("baseline calibration");
     let calibrated_cfg = calibrated_fit.1.clone();
 
@@ -396,6 +454,7 @@ pub fn discover<M: DiscoveryModel + ?Sized>(
         conditions,
         nominal,
         calibrated,
+        readings: reading_choices,
         signatures,
         steps: search.steps,
         named: search.named,
@@ -409,6 +468,57 @@ pub fn discover<M: DiscoveryModel + ?Sized>(
         outcome,
         calibration_problems,
     })
+}
+
+/// Step 0a: the calibration switches, one after another: each other reading of a switch is
+/// calibrated (`calibrate` gives the fit and the held-out noise floor; the default readings
+/// from the nominal values, every other reading from the current readings' calibration,
+/// which saves most of its iterations) with the other switches at their readings so far,
+/// and replaces the current one when it is [`readings::better`]. Returns the readings
+/// kept, what each switch tried, and the calibration under the readings kept.
+fn choose_readings(
+    switches: &[super::LawSwitch],
+    opts: &DiscoveryOptions,
+    calibrate: impl Fn(&[usize], Option<&[f64]>) -> Result<(Fitted, f64), DiscoveryError>,
+) -> Result<(Vec<usize>, Vec<ReadingChoice>, Fitted), DiscoveryError> {
+    let mut choice = vec![0; switches.len()];
+    let (mut best, noise) = calibrate(&choice, None)?;
+    let score = |reading: &str, f: &Fitted| ReadingScore {
+        reading: reading.to_string(),
+        train_mse: f.0.train_mse,
+        holdout_mse: f.0.holdout_mse,
+    };
+    let mut out = Vec::new();
+    for (k, sw) in switches.iter().enumerate() {
+        let mut tried = vec![score(&sw.readings[choice[k]], &best)];
+        let mut kept: Option<(usize, Fitted)> = None;
+        for r in (0..sw.readings.len()).filter(|&r| r != choice[k]) {
+            let mut c = choice.clone();
+            c[k] = r;
+            let (f, _) = calibrate(&c, Some(&best.1.baseline))?;
+            tried.push(score(&sw.readings[r], &f));
+            let reference = kept.as_ref().map_or(&best, |(_, f)| f);
+            if readings::better(
+                (f.0.train_mse, f.0.holdout_mse),
+                (reference.0.train_mse, reference.0.holdout_mse),
+                noise,
+                opts.rule.min_gap_fraction,
+            ) {
+                kept = Some((r, f));
+            }
+        }
+        if let Some((r, f)) = kept {
+            choice[k] = r;
+            best = f;
+        }
+        out.push(ReadingChoice {
+            switch: sw.name.clone(),
+            chosen: sw.readings[choice[k]].clone(),
+            index: choice[k],
+            tried,
+        });
+    }
+    Ok((choice, out, best))
 }
 
 fn check_candidates<M: DiscoveryModel + ?Sized>(

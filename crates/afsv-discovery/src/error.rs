@@ -138,6 +138,14 @@ pub enum DiscoveryError {
         /// Values given.
         got: usize,
     },
+    /// A calibration switch was set to a reading it does not have.
+    #[error("calibration switch `{switch}` has no reading {index}")]
+    NoSuchReading {
+        /// The switch.
+        switch: &'static str,
+        /// The reading asked for.
+        index: usize,
+    },
     /// A least-squares fit could not run.
     #[error(transparent)]
     Fit(#[from] optimize::least_squares::LeastSquaresError),

@@ -4,16 +4,22 @@
 //! Baseline: the paper's full model, the one `afsv hps harmonic` runs: the front-axle strut of
 //! Table 6.3 with its gas-oil emulsion (gamma_0 = 2 %), or the user's parameter file.
 //! Calibrated first: polytropic exponent `n`, static pressure `P_h0`, gas volume `V_g0`,
-//! Coulomb friction `F_c`, viscous friction `mu_v`, bleed-orifice discharge coefficient
-//! `C_b` and the emulsion's gas fraction `gamma_0`. Catalogue (each a switchable extension of
+//! Coulomb friction `F_c`, viscous friction `mu_v`, the friction band's ratio to the peak
+//! velocity, bleed-orifice discharge coefficient `C_b`, the chamber split of the oil
+//! (rod-side volume `V_r0`, which sets the rod-side dead volume) and the emulsion's gas
+//! fraction `gamma_0`; and two calibration switches ([`SWITCHES`]): the density of the
+//! orifice laws and the orifice law near zero pressure drop (Eq 5.12). Catalogue (each a switchable extension of
 //! `hps-emulsion`, none of them in the paper's model): gas heat transfer, growth of the gas
 //! fraction with strut velocity, asymmetric seal friction, check-valve opening lag.
 
-use super::{ActiveEffect, DiscoveryError, DiscoveryModel, EffectSpec, ParamSpec, Phase};
+use super::{
+    ActiveEffect, DiscoveryError, DiscoveryModel, EffectSpec, LawSwitch, ParamSpec, Phase,
+};
 use afsv_records::Record;
 use hps_emulsion::{
     simulate_strut_from, AsymmetricFriction, Excitation, GasFractionGrowth, HeatTransfer,
-    HpsExtensions, HpsStrut, SimOptions, StrutParams, ValveLag,
+    HpsExtensions, HpsStrut, OrificeDensity, OrificeTransition, SimOptions, StrutLaws, StrutParams,
+    ValveLag,
 };
 use vehicle_components::ParamSet;
 
@@ -71,7 +77,10 @@ impl HpsStrutModel {
     }
 
     /// Parameters with the baseline vector applied: value `i` to the registry parameter
-    /// [`CALIBRATED`]`[i]`, the gas fraction last with [`StrutParams::with_gamma0`].
+    /// [`CALIBRATED`]`[i]`; the last two with their own rules, the rod-side volume `v_r0`
+    /// with [`StrutParams::with_rod_volume`] (the oil it takes comes from the piston side:
+    /// the total stays Table 6.3's) and the gas fraction last with
+    /// [`StrutParams::with_gamma0`].
     pub fn apply_baseline(&self, v: &[f64]) -> Result<StrutParams, DiscoveryError> {
         if v.len() != CALIBRATED.len() {
             return Err(DiscoveryError::BaselineLength {
@@ -79,14 +88,36 @@ impl HpsStrutModel {
                 got: v.len(),
             });
         }
-        let (fields, gamma0) = v.split_at(CALIBRATED.len() - 1);
+        let (fields, split) = v.split_at(CALIBRATED.len() - 2);
         let mut p = self.params;
         for (name, &x) in CALIBRATED.iter().zip(fields) {
             let (i, _) = p.find(name)?;
             p.assign(i, x);
         }
         p.validate()?;
-        Ok(p.with_gamma0(gamma0[0])?)
+        Ok(p.with_rod_volume(split[0])?.with_gamma0(split[1])?)
+    }
+
+    /// The strut's readings for the switch positions `readings` (an index per entry of
+    /// [`SWITCHES`], missing entries at the default 0).
+    pub fn laws(readings: &[usize]) -> Result<StrutLaws, DiscoveryError> {
+        let at = |k: usize| readings.get(k).copied().unwrap_or(0);
+        let bad = |k: usize| DiscoveryError::NoSuchReading {
+            switch: SWITCHES[k].0,
+            index: at(k),
+        };
+        Ok(StrutLaws {
+            orifice_density: match at(0) {
+                0 => OrificeDensity::Mean,
+                1 => OrificeDensity::Upstream,
+                _ => return Err(bad(0)),
+            },
+            orifice_transition: match at(1) {
+                0 => OrificeTransition::Turbulent,
+                1 => OrificeTransition::Laminar,
+                _ => return Err(bad(1)),
+            },
+        })
     }
 
     /// Extensions for the active effects.
@@ -233,17 +264,43 @@ fn cubic_derivative_weights(m: usize) -> Vec<f64> {
 
 /// The calibrated baseline of the strut, by the names of the strut registry
 /// ([`hps_emulsion::STRUT_PARAMS`], which gives each one's unit, bounds and typical size), in
-/// the order of [`DiscoveryModel::baseline_params`]. `gamma0` comes last: it is applied with
+/// the order of [`DiscoveryModel::baseline_params`]. The last two have their own rules:
+/// `v_r0` (the chamber split of Table 6.3's 11.4 L, which sets the rod-side dead volume;
+/// window [`ROD_DEAD_LENGTH_WINDOW_M`]) is applied with [`StrutParams::with_rod_volume`],
+/// which takes the oil from the piston side, and `gamma0` last with
 /// [`StrutParams::with_gamma0`], which moves gas between the free volume and the emulsion.
-pub const CALIBRATED: [&str; 7] = [
+pub const CALIBRATED: [&str; 9] = [
     "n",
     "p_h0",
     "v_g0",
     "friction.f_c",
     "friction.mu_v",
+    "friction.vh_ratio",
     "c_b",
+    "v_r0",
     "gamma0",
 ];
+
+/// The strut's calibration switches ([`DiscoveryModel::switches`]): name, readings (the
+/// crate's first, `hps_emulsion::StrutLaws::default`) and where the paper is ambiguous.
+pub const SWITCHES: [(&str, [&str; 2], &str); 2] = [
+    (
+        "orifice-density",
+        ["mean", "upstream"],
+        "Eq 5.12: one density rho_bar for the orifice laws in both flow directions (hps_emulsion::OrificeDensity)",
+    ),
+    (
+        "orifice-transition",
+        ["turbulent", "laminar"],
+        "Eq 5.12 gives the turbulent square-root law only; below a few tens of kPa the bleed jet's Reynolds number falls under ~1000 (hps_emulsion::OrificeTransition)",
+    ),
+];
+
+/// Rod-side oil left at full extension (m) at the ends of the calibration window of
+/// `v_r0`: the rod-side volume ranges over `A_ann (travel + l) (1 + gamma_0)` for `l` in
+/// this window. The crate's choice is 10 mm (`hps_emulsion::params::ROD_DEAD_LENGTH`); the
+/// paper gives none.
+pub const ROD_DEAD_LENGTH_WINDOW_M: (f64, f64) = (0.002, 0.100);
 
 /// The calibration window of registry parameter `name` around its value in `p`: narrower
 /// than the registry's bounds (a calibration moves a parameter near its nominal value), the
@@ -262,6 +319,26 @@ fn calibration_window(p: &StrutParams, name: &str) -> ParamSpec {
             ..ParamSpec::new(name, x, 0.0, 50.0 * x.max(100.0))
         },
         "c_b" => ParamSpec::new(name, x, 0.2, 1.0),
+        // The band's width is unstated (section 5.3.1: it grows with the peak velocity):
+        // from a sharp reversal to half the peak velocity.
+        "friction.vh_ratio" => ParamSpec {
+            typical: x.abs().max(0.05),
+            ..ParamSpec::new(name, x, 0.02, 0.5)
+        },
+        // The chamber split: the rod-side volume with the window of its dead length.
+        "v_r0" => {
+            let per_m = p.a_ann() * (1.0 + p.gamma0);
+            let (lo, hi) = ROD_DEAD_LENGTH_WINDOW_M;
+            ParamSpec {
+                typical: (per_m * 0.01).max(1e-9),
+                ..ParamSpec::new(
+                    name,
+                    x,
+                    (per_m * (p.travel + lo)).min(x),
+                    (per_m * (p.travel + hi)).max(x),
+                )
+            }
+        }
         "gamma0" => ParamSpec {
             typical: x.max(0.01),
             ..ParamSpec::new(name, x, 0.0, 0.3)
@@ -292,6 +369,17 @@ impl DiscoveryModel for HpsStrutModel {
         CALIBRATED
             .iter()
             .map(|&name| calibration_window(&self.params, name))
+            .collect()
+    }
+
+    fn switches(&self) -> Vec<LawSwitch> {
+        SWITCHES
+            .iter()
+            .map(|(name, readings, citation)| LawSwitch {
+                name: name.to_string(),
+                readings: readings.iter().map(|r| r.to_string()).collect(),
+                citation: citation.to_string(),
+            })
             .collect()
     }
 
@@ -391,9 +479,19 @@ impl DiscoveryModel for HpsStrutModel {
         baseline: &[f64],
         effects: &[ActiveEffect<'_>],
     ) -> Result<Vec<Option<Vec<f64>>>, DiscoveryError> {
+        self.simulate_with_readings(prepared, baseline, effects, &[])
+    }
+
+    fn simulate_with_readings(
+        &self,
+        prepared: &StrutReplay,
+        baseline: &[f64],
+        effects: &[ActiveEffect<'_>],
+        readings: &[usize],
+    ) -> Result<Vec<Option<Vec<f64>>>, DiscoveryError> {
         let p = self.apply_baseline(baseline)?;
         let ext = self.apply_effects(effects)?;
-        let strut = HpsStrut::new(&p, &ext)?;
+        let strut = HpsStrut::new(&p, &ext)?.with_laws(Self::laws(readings)?);
         let out = simulate_strut_from(
             &strut,
             &prepared.excitation,
@@ -479,9 +577,22 @@ mod tests {
         assert!(matches!(
             m.apply_baseline(&v[..6]),
             Err(DiscoveryError::BaselineLength {
-                expected: 7,
+                expected: 9,
                 got: 6
             })
         ));
+        // The chamber split moves oil between the chambers and keeps the total; the
+        // window's ends are rod-side dead lengths of 2 and 100 mm.
+        let k = CALIBRATED.iter().position(|&n| n == "v_r0").unwrap();
+        let mut v: Vec<f64> = specs.iter().map(|s| s.initial).collect();
+        v[k] = specs[k].upper;
+        let p = m.apply_baseline(&v).unwrap();
+        let total = |p: &StrutParams| p.v_c0 + p.v_r0;
+        assert!((total(&p) - total(&m.params)).abs() < 1e-15);
+        let dead = p.v_r0 / (1.0 + p.gamma0) - p.a_ann() * p.travel;
+        assert!((dead - p.a_ann() * 0.1).abs() < 1e-12, "{dead}");
+        v[k] = specs[k].lower;
+        v[CALIBRATED.len() - 1] = 0.0; // no gas in the emulsion: the rod side still holds
+        assert!(m.apply_baseline(&v).is_ok());
     }
 }

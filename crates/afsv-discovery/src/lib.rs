@@ -4,7 +4,9 @@
 //! The workflow, for any model that implements [`DiscoveryModel`]:
 //!
 //! 0. **Calibrate** the baseline's uncertain parameters on the training records, so that a
-//!    mismatch of nominal values is not mistaken for a missing effect ([`calibrate`]).
+//!    mismatch of nominal values is not mistaken for a missing effect ([`calibrate`]); a
+//!    law the paper states ambiguously is calibrated in each of its readings and the better
+//!    one kept ([`LawSwitch`]).
 //! 1. **Simulate** the calibrated baseline with each record's inputs.
 //! 2. **Locate** the disagreement per channel, per phase and by signature ([`signature`]).
 //! 3. **Try** every effect of the model's catalogue: fit its parameters (with the baseline's
@@ -51,6 +53,7 @@ mod layout;
 #[cfg(feature = "plots")]
 mod overlay;
 pub mod placebo;
+mod readings;
 pub mod report;
 pub mod signature;
 pub mod stats;
@@ -66,6 +69,7 @@ pub use engine::{
 pub use error::DiscoveryError;
 pub use evidence::{Evidence, RecordEvidence};
 pub use form::{FormRule, GroupFit, NamingTests, Outcome};
+pub use readings::{LawSwitch, ReadingChoice, ReadingScore};
 
 use afsv_records::Record;
 
@@ -171,6 +175,25 @@ pub trait DiscoveryModel: Sync {
         baseline: &[f64],
         effects: &[ActiveEffect<'_>],
     ) -> Result<Vec<Option<Vec<f64>>>, DiscoveryError>;
+    /// Laws the paper states ambiguously, each offered in several readings (calibration
+    /// switches: step 0 calibrates each reading and keeps the better one, see
+    /// [`LawSwitch`]). None by default.
+    fn switches(&self) -> Vec<LawSwitch> {
+        Vec::new()
+    }
+    /// As [`Self::simulate`], with reading `readings[i]` of switch `i` of
+    /// [`Self::switches`] (a missing entry is the default reading, 0). The default ignores
+    /// the readings: a model without switches has nothing to read differently.
+    fn simulate_with_readings(
+        &self,
+        prepared: &Self::Prepared,
+        baseline: &[f64],
+        effects: &[ActiveEffect<'_>],
+        readings: &[usize],
+    ) -> Result<Vec<Option<Vec<f64>>>, DiscoveryError> {
+        let _ = readings;
+        self.simulate(prepared, baseline, effects)
+    }
     /// Phases of a record used to locate the disagreement (may be empty).
     fn phases(&self, record: &Record) -> Vec<Phase>;
     /// Leading samples of a record left out of every comparison (start-up transient of a

@@ -37,6 +37,8 @@ pub(crate) fn write_overlays<M: DiscoveryModel + ?Sized>(
             values,
         })
         .collect();
+    // The replays run under the readings the calibration switches took.
+    let readings: Vec<usize> = d.readings.iter().map(|r| r.index).collect();
     let mut plots = Vec::new();
     for i in plotted_records(d, holdout_names, holdout.len()) {
         let rec = &holdout[i];
@@ -45,8 +47,10 @@ pub(crate) fn write_overlays<M: DiscoveryModel + ?Sized>(
             .cloned()
             .unwrap_or_else(|| format!("holdout_{i}"));
         let prepared = model.prepare(rec)?;
-        let before = model.simulate(&prepared, &d.calibrated.baseline, &[])?;
-        let after = model.simulate(&prepared, &d.final_model.baseline, &active)?;
+        let before =
+            model.simulate_with_readings(&prepared, &d.calibrated.baseline, &[], &readings)?;
+        let after =
+            model.simulate_with_readings(&prepared, &d.final_model.baseline, &active, &readings)?;
         let t: Vec<f64> = rec
             .column("time_s")
             .map(<[f64]>::to_vec)

@@ -100,6 +100,7 @@ pub fn markdown(d: &Discovery, plots: &[PathBuf], dir: &Path) -> String {
         evidence(&mut s, d);
     }
     conditions(&mut s, d);
+    readings_table(&mut s, d);
     baseline_table(&mut s, d);
     channel_table(&mut s, d);
     disagreement(&mut s, d);
@@ -284,6 +285,29 @@ fn conditions(s: &mut String, d: &Discovery) {
     let _ = writeln!(s, "\n## Conditions each record was replayed under\n\n| record | set | condition |\n|---|---|---|");
     for c in &d.conditions {
         let _ = writeln!(s, "| {} | {} | {} |", c.record, c.set, c.condition);
+    }
+}
+
+/// The reading each calibration switch took, and what each reading tried scored.
+fn readings_table(s: &mut String, d: &Discovery) {
+    if d.readings.is_empty() {
+        return;
+    }
+    let _ = writeln!(s, "\n## Calibration switches\n\nLaws the paper states ambiguously, calibrated in each reading; a reading replaces the default only when it fits the training records better and lowers the held-out error by at least the rule's share of the gap.\n\n| switch | reading kept | reading tried: normalised MSE training / held-out |\n|---|---|---|");
+    for r in &d.readings {
+        let tried: Vec<String> = r
+            .tried
+            .iter()
+            .map(|t| {
+                format!(
+                    "{}: {} / {}",
+                    t.reading,
+                    sig3(t.train_mse),
+                    sig3(t.holdout_mse)
+                )
+            })
+            .collect();
+        let _ = writeln!(s, "| {} | {} | {} |", r.switch, r.chosen, tried.join("; "));
     }
 }
 

@@ -18,7 +18,8 @@
 //! - [`characterize`], [`lab_programme`], [`loop_metrics`]: the harmonic characterisation;
 //!   [`HysteresisLoop`]: the samples of one period for the loop plots.
 //! - [`identify`]: least-squares identification from a record.
-//! - [`HpsExtensions`]: switchable physical extensions for the model-discrepancy workflow.
+//! - [`HpsExtensions`]: switchable physical extensions for the model-discrepancy workflow;
+//!   [`StrutLaws`]: the readings of ambiguous laws (calibration switches).
 //! - [`interconnect`]: two struts cross-connected by hydraulic lines with accumulators (roll
 //!   or pitch interconnection, `docs/layouts.md`).
 //! - [`thermal`]: the loaded strut's gas and body temperatures over hours, the ride height
@@ -40,6 +41,7 @@ pub mod friction;
 pub mod identify;
 pub mod interconnect;
 pub mod lab;
+pub mod laws;
 pub mod loops;
 pub mod params;
 pub mod registry;
@@ -61,6 +63,7 @@ pub use identify::{
 };
 pub use interconnect::{sealed_piston, CrossCoupledPair, HydraulicLine, LineEnd, LineParams};
 pub use lab::{identify_lab, LabConfig, LabIdentification, LabReported};
+pub use laws::{OrificeDensity, OrificeTransition, StrutLaws, LAMINAR_TRANSITION_PA};
 pub use loops::HysteresisLoop;
 pub use params::{FrictionParams, StrutParams};
 pub use registry::STRUT_PARAMS;

@@ -195,6 +195,28 @@ impl StrutParams {
         Ok(p)
     }
 
+    /// Same strut with the rod-side emulsion volume at the static position set to `v_r0`
+    /// (m^3), the difference taken from (or given to) the piston side: the chamber split of
+    /// the oil, which Table 6.3 gives only in total (11.4 L). Both chambers keep the gas
+    /// fraction, so the total oil is kept. The rod-side dead volume (oil left at full
+    /// extension) is `v_r0 / (1 + gamma_0) - (a_hc - a_hr) travel`. Errors name the field
+    /// ([`StrutParams::validate`]: the rod side must not empty before full extension, the
+    /// piston side must keep a non-negative volume).
+    pub fn with_rod_volume(&self, v_r0: f64) -> Result<Self, HpsError> {
+        if !v_r0.is_finite() {
+            return Err(HpsError::InvalidParameter {
+                field: "v_r0",
+                value: v_r0,
+                reason: "rod-side emulsion volume must be finite",
+            });
+        }
+        let mut p = *self;
+        p.v_c0 = self.v_c0 + self.v_r0 - v_r0;
+        p.v_r0 = v_r0;
+        p.validate()?;
+        Ok(p)
+    }
+
     /// Validate every field; the error names the first offending field.
     pub fn validate(&self) -> Result<(), HpsError> {
         self.validate_ported(false)

@@ -26,6 +26,7 @@ use crate::error::HpsError;
 use crate::extensions::HpsExtensions;
 use crate::flow::piston_to_rod_flow;
 use crate::friction::{friction_force, FrictionLevels};
+use crate::laws::StrutLaws;
 use crate::params::StrutParams;
 use vehicle_components::StateInfo;
 
@@ -168,6 +169,9 @@ impl GasGrowth {
 pub struct HpsStrut {
     params: StrutParams,
     ext: HpsExtensions,
+    laws: StrutLaws,
+    /// Regularisation pressure of the orifice root under `laws` (Pa).
+    p_reg: f64,
     levels: FrictionLevels,
     growth: Option<GasGrowth>,
     a_ann: f64,
@@ -231,6 +235,8 @@ impl HpsStrut {
                 .map(|g| GasGrowth::new(&p, g.k_gamma)),
             params: p,
             ext: *ext,
+            laws: StrutLaws::default(),
+            p_reg: p.p_reg,
             levels,
             idx_theta,
             idx_valve,
@@ -261,6 +267,19 @@ impl HpsStrut {
     /// Extensions in effect.
     pub fn extensions(&self) -> &HpsExtensions {
         &self.ext
+    }
+
+    /// The same strut with the readings `laws` of the ambiguous laws ([`StrutLaws`]; a
+    /// strut is built with the default readings).
+    pub fn with_laws(mut self, laws: StrutLaws) -> Self {
+        self.p_reg = laws.orifice_regularisation(self.params.p_reg);
+        self.laws = laws;
+        self
+    }
+
+    /// Readings of the ambiguous laws in effect.
+    pub fn laws(&self) -> &StrutLaws {
+        &self.laws
     }
 
     /// Friction transition band v_h (m/s) at velocity amplitude `u`.
@@ -489,9 +508,12 @@ impl HpsStrut {
             Some(i) => state[i].clamp(0.0, 1.0),
             None => 1.0,
         };
-        // Eq 5.12 with the mean density of both chambers for both orifice laws.
-        let rho_bar = 0.5 * (ec.rho + er.rho);
-        let q = piston_to_rod_flow(self.ca_b, self.ca_v, opening, p.k_l, dp, rho_bar, p.p_reg);
+        // Eq 5.12 with one density for both orifice laws (by default the mean of both
+        // chambers, `StrutLaws`).
+        let rho_bar = self.laws.orifice_rho(p_c, ec.rho, p_r, er.rho);
+        let q = piston_to_rod_flow(
+            self.ca_b, self.ca_v, opening, p.k_l, dp, rho_bar, self.p_reg,
+        );
         Chambers {
             r,
             vg: r.v_g0 * v,

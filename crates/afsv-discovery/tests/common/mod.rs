@@ -176,20 +176,21 @@ pub fn run_dir_decimated<M: DiscoveryModel>(
     dir: &std::path::Path,
     k: usize,
 ) -> Discovery {
+    run_dir_decimated_with(model, dir, k, &DiscoveryOptions::default())
+}
+
+/// [`run_dir_decimated`] with the options `opts`.
+pub fn run_dir_decimated_with<M: DiscoveryModel>(
+    model: &M,
+    dir: &std::path::Path,
+    k: usize,
+    opts: &DiscoveryOptions,
+) -> Discovery {
     let (train, hold, tn, hn) = read_set(dir);
     let every =
         |recs: Vec<Record>| -> Vec<Record> { recs.iter().map(|r| decimate(r, k)).collect() };
     let (train, hold) = (every(train), every(hold));
-    discover(
-        model,
-        &train,
-        &hold,
-        &tn,
-        &hn,
-        &DiscoveryOptions::default(),
-        &(),
-    )
-    .unwrap()
+    discover(model, &train, &hold, &tn, &hn, opts, &()).unwrap()
 }
 
 /// A fresh scratch folder under the system temp dir, unique per test and process.
