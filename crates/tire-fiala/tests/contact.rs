@@ -179,6 +179,24 @@ fn polyline_profile_with_load_table() {
 proptest! {
     #![proptest_config(ProptestConfig::with_cases(48))]
 
+    /// The contacts of one sampled window, asked at several heights in a row, are each the
+    /// contact computed on its own: nothing of one height carries over to the next.
+    #[test]
+    fn one_window_serves_every_height_bit_for_bit(
+        x in -50.0..50.0f64, heights in prop::collection::vec(0.6..1.3f64, 1..6),
+        amp in 0.0..0.3f64, k in 0.5..20.0f64, cams in prop::bool::ANY,
+    ) {
+        let prof = move |x: f64| amp * (k * x).sin();
+        let m = if cams { EnvelopeMethod::TandemCams } else { EnvelopeMethod::CircleLine };
+        let e = env(m);
+        let shared = e.contacts_at(&prof, x, |contact| {
+            heights.iter().map(|&z| contact(z)).collect::<Vec<_>>()
+        });
+        for (&z, c) in heights.iter().zip(&shared) {
+            prop_assert_eq!(*c, e.contact(&prof, x, z));
+        }
+    }
+
     #[test]
     fn enveloping_is_finite_and_consistent(
         x in -50.0..50.0f64, z in -0.5..2.0f64, amp in 0.0..0.3f64, k in 0.5..20.0f64,
