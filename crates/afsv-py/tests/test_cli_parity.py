@@ -156,10 +156,12 @@ def test_chapter4_optimisation_matches_the_cli(cli) -> None:
 
 
 def test_discovery_on_in_memory_records(cli, tmp_path: Path) -> None:
-    # measurement-like strut records with a hidden check-valve lag (afsv synth), two for
-    # training and one held out: the CLI on the files, Python on the same records in memory
+    # measurement-like strut records with a hidden check-valve lag (afsv synth), three for
+    # training and one held out: the CLI on the files, Python on the same records in memory.
+    # (Two training records no longer resolve the viscous friction once the chamber split and
+    # the friction band are calibrated too: it ends on its bound of 0, and both exit 3.)
     cli("synth", "--model", "hps-strut", "--effects", "check-valve-lag", "--output", "syn")
-    train = ["hps_03_2hz_16mm", "hps_05_4hz_9mm"]
+    train = ["hps_02_1hz_24mm", "hps_03_2hz_16mm", "hps_05_4hz_9mm"]
     hold = ["hps_04_3hz_5mm"]
     out = cli("discover", "--model", "hps-strut", "--train", *[f"syn/train/{n}.csv" for n in train],
               "--holdout", *[f"syn/holdout/{n}.csv" for n in hold], "-o", "report")
