@@ -12,7 +12,11 @@
 //! - the ride (D1 style, class E, m_c 0.3, after the 20 m run-in) at the problem's speed
 //!   and load for `awz_frame`, `awz_seat`, `seat`, `strut_travel`, `rear_strut_travel`;
 //! - D2 (loaded, ramp steer to rollover) for `sp_drt`;
-//! - D3 (loaded, smooth ground, one run) for `omega_z`.
+//! - D3 (loaded, smooth ground, one run) for `omega_z`;
+//! - D4 for `d4_speed`: the ride (frame a_wz, the problem's load and window) at every one
+//!   of the problem's D4 speeds, the mean a_wz's first upward crossing of the ISO 2631-1
+//!   8 h caution-zone bound ([`crate::hps_speed_sweep::first_upward_crossing`]), censored
+//!   at the ends of the swept range ([`LayoutMeasure::D4Speed`]).
 //!
 //! The search is the real-coded GA of `optimize::ga` (Deb's feasibility rules, seeded, so
 //! a run is reproducible bit for bit), its initial population the nominal design projected
@@ -22,8 +26,10 @@
 //! The same search runs ask/tell ([`crate::layout_ask_tell`]) for a cluster.
 
 use crate::error::DesignError;
+use crate::hps_speed_sweep::{first_upward_crossing, HGCZ_HOURS};
 use optimize::ga::{GaOptions, GeneticAlgorithm};
 use optimize::{Bounds, ConstrainedProblem, Evaluation, Progress};
+use perf_measures::iso2631::{health_guidance_zone, HgczRelation};
 use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
 use std::collections::{BTreeMap, BTreeSet};
@@ -50,6 +56,8 @@ pub const MAX_SEEDS: usize = 100;
 pub const MAX_VARIABLES: usize = 32;
 /// Largest number of constraints.
 pub const MAX_CONSTRAINTS: usize = 16;
+/// Largest number of D4 speeds.
+pub const MAX_D4_SPEEDS: usize = 20;
 /// A variable within this share of its range from a bound (unit-cube coordinate) is on it.
 pub const ON_BOUND: f64 = 1e-3;
 
@@ -79,6 +87,10 @@ pub struct LayoutProblemDesc {
     pub ride_length_m: f64,
     /// Terrain seeds of every run.
     pub seeds: Vec<u64>,
+    /// The D4 speeds of `d4_speed` (km/h, strictly ascending, at least two, 5 to 100);
+    /// empty when no measure needs them.
+    #[serde(default)]
+    pub d4_speeds_kmh: Vec<f64>,
     /// The design variables.
     pub variables: Vec<LayoutVariable>,
     /// The objective measure.
@@ -106,6 +118,10 @@ impl LayoutProblemDesc {
             v.extend(r.specs().iter().map(|s| format!("rear.{}", s.name)));
         }
         v.extend(self.params.specs().iter().map(|s| s.name.to_string()));
+        if let Some(s) = &self.seat {
+            v.extend(s.seat.specs().iter().map(|p| format!("seat.{}", p.name)));
+            v.extend(s.cab.specs().iter().map(|p| format!("cab.{}", p.name)));
+        }
         v
     }
 
@@ -123,6 +139,16 @@ impl LayoutProblemDesc {
                 .as_ref()
                 .and_then(|r| r.find(n).ok())
                 .map(|(i, s)| (Target::Rear(i), s.lower, s.upper))
+        } else if let Some(n) = name.strip_prefix("seat.") {
+            self.seat
+                .as_ref()
+                .and_then(|s| s.seat.find(n).ok())
+                .map(|(i, s)| (Target::Seat(i), s.lower, s.upper))
+        } else if let Some(n) = name.strip_prefix("cab.") {
+            self.seat
+                .as_ref()
+                .and_then(|s| s.cab.find(n).ok())
+                .map(|(i, s)| (Target::Cab(i), s.lower, s.upper))
         } else {
             self.params
                 .find(name)
@@ -133,7 +159,7 @@ impl LayoutProblemDesc {
             let names = self.variable_names();
             let close = near(name, names.iter().map(String::as_str));
             let hint = if close.is_empty() {
-                "`afsv params list strut` and `afsv params list vehicle-3d` list the names; a strut parameter takes `front.` or `rear.`".to_string()
+                "`afsv params list strut|vehicle-3d|seat|cab` list the names; a strut parameter takes `front.` or `rear.`, the seat's `seat.`, the cab's `cab.`".to_string()
             } else {
                 format!("did you mean {}?", close.join(", "))
             };
@@ -144,9 +170,15 @@ impl LayoutProblemDesc {
                 Some(("rear", _)) if self.params.rear_hps.is_none() => {
                     format!(" (layout `{}` has no rear strut)", self.layout)
                 }
+                Some(("seat" | "cab", _)) if self.seat.is_none() => {
+                    format!(" (layout `{}` has no cab and seat: --seat off?)", self.layout)
+                }
                 _ => String::new(),
             };
-            format!("unknown variable `{name}`{axle}; {hint}")
+            if !axle.is_empty() {
+                return format!("variable `{name}`{axle}");
+            }
+            format!("unknown variable `{name}`; {hint}")
         })
     }
 
@@ -270,6 +302,23 @@ impl LayoutProblem {
         }
         let problem_measures =
             std::iter::once(d.objective).chain(d.constraints.iter().map(|c| c.measure));
+        if problem_measures
+            .clone()
+            .any(|m| m == LayoutMeasure::D4Speed)
+        {
+            let s = &d.d4_speeds_kmh;
+            let ok = (2..=MAX_D4_SPEEDS).contains(&s.len())
+                && s.iter().all(|v| v.is_finite() && (5.0..=100.0).contains(v))
+                && s.windows(2).all(|w| w[0] < w[1]);
+            if !ok {
+                return Err(shape(
+                    "d4_speeds_kmh",
+                    format!(
+                        "`d4_speed` needs 2 to {MAX_D4_SPEEDS} strictly ascending speeds within 5-100 km/h, got {s:?}"
+                    ),
+                ));
+            }
+        }
         for m in problem_measures {
             let why = match m {
                 LayoutMeasure::AwzSeat | LayoutMeasure::Seat if d.seat.is_none() => {
@@ -332,6 +381,8 @@ impl LayoutProblem {
                 Target::Front(i) => p.hps.value(i),
                 Target::Rear(i) => p.rear_hps.map_or(f64::NAN, |r| r.value(i)),
                 Target::Vehicle(i) => p.value(i),
+                Target::Seat(i) => self.desc.seat.map_or(f64::NAN, |s| s.seat.value(i)),
+                Target::Cab(i) => self.desc.seat.map_or(f64::NAN, |s| s.cab.value(i)),
             })
             .collect()
     }
@@ -339,6 +390,13 @@ impl LayoutProblem {
     /// The layout's parameters with the variables at `x` (each set through its registry:
     /// in range, and the whole set valid afterwards).
     pub fn params_at(&self, x: &[f64]) -> Result<VehicleParams, String> {
+        self.design_at(x).map(|(p, _)| p)
+    }
+
+    /// The layout's parameters and its cab and seat with the variables at `x` (each set
+    /// through its registry: in range, and the whole set valid afterwards; the cab and
+    /// seat must build under the vehicle's gravity).
+    pub fn design_at(&self, x: &[f64]) -> Result<(VehicleParams, Option<CabSeatLayout>), String> {
         if x.len() != self.targets.len() {
             return Err(format!(
                 "{} values for {} variables",
@@ -347,6 +405,7 @@ impl LayoutProblem {
             ));
         }
         let mut p = self.desc.params.clone();
+        let mut seat = self.desc.seat;
         for ((t, v), var) in self.targets.iter().zip(x).zip(&self.desc.variables) {
             let named = |e: vehicle_components::ParamError| format!("{}: {e}", var.name);
             match *t {
@@ -363,10 +422,23 @@ impl LayoutProblem {
                     let name = p.specs()[i].name;
                     p.set(name, *v).map_err(named)?;
                 }
+                Target::Seat(i) => {
+                    let s = &mut seat.as_mut().ok_or("the layout has no seat")?.seat;
+                    let name = s.specs()[i].name;
+                    s.set(name, *v).map_err(named)?;
+                }
+                Target::Cab(i) => {
+                    let c = &mut seat.as_mut().ok_or("the layout has no cab")?.cab;
+                    let name = c.specs()[i].name;
+                    c.set(name, *v).map_err(named)?;
+                }
             }
         }
         p.validate().map_err(|e| e.to_string())?;
-        Ok(p)
+        if let Some(s) = &seat {
+            s.build(&p).map_err(|e| format!("the cab and seat: {e}"))?;
+        }
+        Ok((p, seat))
     }
 
     fn cached(
@@ -385,9 +457,9 @@ impl LayoutProblem {
     /// mean over the seeds; an error names the failed run.
     pub fn measure(&self, x: Option<&[f64]>) -> Result<Measured, String> {
         let d = &self.desc;
-        let p = match x {
-            Some(x) => self.params_at(x)?,
-            None => d.params.clone(),
+        let (p, seat) = match x {
+            Some(x) => self.design_at(x)?,
+            None => (d.params.clone(), d.seat),
         };
         let needed = self.needed();
         let needs = |r: Run| needed.iter().any(|m| m.run() == r);
@@ -423,7 +495,7 @@ impl LayoutProblem {
                     if let Some(v) = m.rear_strut_travel_p2p_m {
                         out.push((LayoutMeasure::RearStrutTravel, v));
                     }
-                    if let Some(s) = &d.seat {
+                    if let Some(s) = &seat {
                         let t0 = RUN_IN_M / (d.speed_kmh / 3.6);
                         let r = seat_ride_measures(&p, &rec, t0, s).map_err(sim)?;
                         out.push((LayoutMeasure::AwzSeat, r.a_wz_seat_m_s2));
@@ -462,6 +534,9 @@ impl LayoutProblem {
             };
             sums.insert(LayoutMeasure::OmegaZ, m.omega_z_hz);
         }
+        if needs(Run::Sweep) {
+            sums.insert(LayoutMeasure::D4Speed, self.d4_speed(&p)?);
+        }
         for m in &needed {
             match sums.get(m) {
                 Some(v) if v.is_finite() => {}
@@ -470,6 +545,59 @@ impl LayoutProblem {
             }
         }
         Ok(sums)
+    }
+
+    /// `d4_speed` of the layout `p` ([`LayoutMeasure::D4Speed`]): the ride at every D4
+    /// speed on every seed (its own tracks: they depend on the speed), the frame's a_wz
+    /// averaged over the seeds, its first upward crossing of the 8 h caution-zone bound,
+    /// censored at the ends of the range.
+    fn d4_speed(&self, p: &VehicleParams) -> Result<f64, String> {
+        let d = &self.desc;
+        let sim = |e: vehicle_3d::VehicleError| e.to_string();
+        let speeds = &d.d4_speeds_kmh;
+        let runs: Vec<(usize, u64)> = (0..speeds.len())
+            .flat_map(|i| d.seeds.iter().map(move |&s| (i, s)))
+            .collect();
+        let awz: Vec<Result<(usize, f64), String>> = runs
+            .into_par_iter()
+            .map(|(i, seed)| {
+                let spec = RideSpec {
+                    speed_kmh: speeds[i],
+                    length_m: d.ride_length_m,
+                    ..RideSpec::d1(d.load, d.front_axle)
+                };
+                let t = ride_tracks(p, &spec, seed).map_err(sim)?;
+                let m = match &d.link {
+                    None => ride_on(p, &spec, t).map_err(sim)?.1,
+                    Some(link) => ride_linked_on(p, &spec, t, link).map_err(sim)?.1,
+                };
+                Ok((i, m.a_wz_m_s2))
+            })
+            .collect();
+        let mut mean = vec![0.0; speeds.len()];
+        for r in awz {
+            let (i, a) = r.map_err(|e| format!("d4_speed: {e}"))?;
+            mean[i] += a / d.seeds.len() as f64;
+        }
+        let upper = health_guidance_zone(HGCZ_HOURS, HgczRelation::SqrtTime)
+            .map_err(|e| e.to_string())?
+            .upper_m_s2;
+        Ok(d4_crossing(speeds, &mean, upper))
+    }
+
+    /// Whether `m`'s `d4_speed` (if measured) lies at an end of the swept D4 range, where
+    /// it is censored ([`LayoutMeasure::D4Speed`]).
+    pub fn d4_censored(&self, m: &Measured) -> Option<String> {
+        let v = *m.get(&LayoutMeasure::D4Speed)?;
+        let s = &self.desc.d4_speeds_kmh;
+        let (lo, hi) = (*s.first()?, *s.last()?);
+        if v >= hi {
+            Some(format!("d4_speed: the frame's a_wz stays below the 8 h caution zone up to {hi} km/h, the top of the D4 speeds (the crossing lies beyond: raise the top speed)"))
+        } else if v <= lo {
+            Some(format!("d4_speed: the frame's a_wz is in the 8 h caution zone already at {lo} km/h, the lowest D4 speed (the crossing lies at or below it: lower the lowest speed)"))
+        } else {
+            None
+        }
     }
 
     /// The GA's evaluation of measures `m` given the nominal ones (module docs).
@@ -488,6 +616,18 @@ impl LayoutProblem {
             f: if self.desc.maximise { -obj } else { obj },
             constraints,
         }
+    }
+}
+
+/// The D4 crossing speed of the mean a_wz `awz` over ascending `speeds` against the bound
+/// `upper`: the first upward crossing, linearly interpolated; the highest speed when the
+/// a_wz never rises above the bound, the lowest when it is above it at the lowest speed
+/// (censored values, [`LayoutMeasure::D4Speed`]).
+pub fn d4_crossing(speeds: &[f64], awz: &[f64], upper: f64) -> f64 {
+    match first_upward_crossing(speeds, awz, upper) {
+        Some(v) => v,
+        None if awz.first().is_some_and(|a| *a > upper) => speeds[0],
+        None => speeds[speeds.len() - 1],
     }
 }
 
@@ -618,6 +758,10 @@ pub struct LayoutOptimum {
     pub feasible: bool,
     /// Designs evaluated by the GA (the nominal and the optimum's report not counted).
     pub evaluations: usize,
+    /// Censored values the optimum's verdict rests on: the optimum's `d4_speed` at an end
+    /// of the D4 range, or the nominal's where a constraint scales it (empty otherwise).
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub censored: Vec<String>,
 }
 
 impl LayoutOptimum {
@@ -630,6 +774,7 @@ impl LayoutOptimum {
                 c.constraint, c.optimum, c.bound
             ));
         }
+        why.extend(self.censored.iter().cloned());
         for v in self.variables.iter().filter(|v| v.on_bound) {
             why.push(format!(
                 "{} = {} lies on a bound of {}..{} (widen it)",
@@ -684,7 +829,18 @@ pub(crate) fn result(
             met: c.value_of(&optimum, nominal) <= 0.0,
         })
         .collect();
+    let mut censored: Vec<String> = problem.d4_censored(&optimum).into_iter().collect();
+    let scaled = d
+        .constraints
+        .iter()
+        .any(|c| c.of_nominal && c.measure == LayoutMeasure::D4Speed);
+    if let Some(n) = problem.d4_censored(nominal).filter(|_| scaled) {
+        censored.push(format!(
+            "the nominal's {n}; a bound on `* nominal` rests on it"
+        ));
+    }
     Ok(LayoutOptimum {
+        censored,
         vehicle: d.vehicle.clone(),
         layout: d.layout.clone(),
         seat: d.seat.is_some(),

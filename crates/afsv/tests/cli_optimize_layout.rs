@@ -163,6 +163,30 @@ fn an_infeasible_constraint_is_not_earned_and_bad_inputs_are_refused_in_one_line
             ],
             "needs a cab and seat",
         ),
+        (
+            vec![
+                "--vary",
+                "seat.damping_n_s_per_m=200..2000",
+                "--seat",
+                "off",
+            ],
+            "has no cab and seat",
+        ),
+        (
+            vec!["--vary", "cab.mounts[0].stiffness_n_per_m=1e3..8e5"],
+            "registry's range",
+        ),
+        (
+            vec![
+                "--vary",
+                "front.a_b=5e-6..3e-5",
+                "--objective",
+                "d4_speed",
+                "--d4-speeds",
+                "30,20",
+            ],
+            "strictly ascending",
+        ),
     ] {
         let mut args = vec!["optimize", "layout"];
         if !extra.contains(&"--objective") {
@@ -175,4 +199,43 @@ fn an_infeasible_constraint_is_not_earned_and_bad_inputs_are_refused_in_one_line
         assert_eq!(err.lines().count(), 1, "{err}");
         assert!(err.contains(want), "{want:?} not in {err}");
     }
+}
+
+#[test]
+fn a_seat_variable_is_optimised() {
+    let out = afsv(&[
+        "--quiet",
+        "optimize",
+        "layout",
+        "--json",
+        "--vary",
+        "seat.damping_n_s_per_m=200..2000",
+        "--objective",
+        "awz_seat",
+        "--speed-kmh",
+        "30",
+        "--ride-length-m",
+        "15",
+        "--population",
+        "4",
+        "--generations",
+        "1",
+    ]);
+    // exit 3 would be a bound reached: the report is printed either way
+    assert!(matches!(out.status.code(), Some(0 | 3)), "{}", stderr(&out));
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    let var = &v["variables"][0];
+    assert_eq!(var["name"], "seat.damping_n_s_per_m");
+    // the generic seat: 80 kg at 1.5 Hz with a damping ratio of 0.3
+    let c = 2.0 * 0.3 * 80.0 * 2.0 * std::f64::consts::PI * 1.5;
+    assert!((var["nominal"].as_f64().unwrap() - c).abs() < 1e-9, "{var}");
+    let x = var["optimum"].as_f64().unwrap();
+    assert!((200.0..=2000.0).contains(&x), "{var}");
+    // the nominal is in the initial population: the optimum is no worse
+    let (n, o) = (
+        v["nominal"]["awz_seat"].as_f64().unwrap(),
+        v["optimum"]["awz_seat"].as_f64().unwrap(),
+    );
+    assert!(o <= n, "optimum {o} above the nominal {n}");
+    assert_eq!(v["evaluations"], 8);
 }

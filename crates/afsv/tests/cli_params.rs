@@ -115,7 +115,15 @@ fn dumped_with(set: &str, field: &str, value: Option<f64>) -> std::path::PathBuf
 #[test]
 fn a_printed_dump_reads_back_and_meaningless_zeros_are_refused() {
     // `params dump SET > file` is a parameter file as it stands
-    for set in ["strut", "tire", "yaw-plane", "vehicle-3d", "truck"] {
+    for set in [
+        "strut",
+        "tire",
+        "yaw-plane",
+        "vehicle-3d",
+        "truck",
+        "seat",
+        "cab",
+    ] {
         let path = dumped_with(set, "", None);
         let out = afsv(&["params", "check", set, path.to_str().unwrap()]);
         let err = String::from_utf8_lossy(&out.stderr);

@@ -63,6 +63,7 @@
 
 mod linalg;
 mod params;
+pub mod registry;
 
 pub use params::{CabMount, CabParams, Cushion, SeatParams};
 

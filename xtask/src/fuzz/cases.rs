@@ -272,6 +272,8 @@ fn hps_case(g: &mut Gen<'_>, group: &str) {
 /// valid problem runs a genetic algorithm over 3-D vehicle runs.
 fn optimize_layout_case(g: &mut Gen<'_>) {
     let bad_slot = g.rng.below(5);
+    // which option slot 3 makes bad (4: the D4 speeds, read with the d4_speed objective)
+    let bad_option = g.rng.below(5);
     let vary = if bad_slot == 0 {
         g.rng
             .pick(&[
@@ -284,16 +286,27 @@ fn optimize_layout_case(g: &mut Gen<'_>) {
                 "front.a_b=-inf..3e-5",
                 "a_b=5e-6..3e-5",
                 "front.a_b=5e-6..3e-5,rear.a_b=5e-6..3e-5",
+                "seat.bogus=1..2",
+                "seat.damping_n_s_per_m=2000..200",
+                "seat.travel_m=0.001..0.2",
+                "cab.mounts[9].x_m=0..1",
+                "seat.cushion.stiffness_n_per_m=1e4..2e4",
             ])
             .to_string()
     } else {
         "front.a_b=5e-6..3e-5".to_string()
     };
     g.push_opt("--vary", &vary);
+    if bad_slot == 0 && g.rng.chance(0.3) {
+        // without a cab and seat, a `seat.`/`cab.` variable is refused like any bad one
+        g.push_opt("--seat", "off");
+    }
     let objective = if bad_slot == 1 {
         g.rng
             .pick(&["bogus", "", "awz", "awz_seat,seat"])
             .to_string()
+    } else if bad_slot == 3 && bad_option == 4 {
+        "d4_speed".to_string()
     } else {
         "awz_seat".to_string()
     };
@@ -316,13 +329,18 @@ fn optimize_layout_case(g: &mut Gen<'_>) {
         g.push_opt("--constraint", &c);
     }
     if bad_slot == 3 {
-        let (flag, v) = match g.rng.below(4) {
+        let (flag, v) = match bad_option {
             0 => (
                 "--population",
                 g.rng.pick(&["3", "5", "0", "-4", "1e9", "x"]),
             ),
             1 => ("--generations", g.rng.pick(&["0", "-1", "1001", "x"])),
             2 => ("--seeds", g.rng.pick(&["0", "101", "-1", "x"])),
+            4 => (
+                "--d4-speeds",
+                g.rng
+                    .pick(&["30,20", "20", "x", "20,2e9", "20,20", "nan,30", ""]),
+            ),
             _ => ("--speed-kmh", g.rng.pick(&["0", "nan", "1e308", "-20"])),
         };
         g.push_opt(flag, v);

@@ -19,6 +19,7 @@ pub(crate) fn tiny() -> LayoutProblemDesc {
         speed_kmh: 30.0,
         ride_length_m: 15.0,
         seeds: vec![1],
+        d4_speeds_kmh: Vec::new(),
         variables: vec![
             LayoutVariable::parse("front.a_b=5e-6..3e-5").unwrap(),
             LayoutVariable::parse("rear.a_b=5e-6..3e-5").unwrap(),
@@ -167,4 +168,103 @@ fn variables_set_their_own_registry_fields() {
     back.payload.mass_kg = base.payload.mass_kg;
     assert_eq!(back, base, "nothing else moved");
     assert!(p.params_at(&[7e-6]).is_err());
+}
+
+#[test]
+fn seat_and_cab_variables_move_the_seat_alone() {
+    let mut d = tiny();
+    d.variables = vec![
+        LayoutVariable::parse("seat.damping_n_s_per_m=200..2000").unwrap(),
+        LayoutVariable::parse("cab.mounts[0].stiffness_n_per_m=3e5..8e5").unwrap(),
+    ];
+    d.constraints
+        .push(LayoutConstraint::parse("awz_frame <= 1.1 * nominal").unwrap());
+    let p = LayoutProblem::new(d.clone()).unwrap();
+    let generic = CabSeatLayout::generic();
+    assert_eq!(
+        p.nominal_x(),
+        vec![
+            generic.seat.damping_n_s_per_m,
+            generic.cab.mounts[0].stiffness_n_per_m
+        ]
+    );
+    let (q, seat) = p.design_at(&[1500.0, 4e5]).unwrap();
+    assert_eq!(q, d.params, "the vehicle did not move");
+    let seat = seat.unwrap();
+    let mut back = seat;
+    assert_eq!(
+        (
+            back.seat.damping_n_s_per_m,
+            back.cab.mounts[0].stiffness_n_per_m
+        ),
+        (1500.0, 4e5)
+    );
+    back.seat.damping_n_s_per_m = generic.seat.damping_n_s_per_m;
+    back.cab.mounts[0].stiffness_n_per_m = generic.cab.mounts[0].stiffness_n_per_m;
+    assert_eq!(back, generic, "nothing else moved");
+    // one-way coupling: the frame's a_wz is the nominal's bit for bit, the seat's is not
+    let nominal = p.measure(None).unwrap();
+    let varied = p.measure(Some(&[1500.0, 4e5])).unwrap();
+    let m = |s: &Measured, k| s[&k];
+    assert_eq!(
+        m(&varied, LayoutMeasure::AwzFrame),
+        m(&nominal, LayoutMeasure::AwzFrame)
+    );
+    assert_ne!(
+        m(&varied, LayoutMeasure::AwzSeat),
+        m(&nominal, LayoutMeasure::AwzSeat)
+    );
+    // without a cab and seat the names are refused in one line naming the layout
+    d.seat = None;
+    d.constraints.clear();
+    let e = LayoutProblem::new(d).err().unwrap().to_string();
+    assert!(
+        e.contains("seat.damping_n_s_per_m") && e.contains("has no cab and seat"),
+        "{e}"
+    );
+    assert_eq!(e.lines().count(), 1, "{e}");
+}
+
+#[test]
+fn the_d4_crossing_is_interpolated_and_censored_at_the_ends() {
+    let speeds = [10.0, 20.0, 30.0];
+    // 0.6 -> 1.0 across the bound 0.8 halfway between 10 and 20 km/h
+    assert_eq!(d4_crossing(&speeds, &[0.6, 1.0, 1.2], 0.8), 15.0);
+    // never above: the top; above already at the lowest: the lowest
+    assert_eq!(d4_crossing(&speeds, &[0.2, 0.3, 0.4], 0.8), 30.0);
+    assert_eq!(d4_crossing(&speeds, &[0.9, 1.0, 1.2], 0.8), 10.0);
+}
+
+#[test]
+fn d4_speed_is_the_crossing_of_the_rides_at_each_speed() {
+    let mut d = tiny();
+    d.variables.truncate(1);
+    d.constraints.clear();
+    d.objective = LayoutMeasure::D4Speed;
+    d.ride_length_m = 10.0;
+    let e = LayoutProblem::new(d.clone()).err().unwrap().to_string();
+    assert!(
+        e.contains("d4_speeds_kmh") && e.contains("strictly ascending"),
+        "{e}"
+    );
+    d.d4_speeds_kmh = vec![20.0, 40.0];
+    let p = LayoutProblem::new(d.clone()).unwrap();
+    let got = p.measure(None).unwrap()[&LayoutMeasure::D4Speed];
+    // the same rides one speed at a time, through the awz_frame measure
+    let awz: Vec<f64> = d
+        .d4_speeds_kmh
+        .iter()
+        .map(|&v| {
+            let mut one = d.clone();
+            one.objective = LayoutMeasure::AwzFrame;
+            one.speed_kmh = v;
+            LayoutProblem::new(one).unwrap().measure(None).unwrap()[&LayoutMeasure::AwzFrame]
+        })
+        .collect();
+    let upper = health_guidance_zone(HGCZ_HOURS, HgczRelation::SqrtTime)
+        .unwrap()
+        .upper_m_s2;
+    assert_eq!(got, d4_crossing(&d.d4_speeds_kmh, &awz, upper), "{awz:?}");
+    let censored = p.d4_censored(&[(LayoutMeasure::D4Speed, got)].into_iter().collect());
+    assert_eq!(censored.is_some(), got == 20.0 || got == 40.0, "{got}");
 }

@@ -3,8 +3,10 @@
 use serde::{Deserialize, Serialize};
 
 /// One design variable: a registry name and its bounds. `front.NAME` and `rear.NAME` name
-/// a parameter of the front or rear strut (`afsv params list strut`), any other name one of
-/// the 3-D vehicle (`afsv params list vehicle-3d`).
+/// a parameter of the front or rear strut (`afsv params list strut`), `seat.NAME` and
+/// `cab.NAME` one of the suspension seat or the cab on its mounts (`afsv params list seat`,
+/// `afsv params list cab`; a layout with a cab and seat only), any other name one of the
+/// 3-D vehicle (`afsv params list vehicle-3d`).
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct LayoutVariable {
@@ -38,13 +40,15 @@ impl LayoutVariable {
     }
 }
 
-/// Where a variable lives: the front strut, the rear strut, or the vehicle, by index of
-/// its registry.
+/// Where a variable lives: the front strut, the rear strut, the vehicle, the seat or the
+/// cab, by index of its registry.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub(super) enum Target {
     Front(usize),
     Rear(usize),
     Vehicle(usize),
+    Seat(usize),
+    Cab(usize),
 }
 
 /// The nearest names of `known` to `name` (Levenshtein distance at most a third of its

@@ -7,6 +7,7 @@ use afsv_design::layouts::{layout_runs, layouts, Layout, LayoutOptions, LayoutRo
 use hps_emulsion::interconnect::LineParams;
 use std::path::PathBuf;
 use vehicle_3d::cab_ride::CabSeatLayout;
+use vehicle_3d::interconnect::Link;
 use vehicle_3d::{FrontAxle, Load};
 
 /// The layouts `--layouts` can name, in the table's order.
@@ -128,9 +129,15 @@ pub(crate) fn build_layouts(
             } else {
                 FrontAxle::Rigid
             },
-            front_link: name.ends_with("-roll").then(LineParams::front_axle_roll),
-            pitch_link: match (name.ends_with("-pitch"), &params.rear_hps) {
-                (true, Some(rear)) => Some(
+            // the linked layouts take the description's [link] lines when it has a link
+            // of their kind, else the generic lines
+            front_link: name.ends_with("-roll").then(|| match v.link {
+                Some(Link::Roll(line)) => line,
+                _ => LineParams::front_axle_roll(),
+            }),
+            pitch_link: match (name.ends_with("-pitch"), &params.rear_hps, v.link) {
+                (true, _, Some(Link::Pitch(lines))) => Some(lines),
+                (true, Some(rear), _) => Some(
                     LineParams::side_pitch(rear.a_hr / params.hps.a_hr)
                         .map_err(|e| format!("--layouts {name}: the pitch lines: {e}"))?,
                 ),
@@ -339,5 +346,36 @@ mod tests {
         assert!(seat_of(&v, Some("off")).unwrap().is_none());
         assert!(seat_of(&v, None).unwrap().is_some());
         assert!(seat_of(&v, Some("soft")).unwrap_err().contains("--seat"));
+    }
+
+    #[test]
+    fn a_described_link_gives_its_lines_to_the_layouts_of_its_kind() {
+        let v = afsv_vehicle::load_builtin("prototype").unwrap();
+        let afsv_vehicle::Vehicle::Articulated(mut v) = v.vehicle else {
+            panic!("the prototype is articulated")
+        };
+        let names = "front-hps,front-roll,front-rear-pitch";
+        let generic = build_layouts(&v, names).unwrap();
+        let roll = LineParams {
+            diameter_m: 0.02,
+            ..LineParams::front_axle_roll()
+        };
+        v.link = Some(Link::Roll(roll));
+        let l = build_layouts(&v, names).unwrap();
+        assert_eq!(l[0].link(), None, "an unlinked layout stays unlinked");
+        assert_eq!(l[1].front_link, Some(roll));
+        assert_eq!(l[2].pitch_link, generic[2].pitch_link);
+        let [front, rear] = generic[2].pitch_link.unwrap();
+        let pitch = [
+            LineParams {
+                diameter_m: 0.03,
+                ..front
+            },
+            rear,
+        ];
+        v.link = Some(Link::Pitch(pitch));
+        let l = build_layouts(&v, names).unwrap();
+        assert_eq!(l[1].front_link, generic[1].front_link);
+        assert_eq!(l[2].pitch_link, Some(pitch));
     }
 }

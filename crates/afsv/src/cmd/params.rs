@@ -14,6 +14,7 @@ use terrain_psd::{SurfaceParams, TwoTrackSpec};
 use tire_fiala::TireParams;
 use vehicle_3d::VehicleParams;
 use vehicle_components::ParamSet as Named;
+use vehicle_components::{CabParams, SeatParams};
 
 /// Parameter sets that can be dumped, checked and listed.
 #[derive(Clone, Copy, Debug, clap::ValueEnum)]
@@ -35,6 +36,11 @@ pub enum ParamSet {
     /// strut, drive, and the documented assumptions; missing fields take the nominal value).
     #[value(name = "vehicle-3d")]
     Vehicle3d,
+    /// The operator's suspension seat on the cab floor (the generic seat; docs/layouts.md
+    /// "Cab and seat suspension"; the optional cushion is not a named parameter).
+    Seat,
+    /// The cab on its four elastomer mounts (the generic cab; docs/layouts.md).
+    Cab,
     /// A whole vehicle description (TOML, docs/vehicles.md): units, joint, axles with
     /// tires and suspensions, steering, drive; the file every `--vehicle` option reads.
     Vehicle,
@@ -114,6 +120,8 @@ pub fn run(cmd: Command) -> CmdResult {
                 ParamSet::Surface => serde_json::to_value(SurfaceParams::default())?,
                 ParamSet::Truck => serde_json::to_value(TruckParams::nominal())?,
                 ParamSet::Vehicle3d => serde_json::to_value(VehicleParams::nominal())?,
+                ParamSet::Seat => serde_json::to_value(SeatParams::generic())?,
+                ParamSet::Cab => serde_json::to_value(CabParams::generic())?,
             };
             match output {
                 Some(path) => {
@@ -145,6 +153,8 @@ pub fn run(cmd: Command) -> CmdResult {
                     vehicle_3d_in_ranges(&p).map_err(|e| format!("{}: {e}", file.display()))?;
                     json!({ "parameters": p })
                 }
+                ParamSet::Seat => json!({ "parameters": checked::<SeatParams>(&file)? }),
+                ParamSet::Cab => json!({ "parameters": checked::<CabParams>(&file)? }),
                 ParamSet::Vehicle => check_vehicle(&file)?,
             };
             report["valid"] = json!(true);
@@ -160,6 +170,8 @@ pub fn run(cmd: Command) -> CmdResult {
                 ParamSet::Surface => specs(&SurfaceParams::default()),
                 ParamSet::Truck => specs(&TruckParams::nominal()),
                 ParamSet::Vehicle3d => specs(&VehicleParams::nominal()),
+                ParamSet::Seat => specs(&SeatParams::generic()),
+                ParamSet::Cab => specs(&CabParams::generic()),
                 ParamSet::Vehicle => {
                     let rows: Vec<Value> = afsv_vehicle::BUILTIN
                         .iter()

@@ -5,6 +5,7 @@ use crate::error::ComponentError;
 
 /// One elastomer cab mount: where it sits and its vertical stiffness and damping.
 #[derive(Debug, Clone, Copy, PartialEq, serde::Serialize, serde::Deserialize)]
+#[serde(deny_unknown_fields)]
 pub struct CabMount {
     /// Position ahead of the mount-plane centre O (m), in the frame's x.
     pub x_m: f64,
@@ -20,6 +21,7 @@ pub struct CabMount {
 /// plane of its mounts, on four vertical elastomer mounts (horizontally stiff: the cab
 /// rotates about O and moves vertically, it does not slide on the frame).
 #[derive(Debug, Clone, Copy, PartialEq, serde::Serialize, serde::Deserialize)]
+#[serde(deny_unknown_fields)]
 pub struct CabParams {
     /// Mass of the cab with its interior, without seat and operator (kg).
     pub mass_kg: f64,
@@ -156,6 +158,7 @@ const MOUNT_FIELDS: [[&str; 4]; 4] = [
 /// An optional seat cushion between the seat's suspended frame and the operator: the
 /// operator's seated mass on a spring and damper.
 #[derive(Debug, Clone, Copy, PartialEq, serde::Serialize, serde::Deserialize)]
+#[serde(deny_unknown_fields)]
 pub struct Cushion {
     /// The operator's mass carried by the cushion (kg).
     pub occupant_mass_kg: f64,
@@ -183,6 +186,7 @@ impl Cushion {
 /// at mid-travel under its static load (ISO 10326-1 tests with the suspension adjusted to
 /// the occupant's weight), and an optional cushion.
 #[derive(Debug, Clone, Copy, PartialEq, serde::Serialize, serde::Deserialize)]
+#[serde(deny_unknown_fields)]
 pub struct SeatParams {
     /// Mass on the suspension (kg): the seat's suspended part plus, without a cushion, the
     /// operator's seated mass; with a cushion, the seat's suspended part only.

@@ -37,12 +37,14 @@ pub struct LayoutArgs {
     #[arg(long)]
     pub seat: Option<String>,
     /// A design variable NAME=LO..HI (repeat): `front.NAME` or `rear.NAME` of the strut
-    /// registry (`afsv params list strut`), or a 3-D vehicle name (`afsv params list
-    /// vehicle-3d`), e.g. `front.a_b=5e-6..3e-5`.
+    /// registry (`afsv params list strut`), `seat.NAME` or `cab.NAME` of the cab and seat
+    /// (`afsv params list seat|cab`; not with `--seat off`), or a 3-D vehicle name (`afsv
+    /// params list vehicle-3d`), e.g. `front.a_b=5e-6..3e-5`, `seat.damping_n_s_per_m=200..2000`.
     #[arg(long = "vary", required = true)]
     pub vary: Vec<String>,
     /// The measure to minimise: awz_frame, awz_seat, seat, strut_travel,
-    /// rear_strut_travel, sp_drt, omega_z.
+    /// rear_strut_travel, sp_drt, omega_z, d4_speed (the frame's 8 h caution-zone crossing
+    /// speed over --d4-speeds: one ride per D4 speed and seed per design).
     #[arg(long)]
     pub objective: String,
     /// Maximise the objective instead.
@@ -61,6 +63,10 @@ pub struct LayoutArgs {
     /// Load case of the rides (D2 and D3 are loaded by definition).
     #[arg(long, default_value = "loaded")]
     pub load: Load,
+    /// The D4 speeds of `d4_speed` (km/h), comma separated, strictly ascending, 2 to 20 of
+    /// them within 5 to 100; read only when `d4_speed` is the objective or constrained.
+    #[arg(long, default_value = "10,15,20,25,30,35,40")]
+    pub d4_speeds: String,
     /// Terrain seeds of every design, 1 to 100 (each measure is the mean over them).
     #[arg(long, default_value_t = 1)]
     pub seeds: usize,
@@ -100,6 +106,22 @@ fn problem_desc(a: &LayoutArgs) -> Result<LayoutProblemDesc, String> {
     }
     let flag = |f: &'static str| move |e: String| format!("--{f}: {e}");
     let link = layout.link();
+    let objective = LayoutMeasure::parse(&a.objective).map_err(flag("objective"))?;
+    let constraints: Vec<LayoutConstraint> = a
+        .constraints
+        .iter()
+        .map(|t| LayoutConstraint::parse(t).map_err(flag("constraint")))
+        .collect::<Result<_, _>>()?;
+    let d4 = LayoutMeasure::D4Speed;
+    let d4_speeds_kmh = if objective == d4 || constraints.iter().any(|c| c.measure == d4) {
+        crate::cmd::study::parse_list(
+            "--d4-speeds",
+            &a.d4_speeds,
+            afsv_design::layout_optimum::MAX_D4_SPEEDS,
+        )?
+    } else {
+        Vec::new()
+    };
     Ok(LayoutProblemDesc {
         vehicle: v.name.clone(),
         layout: layout.name,
@@ -118,13 +140,10 @@ fn problem_desc(a: &LayoutArgs) -> Result<LayoutProblemDesc, String> {
             .iter()
             .map(|t| LayoutVariable::parse(t).map_err(flag("vary")))
             .collect::<Result<_, _>>()?,
-        objective: LayoutMeasure::parse(&a.objective).map_err(flag("objective"))?,
+        d4_speeds_kmh,
+        objective,
         maximise: a.maximise,
-        constraints: a
-            .constraints
-            .iter()
-            .map(|t| LayoutConstraint::parse(t).map_err(flag("constraint")))
-            .collect::<Result<_, _>>()?,
+        constraints,
     })
 }
 
