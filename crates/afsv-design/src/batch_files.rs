@@ -3,7 +3,7 @@
 //! has the right format and version, a state SHA-256 in hex, as many points as its header
 //! announces and the ids `b<batch>-<index>` in order ([`read_batch_file`]); the results
 //! files of a tell answer every asked id exactly once and no other ([`collect_results`]).
-//! Each format keeps its own header checks (its problem, its batch and state).
+//! A results file's header answers the state that asked ([`check_results_header`]).
 
 use crate::afs_batch::{is_sha256_hex, point_id, MAX_BATCH_POINTS};
 use serde::de::DeserializeOwned;
@@ -91,6 +91,38 @@ where
         }
     }
     Ok((h, lines))
+}
+
+/// The header checks of a results file (`file` names it) against the state that tells it:
+/// the format and version of `kind`, the same problem (`same_problem`), and the batch
+/// `(number, state SHA-256)` the state asked (`asked`); `got` is the header's
+/// `(format, version)` and `from` its `(batch, state SHA-256)`.
+pub fn check_results_header(
+    file: &str,
+    kind: &BatchKind,
+    got: (&str, u32),
+    same_problem: bool,
+    from: (usize, &str),
+    asked: (usize, &str),
+) -> Result<(), String> {
+    if got.0 != kind.format || got.1 != kind.version {
+        return Err(format!(
+            "--tell {file}: not {} of version {} (format {:?}, version {})",
+            kind.what, kind.version, got.0, got.1
+        ));
+    }
+    if !same_problem {
+        return Err(format!(
+            "--tell {file}: results of another problem than this state's"
+        ));
+    }
+    if from != asked {
+        return Err(format!(
+            "--tell {file}: results of batch {} as another state asked it; this state asks batch {} (evaluate this state's batch, --ask, and tell its results)",
+            from.0, asked.0
+        ));
+    }
+    Ok(())
 }
 
 /// Reads the results files of a tell (`--tell`) and returns what `take` makes of each

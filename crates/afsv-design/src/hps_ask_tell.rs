@@ -24,7 +24,7 @@
 //! ([`HpsAskTellState`]). Every header carries the whole problem ([`HpsProblemDesc`]: the
 //! vehicle and the settings), so a shard needs nothing but its batch file.
 
-use crate::batch_files::collect_results;
+use crate::batch_files::{check_results_header, collect_results, BatchKind};
 use crate::error::DesignError;
 use crate::hps_optimum::{
     assessment, check_settings, evaluation, ga_options, nominal_x, reevaluation_seeds, result,
@@ -535,25 +535,20 @@ impl HpsAskTellState {
         sha: &str,
         asked: &[HpsBatchPoint],
     ) -> Result<Vec<Result<HpsValues, String>>, String> {
+        let kind = BatchKind {
+            what: "an HPS results file",
+            format: HPS_RESULTS_FORMAT,
+            version: HPS_FORMAT_VERSION,
+        };
         let check = |h: &HpsResultsHeader, file: &str| {
-            if h.format != HPS_RESULTS_FORMAT || h.version != HPS_FORMAT_VERSION {
-                return Err(format!(
-                    "--tell {file}: not an HPS results file of version {HPS_FORMAT_VERSION} (format {:?}, version {})",
-                    h.format, h.version
-                ));
-            }
-            if h.problem != self.problem {
-                return Err(format!(
-                    "--tell {file}: results of another problem than this state's"
-                ));
-            }
-            if h.batch != self.batch || h.state_sha256 != sha {
-                return Err(format!(
-                    "--tell {file}: results of batch {} as another state asked it; this state asks batch {} (evaluate this state's batch, --ask, and tell its results)",
-                    h.batch, self.batch
-                ));
-            }
-            Ok(())
+            check_results_header(
+                file,
+                &kind,
+                (&h.format, h.version),
+                h.problem == self.problem,
+                (h.batch, &h.state_sha256),
+                (self.batch, sha),
+            )
         };
         let ids: Vec<&str> = asked.iter().map(|p| p.id.as_str()).collect();
         collect_results(tell, self.batch, &ids, &check, &|r: &HpsPointResult, _| {

@@ -18,7 +18,9 @@
 //! state's SHA-256 and batch number).
 
 use crate::afs_batch::{in_shard, point_id};
-use crate::batch_files::{collect_results, read_batch_file, BatchHeaderFields, BatchKind, PointId};
+use crate::batch_files::{
+    check_results_header, collect_results, read_batch_file, BatchHeaderFields, BatchKind, PointId,
+};
 use crate::error::DesignError;
 use crate::layout_optimum::{
     result, LayoutGaSettings, LayoutOptimum, LayoutProblem, LayoutProblemDesc, Measured, Scored,
@@ -563,25 +565,20 @@ impl LayoutAskTellState {
         sha: &str,
         asked: &[LayoutBatchPoint],
     ) -> Result<Vec<Result<Measured, String>>, String> {
+        let kind = BatchKind {
+            what: "a layout results file",
+            format: LAYOUT_RESULTS_FORMAT,
+            version: LAYOUT_FORMAT_VERSION,
+        };
         let check = |h: &LayoutResultsHeader, file: &str| {
-            if h.format != LAYOUT_RESULTS_FORMAT || h.version != LAYOUT_FORMAT_VERSION {
-                return Err(format!(
-                    "--tell {file}: not a layout results file of version {LAYOUT_FORMAT_VERSION} (format {:?}, version {})",
-                    h.format, h.version
-                ));
-            }
-            if h.problem != self.problem {
-                return Err(format!(
-                    "--tell {file}: results of another problem than this state's"
-                ));
-            }
-            if h.batch != self.batch || h.state_sha256 != sha {
-                return Err(format!(
-                    "--tell {file}: results of batch {} as another state asked it; this state asks batch {} (evaluate this state's batch, --ask, and tell its results)",
-                    h.batch, self.batch
-                ));
-            }
-            Ok(())
+            check_results_header(
+                file,
+                &kind,
+                (&h.format, h.version),
+                h.problem == self.problem,
+                (h.batch, &h.state_sha256),
+                (self.batch, sha),
+            )
         };
         let ids: Vec<&str> = asked.iter().map(|p| p.id.as_str()).collect();
         collect_results(
