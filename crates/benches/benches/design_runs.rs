@@ -8,11 +8,14 @@
 //!   on the struts' stiff blocks instead of Dormand-Prince (docs/numerics.md);
 //! - `rhs_{rigid,hps}`: one right-hand-side evaluation;
 //! - `d1_terrain_and_cache`: synthesis of the terrain and the four tandem-cam caches, paid
-//!   once per seed.
+//!   once per seed;
+//! - `v3_path_change_{rigid,hps}_loaded_sim20s`: V3, the path change of section 6.3 with the
+//!   pure-pursuit driver, smooth ground, 15.3 km/h, 20 s (`scenarios::path_change`, what
+//!   `afsv vehicle path-change` runs), flat-ground caches included.
 
 use criterion::{criterion_group, criterion_main, Criterion};
 use odeint::OdeSystem;
-use vehicle_3d::scenarios::{RideSpec, OUTPUT_DT_S};
+use vehicle_3d::scenarios::{path_change, PathChangeSpec, RideSpec, OUTPUT_DT_S};
 use vehicle_3d::{simulate, FrontAxle, Load, RunOptions, Vehicle, VehicleOptions, VehicleParams};
 use vehicle_components::FlatTerrain;
 use vehicle_components::SteerInput;
@@ -83,6 +86,12 @@ fn bench(c: &mut Criterion) {
     group.bench_function("d3_yaw_pulse_rigid_sim5s", |b| {
         b.iter(|| simulate(&yaw, &pulse).unwrap().len())
     });
+    for (axle, a) in [(FrontAxle::Rigid, "rigid"), (FrontAxle::Suspended, "hps")] {
+        let spec = PathChangeSpec::v3(Load::Loaded, axle);
+        group.bench_function(format!("v3_path_change_{a}_loaded_sim20s"), |b| {
+            b.iter(|| path_change(&p, &spec, 1).unwrap().0.len())
+        });
+    }
     group.bench_function("d1_terrain_and_cache", |b| {
         b.iter(|| {
             let t = RideSpec::d1(Load::Loaded, FrontAxle::Rigid)
