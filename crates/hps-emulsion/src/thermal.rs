@@ -472,6 +472,78 @@ impl ThermalStrut {
         p.a_hr * p.a_hr / (gas / (p.n * self.pressure_pa) + oil / p.beta_h)
     }
 
+    /// The strut's parameter set at gas temperature `gas_k`, body temperature `body_k` and
+    /// levelled oil `levelled_m3`: the same hardware with the same gas and oil masses, for a
+    /// dynamic run of the warm (or cold) strut, e.g. a D1 ride after a shift.
+    ///
+    /// The reference state of a parameter set is mid-stroke (`z_s = 0`) with both chambers at
+    /// `P_h0`. At the new state, with `'` for its values:
+    /// - the rod-side chamber's emulsion volume is geometry and stays `V_r0`; the piston side
+    ///   holds the rest of the emulsion, so the free gas gives way to the oil's growth:
+    ///   `V_g0' + V_c0' = V_g0 + V_c0`;
+    /// - the oil (Eq 5.8 at the reference pressure, expanded by `beta_T`, plus the levelled
+    ///   oil, a volume at the static pressure `P`):
+    ///   `V_oil' = (V_oil (1 + beta_T (T_b - T_ref)) + V_lev / (1 - (P - P_h0) / beta_h)) (1 - (P_h0' - P_h0) / beta_h)`;
+    /// - the entrapped gas keeps its mass at the oil's temperature, in Eq 5.9's form:
+    ///   `gamma0' V_oil' P_h0'^(1/n) = gamma0 V_oil P_h0^(1/n) T_b / T_ref`;
+    /// - the free gas keeps its mass (ideal gas): `P_h0' V_g0' = P_h0 V_g0 T_g / T_ref`;
+    ///
+    /// solved by fixed-point iteration on `P_h0'` (each pass moves it by the oil's and the
+    /// entrapped gas's small share of the volume). With these, the strut's isothermal static
+    /// state at its load sits [`ThermalStrut::ride_height_m`] higher and has
+    /// [`ThermalStrut::stiffness_n_m`] (tested to second order in `1/beta_h`). At the charge
+    /// temperature with no levelled oil it is this strut's set to round-off. Errors: a state
+    /// whose free gas would vanish, or a set that fails [`StrutParams::validate`].
+    pub fn strut_at(
+        &self,
+        gas_k: f64,
+        body_k: f64,
+        levelled_m3: f64,
+    ) -> Result<StrutParams, HpsError> {
+        crate::error::positive("gas_k", gas_k)?;
+        crate::error::positive("body_k", body_k)?;
+        if !levelled_m3.is_finite() {
+            return Err(HpsError::InvalidParameter {
+                field: "levelled_m3",
+                value: levelled_m3,
+                reason: "must be finite",
+            });
+        }
+        let p = &self.params;
+        let t_ref = self.thermal.charge_temperature_k;
+        let (oil_c, oil_r) = p.oil_volumes();
+        let oil = oil_c + oil_r;
+        let levelled_at_reference = levelled_m3 / (1.0 - (self.pressure_pa - p.p_h0) / p.beta_h);
+        let expanded = oil * (1.0 + self.thermal.oil_expansion_per_k * (body_k - t_ref))
+            + levelled_at_reference;
+        let gas_charge = p.p_h0 * p.v_g0 * gas_k / t_ref;
+        let entrapped_charge = p.gamma0 * oil * p.p_h0.powf(1.0 / p.n) * body_k / t_ref;
+        let enclosed = p.v_g0 + p.v_c0;
+        let mut q = *p;
+        for _ in 0..100 {
+            let oil_new = expanded * (1.0 - (q.p_h0 - p.p_h0) / p.beta_h);
+            q.gamma0 = entrapped_charge / (oil_new * q.p_h0.powf(1.0 / p.n));
+            q.v_r0 = p.v_r0;
+            q.v_c0 = oil_new * (1.0 + q.gamma0) - q.v_r0;
+            q.v_g0 = enclosed - q.v_c0;
+            if !(q.v_g0 > 0.0 && q.v_c0 >= 0.0) {
+                return Err(HpsError::InvalidParameter {
+                    field: "gas_k",
+                    value: gas_k,
+                    reason: "the expanded oil would fill the free gas volume at mid-stroke",
+                });
+            }
+            let next = gas_charge / q.v_g0;
+            let done = (next - q.p_h0).abs() <= 1e-14 * next;
+            q.p_h0 = next;
+            if done {
+                break;
+            }
+        }
+        q.validate()?;
+        Ok(q)
+    }
+
     /// Run `duration_s` under `cond`, sampled every `output_dt_s`: temperatures, ride height,
     /// levelled oil, stiffness and the heat lost to the ambient (odeint Rosenbrock23, the
     /// gas node being stiff against the body).

@@ -480,3 +480,72 @@ fn a_replayed_stroke_dissipates_the_loop_energy_per_cycle() {
         0.5 * (strut.static_force(0.0).unwrap() + strut.static_force(amp).unwrap()) * amp / 4.25;
     assert!(spring_w > loop_power, "{spring_w} W");
 }
+
+#[test]
+fn the_strut_at_a_thermal_state_sits_and_springs_as_the_thermal_model_says() {
+    let s = front();
+    let p = StrutParams::front_axle();
+    let t_ref = KELVIN_AT_0C + 20.0;
+    // at the charge temperature: the same strut, to round-off
+    let same = s.strut_at(t_ref, t_ref, 0.0).unwrap();
+    for (a, b) in [
+        (same.p_h0, p.p_h0),
+        (same.v_g0, p.v_g0),
+        (same.v_c0, p.v_c0),
+        (same.gamma0, p.gamma0),
+    ] {
+        assert!((a / b - 1.0).abs() < 1e-13, "{a} vs {b}");
+    }
+    assert_eq!(same.v_r0, p.v_r0);
+    // warm (uniform and with the gas behind the body), cold, and hot with levelled oil
+    let cases = [
+        (t_ref + 40.0, t_ref + 40.0, 0.0),
+        (t_ref + 30.0, t_ref + 60.0, 0.0),
+        (t_ref - 30.0, t_ref - 30.0, 0.0),
+        (t_ref + 60.0, t_ref + 60.0, -0.8e-3),
+    ];
+    for (gas_k, body_k, levelled) in cases {
+        let q = s.strut_at(gas_k, body_k, levelled).unwrap();
+        // the hardware: the rod side and the enclosed volume of the piston side are kept
+        assert_eq!(q.v_r0, p.v_r0);
+        assert!(((q.v_g0 + q.v_c0) / (p.v_g0 + p.v_c0) - 1.0).abs() < 1e-14);
+        // the free gas mass at the new temperature is the charge's
+        let m = q.p_h0 * q.v_g0 / (R_NITROGEN * gas_k);
+        let m0 = p.p_h0 * p.v_g0 / (R_NITROGEN * t_ref);
+        assert!((m / m0 - 1.0).abs() < 1e-12, "{m} vs {m0}");
+        // the new strut at rest under the same load, its charge temperature the new one
+        let hot_thermal = ThermalParams {
+            charge_temperature_k: gas_k,
+            ..ThermalParams::front_axle()
+        };
+        let hot = ThermalStrut::new(&q, &hot_thermal, LOAD_N).unwrap();
+        let dh = s.ride_height_m(gas_k, body_k, levelled);
+        let rise = s.static_travel_m() - hot.static_travel_m();
+        // second order in 1/beta_h: (dP/beta_h)^2 of the oil volume over A_hr (measured
+        // at most 4.2e-7 m)
+        assert!((rise - dh).abs() < 1e-6, "{gas_k} {body_k}: {rise} vs {dh}");
+        let k = s.stiffness_n_m(gas_k, body_k, levelled);
+        let k_hot = hot.stiffness_n_m(gas_k, gas_k, 0.0);
+        // measured at most 8e-9
+        assert!(
+            (k_hot / k - 1.0).abs() < 1e-6,
+            "{gas_k} {body_k}: {k_hot} vs {k}"
+        );
+    }
+    // a hot strut is softer and sits higher; a cold one the opposite
+    let hot = s.strut_at(t_ref + 50.0, t_ref + 50.0, 0.0).unwrap();
+    let cold = s.strut_at(t_ref - 30.0, t_ref - 30.0, 0.0).unwrap();
+    assert!(hot.p_h0 > p.p_h0 && cold.p_h0 < p.p_h0);
+    // bad input names its field
+    assert_eq!(field_of(s.strut_at(-1.0, t_ref, 0.0).unwrap_err()), "gas_k");
+    assert_eq!(
+        field_of(s.strut_at(t_ref, f64::NAN, 0.0).unwrap_err()),
+        "body_k"
+    );
+    assert_eq!(
+        field_of(s.strut_at(t_ref, t_ref, f64::INFINITY).unwrap_err()),
+        "levelled_m3"
+    );
+    // oil grown into the whole gas space is refused
+    assert!(s.strut_at(t_ref, t_ref, 2.0 * p.v_g0).is_err());
+}
