@@ -4,7 +4,7 @@
 
 use perf_measures::roll::SustainedPeriodParams;
 use serde::Serialize;
-use terrain_psd::{synthesize, SurfaceParams, TwoTrackSpec, TwoTrackTerrain};
+use terrain_psd::{synthesize, SurfaceParams, TwoTrackProfile, TwoTrackSpec, TwoTrackTerrain};
 
 use crate::driver::SteerDirection;
 use crate::error::TruckError;
@@ -30,11 +30,16 @@ pub fn rough_terrain(
     seed: u64,
 ) -> Result<TwoTrackTerrain, TruckError> {
     let profile = synthesize(spec, length_m, TERRAIN_DX_M, seed)?;
-    let surface = SurfaceParams {
+    Ok(TwoTrackTerrain::new(profile, truck_surface(p))?)
+}
+
+/// The truck's surface over a two-track profile: the track width (immaterial: the tires read
+/// the tracks themselves) the mean of the front and rear tracks, the rest nominal.
+fn truck_surface(p: &TruckParams) -> SurfaceParams {
+    SurfaceParams {
         track_width_m: 0.5 * (p.front_track_m + p.rear_track_m),
         ..SurfaceParams::nominal()
-    };
-    Ok(TwoTrackTerrain::new(profile, surface)?)
+    }
 }
 
 /// The truck `p` on `terrain`, each side's tires on its track, the enveloping cache
@@ -100,28 +105,92 @@ pub fn run_case_on(
     options: &RunOptions,
     sp: &SustainedPeriodParams,
 ) -> Result<Run, TruckError> {
-    let path_length_m = p.target_speed_m_s * options.t_end_s * 1.1 + 10.0;
-    let record = match spec {
-        None => {
-            let v = TruckVehicle::new(
-                p,
-                &level_ground(),
-                1.0,
-                ModelOptions {
-                    direction,
-                    path_length_m,
-                    ..ModelOptions::default()
-                },
-            )?;
-            simulate(&v, options)?
-        }
-        Some(spec) => {
-            let terrain = rough_terrain(p, spec, terrain_length_m, seed)?;
-            simulate(&truck_on(p, &terrain, direction, path_length_m)?, options)?
-        }
+    let Some(spec) = spec else {
+        let v = TruckVehicle::new(
+            p,
+            &level_ground(),
+            1.0,
+            ModelOptions {
+                direction,
+                path_length_m: run_path_length_m(p, options),
+                ..ModelOptions::default()
+            },
+        )?;
+        let record = simulate(&v, options)?;
+        let measures = roll_measures(p, &record, sp)?;
+        return Ok(Run { record, measures });
     };
+    let terrain = rough_terrain(p, spec, terrain_length_m, seed)?;
+    run_on_terrain(p, &terrain, direction, options, sp)
+}
+
+/// Path length a run of `options` covers (m): the target speed over the run, 10 % over,
+/// plus 10 m.
+fn run_path_length_m(p: &TruckParams, options: &RunOptions) -> f64 {
+    p.target_speed_m_s * options.t_end_s * 1.1 + 10.0
+}
+
+/// A run on `terrain` (each side's tires on its track) and its measures.
+fn run_on_terrain(
+    p: &TruckParams,
+    terrain: &TwoTrackTerrain,
+    direction: SteerDirection,
+    options: &RunOptions,
+    sp: &SustainedPeriodParams,
+) -> Result<Run, TruckError> {
+    let path_length_m = run_path_length_m(p, options);
+    let record = simulate(&truck_on(p, terrain, direction, path_length_m)?, options)?;
     let measures = roll_measures(p, &record, sp)?;
     Ok(Run { record, measures })
+}
+
+/// Shortest measured road (m) a run of `options` needs: the enveloping cache's end, the
+/// start ([`ModelOptions::start_s_m`]) plus the run's path (the target speed over the run,
+/// 10 % over, plus 10 m) plus a wheelbase and a tire diameter.
+pub fn road_length_needed_m(p: &TruckParams, options: &RunOptions) -> f64 {
+    ModelOptions::default().start_s_m
+        + run_path_length_m(p, options)
+        + p.wheelbase_m
+        + 2.0 * p.tire_free_radius_m
+}
+
+/// A ramp-steer run of `p` on a measured two-track road `profile` (laid out from its first
+/// sample along the path the truck drives, the left tires on its left track; the surface is
+/// [`rough_terrain`]'s) and its measures. A road shorter than [`road_length_needed_m`] is
+/// refused with the length it needs. A road equal to a synthesized terrain gives that
+/// terrain's run bit for bit.
+pub fn run_case_on_road(
+    p: &TruckParams,
+    profile: TwoTrackProfile,
+    direction: SteerDirection,
+    options: &RunOptions,
+    sp: &SustainedPeriodParams,
+) -> Result<Run, TruckError> {
+    p.validate()?;
+    options.validate()?;
+    let need = road_length_needed_m(p, options);
+    let have = profile.length_m();
+    if have < need {
+        return Err(TruckError::Terrain(terrain_psd::TerrainError::Signal(format!(
+            "the road is {have:.1} m long; a {:.1} s run at {:.1} km/h needs {need:.1} m (the start, the path 10 % over plus 10 m, a wheelbase and a tire diameter): shorten the run to at most {:.1} s",
+            options.t_end_s,
+            p.target_speed_m_s * 3.6,
+            max_duration_on_road_s(p, have)
+        ))));
+    }
+    let terrain = TwoTrackTerrain::new(profile, truck_surface(p))?;
+    run_on_terrain(p, &terrain, direction, options, sp)
+}
+
+/// Longest run (s) a road `length_m` long carries ([`road_length_needed_m`] solved for the
+/// run's duration; 0 when the road is too short for any run).
+fn max_duration_on_road_s(p: &TruckParams, length_m: f64) -> f64 {
+    let path = length_m
+        - ModelOptions::default().start_s_m
+        - p.wheelbase_m
+        - 2.0 * p.tire_free_radius_m
+        - 10.0;
+    (path / (1.1 * p.target_speed_m_s)).max(0.0)
 }
 
 /// Largest number of terrain seeds of one study (bounds the work and the output).

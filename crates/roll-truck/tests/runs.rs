@@ -193,3 +193,49 @@ fn plausible_truck_and_the_lateral_acceleration_channels_on_the_smooth_ramp() {
     }
     assert!(checked > 1000, "{checked} samples");
 }
+
+#[test]
+fn a_measured_road_equal_to_a_synthesized_terrain_gives_its_run_and_a_short_one_is_refused() {
+    use perf_measures::roll::SustainedPeriodParams;
+    use roll_truck::studies::{road_length_needed_m, run_case_on, run_case_on_road, TERRAIN_DX_M};
+    let p = TruckParams::nominal();
+    let spec = TwoTrackSpec::paper_nominal();
+    let opts = RunOptions {
+        t_end_s: 6.0,
+        ..RunOptions::default()
+    };
+    let sp = SustainedPeriodParams::default();
+    let length = 120.0;
+    let synthesized = run_case_on(
+        &p,
+        Some(&spec),
+        2,
+        length,
+        SteerDirection::Right,
+        &opts,
+        &sp,
+    )
+    .unwrap();
+    let profile = terrain_psd::synthesize(&spec, length, TERRAIN_DX_M, 2).unwrap();
+    let road = run_case_on_road(&p, profile.clone(), SteerDirection::Right, &opts, &sp).unwrap();
+    assert_eq!(road, synthesized);
+    // the road must cover the run: the start, the path 10 % over plus 10 m, a wheelbase and
+    // a tire diameter
+    let need = road_length_needed_m(&p, &opts);
+    let by_hand =
+        5.0 + p.target_speed_m_s * 6.0 * 1.1 + 10.0 + p.wheelbase_m + 2.0 * p.tire_free_radius_m;
+    assert!((need - by_hand).abs() < 1e-9, "{need} vs {by_hand}");
+    let n = (need / TERRAIN_DX_M) as usize - 1;
+    let short = TwoTrackProfile {
+        dx_m: TERRAIN_DX_M,
+        left_m: profile.left_m[..n].to_vec(),
+        right_m: profile.right_m[..n].to_vec(),
+    };
+    let e = run_case_on_road(&p, short, SteerDirection::Right, &opts, &sp)
+        .unwrap_err()
+        .to_string();
+    assert!(
+        e.contains("needs") && e.contains(&format!("{need:.1} m")),
+        "{e}"
+    );
+}
