@@ -319,7 +319,7 @@ impl LinkedVehicle {
             .flat_map(|lp| (0..2).map(move |k| (lp.lines_at + k, lp.pair.line(k))))
             .collect();
         let mut node = vec![Vec::new(); lines.len()];
-        let record = simulate_system(&self.vehicle, self, y0, t, options, |y| {
+        let record = simulate_system(&self.vehicle, self, y0, t, options, |_, y| {
             for (ch, (at, line)) in node.iter_mut().zip(&lines) {
                 ch.push(line.pressure(y[*at]));
             }
@@ -597,7 +597,7 @@ pub fn free_response(
                 &y0,
                 v.state_layout().typicals().to_vec(),
                 &run,
-                |_| {},
+                |_, _| {},
             )
         }
     }

@@ -10,6 +10,7 @@
 //! - [`steering`]: the struts between their 3-D mounts; [`tires`]: one tire on its cached
 //!   track; [`vehicle`]: the ODE system; [`simulate`](mod@simulate): a recorded run;
 //!   [`channels`]: its channels in the record convention `afsv-v1`;
+//!   [`component_record`]: every component's own channels along a run (a `Recorder`);
 //! - [`scenarios`]: the design runs D1 (ride), D2 (roll), D3 (yaw) and their measures;
 //!   [`path_change`](mod@path_change): the V3 path change (section 6.3) with the
 //!   path-following driver (re-exported by `scenarios`);
@@ -25,6 +26,7 @@
 
 pub mod cab_ride;
 pub mod channels;
+pub mod component_record;
 pub mod error;
 pub mod field;
 pub mod interconnect;

@@ -209,6 +209,13 @@ fn push_sample(vehicle: &Vehicle, t: f64, y: &[f64], rec: &mut RunRecord) {
 /// Integrate `vehicle` from its static state at the target speed (module docs).
 pub fn simulate(vehicle: &Vehicle, options: &RunOptions) -> Result<RunRecord, VehicleError> {
     options.validate()?;
+    let (y0, typical) = initial_run(vehicle)?;
+    simulate_system(vehicle, vehicle, &y0, typical, options, |_, _| {})
+}
+
+/// The start of a run of `vehicle`: its static state at the target speed (refused when the
+/// struts have no static equilibrium) and every state's typical magnitude.
+pub(crate) fn initial_run(vehicle: &Vehicle) -> Result<(Vec<f64>, Vec<f64>), VehicleError> {
     let y0 = vehicle.initial_state();
     if y0.iter().any(|v| !v.is_finite()) {
         return Err(rejected(
@@ -217,21 +224,20 @@ pub fn simulate(vehicle: &Vehicle, options: &RunOptions) -> Result<RunRecord, Ve
             "no static equilibrium of the struts",
         ));
     }
-    let typical = vehicle.state_layout().typicals().to_vec();
-    simulate_system(vehicle, vehicle, &y0, typical, options, |_| {})
+    Ok((y0, vehicle.state_layout().typicals().to_vec()))
 }
 
 /// Integrate `sys` from `y0` and record it as `vehicle`'s run: `sys` is the vehicle or a
 /// system that extends its state with states appended after the vehicle's (a hydraulic
 /// interconnection, [`crate::interconnect`]); `typical` holds every state's typical
-/// magnitude; `extra` sees the whole state at every recorded sample.
+/// magnitude; `extra` sees the time and the whole state at every recorded sample.
 pub(crate) fn simulate_system<S: OdeSystem>(
     vehicle: &Vehicle,
     sys: &S,
     y0: &[f64],
     typical: Vec<f64>,
     options: &RunOptions,
-    mut extra: impl FnMut(&[f64]),
+    mut extra: impl FnMut(f64, &[f64]),
 ) -> Result<RunRecord, VehicleError> {
     let n = options.validate()?;
     let span = options.span();
@@ -264,7 +270,7 @@ pub(crate) fn simulate_system<S: OdeSystem>(
     integrator
         .run(sys, &problem, &mut ws, |s| {
             push_sample(vehicle, s.t, &s.y[..dim], &mut rec);
-            extra(s.y);
+            extra(s.t, s.y);
             if let SampleKind::Event(_) = s.kind {
                 rec.rollover_s = Some(s.t);
             }

@@ -356,7 +356,7 @@ fn the_pitch_lines_only_dissipate() {
     };
     let mut t = v.state_layout().typicals().to_vec();
     t.extend_from_slice(&y[o.dim..]);
-    simulate_system(v, &linked, &y, t, &run, |y| e.push(energy(y))).unwrap();
+    simulate_system(v, &linked, &y, t, &run, |_, y| e.push(energy(y))).unwrap();
     let rise = e.windows(2).fold(f64::MIN, |m, w| m.max(w[1] - w[0]));
     let lost = e0 - e[e.len() - 1];
     println!(
