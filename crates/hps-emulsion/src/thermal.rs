@@ -492,8 +492,10 @@ impl ThermalStrut {
     /// entrapped gas's small share of the volume). With these, the strut's isothermal static
     /// state at its load sits [`ThermalStrut::ride_height_m`] higher and has
     /// [`ThermalStrut::stiffness_n_m`] (tested to second order in `1/beta_h`). At the charge
-    /// temperature with no levelled oil it is this strut's set to round-off. Errors: a state
-    /// whose free gas would vanish, or a set that fails [`StrutParams::validate`].
+    /// temperature with no levelled oil it is this strut's set to round-off. Errors: a
+    /// temperature not finite and > 0; levelled oil not finite, or draining more oil than
+    /// the piston side holds; oil filling the free gas volume at mid-stroke; a set that fails
+    /// [`StrutParams::validate`].
     pub fn strut_at(
         &self,
         gas_k: f64,
@@ -518,6 +520,13 @@ impl ThermalStrut {
             + levelled_at_reference;
         let gas_charge = p.p_h0 * p.v_g0 * gas_k / t_ref;
         let entrapped_charge = p.gamma0 * oil * p.p_h0.powf(1.0 / p.n) * body_k / t_ref;
+        if expanded <= p.v_r0 / (1.0 + p.gamma0) {
+            return Err(HpsError::InvalidParameter {
+                field: "levelled_m3",
+                value: levelled_m3,
+                reason: "drains more oil than the piston side holds",
+            });
+        }
         let enclosed = p.v_g0 + p.v_c0;
         let mut q = *p;
         for _ in 0..100 {
@@ -526,11 +535,16 @@ impl ThermalStrut {
             q.v_r0 = p.v_r0;
             q.v_c0 = oil_new * (1.0 + q.gamma0) - q.v_r0;
             q.v_g0 = enclosed - q.v_c0;
-            if !(q.v_g0 > 0.0 && q.v_c0 >= 0.0) {
+            if q.v_g0 <= 0.0 {
+                let (field, value) = if levelled_m3 > 0.0 {
+                    ("levelled_m3", levelled_m3)
+                } else {
+                    ("body_k", body_k)
+                };
                 return Err(HpsError::InvalidParameter {
-                    field: "gas_k",
-                    value: gas_k,
-                    reason: "the expanded oil would fill the free gas volume at mid-stroke",
+                    field,
+                    value,
+                    reason: "the oil would fill the free gas volume at mid-stroke",
                 });
             }
             let next = gas_charge / q.v_g0;
@@ -546,7 +560,9 @@ impl ThermalStrut {
 
     /// Run `duration_s` under `cond`, sampled every `output_dt_s`: temperatures, ride height,
     /// levelled oil, stiffness and the heat lost to the ambient (odeint Rosenbrock23, the
-    /// gas node being stiff against the body).
+    /// gas node being stiff against the body). A valve that drains the piston side's whole
+    /// oil (only at absurd temperatures: it drains the thermal growth) ends the run with an
+    /// error at that time.
     pub fn run(
         &self,
         cond: &ThermalConditions,
@@ -573,7 +589,13 @@ impl ThermalStrut {
         };
         let y0 = [cond.initial_gas_k, cond.initial_body_k, 0.0, 0.0];
         let mut rec = ThermalRecord::default();
+        let piston_side_oil = self.params.oil_volumes().0;
+        let mut drained_at = None;
         let mut observe = |t: f64, y: &[f64]| {
+            if -y[2] >= piston_side_oil {
+                drained_at = Some(t);
+                return Control::Stop;
+            }
             rec.time_s.push(t);
             rec.gas_k.push(y[0]);
             rec.body_k.push(y[1]);
@@ -592,6 +614,15 @@ impl ThermalStrut {
         Integrator::new(Solver::Rosenbrock23, 1e-8, Atol::scaled(1e-8, typical))
             .with_max_steps(10_000_000)
             .integrate(&sys, 0.0, &y0, &ts, &mut observe)?;
+        if let Some(t) = drained_at {
+            return Err(HpsError::OutOfRange {
+                t,
+                reason: format!(
+                    "the levelling valve drained the piston side's {:.2} L of oil",
+                    piston_side_oil * 1e3
+                ),
+            });
+        }
         Ok(rec)
     }
 

@@ -546,6 +546,30 @@ fn the_strut_at_a_thermal_state_sits_and_springs_as_the_thermal_model_says() {
         field_of(s.strut_at(t_ref, t_ref, f64::INFINITY).unwrap_err()),
         "levelled_m3"
     );
-    // oil grown into the whole gas space is refused
-    assert!(s.strut_at(t_ref, t_ref, 2.0 * p.v_g0).is_err());
+    // oil grown into the whole gas space, or drained beyond the piston side's, is refused
+    let e = s.strut_at(t_ref, t_ref, 2.0 * p.v_g0).unwrap_err();
+    assert_eq!(field_of(e), "levelled_m3");
+    let e = s.strut_at(t_ref, t_ref, -2.0 * p.v_c0).unwrap_err();
+    assert!(e.to_string().contains("drains more oil"), "{e}");
+}
+
+#[test]
+fn a_valve_that_drains_the_piston_sides_oil_ends_the_run_with_an_error() {
+    // 1 MW into one strut (the validated limit): the body heats by thousands of kelvin and
+    // the valve drains the oil's growth until none is left; an absurd case, refused in one
+    // line with the time, never a record with negative oil
+    let lev = front()
+        .with_levelling(LevellingValve::default_valve())
+        .unwrap();
+    let cond = ThermalConditions::cold_start(KELVIN_AT_0C + 20.0, 1e6);
+    let e = lev.run(&cond, 8.0 * 3600.0, 60.0).unwrap_err();
+    assert!(
+        matches!(&e, HpsError::OutOfRange { reason, .. } if reason.contains("drained")),
+        "{e}"
+    );
+    // a working shift never comes near it
+    let cond = ThermalConditions::cold_start(KELVIN_AT_0C + 20.0, 1200.0);
+    let rec = lev.run(&cond, 8.0 * 3600.0, 60.0).unwrap();
+    let oil = StrutParams::front_axle().oil_volumes().0;
+    assert!(rec.levelled_m3.iter().all(|&v| -v < 0.3 * oil));
 }
