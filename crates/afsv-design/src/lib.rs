@@ -33,6 +33,8 @@
 //!   into ask and tell, with its batch, results and state files;
 //! - [`strut_shift`]: `afsv hps thermal`, a vehicle's struts over a working shift (gas and
 //!   body temperatures, ride height and stiffness, with and without a levelling valve);
+//! - [`report`]: the reports of those results (JSON objects and text tables), shared by
+//!   the CLI and the Python package;
 //! - [`fan_out`]: the one scheduler of the studies on the 3-D vehicle (per-case caches
 //!   built once, runs in parallel, results in order) and the plain seed fan-out.
 //!
@@ -62,6 +64,7 @@ pub mod layout_optimum;
 pub mod layouts;
 pub mod measures;
 pub mod objective;
+pub mod report;
 pub mod strut_shift;
 pub mod sweep;
 

@@ -16,9 +16,9 @@ mod simulate;
 use super::{args, CmdResult};
 use afsv::output::{OutputGuard, OutputKind};
 use afsv::progress::Progress;
+use afsv_design::report::design_3d::yaw_fit_caveat;
 use hps_emulsion::StrutParams;
 use measures::measures_cmd;
-pub(crate) use measures::yaw_fit_caveat;
 pub(crate) use options::PAPER_FORM_HELP;
 use options::{
     duration_s, ramp_rate, seed_count, speed_kmh, steer_peak, terrain_arg, TerrainArg,

@@ -1,12 +1,12 @@
 //! `afsv vehicle measures`: the three design measures of section 6.4 for one configuration
 //! (parameter set, front axle, ride load case) over common terrain seeds, through the code
-//! `afsv evaluate` uses ([`crate::cmd::design_measures::measure`]): D1 a_wz with the 8 h
+//! `afsv evaluate` uses (`afsv_design::design_3d::measure`): D1 a_wz with the 8 h
 //! HGCZ verdict and the strut travel d_s (Eq 6.19), D2 SP-DRT, D3 omega_z and zeta.
 
-use super::super::design_measures::{hgcz_8h_band, measure, MAX_SEEDS};
 use super::{axle_name, declare_inputs, print_result, vehicle_params, CaseArgs, CmdResult};
 use afsv::output::OutputGuard;
 use afsv::progress::Progress;
+use afsv_design::design_3d::{hgcz_8h_band, measure, MAX_SEEDS};
 use perf_measures::iso2631::HgczZone;
 use serde_json::json;
 use vehicle_3d::Load;
@@ -143,14 +143,6 @@ pub(super) fn measures_cmd(
         text += &format!("note on omega_z and zeta: {caveat}\n");
     }
     print_result(json_out, &v, &text)
-}
-
-/// The caveat of the runs' single-mode yaw fits: the worst seed's ([`vehicle_3d::scenarios::YawMeasures::fit_caveat`]).
-pub(crate) fn yaw_fit_caveat(measures: &[vehicle_3d::scenarios::YawMeasures]) -> Option<String> {
-    measures
-        .iter()
-        .max_by(|a, b| a.fit_residual_to_noise.total_cmp(&b.fit_residual_to_noise))
-        .and_then(vehicle_3d::scenarios::YawMeasures::fit_caveat)
 }
 
 #[cfg(test)]

@@ -1,0 +1,58 @@
+//! The reports of the toolkit's results: the JSON objects and text tables that `afsv`
+//! prints and the Python package returns, each a pure function of a library result (no
+//! terminal, no files: the CLI decides where a report goes).
+//!
+//! - [`evaluate`]: the assessment of `afsv evaluate` ([`crate::evaluate::Assessment`]);
+//! - [`design_3d`]: the D1-D3 design measures of the 3-D vehicle
+//!   ([`crate::design_3d::DesignMeasures`]).
+
+pub mod design_3d;
+pub mod evaluate;
+
+/// `v` scaled by `scale` with `digits` decimals, or `n/a` when it cannot be computed.
+pub fn num(v: f64, scale: f64, digits: usize) -> String {
+    let x = v * scale;
+    if x.is_finite() {
+        format!("{x:.digits$}")
+    } else {
+        "n/a".to_string()
+    }
+}
+
+/// `text` as indented lines of at most about 88 characters.
+pub fn wrap_note(text: &str) -> String {
+    let mut out = String::new();
+    let mut line = String::from("  ");
+    for word in text.split_whitespace() {
+        if line.len() + word.len() > 88 && !line.trim().is_empty() {
+            out += line.trim_end();
+            out += "\n";
+            line = String::from("    ");
+        }
+        line += word;
+        line += " ";
+    }
+    out += line.trim_end();
+    out + "\n"
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn notes_wrap_to_the_terminal() {
+        let long = "word ".repeat(60);
+        let text = wrap_note(&long);
+        assert!(text.lines().all(|l| l.len() <= 92), "{text}");
+        assert_eq!(text.split_whitespace().count(), 60);
+        assert!(text.starts_with("  word") && text.lines().nth(1).unwrap().starts_with("    word"));
+    }
+
+    #[test]
+    fn numbers_that_cannot_be_computed_print_as_na() {
+        assert_eq!(num(f64::NAN, 1.0, 2), "n/a");
+        assert_eq!(num(f64::INFINITY, 1.0, 2), "n/a");
+        assert_eq!(num(0.0123, 100.0, 1), "1.2");
+    }
+}
