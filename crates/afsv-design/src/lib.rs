@@ -28,6 +28,8 @@
 //!   strut, terrain) of one vehicle description;
 //! - [`layouts`]: `afsv study layouts`, several suspension layouts of one vehicle through
 //!   D1-D4 on common seeds, on the frame and at the seat;
+//! - [`layout_names`]: the layouts of those commands by name (`--layouts`, `--seat`),
+//!   built from one vehicle description;
 //! - [`layout_optimum`]: `afsv optimize layout`, a GA over registry-named parameters of
 //!   one layout with constraints on its measures; [`layout_ask_tell`]: the same run split
 //!   into ask and tell, with its batch, results and state files;
@@ -60,6 +62,7 @@ pub mod hps_optimum;
 pub mod hps_sensitivity;
 pub mod hps_speed_sweep;
 pub mod layout_ask_tell;
+pub mod layout_names;
 pub mod layout_optimum;
 pub mod layouts;
 pub mod measures;

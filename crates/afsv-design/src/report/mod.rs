@@ -4,10 +4,17 @@
 //!
 //! - [`evaluate`]: the assessment of `afsv evaluate` ([`crate::evaluate::Assessment`]);
 //! - [`design_3d`]: the D1-D3 design measures of the 3-D vehicle
-//!   ([`crate::design_3d::DesignMeasures`]).
+//!   ([`crate::design_3d::DesignMeasures`]);
+//! - [`layouts`]: the table of `afsv study layouts` ([`crate::layouts::LayoutStudy`]);
+//! - [`speed_sweep`]: the D4 sweep of `afsv study speed-sweep` ([`crate::SpeedSweep`]);
+//! - [`hps_sensitivity`]: Table 6.4 of `afsv study hps-sensitivity`
+//!   ([`crate::HpsSensitivity`]).
 
 pub mod design_3d;
 pub mod evaluate;
+pub mod hps_sensitivity;
+pub mod layouts;
+pub mod speed_sweep;
 
 /// `v` scaled by `scale` with `digits` decimals, or `n/a` when it cannot be computed.
 pub fn num(v: f64, scale: f64, digits: usize) -> String {

@@ -169,7 +169,7 @@ fn report(a: &HpsArgs, base: &vehicle_3d::VehicleParams, r: &HpsOptimum) -> CmdR
     } else {
         print!("{}", text(r));
         if let Some(s) = &sweep {
-            print!("\n{}", crate::cmd::study::sweep_text(s));
+            print!("\n{}", afsv_design::report::speed_sweep::text(s));
         }
     }
     if r.feasible {

@@ -98,7 +98,7 @@ fn problem_desc(a: &LayoutArgs) -> Result<LayoutProblemDesc, String> {
         return Err(format!("--layout {}: one layout", a.layout));
     }
     let v = crate::cmd::described::articulated(a.vehicle.as_deref())?;
-    let layout = crate::cmd::layouts::build_layouts(&v, &a.layout)?
+    let layout = afsv_design::layout_names::build_layouts(&v, &a.layout)?
         .pop()
         .ok_or("--layout: no layout named")?;
     if a.seeds == 0 || a.seeds > afsv_design::layout_optimum::MAX_SEEDS {
@@ -128,7 +128,7 @@ fn problem_desc(a: &LayoutArgs) -> Result<LayoutProblemDesc, String> {
         params: layout.params,
         front_axle: layout.front_axle,
         link,
-        seat: crate::cmd::layouts::seat_of(&v, a.seat.as_deref())?,
+        seat: afsv_design::layout_names::seat_of(&v, a.seat.as_deref())?,
         load: a.load,
         speed_kmh: a.speed_kmh,
         ride_length_m: a.ride_length_m,
