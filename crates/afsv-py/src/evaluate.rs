@@ -33,7 +33,7 @@ fn evaluate(
         )));
     }
     let v = crate::desc::articulated(crate::desc::as_ref(&vehicle))?;
-    let seed_list: Vec<u64> = (0..seeds).map(|i| seed.wrapping_add(i)).collect();
+    let seed_list = afsv_design::fan_out::seed_range(seed, seeds);
     let out = py.detach(|| assess(&v, speed_kmh, seed, &seed_list, false, &|_| {}));
     let mut json = afsv_design::report::evaluate::to_json(&out.map_err(value_err)?);
     afsv_records::json::annotate_nulls(&mut json);

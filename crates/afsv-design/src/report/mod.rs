@@ -2,17 +2,24 @@
 //! prints and the Python package returns, each a pure function of a library result (no
 //! terminal, no files: the CLI decides where a report goes).
 //!
+//! - [`afs`]: the Chapter 4 optimisation of `afsv optimize afs` ([`crate::AfsOptimum`]);
 //! - [`evaluate`]: the assessment of `afsv evaluate` ([`crate::evaluate::Assessment`]);
 //! - [`design_3d`]: the D1-D3 design measures of the 3-D vehicle
 //!   ([`crate::design_3d::DesignMeasures`]);
 //! - [`layouts`]: the table of `afsv study layouts` ([`crate::layouts::LayoutStudy`]);
+//! - [`hps_optimum`]: the Chapter 6 optimisation of `afsv optimize hps`
+//!   ([`crate::HpsOptimum`]);
+//! - [`layout_optimum`]: `afsv optimize layout` ([`crate::LayoutOptimum`]);
 //! - [`speed_sweep`]: the D4 sweep of `afsv study speed-sweep` ([`crate::SpeedSweep`]);
 //! - [`hps_sensitivity`]: Table 6.4 of `afsv study hps-sensitivity`
 //!   ([`crate::HpsSensitivity`]).
 
+pub mod afs;
 pub mod design_3d;
 pub mod evaluate;
+pub mod hps_optimum;
 pub mod hps_sensitivity;
+pub mod layout_optimum;
 pub mod layouts;
 pub mod speed_sweep;
 

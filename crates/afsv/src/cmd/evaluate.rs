@@ -54,7 +54,7 @@ pub fn run(args: Args) -> CmdResult {
         .into());
     }
     let v = super::described::articulated(args.vehicle.as_deref())?;
-    let seeds: Vec<u64> = (0..args.seeds).map(|i| args.seed.wrapping_add(i)).collect();
+    let seeds = afsv_design::fan_out::seed_range(args.seed, args.seeds);
     let runs = afsv_design::design_3d::assess_runs(v.front_strut.is_some(), seeds.len());
     let progress = afsv::progress::Progress::new("afsv evaluate", "vehicle runs", Some(runs));
     let a = assess(

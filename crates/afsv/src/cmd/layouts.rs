@@ -82,9 +82,7 @@ pub fn run(a: LayoutArgs) -> CmdResult {
         load: a.load,
         ride_speed_kmh: a.speed_kmh,
         sweep_speeds_kmh: speeds,
-        seeds: (0..a.seeds as u64)
-            .map(|i| a.seed.wrapping_add(i))
-            .collect(),
+        seeds: afsv_design::fan_out::seed_range(a.seed, a.seeds as u64),
         seat: seat_of(&v, a.seat.as_deref())?,
     };
     let runs = layout_runs(list.len(), &options);

@@ -191,9 +191,7 @@ fn speed_sweep(a: SweepArgs) -> CmdResult {
     if let Some(path) = &a.plot {
         guard.output("--plot", path, OutputKind::Svg)?;
     }
-    let seeds: Vec<u64> = (0..a.seeds as u64)
-        .map(|i| a.seed.wrapping_add(i))
-        .collect();
+    let seeds: Vec<u64> = afsv_design::fan_out::seed_range(a.seed, a.seeds as u64);
     let runs = afsv_design::hps_speed_sweep::speed_sweep_runs(speeds.len(), seeds.len());
     let progress = afsv::progress::Progress::new("afsv study speed-sweep", "runs", Some(runs));
     let s = hps_speed_sweep(&p, &speeds, &seeds, &|d| progress.step(d))?;
@@ -279,9 +277,7 @@ fn hps(a: HpsArgs) -> CmdResult {
         guard.output("--plot", p, OutputKind::Svg)?;
     }
     let p = super::described::with_front_strut(a.vehicle.as_deref(), "study hps-sensitivity")?;
-    let seeds: Vec<u64> = (0..a.seeds as u64)
-        .map(|i| a.seed.wrapping_add(i))
-        .collect();
+    let seeds: Vec<u64> = afsv_design::fan_out::seed_range(a.seed, a.seeds as u64);
     let scope = StudyScope {
         roll: !a.no_roll,
         yaw: !a.no_yaw,
