@@ -10,6 +10,8 @@
 //! - [`hps_optimum`]: the Chapter 6 optimisation of `afsv optimize hps`
 //!   ([`crate::HpsOptimum`]);
 //! - [`layout_optimum`]: `afsv optimize layout` ([`crate::LayoutOptimum`]);
+//! - [`roll`]: `afsv roll` on the rigid truck of Chapter 2 (crate `roll-truck`);
+//! - [`table`]: aligned text tables of records and plainly read numbers;
 //! - [`speed_sweep`]: the D4 sweep of `afsv study speed-sweep` ([`crate::SpeedSweep`]);
 //! - [`hps_sensitivity`]: Table 6.4 of `afsv study hps-sensitivity`
 //!   ([`crate::HpsSensitivity`]).
@@ -21,7 +23,9 @@ pub mod hps_optimum;
 pub mod hps_sensitivity;
 pub mod layout_optimum;
 pub mod layouts;
+pub mod roll;
 pub mod speed_sweep;
+pub mod table;
 
 /// `v` scaled by `scale` with `digits` decimals, or `n/a` when it cannot be computed.
 pub fn num(v: f64, scale: f64, digits: usize) -> String {
