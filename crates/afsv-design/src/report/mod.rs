@@ -11,6 +11,7 @@
 //!   ([`crate::HpsOptimum`]);
 //! - [`layout_optimum`]: `afsv optimize layout` ([`crate::LayoutOptimum`]);
 //! - [`roll`]: `afsv roll` on the rigid truck of Chapter 2 (crate `roll-truck`);
+//! - [`terrain`]: `afsv terrain` (crate `terrain-psd`), the spectral analysis of a profile;
 //! - [`table`]: aligned text tables of records and plainly read numbers;
 //! - [`speed_sweep`]: the D4 sweep of `afsv study speed-sweep` ([`crate::SpeedSweep`]);
 //! - [`hps_sensitivity`]: Table 6.4 of `afsv study hps-sensitivity`
@@ -26,6 +27,7 @@ pub mod layouts;
 pub mod roll;
 pub mod speed_sweep;
 pub mod table;
+pub mod terrain;
 
 /// `v` scaled by `scale` with `digits` decimals, or `n/a` when it cannot be computed.
 pub fn num(v: f64, scale: f64, digits: usize) -> String {
