@@ -7,6 +7,7 @@
 //! - [`design_3d`]: the D1-D3 design measures of the 3-D vehicle
 //!   ([`crate::design_3d::DesignMeasures`]);
 //! - [`layouts`]: the table of `afsv study layouts` ([`crate::layouts::LayoutStudy`]);
+//! - [`hps_identify`]: the strut fit of `afsv hps identify`, judged before it is reported;
 //! - [`hps_optimum`]: the Chapter 6 optimisation of `afsv optimize hps`
 //!   ([`crate::HpsOptimum`]);
 //! - [`layout_optimum`]: `afsv optimize layout` ([`crate::LayoutOptimum`]);
@@ -20,6 +21,7 @@
 pub mod afs;
 pub mod design_3d;
 pub mod evaluate;
+pub mod hps_identify;
 pub mod hps_optimum;
 pub mod hps_sensitivity;
 pub mod layout_optimum;
