@@ -13,6 +13,7 @@
 //! - [`layout_optimum`]: `afsv optimize layout` ([`crate::LayoutOptimum`]);
 //! - [`roll`]: `afsv roll` on the rigid truck of Chapter 2 (crate `roll-truck`);
 //! - [`terrain`]: `afsv terrain` (crate `terrain-psd`), the spectral analysis of a profile;
+//! - [`vehicle`]: `afsv vehicle ride|roll|yaw` (D1-D3 of the 3-D vehicle over seeds);
 //! - [`table`]: aligned text tables of records and plainly read numbers;
 //! - [`speed_sweep`]: the D4 sweep of `afsv study speed-sweep` ([`crate::SpeedSweep`]);
 //! - [`hps_sensitivity`]: Table 6.4 of `afsv study hps-sensitivity`
@@ -30,6 +31,7 @@ pub mod roll;
 pub mod speed_sweep;
 pub mod table;
 pub mod terrain;
+pub mod vehicle;
 
 /// `v` scaled by `scale` with `digits` decimals, or `n/a` when it cannot be computed.
 pub fn num(v: f64, scale: f64, digits: usize) -> String {
