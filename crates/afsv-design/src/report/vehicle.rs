@@ -5,10 +5,12 @@
 //! vehicle's interconnection, and prints.
 
 use super::design_3d::yaw_fit_caveat;
+use crate::design_3d::{hgcz_8h_band, ConfigMeasures};
 use perf_measures::iso2631::{health_guidance_zone, HgczRelation, HgczZone};
 use serde_json::{json, Value};
 use vehicle_3d::cab_ride::SeatRideMeasures;
 use vehicle_3d::interconnect::Link;
+use vehicle_3d::scenarios::{PathChangeMeasures, PathChangeSpec};
 use vehicle_3d::scenarios::{
     RideMeasures, RideSpec, RollMeasures, RollSpec, Spread, TerrainSpec, YawMeasures, YawSpec,
     RUN_IN_M,
@@ -416,6 +418,197 @@ pub fn yaw_report(
         v["fit_caveat"] = json!(caveat);
     }
     Ok((v, text))
+}
+
+/// The report of `afsv vehicle measures`: D1-D3 of one configuration (`p` with the front
+/// axle `axle`, the D1 ride at `load`) over `seeds` from [`crate::design_3d::measure`], with
+/// the 8 h caution-zone verdict of the ride (`paper_form`: the printed Eq 3.13 yaw
+/// inertias). Returns the JSON and the text.
+pub fn measures_report(
+    p: &VehicleParams,
+    axle: FrontAxle,
+    load: Load,
+    paper_form: bool,
+    seeds: &[u64],
+    c: &ConfigMeasures,
+) -> Result<(Value, String), String> {
+    let ride = c
+        .ride_of(load)
+        .ok_or_else(|| format!("the {load} ride is missing"))?;
+    let band = hgcz_8h_band()?;
+    let no_strut = "rigid front axle (--hps off): no strut";
+    let mut v = json!({
+        "measures": "design measures D1-D3 (section 6.4)",
+        "front_axle": axle,
+        "rear_axle": rear_axle(p),
+        "yaw_inertia_form": p.yaw_inertia_form,
+        "ride_load": load,
+        "seeds": seeds,
+        "terrain": "class E, m_c 0.3 (D1, D2); smooth ground (D3)",
+        "d1_ride": {
+            "load": load,
+            "speed_kmh": 20.0,
+            "a_wz_m_s2": ride.a_wz_m_s2,
+            "strut_travel_p2p_m": ride.strut_travel_m,
+            "hgcz_8h": ride.hgcz_8h,
+            "hgcz_8h_m_s2": band,
+        },
+        "d2_roll": { "load": Load::Loaded, "speed_kmh": 50.0, "sp_drt_m_s2": c.sp_drt_m_s2 },
+        "d3_yaw": {
+            "load": Load::Loaded,
+            "speed_kmh": 50.0,
+            "omega_z_hz": c.yaw.omega_z_hz,
+            "damping_ratio": c.yaw.damping_ratio,
+            "damped_frequency_hz": c.yaw.damped_frequency_hz,
+            "peak_articulation_deg": c.yaw.peak_articulation_deg,
+            "damping_ratio_std": c.yaw.damping_ratio_std,
+            "fit_residual_to_noise": c.yaw.fit_residual_to_noise,
+        },
+    });
+    if let Some(caveat) = c.yaw.fit_caveat() {
+        v["d3_yaw"]["fit_caveat"] = json!(caveat);
+    }
+    if ride.strut_travel_m.is_none() {
+        v["d1_ride"]["strut_travel_p2p_m_reason"] = json!(no_strut);
+    }
+    let pm = |s: &vehicle_3d::scenarios::Spread, d: usize| {
+        if s.n > 1 {
+            format!("{:.d$} ± {:.d$}", s.mean, s.sd)
+        } else {
+            format!("{:.d$}", s.mean)
+        }
+    };
+    let row = |label: &str, value: String, unit: &str| format!("{label:<36} {value:>16} {unit}\n");
+    let mut text = format!(
+        "design measures: {}, ride {}, {} terrain seed(s){}\n",
+        axle_name(axle, p),
+        load,
+        seeds.len(),
+        if seeds.len() > 1 { ", mean ± SD" } else { "" }
+    );
+    text += &row(
+        "a_wz (D1, 20 km/h, class E)",
+        pm(&ride.a_wz_m_s2, 3),
+        "m/s²",
+    );
+    text += &row(
+        "  8 h HGCZ verdict",
+        measures_zone_text(ride.hgcz_8h).into(),
+        &format!("({:.2}-{:.2} m/s²)", band.0, band.1),
+    );
+    text += &row(
+        "strut travel d_s (Eq 6.19)",
+        ride.strut_travel_m
+            .as_ref()
+            .map_or("n/a".into(), |t| pm(t, 3)),
+        "m",
+    );
+    text += &row(
+        "SP-DRT (D2, 50 km/h, loaded)",
+        pm(&c.sp_drt_m_s2, 2),
+        "m/s²",
+    );
+    text += &row(
+        "omega_z (D3, 50 km/h, loaded)",
+        format!("{:.2}", c.yaw.omega_z_hz),
+        "Hz",
+    );
+    text += &row(
+        "yaw damping ratio zeta",
+        format!("{:.3}", c.yaw.damping_ratio),
+        "-",
+    );
+    if paper_form {
+        text += "(--paper-form: yaw inertias of the printed Eq 3.13, m L² counted twice; not for design)\n";
+    }
+    if let Some(caveat) = c.yaw.fit_caveat() {
+        text += &format!("note on omega_z and zeta: {caveat}\n");
+    }
+    Ok((v, text))
+}
+
+/// The zone of the 8 h caution zone in words (`afsv vehicle measures`).
+fn measures_zone_text(z: HgczZone) -> &'static str {
+    match z {
+        HgczZone::Below => "below the zone",
+        HgczZone::Within => "within the zone (caution)",
+        HgczZone::Above => "above the zone (health risk likely)",
+    }
+}
+
+/// The report of `afsv vehicle path-change` (V3, section 6.3): the run of `p` as `spec` on
+/// the terrain seed `seed` with its measures `m`, afsv-v1 signs. Returns the JSON and the
+/// text.
+pub fn path_change_report(
+    p: &VehicleParams,
+    spec: &PathChangeSpec,
+    seed: u64,
+    m: &PathChangeMeasures,
+) -> (Value, String) {
+    let v = json!({
+        "scenario": "path change (V3, section 6.3, Fig 3.6(b))",
+        "load": spec.load,
+        "front_axle": spec.front_axle,
+        "rear_axle": rear_axle(p),
+        "speed_kmh": spec.speed_kmh,
+        "course": {
+            "offset_m": spec.offset_m,
+            "gate_m": spec.gate_m,
+            "approach_m": spec.approach_m,
+        },
+        "duration_s": spec.t_end_s,
+        "terrain": terrain_json(&spec.terrain, &[seed]),
+        "sign_convention": "afsv-v1: positive in a right-hand turn; offset positive to the right",
+        "measures": m,
+    });
+    let ground = match &spec.terrain {
+        None => "smooth ground".to_string(),
+        Some(t) => format!("class {}, m_c {}, seed {}", t.class, t.m_c, seed),
+    };
+    let mut text = format!(
+        "path change V3: {}, {}, {} km/h, {} m offset over an {} m gate, {ground}\n",
+        spec.load,
+        axle_name(spec.front_axle, p),
+        spec.speed_kmh,
+        spec.offset_m,
+        spec.gate_m
+    );
+    let row = |label: &str, value: String, unit: &str| format!("{label:<36} {value:>16} {unit}\n");
+    text += &row(
+        "peak articulation",
+        format!("{:.2}", m.peak_articulation_deg),
+        "deg",
+    );
+    text += &row(
+        "left-strut displacement min / max",
+        format!(
+            "{:.3} / {:.3}",
+            m.strut_left_range_m.0, m.strut_left_range_m.1
+        ),
+        "m",
+    );
+    text += &row(
+        "peak front-unit yaw rate",
+        format!("{:.2}", m.peak_yaw_rate_deg_s),
+        "deg/s",
+    );
+    text += &row(
+        "peak front-unit lateral acceleration",
+        format!("{:.3}", m.peak_lateral_accel_m_s2),
+        "m/s²",
+    );
+    text += &row(
+        "largest deviation from the course",
+        format!("{:.3}", m.max_deviation_m),
+        "m",
+    );
+    text += &row(
+        "final lateral position",
+        format!("{:.3}", m.final_offset_m),
+        "m",
+    );
+    text += "signs: positive in a right-hand turn (afsv-v1)\n";
+    (v, text)
 }
 
 #[cfg(test)]
