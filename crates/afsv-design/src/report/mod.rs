@@ -14,6 +14,7 @@
 //! - [`roll`]: `afsv roll` on the rigid truck of Chapter 2 (crate `roll-truck`);
 //! - [`terrain`]: `afsv terrain` (crate `terrain-psd`), the spectral analysis of a profile;
 //! - [`vehicle`]: `afsv vehicle ride|roll|yaw` (D1-D3 of the 3-D vehicle over seeds);
+//! - [`strut_shift`]: `afsv hps thermal`, the struts over a working shift;
 //! - [`table`]: aligned text tables of records and plainly read numbers;
 //! - [`speed_sweep`]: the D4 sweep of `afsv study speed-sweep` ([`crate::SpeedSweep`]);
 //! - [`hps_sensitivity`]: Table 6.4 of `afsv study hps-sensitivity`
@@ -29,9 +30,21 @@ pub mod layout_optimum;
 pub mod layouts;
 pub mod roll;
 pub mod speed_sweep;
+pub mod strut_shift;
 pub mod table;
 pub mod terrain;
 pub mod vehicle;
+
+/// `v` for a message: plain for ordinary magnitudes, in exponent form for huge or tiny
+/// ones (so 1e308 does not print 309 digits).
+pub fn show(v: f64) -> String {
+    let a = v.abs();
+    if a != 0.0 && a.is_finite() && !(1e-4..1e7).contains(&a) {
+        format!("{v:e}")
+    } else {
+        format!("{v}")
+    }
+}
 
 /// `v` scaled by `scale` with `digits` decimals, or `n/a` when it cannot be computed.
 pub fn num(v: f64, scale: f64, digits: usize) -> String {
