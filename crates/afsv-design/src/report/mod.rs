@@ -13,6 +13,7 @@
 //! - [`layout_optimum`]: `afsv optimize layout` ([`crate::LayoutOptimum`]);
 //! - [`roll`]: `afsv roll` on the rigid truck of Chapter 2 (crate `roll-truck`);
 //! - [`terrain`]: `afsv terrain` (crate `terrain-psd`), the spectral analysis of a profile;
+//! - [`tire`]: the rows of `afsv tire sweep` and `afsv tire envelope` (crate `tire-fiala`);
 //! - [`vehicle`]: `afsv vehicle ride|roll|yaw` (D1-D3 of the 3-D vehicle over seeds);
 //! - [`strut_shift`]: `afsv hps thermal`, the struts over a working shift;
 //! - [`table`]: aligned text tables of records and plainly read numbers;
@@ -33,6 +34,7 @@ pub mod speed_sweep;
 pub mod strut_shift;
 pub mod table;
 pub mod terrain;
+pub mod tire;
 pub mod vehicle;
 
 /// `v` for a message: plain for ordinary magnitudes, in exponent form for huge or tiny
