@@ -37,6 +37,8 @@
 //!   body temperatures, ride height and stiffness, with and without a levelling valve);
 //! - [`report`]: the reports of those results (JSON objects and text tables), shared by
 //!   the CLI and the Python package;
+//! - [`yaw_leakage`]: `afsv yaw leakage`, the steady-turn decay and the gain-efficiency
+//!   correlation of the steering circuit's leakage (section 3.4.1, Fig 4.7);
 //! - [`fan_out`]: the one scheduler of the studies on the 3-D vehicle (per-case caches
 //!   built once, runs in parallel, results in order) and the plain seed fan-out.
 //!
@@ -70,6 +72,7 @@ pub mod objective;
 pub mod report;
 pub mod strut_shift;
 pub mod sweep;
+pub mod yaw_leakage;
 
 pub use afs_ask_tell::{AfsAsk, AfsAskTell, AfsBatch, AfsPhase};
 pub use afs_design::{a0_of_longest_initial_arm, AfsDesign, AfsDesignBounds, AfsVariable};
