@@ -3,6 +3,8 @@
 //! terminal, no files: the CLI decides where a report goes).
 //!
 //! - [`afs`]: the Chapter 4 optimisation of `afsv optimize afs` ([`crate::AfsOptimum`]);
+//! - [`check`]: the self-checks of `afsv check`;
+//! - [`params`]: the parameter sets and descriptions of `afsv params`;
 //! - [`evaluate`]: the assessment of `afsv evaluate` ([`crate::evaluate::Assessment`]);
 //! - [`design_3d`]: the D1-D3 design measures of the 3-D vehicle
 //!   ([`crate::design_3d::DesignMeasures`]);
@@ -22,6 +24,7 @@
 //!   ([`crate::HpsSensitivity`]).
 
 pub mod afs;
+pub mod check;
 pub mod design_3d;
 pub mod evaluate;
 pub mod hps_identify;
@@ -29,6 +32,7 @@ pub mod hps_optimum;
 pub mod hps_sensitivity;
 pub mod layout_optimum;
 pub mod layouts;
+pub mod params;
 pub mod roll;
 pub mod speed_sweep;
 pub mod strut_shift;
