@@ -75,6 +75,15 @@ pub fn open_fraction_f64(s: &str) -> Result<f64, String> {
     }
 }
 
+/// `--json` of the commands whose JSON a terminal asks for explicitly (a pipe always gets
+/// JSON).
+#[derive(clap::Args, Debug, Clone, Copy, Default)]
+pub struct JsonOutput {
+    /// Print JSON even on a terminal.
+    #[arg(long)]
+    pub json: bool,
+}
+
 /// `count` samples (e.g. duration/dt) must not exceed `max` (e.g. [`MAX_SAMPLES`]): the
 /// error names `option` and what was counted.
 pub fn check_samples(option: &str, what: &str, count: f64, max: f64) -> Result<(), String> {

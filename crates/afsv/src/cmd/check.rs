@@ -18,9 +18,8 @@ pub struct Args {
     /// Seed of the terrain synthesis that is checked.
     #[arg(long, default_value_t = 1)]
     pub seed: u64,
-    /// Print JSON even on a terminal.
-    #[arg(long)]
-    pub json: bool,
+    #[command(flatten)]
+    pub output: super::args::JsonOutput,
 }
 
 /// Run the self-checks and print them.
@@ -29,7 +28,7 @@ pub fn run(args: Args) -> CmdResult {
     let terrain = terrain_psd::default_terrain_summary(args.seed);
     let fidelity = terrain.fidelity();
     let pass = weighting.pass && fidelity.pass;
-    if args.json || !std::io::stdout().is_terminal() {
+    if args.output.json || !std::io::stdout().is_terminal() {
         afsv::output::print_json(&json!({
             "pass": pass,
             "iso2631_weighting": weighting,

@@ -53,9 +53,8 @@ pub struct LayoutArgs {
     /// Replace an existing plot file that afsv did not write.
     #[arg(long)]
     pub force: bool,
-    /// Print JSON even on a terminal.
-    #[arg(long)]
-    pub json: bool,
+    #[command(flatten)]
+    pub output: super::args::JsonOutput,
 }
 
 /// Run `afsv study layouts`.
@@ -92,7 +91,7 @@ pub fn run(a: LayoutArgs) -> CmdResult {
     if let Some(path) = &a.plot {
         plot(path, &s)?;
     }
-    super::study::emit(a.json, &s, || text(&s))
+    super::study::emit(a.output.json, &s, || text(&s))
 }
 
 /// The operator's a_wz of every row against the D4 speeds, with the zone's upper bound.

@@ -250,9 +250,8 @@ pub struct AfsArgs {
     /// Replace existing output files afsv did not write.
     #[arg(long)]
     pub force: bool,
-    /// Print JSON even on a terminal.
-    #[arg(long)]
-    pub json: bool,
+    #[command(flatten)]
+    pub output: super::args::JsonOutput,
 }
 
 /// Form of the yaw equations.
@@ -510,7 +509,7 @@ fn report(
 ) -> CmdResult {
     write_plots(a, &problems[0], &outcomes[0].optimum.ps_sqp.design)?;
     let current = problems[0].evaluate_design(&problems[0].current_design())?;
-    if a.json || !std::io::stdout().is_terminal() {
+    if a.output.json || !std::io::stdout().is_terminal() {
         afsv::output::print_json(&to_json(a.relaxed, a.rtol, objective, &current, outcomes))?;
     } else {
         print!("{}", to_text(a.relaxed, &current, outcomes));

@@ -140,9 +140,8 @@ pub enum Command {
     Measures {
         #[command(flatten)]
         case: CaseArgs,
-        /// Print JSON even on a terminal.
-        #[arg(long)]
-        json: bool,
+        #[command(flatten)]
+        output: super::args::JsonOutput,
     },
     /// A study over terrain seeds 1..=N (common to every variant): of section 2.4, `cg`
     /// (Figs 2.10-2.11), `roughness` (Fig 2.12), `waviness` (Fig 2.13), `band`
@@ -171,10 +170,10 @@ pub fn run(cmd: Command) -> CmdResult {
             output,
             force,
         } => simulate(&case, dt, &output, force),
-        Command::Measures { case, json } => {
+        Command::Measures { case, output } => {
             let p = truck(&case.truck, case.cg_height_m)?;
             let run = one_run(&case, &p, 0.01)?;
-            if json || !std::io::stdout().is_terminal() {
+            if output.json || !std::io::stdout().is_terminal() {
                 afsv::output::print_json(&measures_json(&run.measures, &case))?;
             } else {
                 print!("{}", measures_text(&run.measures));

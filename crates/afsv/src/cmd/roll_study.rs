@@ -52,9 +52,8 @@ pub struct StudyArgs {
     /// Replace an existing plot afsv did not write.
     #[arg(long)]
     pub force: bool,
-    /// Print JSON even on a terminal.
-    #[arg(long)]
-    pub json: bool,
+    #[command(flatten)]
+    pub output: super::args::JsonOutput,
 }
 
 /// Run `afsv roll study`.
@@ -90,7 +89,7 @@ pub(super) fn run_study_cmd(a: &StudyArgs) -> CmdResult {
             .get_or_init(|| afsv::progress::Progress::new("afsv roll study", "runs", Some(total)))
             .step("");
     };
-    let pretty = !a.json && std::io::stdout().is_terminal();
+    let pretty = !a.output.json && std::io::stdout().is_terminal();
     let study = match a.study {
         StudyName::Runs(s) => s,
         StudyName::Sensitivity => {

@@ -55,9 +55,8 @@ pub struct SweepArgs {
     /// Replace an existing plot file that afsv did not write.
     #[arg(long)]
     pub force: bool,
-    /// Print JSON even on a terminal.
-    #[arg(long)]
-    pub json: bool,
+    #[command(flatten)]
+    pub output: super::args::JsonOutput,
 }
 
 /// Options of `afsv study hps-sensitivity`.
@@ -87,9 +86,8 @@ pub struct HpsArgs {
     /// Replace an existing plot file that afsv did not write.
     #[arg(long)]
     pub force: bool,
-    /// Print JSON even on a terminal.
-    #[arg(long)]
-    pub json: bool,
+    #[command(flatten)]
+    pub output: super::args::JsonOutput,
 }
 
 /// Run a study.
@@ -199,7 +197,9 @@ fn speed_sweep(a: SweepArgs) -> CmdResult {
     if let Some(path) = &a.plot {
         sweep_plot(path, &s)?;
     }
-    emit(a.json, &s, || afsv_design::report::speed_sweep::text(&s))
+    emit(a.output.json, &s, || {
+        afsv_design::report::speed_sweep::text(&s)
+    })
 }
 
 /// JSON of `value` with `--json` or when piped, else `text()` on the terminal.
@@ -289,7 +289,7 @@ fn hps(a: HpsArgs) -> CmdResult {
     if let Some(path) = &a.plot {
         plot(path, &s)?;
     }
-    emit(a.json, &s, || {
+    emit(a.output.json, &s, || {
         afsv_design::report::hps_sensitivity::text(&s)
     })
 }

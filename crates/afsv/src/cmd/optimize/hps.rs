@@ -60,9 +60,8 @@ pub struct HpsArgs {
     pub vehicle: Option<std::path::PathBuf>,
     #[command(flatten)]
     pub ask_tell: AskTellArgs,
-    /// Print JSON even on a terminal.
-    #[arg(long)]
-    pub json: bool,
+    #[command(flatten)]
+    pub output: crate::cmd::args::JsonOutput,
 }
 
 /// GA progress: one step per generation.
@@ -156,7 +155,7 @@ fn report(a: &HpsArgs, base: &vehicle_3d::VehicleParams, r: &HpsOptimum) -> CmdR
     } else {
         None
     };
-    if a.json || !std::io::stdout().is_terminal() {
+    if a.output.json || !std::io::stdout().is_terminal() {
         let mut v = serde_json::to_value(r)?;
         if let Some(s) = &sweep {
             v["speed_sweep"] = serde_json::to_value(s)?;
@@ -216,7 +215,7 @@ fn ask_tell(a: &HpsArgs, desc: &HpsProblemDesc, path: &Path, stored: Option<Stri
             return report(a, &desc.params, &driver.finish(&state.run)?);
         }
         return super::print_asked(
-            a.json,
+            a.output.json,
             state.batch,
             &phase,
             points.len(),
@@ -237,5 +236,11 @@ fn ask_tell(a: &HpsArgs, desc: &HpsProblemDesc, path: &Path, stored: Option<Stri
     state.batch += 1;
     write_json(path, &state)?;
     let finished = driver.ask(&state.run)? == HpsAsk::Finished;
-    super::print_told(a.json, state.batch - 1, points.len(), "runs", finished)
+    super::print_told(
+        a.output.json,
+        state.batch - 1,
+        points.len(),
+        "runs",
+        finished,
+    )
 }

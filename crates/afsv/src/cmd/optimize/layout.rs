@@ -88,9 +88,8 @@ pub struct LayoutArgs {
     /// Replace existing output files afsv did not write.
     #[arg(long)]
     pub force: bool,
-    /// Print JSON even on a terminal.
-    #[arg(long)]
-    pub json: bool,
+    #[command(flatten)]
+    pub output: crate::cmd::args::JsonOutput,
 }
 
 /// The problem the options define.
@@ -199,7 +198,7 @@ pub fn run(a: &LayoutArgs) -> CmdResult {
 /// The report on stdout (JSON, or text on a terminal); [`NotEarned`] when the optimum is
 /// infeasible or a variable lies on a bound.
 fn report(a: &LayoutArgs, r: &LayoutOptimum) -> CmdResult {
-    if a.json || !std::io::stdout().is_terminal() {
+    if a.output.json || !std::io::stdout().is_terminal() {
         afsv::output::print_json(r)?;
     } else {
         print!("{}", text(r));
@@ -258,7 +257,7 @@ fn ask_tell(
             return report(a, &driver.finish(&state.run)?);
         }
         return super::print_asked(
-            a.json,
+            a.output.json,
             state.batch,
             &phase,
             points.len(),
@@ -279,5 +278,11 @@ fn ask_tell(
     state.batch += 1;
     write_json(path, &state)?;
     let finished = driver.ask(&state.run)? == LayoutAsk::Finished;
-    super::print_told(a.json, state.batch - 1, points.len(), "points", finished)
+    super::print_told(
+        a.output.json,
+        state.batch - 1,
+        points.len(),
+        "points",
+        finished,
+    )
 }
