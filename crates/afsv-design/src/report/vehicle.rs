@@ -8,6 +8,7 @@ use super::design_3d::yaw_fit_caveat;
 use crate::design_3d::{hgcz_8h_band, ConfigMeasures};
 use perf_measures::iso2631::{health_guidance_zone, HgczRelation, HgczZone};
 use serde_json::{json, Value};
+use terrain_psd::{welch_psd, WelchConfig};
 use vehicle_3d::cab_ride::SeatRideMeasures;
 use vehicle_3d::interconnect::Link;
 use vehicle_3d::scenarios::{PathChangeMeasures, PathChangeSpec};
@@ -15,7 +16,7 @@ use vehicle_3d::scenarios::{
     RideMeasures, RideSpec, RollMeasures, RollSpec, Spread, TerrainSpec, YawMeasures, YawSpec,
     RUN_IN_M,
 };
-use vehicle_3d::{FrontAxle, Load, VehicleParams, YawInertiaForm};
+use vehicle_3d::{FrontAxle, Load, RunRecord, VehicleParams, YawInertiaForm};
 
 /// Why a rigid front axle has no strut travel.
 pub const NO_STRUT: &str = "rigid front axle (--hps off): no strut";
@@ -609,6 +610,24 @@ pub fn path_change_report(
     );
     text += "signs: positive in a right-hand turn (afsv-v1)\n";
     (v, text)
+}
+
+/// The seed-mean Welch PSDs of the cab's vertical acceleration and the front unit's pitch
+/// acceleration over the ride window: frequencies and the two densities.
+pub type RidePsd = (Vec<f64>, Vec<f64>, Vec<f64>);
+
+/// The PSDs of one ride record from `t_start_s` on, with the Welch settings of
+/// `vehicle_3d::scenarios::psd_peak` (segments of up to 8 s, at least two, Hann, 50 %).
+pub fn ride_psd(rec: &RunRecord, t_start_s: f64) -> Result<RidePsd, String> {
+    let i0 = rec.t_s.partition_point(|&t| t < t_start_s);
+    let dt = rec.t_s[1] - rec.t_s[0];
+    let az = &rec.cab_accel_m_s2[2][i0..];
+    let pitch = &rec.front_angular_accel_rad_s2[1][i0..];
+    let seg = ((8.0 / dt) as usize).min(az.len() / 2).max(32);
+    let cfg = WelchConfig::new(seg);
+    let v = welch_psd(az, dt, &cfg).map_err(|e| format!("vertical PSD: {e}"))?;
+    let p = welch_psd(pitch, dt, &cfg).map_err(|e| format!("pitch PSD: {e}"))?;
+    Ok((v.freq, v.psd, p.psd))
 }
 
 #[cfg(test)]

@@ -20,6 +20,7 @@ use afsv_design::report::vehicle::{
     axle_name, link_note, per_seed, rear_axle, ride_report, roll_report, terrain_json, yaw_report,
     Ground, NO_STRUT,
 };
+use afsv_design::report::vehicle::{ride_psd, RidePsd};
 use hps_emulsion::StrutParams;
 use measures::measures_cmd;
 pub(crate) use options::PAPER_FORM_HELP;
@@ -28,7 +29,7 @@ use options::{
     MAX_DURATION_S,
 };
 use path_change::{offset_m, path_change_cmd, PathChangeFiles};
-use plots::{plot_ride, plot_roll, plot_yaw, ride_psd, RidePsd};
+use plots::{plot_ride, plot_roll, plot_yaw};
 use serde_json::{json, Value};
 use simulate::simulate_cmd;
 use std::io::IsTerminal;
