@@ -414,7 +414,7 @@ pub fn yaw_report(
     text += &spread_text("damped frequency", &damped, "Hz");
     text += &spread_text("damping ratio zeta", &zeta, "-");
     text += &spread_text("peak articulation", &peak, "deg");
-    if let Some(caveat) = yaw_fit_caveat(&measures) {
+    if let Some(caveat) = yaw_fit_caveat(measures) {
         text += &format!("note: {caveat}\n");
         v["fit_caveat"] = json!(caveat);
     }

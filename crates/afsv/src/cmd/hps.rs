@@ -410,7 +410,7 @@ fn identify_cmd(a: IdentifyArgs) -> CmdResult {
     let (report, problems) = identify_report(
         &res,
         &a.input.display().to_string(),
-        &strut.name(),
+        strut.name(),
         strut_source,
         a.accept_poor_fit,
     );
