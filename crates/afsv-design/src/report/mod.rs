@@ -18,6 +18,7 @@
 //! - [`tire`]: the rows of `afsv tire sweep` and `afsv tire envelope` (crate `tire-fiala`);
 //! - [`vehicle`]: `afsv vehicle ride|roll|yaw` (D1-D3 of the 3-D vehicle over seeds);
 //! - [`strut_shift`]: `afsv hps thermal`, the struts over a working shift;
+//! - [`weighting`]: an ISO 2631-1 weighting's response (`afsv measures weighting`);
 //! - [`table`]: aligned text tables of records and plainly read numbers;
 //! - [`speed_sweep`]: the D4 sweep of `afsv study speed-sweep` ([`crate::SpeedSweep`]);
 //! - [`hps_sensitivity`]: Table 6.4 of `afsv study hps-sensitivity`
@@ -40,6 +41,7 @@ pub mod table;
 pub mod terrain;
 pub mod tire;
 pub mod vehicle;
+pub mod weighting;
 
 /// `v` for a message: plain for ordinary magnitudes, in exponent form for huge or tiny
 /// ones (so 1e308 does not print 309 digits).
