@@ -36,7 +36,7 @@ fn select(v: &[f64], keep: &[usize]) -> Vec<f64> {
 /// the left track (and the right one, when there is one) sampled at `dx` (m), estimated with
 /// `cfg`, reported on the bins inside `band` (all without one); with a right track, the
 /// cross-slope over `track_width` (m) and, when the sidecar metadata `meta` records the
-/// terrain model, the errors against it ([`target_report`]). Returns the scalar results and
+/// terrain model, the errors against it (`target_report`). Returns the scalar results and
 /// the spectrum (one array per column).
 pub fn psd_analysis(
     input: &str,
