@@ -110,6 +110,24 @@ pub struct ResultsHeader {
     pub problems: Vec<ProblemDesc>,
 }
 
+impl ResultsHeader {
+    /// The header of the results of the shard `shard` (I, N) of the batch `header`, with
+    /// `points` result lines, written by `afsv batch evaluate`.
+    pub fn of_shard(header: &BatchHeader, shard: (usize, usize), points: usize) -> Self {
+        Self {
+            format: RESULTS_FORMAT.into(),
+            version: FORMAT_VERSION,
+            written_by: "afsv batch evaluate".into(),
+            sign_convention: afsv_records::SIGN_CONVENTION.into(),
+            batch: header.batch,
+            state_sha256: header.state_sha256.clone(),
+            shard: format!("{}/{}", shard.0, shard.1),
+            points,
+            problems: header.problems.clone(),
+        }
+    }
+}
+
 /// One evaluated point of a results file.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]

@@ -32,6 +32,10 @@ pub struct Assessment {
     pub strut: Option<StrutSummary>,
 }
 
+/// Lowest forward speed of the yaw-plane measures (km/h): below it the tire slip angles of
+/// Eq 3.13 lose meaning.
+pub const MIN_SPEED_KMH: f64 = 1.0;
+
 /// The yaw-plane measures of `v` at `load` and `speed` (m/s) in the equation `form`.
 pub fn yaw_of(
     v: &ArticulatedVehicle,

@@ -41,6 +41,12 @@ where
         .collect())
 }
 
+/// The `n` terrain seeds from `first` on (`first`, `first + 1`, ..., wrapping at the end of
+/// `u64`): the common seeds of every study.
+pub fn seed_range(first: u64, n: u64) -> Vec<u64> {
+    (0..n).map(|i| first.wrapping_add(i)).collect()
+}
+
 /// Runs `one(index, seed)` for every seed in parallel, calling `done(seed)` after each;
 /// the results in the seeds' order, or the first failure in that order.
 pub fn over_seeds<T: Send, E: Send>(
@@ -65,6 +71,13 @@ pub fn over_seeds<T: Send, E: Send>(
 mod tests {
     use super::*;
     use std::sync::atomic::{AtomicUsize, Ordering};
+
+    #[test]
+    fn seed_ranges_count_up_from_the_first_and_wrap() {
+        assert_eq!(seed_range(3, 3), [3, 4, 5]);
+        assert_eq!(seed_range(u64::MAX, 2), [u64::MAX, 0]);
+        assert!(seed_range(1, 0).is_empty());
+    }
 
     #[test]
     fn caches_are_built_once_per_case_and_results_keep_the_jobs_order() {

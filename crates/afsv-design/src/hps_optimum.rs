@@ -208,10 +208,30 @@ pub(crate) fn assessment(
 }
 
 /// The terrain seeds of the re-evaluation: `terrain_seed` and the ones after it.
-pub(crate) fn reevaluation_seeds(settings: &HpsGaSettings) -> Vec<u64> {
-    (0..settings.reevaluation_seeds as u64)
-        .map(|i| settings.terrain_seed.wrapping_add(i))
-        .collect()
+pub fn reevaluation_seeds(settings: &HpsGaSettings) -> Vec<u64> {
+    crate::fan_out::seed_range(settings.terrain_seed, settings.reevaluation_seeds as u64)
+}
+
+/// The D4 speeds of section 6.5.2 (km/h): the speed sweep of an optimum (Fig 6.16).
+pub const D4_SPEEDS_KMH: [f64; 5] = [10.0, 15.0, 20.0, 25.0, 30.0];
+
+/// The vehicle `base` with the optimum's strut: the Eq 6.19 areas of `r` applied to its
+/// strut.
+pub fn optimum_vehicle(base: &VehicleParams, r: &HpsOptimum) -> Result<VehicleParams, DesignError> {
+    let mut best = base.clone();
+    best.hps = r.design.apply(&base.hps)?;
+    Ok(best)
+}
+
+/// The D4 speed sweep (Fig 6.16) of the optimum vehicle `best` over [`D4_SPEEDS_KMH`] on the
+/// re-evaluation seeds of `settings`; `progress` after each run.
+pub fn optimum_speed_sweep(
+    best: &VehicleParams,
+    settings: &HpsGaSettings,
+    progress: &(dyn Fn(&str) + Sync),
+) -> Result<crate::SpeedSweep, DesignError> {
+    let seeds = reevaluation_seeds(settings);
+    crate::hps_speed_sweep(best, &D4_SPEEDS_KMH, &seeds, progress)
 }
 
 /// Refuses settings the optimisation cannot run: re-evaluation seeds outside 1 to 100.

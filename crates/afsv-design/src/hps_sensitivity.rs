@@ -131,6 +131,14 @@ impl Run {
     }
 }
 
+/// The vehicle runs of [`hps_sensitivity`] with `changes` changes per variable over `seeds`
+/// seeds in `scope` (the progress total): per design (the nominal and three variables times
+/// the changes) two rides and a roll run per seed, and one yaw run.
+pub fn sensitivity_runs(changes: usize, seeds: usize, scope: StudyScope) -> usize {
+    let designs = 1 + 3 * changes;
+    designs * (seeds * (2 + usize::from(scope.roll)) + usize::from(scope.yaw))
+}
+
 /// The study of the module docs for `base` (its `hps` is the nominal design) over `seeds`
 /// and `changes`; `progress` is called once per finished run. NaN marks a measure outside
 /// `scope`.

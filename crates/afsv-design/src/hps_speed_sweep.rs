@@ -84,6 +84,12 @@ pub fn first_upward_crossing(speeds: &[f64], values: &[f64], limit: f64) -> Opti
         .map(|(s, v)| s[0] + (limit - v[0]) / (v[1] - v[0]) * (s[1] - s[0]))
 }
 
+/// The vehicle runs of [`hps_speed_sweep`] over `speeds` speeds and `seeds` seeds (the
+/// progress total): both loads at every speed and seed.
+pub fn speed_sweep_runs(speeds: usize, seeds: usize) -> usize {
+    2 * speeds * seeds
+}
+
 /// The sweep of the module docs for the suspended vehicle `p` (its `hps` is the design) over
 /// `speeds_kmh` (strictly ascending, [`MIN_SPEED_KMH`] to [`MAX_SPEED_KMH`]) and `seeds`; `progress` is called once
 /// per finished run.

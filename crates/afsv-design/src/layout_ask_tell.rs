@@ -313,6 +313,24 @@ pub struct LayoutResultsHeader {
     pub problem: LayoutProblemDesc,
 }
 
+impl LayoutResultsHeader {
+    /// The header of the results of the shard `shard` (I, N) of the batch `header`, with
+    /// `points` result lines, written by `afsv batch evaluate`.
+    pub fn of_shard(header: &LayoutBatchHeader, shard: (usize, usize), points: usize) -> Self {
+        Self {
+            format: LAYOUT_RESULTS_FORMAT.into(),
+            version: LAYOUT_FORMAT_VERSION,
+            written_by: "afsv batch evaluate".into(),
+            sign_convention: afsv_records::SIGN_CONVENTION.into(),
+            batch: header.batch,
+            state_sha256: header.state_sha256.clone(),
+            shard: format!("{}/{}", shard.0, shard.1),
+            points,
+            problem: header.problem.clone(),
+        }
+    }
+}
+
 /// One measured design of a layout results file.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]

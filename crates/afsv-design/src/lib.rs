@@ -28,11 +28,17 @@
 //!   strut, terrain) of one vehicle description;
 //! - [`layouts`]: `afsv study layouts`, several suspension layouts of one vehicle through
 //!   D1-D4 on common seeds, on the frame and at the seat;
+//! - [`layout_names`]: the layouts of those commands by name (`--layouts`, `--seat`),
+//!   built from one vehicle description;
 //! - [`layout_optimum`]: `afsv optimize layout`, a GA over registry-named parameters of
 //!   one layout with constraints on its measures; [`layout_ask_tell`]: the same run split
 //!   into ask and tell, with its batch, results and state files;
 //! - [`strut_shift`]: `afsv hps thermal`, a vehicle's struts over a working shift (gas and
 //!   body temperatures, ride height and stiffness, with and without a levelling valve);
+//! - [`report`]: the reports of those results (JSON objects and text tables), shared by
+//!   the CLI and the Python package;
+//! - [`yaw_leakage`]: `afsv yaw leakage`, the steady-turn decay and the gain-efficiency
+//!   correlation of the steering circuit's leakage (section 3.4.1, Fig 4.7);
 //! - [`fan_out`]: the one scheduler of the studies on the 3-D vehicle (per-case caches
 //!   built once, runs in parallel, results in order) and the plain seed fan-out.
 //!
@@ -58,12 +64,15 @@ pub mod hps_optimum;
 pub mod hps_sensitivity;
 pub mod hps_speed_sweep;
 pub mod layout_ask_tell;
+pub mod layout_names;
 pub mod layout_optimum;
 pub mod layouts;
 pub mod measures;
 pub mod objective;
+pub mod report;
 pub mod strut_shift;
 pub mod sweep;
+pub mod yaw_leakage;
 
 pub use afs_ask_tell::{AfsAsk, AfsAskTell, AfsBatch, AfsPhase};
 pub use afs_design::{a0_of_longest_initial_arm, AfsDesign, AfsDesignBounds, AfsVariable};

@@ -6,12 +6,8 @@
 //! sweep of the optimum (Fig 6.16). The whole run stays in Rust with the GIL released.
 
 use crate::{py_err, to_json, value_err};
-use afsv_design::hps_optimum::{optimise_hps, HpsGaSettings};
-use afsv_design::hps_speed_sweep::hps_speed_sweep;
+use afsv_design::hps_optimum::{optimise_hps, optimum_speed_sweep, optimum_vehicle, HpsGaSettings};
 use pyo3::prelude::*;
-
-/// The D4 speeds of section 6.5.2 (km/h), as `afsv optimize hps --speed-sweep`.
-const D4_SPEEDS_KMH: [f64; 5] = [10.0, 15.0, 20.0, 25.0, 30.0];
 
 /// `v` as a count within `lo..=hi`, else the CLI's message with the Python name.
 fn count(name: &str, v: i128, lo: usize, hi: usize, even: bool) -> PyResult<usize> {
@@ -84,13 +80,9 @@ fn optimize_hps(
     let (optimum, strut, sweep) = py
         .detach(|| {
             let r = optimise_hps(&base, &settings, &optimize::Silent)?;
-            let mut best = base.clone();
-            best.hps = r.design.apply(&base.hps)?;
+            let best = optimum_vehicle(&base, &r)?;
             let sweep = if speed_sweep {
-                let seeds: Vec<u64> = (0..settings.reevaluation_seeds as u64)
-                    .map(|i| settings.terrain_seed.wrapping_add(i))
-                    .collect();
-                Some(hps_speed_sweep(&best, &D4_SPEEDS_KMH, &seeds, &|_| {})?)
+                Some(optimum_speed_sweep(&best, &settings, &|_| {})?)
             } else {
                 None
             };

@@ -132,14 +132,8 @@ def test_ltr_and_roll_measures() -> None:
 def test_evaluate_matches_the_cli(cli) -> None:
     out = cli("evaluate", "--json", "--seeds", "1", "--seed", "3", "--speed-kmh", "40")
     got = afsv.evaluate(seeds=1, seed=3, speed_kmh=40)
-    assert got["vehicle"] == out["vehicle"]
-    assert got["design_measures_3d"] == without_reasons(out["design_measures_3d"])
-    for key in ("loaded", "unloaded", "stable"):
-        assert got["yaw_plane"][key] == out["yaw_plane"][key], key
-    assert got["front_axle_strut"] == out["front_axle_strut"]
-    for key, value in out["terrain"].items():
-        if key != "note":
-            assert got["terrain"][key] == value, key
+    # one report (afsv_design::report::evaluate), so the whole JSON but the run's provenance
+    assert got == {k: v for k, v in out.items() if k != "provenance"}
 
 
 def test_chapter4_optimisation_matches_the_cli(cli) -> None:

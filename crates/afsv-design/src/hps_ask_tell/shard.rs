@@ -80,6 +80,24 @@ pub struct HpsResultsHeader {
     pub problem: HpsProblemDesc,
 }
 
+impl HpsResultsHeader {
+    /// The header of the results of the shard `shard` (I, N) of the batch `header`, with
+    /// `points` result lines, written by `afsv batch evaluate`.
+    pub fn of_shard(header: &HpsBatchHeader, shard: (usize, usize), points: usize) -> Self {
+        Self {
+            format: super::HPS_RESULTS_FORMAT.into(),
+            version: HPS_FORMAT_VERSION,
+            written_by: "afsv batch evaluate".into(),
+            sign_convention: afsv_records::SIGN_CONVENTION.into(),
+            batch: header.batch,
+            state_sha256: header.state_sha256.clone(),
+            shard: format!("{}/{}", shard.0, shard.1),
+            points,
+            problem: header.problem.clone(),
+        }
+    }
+}
+
 /// One run's result.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]

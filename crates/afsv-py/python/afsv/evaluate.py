@@ -18,7 +18,8 @@ def evaluate(
     speed_kmh: float = 50.0,
 ) -> Dict[str, Any]:
     """Assess an articulated vehicle (the built-in prototype by default) as
-    ``afsv evaluate --json`` does, with the same numbers:
+    ``afsv evaluate --json`` does: the same JSON (the library's report), less the run's
+    ``provenance``:
 
     * ``design_measures_3d``: the Chapter 6 design measures of the 3-D vehicle with a rigid
       front axle and with its front-axle strut, each over the terrain seeds

@@ -4,6 +4,8 @@
 //!
 //! Use as `#[arg(long, allow_hyphen_values = true, value_parser = args::positive_f64)]`.
 
+pub use afsv_design::report::show;
+
 /// Largest number of samples (time or space steps, rows) a command allocates for one record
 /// of a few columns (strut records, terrain profiles: about 1 GB of memory at the limit).
 pub const MAX_SAMPLES: f64 = 1e7;
@@ -73,15 +75,13 @@ pub fn open_fraction_f64(s: &str) -> Result<f64, String> {
     }
 }
 
-/// `v` for a message: plain for ordinary magnitudes, in exponent form for huge or tiny
-/// ones (so 1e308 does not print 309 digits).
-pub fn show(v: f64) -> String {
-    let a = v.abs();
-    if a != 0.0 && a.is_finite() && !(1e-4..1e7).contains(&a) {
-        format!("{v:e}")
-    } else {
-        format!("{v}")
-    }
+/// `--json` of the commands whose JSON a terminal asks for explicitly (a pipe always gets
+/// JSON).
+#[derive(clap::Args, Debug, Clone, Copy, Default)]
+pub struct JsonOutput {
+    /// Print JSON even on a terminal.
+    #[arg(long)]
+    pub json: bool,
 }
 
 /// `count` samples (e.g. duration/dt) must not exceed `max` (e.g. [`MAX_SAMPLES`]): the

@@ -6,16 +6,12 @@
 
 use super::CmdResult;
 use afsv::output::{OutputGuard, OutputKind};
-use afsv_design::afs_batch::{
-    evaluate_shard, in_shard, read_batch, ResultsHeader, FORMAT_VERSION, MAX_SHARDS, RESULTS_FORMAT,
-};
+use afsv_design::afs_batch::{evaluate_shard, in_shard, read_batch, ResultsHeader, MAX_SHARDS};
 use afsv_design::hps_ask_tell::{
-    evaluate_hps_shard, read_hps_batch, HpsResultsHeader, HPS_BATCH_FORMAT, HPS_FORMAT_VERSION,
-    HPS_RESULTS_FORMAT,
+    evaluate_hps_shard, read_hps_batch, HpsResultsHeader, HPS_BATCH_FORMAT,
 };
 use afsv_design::layout_ask_tell::{
     evaluate_layout_shard, read_layout_batch, LayoutResultsHeader, LAYOUT_BATCH_FORMAT,
-    LAYOUT_FORMAT_VERSION, LAYOUT_RESULTS_FORMAT,
 };
 use afsv_records::jsonl::write_jsonl;
 use std::io::{BufRead, IsTerminal, Read};
@@ -91,25 +87,14 @@ fn evaluate(a: &EvaluateArgs) -> CmdResult {
         Some(HPS_BATCH_FORMAT) => return evaluate_hps(a, t),
         _ => {}
     }
-    let (shard_i, shard_n) = a.shard;
     let (header, points) = read_batch("BATCH", &a.batch)?;
     let mine = (0..points.len()).filter(|&i| in_shard(i, a.shard)).count();
     let progress = afsv::progress::Progress::new("afsv batch evaluate", "points", Some(mine));
     let label = format!("BATCH {}", a.batch.display());
     let lines = evaluate_shard(&label, &header, &points, a.shard, &|| progress.step(""))?;
     progress.finish();
-    let shard_text = format!("{shard_i}/{shard_n}");
-    let out = ResultsHeader {
-        format: RESULTS_FORMAT.into(),
-        version: FORMAT_VERSION,
-        written_by: "afsv batch evaluate".into(),
-        sign_convention: afsv_records::SIGN_CONVENTION.into(),
-        batch: header.batch,
-        state_sha256: header.state_sha256.clone(),
-        shard: shard_text.clone(),
-        points: lines.len(),
-        problems: header.problems.clone(),
-    };
+    let shard_text = format!("{}/{}", a.shard.0, a.shard.1);
+    let out = ResultsHeader::of_shard(&header, a.shard, lines.len());
     write_jsonl(&a.output, &out, &lines)?;
     summary(a, header.batch, &shard_text, t, &|s| {
         lines.iter().filter(|l| l.status == s).count()
@@ -125,17 +110,7 @@ fn evaluate_layout(a: &EvaluateArgs, t: std::time::Instant) -> CmdResult {
     let lines = evaluate_layout_shard(&label, &header, &points, a.shard, &|| progress.step(""))?;
     progress.finish();
     let shard_text = format!("{}/{}", a.shard.0, a.shard.1);
-    let out = LayoutResultsHeader {
-        format: LAYOUT_RESULTS_FORMAT.into(),
-        version: LAYOUT_FORMAT_VERSION,
-        written_by: "afsv batch evaluate".into(),
-        sign_convention: afsv_records::SIGN_CONVENTION.into(),
-        batch: header.batch,
-        state_sha256: header.state_sha256.clone(),
-        shard: shard_text.clone(),
-        points: lines.len(),
-        problem: header.problem.clone(),
-    };
+    let out = LayoutResultsHeader::of_shard(&header, a.shard, lines.len());
     write_jsonl(&a.output, &out, &lines)?;
     summary(a, header.batch, &shard_text, t, &|s| {
         lines.iter().filter(|l| l.status == s).count()
@@ -150,17 +125,7 @@ fn evaluate_hps(a: &EvaluateArgs, t: std::time::Instant) -> CmdResult {
     let lines = evaluate_hps_shard(&header, &points, a.shard, &|| progress.step(""));
     progress.finish();
     let shard_text = format!("{}/{}", a.shard.0, a.shard.1);
-    let out = HpsResultsHeader {
-        format: HPS_RESULTS_FORMAT.into(),
-        version: HPS_FORMAT_VERSION,
-        written_by: "afsv batch evaluate".into(),
-        sign_convention: afsv_records::SIGN_CONVENTION.into(),
-        batch: header.batch,
-        state_sha256: header.state_sha256.clone(),
-        shard: shard_text.clone(),
-        points: lines.len(),
-        problem: header.problem.clone(),
-    };
+    let out = HpsResultsHeader::of_shard(&header, a.shard, lines.len());
     write_jsonl(&a.output, &out, &lines)?;
     summary(a, header.batch, &shard_text, t, &|s| {
         lines.iter().filter(|l| l.status == s).count()

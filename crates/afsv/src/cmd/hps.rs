@@ -6,13 +6,13 @@
 use super::{args, CmdResult};
 use afsv::output::{OutputGuard, OutputKind};
 use afsv::progress::Progress;
+use afsv_design::report::hps_identify::identify_report;
 use afsv_records::Record;
 use hps_emulsion::{
     characterize, identify, lab_programme, loop_metrics, simulate_displacement, Excitation,
     FitParam, HarmonicTest, HpsExtensions, IdentifyOptions, LabConfig, Measured, SimOptions,
     Solver, StrutParams, StrutRecord,
 };
-use serde_json::json;
 use std::path::{Path, PathBuf};
 
 /// A strut named on the command line: a built-in set (`front-axle`, `lab-1orifice`,
@@ -407,119 +407,19 @@ fn identify_cmd(a: IdentifyArgs) -> CmdResult {
         .map_err(|e| format!("{}: {e}", a.input.display()))?;
     progress.step(&format!("fitted in {} iterations", res.iterations));
     progress.finish();
-    let mut at_bound = Vec::new();
-    let fitted: Vec<serde_json::Value> = res
-        .fitted
-        .iter()
-        .map(|f| {
-            let (lo, hi) = f.param.bounds();
-            let tol = 1e-3 * (hi - lo);
-            let bound = if f.value <= lo + tol {
-                Some("lower")
-            } else if f.value >= hi - tol {
-                Some("upper")
-            } else {
-                None
-            };
-            if bound.is_some() {
-                at_bound.push(f.param.name());
-            }
-            let mut v = serde_json::json!({
-                "param": f.param.name(), "initial": f.initial,
-                "value": afsv::output::finite_or_null(f.value),
-                "bounds": [lo, hi],
-                "at_bound": bound.unwrap_or("no"),
-                "std_error": afsv::output::finite_or_null(f.std_error),
-            });
-            if !f.std_error.is_finite() {
-                v["std_error_reason"] = "not determined (singular Jacobian at the solution)".into();
-            }
-            v
-        })
-        .collect();
-    let channels = |c: &hps_emulsion::ChannelNrmse| {
-        [
-            ("force", c.force),
-            ("p_piston", c.p_piston),
-            ("p_rod", c.p_rod),
-        ]
-    };
-    let worse_channels: Vec<&str> = channels(&res.nrmse_initial)
-        .into_iter()
-        .zip(channels(&res.nrmse))
-        .filter_map(|((name, before), (_, after))| match (before, after) {
-            // Worse by more than 1 % of the start and 1e-4 (0.01 %) absolute: below that
-            // the difference is round-off of an already exact fit, not a worse one.
-            (Some(b), Some(a)) if a.is_nan() || a > b * 1.01 + 1e-4 => Some(name),
-            _ => None,
-        })
-        .collect();
-    let worse = !worse_channels.is_empty();
-    let mut problems = Vec::new();
-    if !at_bound.is_empty() {
-        problems.push(format!(
-            "ended on a bound of {} (the optimum may lie outside the searched range, or the strut/start is wrong)",
-            at_bound.join(", ")
-        ));
-    }
-    if worse {
-        problems.push(format!(
-            "the fit ended worse than its start in {}",
-            worse_channels.join(", ")
-        ));
-    }
-    if !res.converged {
-        problems.push(format!(
-            "no convergence test met in {} iterations",
-            res.iterations
-        ));
-    }
-    problems.extend(res.checks.problems());
-    problems.extend(res.velocity.problem());
-    let converged = res.converged && problems.is_empty();
-    afsv::output::print_json(&serde_json::json!({
-        "input": a.input.display().to_string(),
-        "strut": strut.name(),
-        "strut_source": strut_source,
-        "fitted": fitted,
-        "nrmse_initial": afsv::output::explain_nulls(json!(res.nrmse_initial), NO_CHANNEL),
-        "nrmse": afsv::output::explain_nulls(json!(res.nrmse), NO_CHANNEL),
-        "nrmse_definition": "RMS(simulated - measured) / (max - min of the measured channel), over the compared samples",
-        "iterations": res.iterations,
-        "converged": converged,
-        "optimizer_converged": res.converged,
-        "improved": !worse,
-        "residual_checks": residual_checks_json(&res.checks),
-        "velocity": res.velocity,
-        "problems": problems,
-        "accepted_despite_problems": a.accept_poor_fit && !problems.is_empty(),
-    }))?;
+    let (report, problems) = identify_report(
+        &res,
+        &a.input.display().to_string(),
+        strut.name(),
+        strut_source,
+        a.accept_poor_fit,
+    );
+    afsv::output::print_json(&report)?;
     if problems.is_empty() || a.accept_poor_fit {
         Ok(())
     } else {
         Err(afsv::output::NotEarned(format!("hps identify: {}", problems.join("; "))).into())
     }
-}
-
-/// Reason of a `null` NRMSE.
-const NO_CHANNEL: &str = "channel not in the record";
-
-/// The residual of each compared channel against the record's own noise.
-fn residual_checks_json(c: &hps_emulsion::fit_checks::ChannelChecks) -> serde_json::Value {
-    let one = |c: &Option<hps_emulsion::fit_checks::ChannelCheck>| {
-        c.map(|c| {
-            json!({
-                "residual_rms": c.residual_rms,
-                "noise_rms": c.noise_rms,
-                "residual_to_noise": afsv::output::finite_or_null(c.residual_to_noise()),
-                "mean_offset": c.mean_offset,
-            })
-        })
-    };
-    afsv::output::explain_nulls(
-        json!({ "force_n": one(&c.force), "p_piston_pa": one(&c.p_piston), "p_rod_pa": one(&c.p_rod) }),
-        NO_CHANNEL,
-    )
 }
 
 /// The strut of `hps identify`: --strut, else the sidecar's `"strut"`; neither is an error.

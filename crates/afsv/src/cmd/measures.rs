@@ -172,42 +172,11 @@ fn weighting(a: WeightingArgs) -> CmdResult {
         Some(fs) => Some(IirWeighting::new(a.weighting, fs)?),
         None => None,
     };
-    let mut rows = Vec::with_capacity(a.freqs.len());
-    for &f in &a.freqs {
-        if !(f.is_finite() && f > 0.0) {
-            return Err(format!("--freqs: {f} is not a positive frequency").into());
-        }
-        let h = a.weighting.response(f);
-        let mut row = json!({
-            "f_hz": f,
-            "magnitude": h.norm(),
-            "magnitude_db": afsv::output::finite_or_null(20.0 * h.norm().log10()),
-            "phase_deg": h.arg().to_degrees(),
-        });
-        if let Some(iir) = &iir {
-            if f < 0.5 * iir.fs_hz() {
-                row["iir_magnitude"] = afsv::output::finite_or_null(iir.magnitude(f));
-            } else {
-                row["iir_magnitude"] = serde_json::Value::Null;
-                row["iir_magnitude_reason"] =
-                    json!("at or above the IIR filter's Nyquist frequency --fs/2");
-            }
-        }
-        rows.push(row);
+    if let Some(f) = a.freqs.iter().find(|f| !(f.is_finite() && **f > 0.0)) {
+        return Err(format!("--freqs: {f} is not a positive frequency").into());
     }
-    let params = afsv::output::explain_nulls(
-        json!(a.weighting.params()),
-        "this weighting has no such stage",
-    );
-    let mut out = json!({
-        "weighting": a.weighting,
-        "params": params,
-        "iir_fs_hz": a.fs,
-        "rows": rows,
-    });
-    if a.fs.is_none() {
-        out["iir_fs_hz_reason"] = json!("no --fs given");
-    }
+    let out =
+        afsv_design::report::weighting::weighting_report(a.weighting, &a.freqs, iir.as_ref(), a.fs);
     afsv::output::print_json(&out)?;
     Ok(())
 }

@@ -5,7 +5,6 @@ pub mod args;
 pub mod batch;
 pub mod check;
 pub mod described;
-pub mod design_measures;
 pub mod discover;
 pub mod evaluate;
 pub mod hps;

@@ -12,9 +12,7 @@ use afsv::output::{NotEarned, OutputGuard, OutputKind};
 use afsv_design::afs_batch::{
     chapter4_objective, Eq49Desc, ProblemDesc, VehicleDesc, AFS_KIND, MAX_SHARDS,
 };
-use afsv_design::{
-    optimise, AfsOptimisationSettings, AfsOptimum, AfsProblem, AfsRunState, Objective,
-};
+use afsv_design::{optimise, AfsOptimisationSettings, AfsProblem, AfsRunState, Objective};
 use afsv_records::lock::RunLock;
 use afsv_records::stored::{parse_stored, read_stored, same_settings, write_json};
 use serde::{Deserialize, Serialize};
@@ -27,8 +25,9 @@ mod hps;
 mod layout;
 mod report;
 
+use afsv_design::report::afs::{to_json, to_text, violations, AfsRun as RunOutcome};
 use ask_tell::AskTell;
-use report::{to_json, to_text, write_plots, Bar};
+use report::{write_plots, Bar};
 
 /// `afsv optimize` subcommands.
 #[derive(clap::Subcommand)]
@@ -251,9 +250,8 @@ pub struct AfsArgs {
     /// Replace existing output files afsv did not write.
     #[arg(long)]
     pub force: bool,
-    /// Print JSON even on a terminal.
-    #[arg(long)]
-    pub json: bool,
+    #[command(flatten)]
+    pub output: super::args::JsonOutput,
 }
 
 /// Form of the yaw equations.
@@ -296,14 +294,6 @@ struct Checkpoint {
     /// The settings of the command line the checkpoint belongs to.
     settings: Value,
     runs: Vec<AfsRunState>,
-}
-
-/// One configuration's result.
-struct RunOutcome {
-    label: String,
-    min_arm_m: Option<f64>,
-    optimum: AfsOptimum,
-    seconds: f64,
 }
 
 fn form_name(f: FormArg) -> &'static str {
@@ -519,15 +509,15 @@ fn report(
 ) -> CmdResult {
     write_plots(a, &problems[0], &outcomes[0].optimum.ps_sqp.design)?;
     let current = problems[0].evaluate_design(&problems[0].current_design())?;
-    if a.json || !std::io::stdout().is_terminal() {
-        afsv::output::print_json(&to_json(a, objective, &current, outcomes))?;
+    if a.output.json || !std::io::stdout().is_terminal() {
+        afsv::output::print_json(&to_json(a.relaxed, a.rtol, objective, &current, outcomes))?;
     } else {
-        print!("{}", to_text(a, &current, outcomes));
+        print!("{}", to_text(a.relaxed, &current, outcomes));
     }
     let infeasible: Vec<String> = outcomes
         .iter()
         .filter(|r| !r.optimum.feasible())
-        .map(|r| format!("run {}: {}", r.label, report::violations(&r.optimum)))
+        .map(|r| format!("run {}: {}", r.label, violations(&r.optimum)))
         .collect();
     if infeasible.is_empty() {
         Ok(())

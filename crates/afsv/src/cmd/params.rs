@@ -4,6 +4,8 @@
 
 use super::hps::StrutChoice;
 use super::CmdResult;
+pub(super) use afsv_design::report::params::vehicle_3d_in_ranges;
+use afsv_design::report::params::{check_vehicle, list_text, named, specs};
 use afsv_dynamics::YawPlaneParams;
 use hps_emulsion::StrutParams;
 use roll_truck::TruckParams;
@@ -190,54 +192,6 @@ pub fn run(cmd: Command) -> CmdResult {
     Ok(())
 }
 
-/// A parameter list (or the built-in vehicles) as aligned columns for a terminal.
-fn list_text(list: &Value) -> String {
-    let cell = |v: &Value| match v {
-        Value::String(s) => s.clone(),
-        Value::Null => "-".into(),
-        other => other.to_string(),
-    };
-    let (cols, rows): (&[&str], &Vec<Value>) = match (list.get("parameters"), list.get("builtin")) {
-        (Some(Value::Array(r)), _) => {
-            (&["name", "unit", "nominal", "lower", "upper", "typical"], r)
-        }
-        (_, Some(Value::Array(r))) => (&["name", "description"], r),
-        _ => return format!("{list}\n"),
-    };
-    let table: Vec<Vec<String>> = rows
-        .iter()
-        .map(|r| cols.iter().map(|c| cell(&r[*c])).collect())
-        .collect();
-    let widths: Vec<usize> = cols
-        .iter()
-        .enumerate()
-        .map(|(j, c)| {
-            table
-                .iter()
-                .map(|r| r[j].chars().count())
-                .fold(c.len(), usize::max)
-        })
-        .collect();
-    let line = |items: Vec<&str>| {
-        let parts: Vec<String> = items
-            .iter()
-            .zip(&widths)
-            .map(|(s, w)| format!("{s:<w$}"))
-            .collect();
-        parts.join("  ").trim_end().to_string() + "\n"
-    };
-    let mut out = format!(
-        "{} ({} entries; --json for JSON)\n",
-        cell(&list["set"]),
-        rows.len()
-    );
-    out += &line(cols.to_vec());
-    for r in &table {
-        out += &line(r.iter().map(String::as_str).collect());
-    }
-    out
-}
-
 /// `afsv params dump vehicle`: the built-in description `name` as commented TOML, to
 /// standard output or (through a temporary file) to `output`.
 fn dump_vehicle(name: &str, output: Option<&Path>) -> CmdResult {
@@ -260,60 +214,11 @@ fn dump_vehicle(name: &str, output: Option<&Path>) -> CmdResult {
     Ok(())
 }
 
-/// `afsv params check vehicle FILE`: the description read and resolved; what it builds.
-fn check_vehicle(file: &Path) -> Result<Value, String> {
-    let d = afsv_vehicle::load_file(file).map_err(|e| e.to_string())?;
-    Ok(match d.vehicle {
-        afsv_vehicle::Vehicle::Articulated(a) => {
-            let mut v = json!({
-            "name": a.name,
-            "kind": "articulated",
-            "front_suspension": a.front_suspension,
-            "front_strut": a.front_strut_source,
-            "rear_suspension": a.rear_suspension,
-            "rear_strut": a.rear_strut_source,
-            "yaw_plane": if a.yaw_plane_derived { "derived from the units and tire" } else { "as given" },
-            "parameters": named(&a.params),
-            });
-            if let Some(l) = &a.link {
-                v["link"] = json!(l);
-            }
-            v
-        }
-        afsv_vehicle::Vehicle::RigidTruck(t) => json!({
-            "name": t.name,
-            "kind": "rigid-truck",
-            "parameters": named(&t.params),
-        }),
-    })
-}
-
 /// A parameter file as `T`, refusing unknown fields; errors name the file, line and column.
 pub(super) fn read<T: serde::de::DeserializeOwned>(path: &Path) -> Result<T, String> {
     let text = afsv_records::provenance::read_input(path)
         .map_err(|e| format!("{}: {e}", path.display()))?;
     serde_json::from_str(&text).map_err(|e| format!("{}: {e}", path.display()))
-}
-
-/// Every value of a 3-D vehicle set within its registry range: the vehicle's own, its tire's
-/// (`tire.`), its steering's (`steering.`) and its strut's (`hps.`).
-pub(super) fn vehicle_3d_in_ranges(p: &VehicleParams) -> Result<(), String> {
-    let sets: [(&str, &dyn Named); 4] = [
-        ("", p),
-        ("tire.", &p.tire),
-        ("steering.", &p.steering),
-        ("hps.", &p.hps),
-    ];
-    for (prefix, set) in sets {
-        vehicle_components::within_ranges(set).map_err(|e| {
-            if prefix.is_empty() {
-                e
-            } else {
-                format!("under `{prefix}`: {e}")
-            }
-        })?;
-    }
-    Ok(())
 }
 
 /// The parameter file `path` read as `T` and validated by the set's own check; its named
@@ -323,35 +228,4 @@ fn checked<T: serde::de::DeserializeOwned + Named>(path: &Path) -> Result<Value,
     p.check().map_err(|e| format!("{}: {e}", path.display()))?;
     vehicle_components::within_ranges(&p).map_err(|e| format!("{}: {e}", path.display()))?;
     Ok(named(&p))
-}
-
-/// Every named parameter of `p` with its value.
-fn named(p: &dyn Named) -> Value {
-    let map: serde_json::Map<String, Value> = p
-        .specs()
-        .iter()
-        .enumerate()
-        .map(|(i, s)| (s.name.to_string(), afsv::output::finite_or_null(p.value(i))))
-        .collect();
-    Value::Object(map)
-}
-
-/// The specification of every named parameter of `p`, with its value in `p`.
-fn specs(p: &dyn Named) -> Value {
-    let rows: Vec<Value> = p
-        .specs()
-        .iter()
-        .enumerate()
-        .map(|(i, s)| {
-            json!({
-                "name": s.name,
-                "unit": s.unit,
-                "lower": s.lower,
-                "upper": s.upper,
-                "typical": s.typical,
-                "nominal": afsv::output::finite_or_null(p.value(i)),
-            })
-        })
-        .collect();
-    json!({ "set": p.set_name(), "parameters": rows })
 }

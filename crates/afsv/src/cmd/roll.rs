@@ -7,6 +7,7 @@
 
 use super::{args, CmdResult};
 use afsv::output::{OutputGuard, OutputKind};
+use afsv_design::report::roll::measures_text;
 use afsv_records::Record;
 use perf_measures::roll::SustainedPeriodParams;
 use roll_truck::measures::RollMeasures;
@@ -139,9 +140,8 @@ pub enum Command {
     Measures {
         #[command(flatten)]
         case: CaseArgs,
-        /// Print JSON even on a terminal.
-        #[arg(long)]
-        json: bool,
+        #[command(flatten)]
+        output: super::args::JsonOutput,
     },
     /// A study over terrain seeds 1..=N (common to every variant): of section 2.4, `cg`
     /// (Figs 2.10-2.11), `roughness` (Fig 2.12), `waviness` (Fig 2.13), `band`
@@ -170,10 +170,10 @@ pub fn run(cmd: Command) -> CmdResult {
             output,
             force,
         } => simulate(&case, dt, &output, force),
-        Command::Measures { case, json } => {
+        Command::Measures { case, output } => {
             let p = truck(&case.truck, case.cg_height_m)?;
             let run = one_run(&case, &p, 0.01)?;
-            if json || !std::io::stdout().is_terminal() {
+            if output.json || !std::io::stdout().is_terminal() {
                 afsv::output::print_json(&measures_json(&run.measures, &case))?;
             } else {
                 print!("{}", measures_text(&run.measures));
@@ -355,43 +355,4 @@ fn measures_json(m: &RollMeasures, case: &CaseArgs) -> serde_json::Value {
         v,
         "not found in this run (no LTR of 1, no sustained period, or no rollover)",
     )
-}
-
-fn show(v: Option<f64>, unit: &str) -> String {
-    v.map_or("n/a".into(), |x| format!("{x:.3} {unit}"))
-}
-
-fn measures_text(m: &RollMeasures) -> String {
-    let range = m
-        .sustained_range_g
-        .map_or("n/a".into(), |(a, b)| format!("{a:.3}-{b:.3} g"));
-    format!(
-        "DRT (first LTR = 1)      {}\nSP-DRT                   {}\nsustained period ΔT      {} ({} to {})\na_y range in ΔT          {range}\na_y at A4                {}\na_y at rollover B'       {}\npeak a_y                 {:.3} g (whole vehicle, tire forces; sprung cg {}, sprung-fixed sensor {})\npeak a_y before stops    {:.3} g (first stop contact {})\nall wheels off ground    {}\nabsolute rollover        {}\nSSF                      {:.3}\n",
-        show(m.drt_g, "g"),
-        show(m.sp_drt_g, "g"),
-        show(m.sustained_period_s, "s"),
-        show(m.sustained_start_s, "s"),
-        show(m.sustained_end_s, "s"),
-        show(m.ay_at_a4_g, "g"),
-        show(m.ay_at_rollover_g, "g"),
-        m.peak_ay_g,
-        show(m.peak_sprung_ay_g, "g"),
-        show(m.peak_sensor_ay_g, "g"),
-        m.peak_ay_before_stop_g,
-        show(m.first_bump_stop_s, "s"),
-        airborne_text(m),
-        show(m.rollover_s, "s"),
-        m.ssf,
-    )
-}
-
-/// When the truck jumped: the LTR (Eq 2.11) reads 0 on those samples.
-fn airborne_text(m: &RollMeasures) -> String {
-    match m.first_airborne_s {
-        None => "never".into(),
-        Some(t) => format!(
-            "{:.3} s in all, first at {t:.3} s (LTR reads 0 there: no load to transfer)",
-            m.airborne_time_s
-        ),
-    }
 }

@@ -4,8 +4,9 @@
 
 use super::{truck, CmdResult, RuleArgs, TruckArgs};
 use afsv::output::{OutputGuard, OutputKind};
-use roll_truck::sensitivity::{run_sensitivity, SensitivityCell};
-use roll_truck::studies::{run_study, Stat, Study, StudyResult, MAX_SEEDS};
+use afsv_design::report::roll::{sensitivity_text, study_text};
+use roll_truck::sensitivity::run_sensitivity;
+use roll_truck::studies::{run_study, Study, StudyResult, MAX_SEEDS};
 use roll_truck::{BuiltinTruck, RunOptions, TruckParams};
 use std::io::IsTerminal;
 use std::path::{Path, PathBuf};
@@ -51,9 +52,8 @@ pub struct StudyArgs {
     /// Replace an existing plot afsv did not write.
     #[arg(long)]
     pub force: bool,
-    /// Print JSON even on a terminal.
-    #[arg(long)]
-    pub json: bool,
+    #[command(flatten)]
+    pub output: super::args::JsonOutput,
 }
 
 /// Run `afsv roll study`.
@@ -89,7 +89,7 @@ pub(super) fn run_study_cmd(a: &StudyArgs) -> CmdResult {
             .get_or_init(|| afsv::progress::Progress::new("afsv roll study", "runs", Some(total)))
             .step("");
     };
-    let pretty = !a.json && std::io::stdout().is_terminal();
+    let pretty = !a.output.json && std::io::stdout().is_terminal();
     let study = match a.study {
         StudyName::Runs(s) => s,
         StudyName::Sensitivity => {
@@ -144,79 +144,6 @@ pub(super) fn run_study_cmd(a: &StudyArgs) -> CmdResult {
         afsv::output::print_json(&v)?;
     }
     Ok(())
-}
-
-fn pm(s: &Stat, digits: usize) -> String {
-    if s.n == 0 {
-        return "n/a".into();
-    }
-    format!("{:.d$} ± {:.d$}", s.mean, s.sd, d = digits)
-}
-
-fn study_text(r: &StudyResult) -> String {
-    let mut s = format!(
-        "{:<22} {:>10} {:>10} {:>16} {:>14} {:>16} {:>7}\n",
-        "group", "x", "smooth g", "SP-DRT g", "ΔT s", "peak a_y g", "SSF"
-    );
-    for p in &r.points {
-        s += &format!(
-            "{:<22} {:>10} {:>10} {:>16} {:>14} {:>16} {:>7.3}\n",
-            p.group,
-            afsv::table::number(p.x),
-            p.smooth_drt_g.map_or("n/a".into(), |v| format!("{v:.3}")),
-            pm(&p.sp_drt_g, 3),
-            pm(&p.sustained_period_s, 2),
-            pm(&p.peak_ay_g, 3),
-            p.ssf,
-        );
-    }
-    if r.study == Study::Trucks {
-        s += &format!(
-            "\n{:<22} {:>16} {:>16} {:>16} {:>16}\n",
-            "peak a_y (class E)",
-            "whole vehicle g",
-            "sprung cg g",
-            "sprung sensor g",
-            "before stops g"
-        );
-        for p in &r.points {
-            s += &format!(
-                "{:<22} {:>16} {:>16} {:>16} {:>16}\n",
-                p.group,
-                pm(&p.peak_ay_g, 3),
-                pm(&p.peak_sprung_ay_g, 3),
-                pm(&p.peak_sensor_ay_g, 3),
-                pm(&p.peak_ay_before_stop_g, 3),
-            );
-        }
-        s += "\n";
-    }
-    for f in r.findings() {
-        s += &format!("{:<44} {:>9.4}  {}\n", f.name, f.value, f.meaning);
-    }
-    s
-}
-
-fn sensitivity_text(cells: &[SensitivityCell], seeds: usize) -> String {
-    let mut s = format!(
-        "ΔT over {seeds} seeds (class A and E, w = 2, 0.02-5 cycles/m, m_c = 0.3)\n{:<12} {:>9} {:<8} {:>7} {:>7} {:>15} {:>15} {:>9} {:>15}\n",
-        "truck", "ramp °/s", "rule", "LTR ≥", "dip s", "ΔT class A s", "ΔT class E s", "E / A", "SP-DRT E g"
-    );
-    for c in cells {
-        s += &format!(
-            "{:<12} {:>9.1} {:<8} {:>7.2} {:>7.2} {:>15} {:>15} {:>9.2} {:>15}\n",
-            c.truck,
-            c.ramp_rate_deg_s,
-            c.rule.name(),
-            c.threshold,
-            c.max_dip_s,
-            pm(&c.class_a_s, 2),
-            pm(&c.class_e_s, 2),
-            c.ratio_e_over_a,
-            pm(&c.sp_drt_e_g, 3),
-        );
-    }
-    s
 }
 
 fn plot_study(path: &Path, r: &StudyResult) -> CmdResult {

@@ -8,9 +8,7 @@
 
 use super::CmdResult;
 use afsv::output::{OutputGuard, OutputKind};
-use afsv_design::hps_sensitivity::{
-    HpsSensitivity, HpsVariable, SensitivityRow, StudyScope, MAX_SEEDS,
-};
+use afsv_design::hps_sensitivity::{HpsSensitivity, HpsVariable, StudyScope, MAX_SEEDS};
 use std::io::IsTerminal;
 use std::path::PathBuf;
 
@@ -57,9 +55,8 @@ pub struct SweepArgs {
     /// Replace an existing plot file that afsv did not write.
     #[arg(long)]
     pub force: bool,
-    /// Print JSON even on a terminal.
-    #[arg(long)]
-    pub json: bool,
+    #[command(flatten)]
+    pub output: super::args::JsonOutput,
 }
 
 /// Options of `afsv study hps-sensitivity`.
@@ -89,9 +86,8 @@ pub struct HpsArgs {
     /// Replace an existing plot file that afsv did not write.
     #[arg(long)]
     pub force: bool,
-    /// Print JSON even on a terminal.
-    #[arg(long)]
-    pub json: bool,
+    #[command(flatten)]
+    pub output: super::args::JsonOutput,
 }
 
 /// Run a study.
@@ -193,17 +189,17 @@ fn speed_sweep(a: SweepArgs) -> CmdResult {
     if let Some(path) = &a.plot {
         guard.output("--plot", path, OutputKind::Svg)?;
     }
-    let seeds: Vec<u64> = (0..a.seeds as u64)
-        .map(|i| a.seed.wrapping_add(i))
-        .collect();
-    let runs = 2 * speeds.len() * seeds.len();
+    let seeds: Vec<u64> = afsv_design::fan_out::seed_range(a.seed, a.seeds as u64);
+    let runs = afsv_design::hps_speed_sweep::speed_sweep_runs(speeds.len(), seeds.len());
     let progress = afsv::progress::Progress::new("afsv study speed-sweep", "runs", Some(runs));
     let s = hps_speed_sweep(&p, &speeds, &seeds, &|d| progress.step(d))?;
     progress.finish();
     if let Some(path) = &a.plot {
         sweep_plot(path, &s)?;
     }
-    emit(a.json, &s, || sweep_text(&s))
+    emit(a.output.json, &s, || {
+        afsv_design::report::speed_sweep::text(&s)
+    })
 }
 
 /// JSON of `value` with `--json` or when piped, else `text()` on the terminal.
@@ -235,43 +231,6 @@ pub(super) fn line_svg(
     afsv_plot::line_plot(path, title, x_label, y_label, &series)?;
     afsv::output::mark_svg(path)?;
     Ok(())
-}
-
-/// The sweep as text: one row per speed and load, then the crossing speeds.
-pub(crate) fn sweep_text(s: &afsv_design::SpeedSweep) -> String {
-    let mut out = format!(
-        "HPS speed sweep (D4), class E, m_c 0.3, 100 m per run, mean ± SD over {} terrain seeds\n\n  {:<9} {:>6} {:>16} {:>16} {:>16}\n",
-        s.seeds.len(),
-        "load",
-        "km/h",
-        "a_wz (m/s²)",
-        "a_z RMS (m/s²)",
-        "d_s (m)"
-    );
-    let pm = |x: &vehicle_3d::scenarios::Spread, d: usize| format!("{:.d$} ± {:.d$}", x.mean, x.sd);
-    for p in &s.points {
-        out += &format!(
-            "  {:<9} {:>6.1} {:>16} {:>16} {:>16}\n",
-            p.load.to_string(),
-            p.speed_kmh,
-            pm(&p.a_wz_m_s2, 3),
-            pm(&p.a_z_rms_m_s2, 3),
-            pm(&p.d_s_m, 4)
-        );
-    }
-    out += &format!(
-        "\n8 h health guidance caution zone, upper bound {:.3} m/s² (ISO 2631-1 Eq B.1)\n",
-        s.hgcz_upper_m_s2
-    );
-    for c in &s.crossings {
-        let what = match (c.speed_kmh, c.above_at_lowest) {
-            (Some(v), _) => format!("a_wz crosses it at {v:.1} km/h"),
-            (None, true) => "a_wz is above it at every swept speed".into(),
-            (None, false) => "a_wz stays below it over the sweep".into(),
-        };
-        out += &format!("  {:<9} {what}\n", c.load.to_string());
-    }
-    out
 }
 
 fn sweep_plot(path: &std::path::Path, s: &afsv_design::SpeedSweep) -> CmdResult {
@@ -318,85 +277,21 @@ fn hps(a: HpsArgs) -> CmdResult {
         guard.output("--plot", p, OutputKind::Svg)?;
     }
     let p = super::described::with_front_strut(a.vehicle.as_deref(), "study hps-sensitivity")?;
-    let seeds: Vec<u64> = (0..a.seeds as u64)
-        .map(|i| a.seed.wrapping_add(i))
-        .collect();
+    let seeds: Vec<u64> = afsv_design::fan_out::seed_range(a.seed, a.seeds as u64);
     let scope = StudyScope {
         roll: !a.no_roll,
         yaw: !a.no_yaw,
     };
-    let designs = 1 + 3 * changes.len();
-    let runs = designs * (seeds.len() * (2 + usize::from(scope.roll)) + usize::from(scope.yaw));
+    let runs = afsv_design::hps_sensitivity::sensitivity_runs(changes.len(), seeds.len(), scope);
     let progress = afsv::progress::Progress::new("afsv study hps-sensitivity", "runs", Some(runs));
     let s = afsv_design::hps_sensitivity(&p, &changes, &seeds, scope, &|d| progress.step(d))?;
     progress.finish();
     if let Some(path) = &a.plot {
         plot(path, &s)?;
     }
-    emit(a.json, &s, || text(&s))
-}
-
-/// A measure's mean with 3 decimals, or "n/a" when it was not run.
-fn cell(v: f64) -> String {
-    if v.is_finite() {
-        format!("{v:.3}")
-    } else {
-        "n/a".into()
-    }
-}
-
-/// Table 6.4 as text: one block per measure, rows = changes, columns = variables.
-fn text(s: &HpsSensitivity) -> String {
-    let mut changes: Vec<f64> = s.rows.iter().map(|r| r.change).collect();
-    changes.push(0.0);
-    changes.sort_by(f64::total_cmp);
-    changes.dedup();
-    let find = |v: HpsVariable, c: f64| -> Option<&SensitivityRow> {
-        s.rows.iter().find(|r| r.variable == v && r.change == c)
-    };
-    type Pick = fn(&afsv_design::hps_sensitivity::HpsMeasures) -> f64;
-    let blocks: [(&str, Pick); 4] = [
-        ("a_wz unloaded (m/s²)", |m| m.a_wz_unloaded_m_s2.mean),
-        ("a_wz loaded (m/s²)", |m| m.a_wz_loaded_m_s2.mean),
-        ("SP-DRT loaded (m/s²)", |m| m.sp_drt_m_s2.mean),
-        ("omega_z loaded (Hz)", |m| m.omega_z_hz),
-    ];
-    let mut out = format!(
-        "HPS sensitivity (Table 6.4), 3-D vehicle with the front-axle HPS, mean over {} terrain seeds\n",
-        s.seeds.len()
-    );
-    for (name, pick) in blocks {
-        out += &format!(
-            "\n{name}\n  {:>9} {:>9} {:>9} {:>9}\n",
-            "change", "A_hc", "A_v", "A_b"
-        );
-        for &c in &changes {
-            let col = |v| {
-                if c == 0.0 {
-                    cell(pick(&s.nominal))
-                } else {
-                    find(v, c).map_or("-".into(), |r| cell(pick(&r.measures)))
-                }
-            };
-            out += &format!(
-                "  {:>8.0}% {:>9} {:>9} {:>9}\n",
-                100.0 * c,
-                col(HpsVariable::PistonArea),
-                col(HpsVariable::CheckValveArea),
-                col(HpsVariable::BleedArea)
-            );
-        }
-    }
-    let failed: Vec<&SensitivityRow> = s.rows.iter().filter(|r| !r.failures.is_empty()).collect();
-    if !failed.is_empty() {
-        out += "\nfailed runs (their cells are n/a):\n";
-        for r in failed {
-            for f in &r.failures {
-                out += &format!("  {} {:+.0}%: {f}\n", r.variable.symbol(), 100.0 * r.change);
-            }
-        }
-    }
-    out
+    emit(a.output.json, &s, || {
+        afsv_design::report::hps_sensitivity::text(&s)
+    })
 }
 
 fn plot(path: &std::path::Path, s: &HpsSensitivity) -> CmdResult {

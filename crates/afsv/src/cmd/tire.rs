@@ -2,8 +2,9 @@
 
 use super::{args, CmdResult};
 use afsv::output::{OutputGuard, OutputKind};
+use afsv_design::report::tire::{envelope_rows, sweep_rows, SweepRow};
 use std::path::{Path, PathBuf};
-use tire_fiala::{Envelope, EnvelopeMethod, Fiala, HandlingModel, PolylineProfile, TireParams};
+use tire_fiala::{Envelope, EnvelopeMethod, Fiala, PolylineProfile, TireParams};
 
 /// Subcommands of `afsv tire`.
 #[derive(clap::Subcommand)]
@@ -200,17 +201,6 @@ fn load_params(args: &SweepArgs) -> Result<TireParams, Box<dyn std::error::Error
     Ok(p)
 }
 
-#[derive(serde::Serialize)]
-struct SweepRow {
-    fz_n: f64,
-    kappa: f64,
-    alpha_deg: f64,
-    fx_n: f64,
-    fy_n: f64,
-    mz_nm: f64,
-    my_nm: f64,
-}
-
 fn sweep(args: SweepArgs) -> CmdResult {
     let mut guard = OutputGuard::new(args.force);
     if let Some(p) = &args.params {
@@ -247,23 +237,7 @@ fn sweep(args: SweepArgs) -> CmdResult {
         return Err(format!("the sweep has {total} rows (at most 2000000)").into());
     }
     let tire = Fiala::new(&load_params(&args)?)?;
-    let mut rows = Vec::with_capacity(total);
-    for &fz in &fzs {
-        for &kappa in &kappas {
-            for &alpha_deg in &alphas {
-                let f = tire.forces(fz, kappa, alpha_deg.to_radians());
-                rows.push(SweepRow {
-                    fz_n: fz,
-                    kappa,
-                    alpha_deg,
-                    fx_n: f.fx,
-                    fy_n: f.fy,
-                    mz_nm: f.mz,
-                    my_nm: f.my,
-                });
-            }
-        }
-    }
+    let rows = sweep_rows(&tire, &fzs, &kappas, &alphas);
     if let Some(path) = &args.plot {
         let tire_name = match &args.params {
             Some(f) => format!("tire {}", f.display()),
@@ -391,16 +365,6 @@ fn plot_sweep(
     )
 }
 
-#[derive(serde::Serialize)]
-struct EnvelopeRow {
-    x_m: f64,
-    z_profile_m: f64,
-    z_eff_m: f64,
-    slope_rad: f64,
-    contact_length_m: f64,
-    wheel_z_m: f64,
-}
-
 fn envelope(args: EnvelopeArgs) -> CmdResult {
     let mut guard = OutputGuard::new(args.force);
     guard.record_input("--profile", &args.profile)?;
@@ -420,18 +384,7 @@ fn envelope(args: EnvelopeArgs) -> CmdResult {
         MethodArg::Circle => EnvelopeMethod::CircleLine,
     };
     let env = Envelope::new(method, args.radius, args.spacing_m)?;
-    let mut rows = Vec::with_capacity(xs.len());
-    for (&x, &z) in xs.iter().zip(&zs) {
-        let p = env.at_deflection(&profile, x, args.deflection_m)?;
-        rows.push(EnvelopeRow {
-            x_m: x,
-            z_profile_m: z,
-            z_eff_m: p.contact.z_eff,
-            slope_rad: p.contact.slope,
-            contact_length_m: p.contact.contact_length,
-            wheel_z_m: p.wheel_z,
-        });
-    }
+    let rows = envelope_rows(&env, &profile, (&xs, &zs), args.deflection_m)?;
     let full = serde_json::to_value(&rows)?;
     let table = afsv::table::from_rows(
         full.as_array().map_or(&[], Vec::as_slice),

@@ -16,17 +16,20 @@ mod simulate;
 use super::{args, CmdResult};
 use afsv::output::{OutputGuard, OutputKind};
 use afsv::progress::Progress;
+use afsv_design::report::vehicle::{
+    axle_name, link_note, per_seed, rear_axle, ride_report, roll_report, terrain_json, yaw_report,
+    Ground, NO_STRUT,
+};
+use afsv_design::report::vehicle::{ride_psd, RidePsd};
 use hps_emulsion::StrutParams;
 use measures::measures_cmd;
-pub(crate) use measures::yaw_fit_caveat;
 pub(crate) use options::PAPER_FORM_HELP;
 use options::{
     duration_s, ramp_rate, seed_count, speed_kmh, steer_peak, terrain_arg, TerrainArg,
     MAX_DURATION_S,
 };
 use path_change::{offset_m, path_change_cmd, PathChangeFiles};
-use perf_measures::iso2631::{health_guidance_zone, HgczRelation};
-use plots::{plot_ride, plot_roll, plot_yaw, ride_psd, RidePsd};
+use plots::{plot_ride, plot_roll, plot_yaw};
 use serde_json::{json, Value};
 use simulate::simulate_cmd;
 use std::io::IsTerminal;
@@ -34,16 +37,10 @@ use std::path::{Path, PathBuf};
 use vehicle_3d::cab_ride::SeatRideMeasures;
 use vehicle_3d::interconnect::{roll_linked, yaw_linked, Link};
 use vehicle_3d::scenarios::{
-    self, RideMeasures, RideSpec, RollMeasures, RollSpec, Spread, TerrainSpec, YawMeasures,
-    YawSpec, RUN_IN_M,
+    self, RideMeasures, RideSpec, RollMeasures, RollSpec, TerrainSpec, YawMeasures, YawSpec,
+    RUN_IN_M,
 };
 use vehicle_3d::{FrontAxle, Load, RunRecord, VehicleParams};
-
-/// Why a rigid front axle has no strut travel.
-const NO_STRUT: &str = "rigid front axle (--hps off): no strut";
-
-/// Exposure duration of the ISO 2631-1 health guidance caution zone verdict (h).
-const HGCZ_HOURS: f64 = 8.0;
 
 /// The vehicle and where it runs, shared by every subcommand.
 #[derive(clap::Args, Debug)]
@@ -380,15 +377,6 @@ fn unlinked(case: &CaseArgs, command: &str) -> Result<(), String> {
     Ok(())
 }
 
-/// What the report says of `link`: a JSON value and a text line.
-fn link_note(link: &Link) -> (Value, String) {
-    let text = match link {
-        Link::Roll(_) => "front struts interconnected left-right (roll link, [link])",
-        Link::Pitch(_) => "front and rear struts interconnected on each side (pitch link, [link])",
-    };
-    (json!(link), format!("{text}\n"))
-}
-
 /// [`print_result`] of a run of a vehicle whose struts `link` interconnects (the report of
 /// a vehicle without one unchanged).
 fn print_linked(json_out: bool, mut value: Value, text: &str, link: Option<&Link>) -> CmdResult {
@@ -445,61 +433,6 @@ fn terrain_and_seeds(
     Ok((Some(spec), list))
 }
 
-fn terrain_json(spec: &Option<TerrainSpec>, seeds: &[u64]) -> Value {
-    match spec {
-        None => json!({ "kind": "smooth ground" }),
-        Some(t) => json!({
-            "kind": "two-track terrain (Eqs 6.4-6.5)",
-            "class": t.class.to_string(),
-            "m_c_cycles_per_m": t.m_c,
-            "band_cycles_per_m": [t.band.0, t.band.1],
-            "seeds": seeds,
-        }),
-    }
-}
-
-/// The per-seed measures; on smooth ground the seed is null with its reason; a null measure
-/// gets `null_reason`.
-fn per_seed<T: serde::Serialize>(
-    terrain: &Option<TerrainSpec>,
-    seeds: &[u64],
-    measures: &[T],
-    null_reason: &str,
-) -> Value {
-    let rows: Vec<Value> = seeds
-        .iter()
-        .zip(measures)
-        .map(|(s, m)| {
-            let m = afsv::output::explain_nulls(json!(m), null_reason);
-            match terrain {
-                Some(_) => json!({ "seed": s, "measures": m }),
-                None => json!({ "seed": null, "seed_reason": "smooth ground", "measures": m }),
-            }
-        })
-        .collect();
-    Value::Array(rows)
-}
-
-/// The suspended axles of the vehicle `p` run with the front axle `front`, for headers and
-/// plot titles.
-fn axle_name(front: FrontAxle, p: &VehicleParams) -> &'static str {
-    match (front, p.rear_hps.is_some()) {
-        (FrontAxle::Rigid, false) => "rigid (no HPS)",
-        (FrontAxle::Suspended, false) => "front-axle HPS",
-        (FrontAxle::Rigid, true) => "rear-axle HPS, rigid front axle",
-        (FrontAxle::Suspended, true) => "HPS on both axles",
-    }
-}
-
-/// The rear axle of `p` in JSON: `rigid` or `suspended` (as `front_axle`).
-fn rear_axle(p: &VehicleParams) -> Value {
-    json!(if p.rear_hps.is_some() {
-        "suspended"
-    } else {
-        "rigid"
-    })
-}
-
 /// Run `one` for every seed in parallel (`afsv_design::fan_out::over_seeds`), with progress
 /// when there are several; the results in seed order; an error names its seed on a terrain.
 fn over_seeds<T: Send>(
@@ -527,44 +460,6 @@ fn over_seeds<T: Send>(
         p.finish();
     }
     out
-}
-
-/// Mean ± SD of `f` over `values`.
-fn spread<T>(values: &[T], f: impl Fn(&T) -> f64) -> Result<Spread, String> {
-    let v: Vec<f64> = values.iter().map(f).collect();
-    Spread::of(&v).map_err(|e| e.to_string())
-}
-
-fn spread_text(label: &str, s: &Spread, unit: &str) -> String {
-    if s.n > 1 {
-        format!("{label:<32} {:>9.3} ± {:<7.3} {unit}\n", s.mean, s.sd)
-    } else {
-        format!("{label:<32} {:>9.3}           {unit}\n", s.mean)
-    }
-}
-
-fn header_text(
-    title: &str,
-    case: &CaseArgs,
-    (axle, p): (FrontAxle, &VehicleParams),
-    speed: f64,
-    seeds: usize,
-) -> String {
-    let runs = if seeds > 1 {
-        format!(", mean ± SD over {seeds} seeds")
-    } else {
-        String::new()
-    };
-    let form = if case.paper_form {
-        "; yaw inertias of the printed Eq 3.13 (--paper-form: m L² counted twice, not for design)"
-    } else {
-        ""
-    };
-    format!(
-        "{title}: {}, {}, {speed} km/h{runs}{form}\n",
-        case.load,
-        axle_name(axle, p)
-    )
 }
 
 fn print_result(json_out: bool, value: &Value, text: &str) -> CmdResult {
@@ -611,64 +506,12 @@ fn roll_cmd(case: &CaseArgs, study: &StudyArgs, ramp_deg_s: f64, duration: f64) 
             Ok((m, (want_record && i == 0).then_some(rec)))
         })?;
     let measures: Vec<RollMeasures> = runs.iter().map(|r| r.0).collect();
-    let sp_drt = spread(&measures, |m| m.sp_drt_m_s2)?;
-    let period = spread(&measures, |m| m.sustained_s.1 - m.sustained_s.0)?;
-    let peak = spread(&measures, |m| m.peak_ay_m_s2)?;
-    let rolled: Vec<f64> = measures.iter().filter_map(|m| m.rollover_s).collect();
-    let rollover = if rolled.is_empty() {
-        None
-    } else {
-        Some(Spread::of(&rolled)?)
-    };
     if let (Some(path), Some((m, Some(rec)))) = (&study.plot, runs.first()) {
         plot_roll(path, rec, m, &spec, axle_name(axle, &p), seeds[0])?;
     }
-    let mut v = json!({
-        "scenario": "roll (D2, section 6.4)",
-        "load": case.load,
-        "front_axle": axle,
-        "rear_axle": rear_axle(&p),
-        "yaw_inertia_form": options::yaw_inertia_form(case.paper_form),
-        "speed_kmh": speed,
-        "ramp_deg_s": ramp_deg_s,
-        "ramp_start_s": spec.ramp_start_s,
-        "terrain": terrain_json(&terrain, &seeds),
-        "sp_drt_m_s2": sp_drt,
-        "sustained_period_s": period,
-        "peak_ay_m_s2": peak,
-        "rollover_s": rollover,
-        "rolled_over": rolled.len(),
-        "per_seed": per_seed(&terrain, &seeds, &measures, "no absolute rollover of the rear unit in this run"),
-    });
-    if rollover.is_none() {
-        v["rollover_s_reason"] = json!("no run reached the rear unit's absolute rollover");
-    }
+    let (mut v, text) = roll_report(&p, &spec, case.paper_form, &seeds, &measures)?;
     if let Some(plot) = &study.plot {
         v["plot"] = json!(plot);
-    }
-    let mut text = header_text("roll D2", case, (axle, &p), speed, seeds.len());
-    text += &format!(
-        "ramp steer {ramp_deg_s} deg/s from t = {} s\n",
-        spec.ramp_start_s
-    );
-    text += &spread_text("SP-DRT of the rear unit", &sp_drt, "m/s²");
-    text += &spread_text("sustained period ΔT", &period, "s");
-    text += &spread_text("peak |a_y| of the rear unit", &peak, "m/s²");
-    match &rollover {
-        Some(r) => {
-            text += &spread_text("absolute rollover at", r, "s");
-            text += &format!(
-                "{:<32} {:>9}\n",
-                "runs that rolled over",
-                format!("{}/{}", rolled.len(), seeds.len())
-            );
-        }
-        None => {
-            text += &format!(
-                "{:<32} n/a (no rollover within {duration} s)\n",
-                "absolute rollover at"
-            )
-        }
     }
     print_linked(study.json, v, &text, link.as_ref())
 }
@@ -696,46 +539,12 @@ fn yaw_cmd(case: &CaseArgs, study: &StudyArgs, pulse_deg: f64) -> CmdResult {
             Ok((m, (want_record && i == 0).then_some(rec)))
         })?;
     let measures: Vec<YawMeasures> = runs.iter().map(|r| r.0).collect();
-    let omega = spread(&measures, |m| m.omega_z_hz)?;
-    let damped = spread(&measures, |m| m.damped_frequency_hz)?;
-    let zeta = spread(&measures, |m| m.damping_ratio)?;
-    let peak = spread(&measures, |m| m.peak_articulation_deg)?;
     if let (Some(path), Some((_, Some(rec)))) = (&study.plot, runs.first()) {
         plot_yaw(path, rec, &spec, axle_name(axle, &p), seeds[0])?;
     }
-    let mut v = json!({
-        "scenario": "yaw (D3, section 6.4)",
-        "load": case.load,
-        "front_axle": axle,
-        "rear_axle": rear_axle(&p),
-        "yaw_inertia_form": options::yaw_inertia_form(case.paper_form),
-        "speed_kmh": speed,
-        "pulse_deg": pulse_deg,
-        "pulse_s": spec.pulse_s,
-        "pulse_start_s": spec.pulse_start_s,
-        "fit_window_s": spec.fit_window_s,
-        "terrain": terrain_json(&terrain, &seeds),
-        "omega_z_hz": omega,
-        "damped_frequency_hz": damped,
-        "damping_ratio": zeta,
-        "peak_articulation_deg": peak,
-        "per_seed": per_seed(&terrain, &seeds, &measures, "not computed"),
-    });
+    let (mut v, text) = yaw_report(&p, &spec, case.paper_form, &seeds, &measures)?;
     if let Some(plot) = &study.plot {
         v["plot"] = json!(plot);
-    }
-    let mut text = header_text("yaw D3", case, (axle, &p), speed, seeds.len());
-    text += &format!(
-        "steering-wheel pulse {pulse_deg} deg, {} s, at t = {} s\n",
-        spec.pulse_s, spec.pulse_start_s
-    );
-    text += &spread_text("omega_z (natural frequency)", &omega, "Hz");
-    text += &spread_text("damped frequency", &damped, "Hz");
-    text += &spread_text("damping ratio zeta", &zeta, "-");
-    text += &spread_text("peak articulation", &peak, "deg");
-    if let Some(caveat) = yaw_fit_caveat(&measures) {
-        text += &format!("note: {caveat}\n");
-        v["fit_caveat"] = json!(caveat);
     }
     print_linked(study.json, v, &text, link.as_ref())
 }

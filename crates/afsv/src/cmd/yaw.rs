@@ -5,9 +5,7 @@
 use super::{args, CmdResult};
 use afsv::output::{OutputGuard, OutputKind};
 use afsv::progress::Progress;
-use afsv_dynamics::yaw_plane::analysis::{
-    gain_efficiency_correlation_of, measures_for, sensitivity_of, steady_turn_decay_of, MeasureSpec,
-};
+use afsv_dynamics::yaw_plane::analysis::{measures_for, sensitivity_of, MeasureSpec};
 use afsv_dynamics::yaw_plane::simulate::Recording;
 use afsv_dynamics::{
     simulate, Course, EquationForm, Load, Manoeuvre, PathDriver, SimOptions, Solver, SteerInput,
@@ -462,33 +460,7 @@ pub fn run(cmd: Command) -> CmdResult {
                 return Err("--steer-wheel-deg must be finite".into());
             }
             let d = super::described::articulated(vehicle.as_deref())?;
-            let of = |load: Load| d.yaw_plane_params(load);
-            let opts = SimOptions::default();
-            let mut decay = Vec::new();
-            for load in Load::ALL {
-                for &v in afsv_dynamics::table_3_2_speeds_kmh(
-                    afsv_dynamics::FieldCourse::SteadyTurn,
-                    load,
-                ) {
-                    decay.push(steady_turn_decay_of(
-                        &of(load),
-                        load,
-                        v / 3.6,
-                        steer_wheel_deg,
-                        10.0,
-                        &opts,
-                    )?);
-                }
-            }
-            let ge = gain_efficiency_correlation_of(
-                &of(Load::Loaded),
-                50.0 / 3.6,
-                &MeasureSpec::default(),
-            )?;
-            afsv::output::print_json(&serde_json::json!({
-                "steady_turn_decay": decay,
-                "gain_efficiency_fig_4_7": ge,
-            }))?;
+            afsv::output::print_json(&afsv_design::yaw_leakage::leakage(&d, steer_wheel_deg)?)?;
         }
     }
     Ok(())

@@ -98,7 +98,7 @@ impl AskTell<'_> {
             "batch": state.batch, "finished": false, "points": asked.points.len(),
             "batch_file": path.display().to_string(), "phases": asked.phases,
         });
-        if super::machine(self.args.json) {
+        if super::machine(self.args.output.json) {
             afsv::output::print_json(&status)?;
         } else {
             println!(
@@ -152,7 +152,7 @@ impl AskTell<'_> {
         write_json(self.state_path, &state)?;
         let finished = state.asked(drivers, &self.descs)?.is_none();
         super::print_told(
-            self.args.json,
+            self.args.output.json,
             state.batch - 1,
             asked.points.len(),
             "points",

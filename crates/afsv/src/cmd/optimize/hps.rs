@@ -12,8 +12,11 @@ use afsv::output::OutputGuard;
 use afsv_design::hps_ask_tell::{
     batch_points, HpsBatchHeader, HPS_BATCH_FORMAT, HPS_FORMAT_VERSION,
 };
-use afsv_design::hps_optimum::{optimise_hps, HpsGaSettings, HpsOptimum};
-use afsv_design::hps_speed_sweep::hps_speed_sweep;
+use afsv_design::hps_optimum::{
+    optimise_hps, optimum_speed_sweep, optimum_vehicle, HpsGaSettings, HpsOptimum, D4_SPEEDS_KMH,
+};
+use afsv_design::hps_speed_sweep::speed_sweep_runs;
+use afsv_design::report::{hps_optimum::text, num};
 use afsv_design::{HpsAsk, HpsAskTell, HpsAskTellState, HpsProblemDesc};
 use afsv_records::jsonl::write_jsonl;
 use afsv_records::lock::RunLock;
@@ -57,13 +60,9 @@ pub struct HpsArgs {
     pub vehicle: Option<std::path::PathBuf>,
     #[command(flatten)]
     pub ask_tell: AskTellArgs,
-    /// Print JSON even on a terminal.
-    #[arg(long)]
-    pub json: bool,
+    #[command(flatten)]
+    pub output: crate::cmd::args::JsonOutput,
 }
-
-/// The D4 speeds of section 6.5.2 (km/h).
-const D4_SPEEDS_KMH: [f64; 5] = [10.0, 15.0, 20.0, 25.0, 30.0];
 
 /// GA progress: one step per generation.
 struct Generations(afsv::progress::Progress);
@@ -142,25 +141,21 @@ pub fn run(a: &HpsArgs) -> CmdResult {
 /// report on stdout (JSON, or text on a terminal); [`afsv::output::NotEarned`] when the
 /// optimum misses the a_wz limit.
 fn report(a: &HpsArgs, base: &vehicle_3d::VehicleParams, r: &HpsOptimum) -> CmdResult {
-    let mut best = base.clone();
-    best.hps = r.design.apply(&base.hps)?;
+    let best = optimum_vehicle(base, r)?;
     if let Some(path) = &a.strut_out {
         let text = serde_json::to_string_pretty(&best.hps)? + "\n";
         afsv_records::atomic::write(path, text).map_err(|e| format!("{}: {e}", path.display()))?;
     }
     let sweep = if a.speed_sweep {
-        let seeds: Vec<u64> = (0..a.reevaluation_seeds as u64)
-            .map(|i| a.terrain_seed.wrapping_add(i))
-            .collect();
-        let runs = 2 * D4_SPEEDS_KMH.len() * seeds.len();
+        let runs = speed_sweep_runs(D4_SPEEDS_KMH.len(), r.settings.reevaluation_seeds);
         let p = afsv::progress::Progress::new("afsv optimize hps: D4", "runs", Some(runs));
-        let s = hps_speed_sweep(&best, &D4_SPEEDS_KMH, &seeds, &|d| p.step(d))?;
+        let s = optimum_speed_sweep(&best, &r.settings, &|d| p.step(d))?;
         p.finish();
         Some(s)
     } else {
         None
     };
-    if a.json || !std::io::stdout().is_terminal() {
+    if a.output.json || !std::io::stdout().is_terminal() {
         let mut v = serde_json::to_value(r)?;
         if let Some(s) = &sweep {
             v["speed_sweep"] = serde_json::to_value(s)?;
@@ -169,7 +164,7 @@ fn report(a: &HpsArgs, base: &vehicle_3d::VehicleParams, r: &HpsOptimum) -> CmdR
     } else {
         print!("{}", text(r));
         if let Some(s) = &sweep {
-            print!("\n{}", crate::cmd::study::sweep_text(s));
+            print!("\n{}", afsv_design::report::speed_sweep::text(s));
         }
     }
     if r.feasible {
@@ -177,7 +172,7 @@ fn report(a: &HpsArgs, base: &vehicle_3d::VehicleParams, r: &HpsOptimum) -> CmdR
     } else {
         Err(afsv::output::NotEarned(format!(
             "optimize hps: no design met the a_wz limit of Eq 6.20 on the search seed (best a_wz {} m/s²); the best found is printed, not an optimum (more generations or another vehicle)",
-            v(r.optimum_ride.a_wz_m_s2, 3)
+            num(r.optimum_ride.a_wz_m_s2, 1.0, 3)
         ))
         .into())
     }
@@ -220,7 +215,7 @@ fn ask_tell(a: &HpsArgs, desc: &HpsProblemDesc, path: &Path, stored: Option<Stri
             return report(a, &desc.params, &driver.finish(&state.run)?);
         }
         return super::print_asked(
-            a.json,
+            a.output.json,
             state.batch,
             &phase,
             points.len(),
@@ -241,74 +236,11 @@ fn ask_tell(a: &HpsArgs, desc: &HpsProblemDesc, path: &Path, stored: Option<Stri
     state.batch += 1;
     write_json(path, &state)?;
     let finished = driver.ask(&state.run)? == HpsAsk::Finished;
-    super::print_told(a.json, state.batch - 1, points.len(), "runs", finished)
-}
-
-/// A value or "n/a".
-fn v(x: f64, digits: usize) -> String {
-    if x.is_finite() {
-        format!("{x:.digits$}")
-    } else {
-        "n/a".into()
-    }
-}
-
-fn text(r: &HpsOptimum) -> String {
-    let (n, o) = (&r.nominal_design, &r.design);
-    let (an, ao) = (&r.nominal_over_seeds, &r.optimum_over_seeds);
-    // (row, nominal, optimum, decimals)
-    let rows = [
-        ("A_hc (m²)".to_string(), n.a_hc, o.a_hc, 4),
-        ("A_v (mm²)".into(), n.a_v * 1e6, o.a_v * 1e6, 2),
-        ("A_b (mm²)".into(), n.a_b * 1e6, o.a_b * 1e6, 2),
-        (
-            "a_wz, search seed (m/s²)".into(),
-            r.nominal_ride.a_wz_m_s2,
-            r.optimum_ride.a_wz_m_s2,
-            3,
-        ),
-        (
-            "d_s, search seed (m)".into(),
-            r.nominal_ride.d_s_m,
-            r.optimum_ride.d_s_m,
-            4,
-        ),
-        ("F (Eq 6.19)".into(), 2.0, r.objective, 3),
-        (
-            format!("a_wz, {} seeds (m/s²)", an.a_wz_m_s2.n),
-            an.a_wz_m_s2.mean,
-            ao.a_wz_m_s2.mean,
-            3,
-        ),
-        (
-            "SP-DRT loaded (m/s²)".into(),
-            an.sp_drt_m_s2.mean,
-            ao.sp_drt_m_s2.mean,
-            2,
-        ),
-        (
-            "omega_z loaded (Hz)".into(),
-            an.omega_z_hz,
-            ao.omega_z_hz,
-            2,
-        ),
-    ];
-    let mut s = format!(
-        "HPS design (Eq 6.19: F = a_wz/a_wzn + d_s/d_sn, a_wz <= {} m/s²), unloaded, 20 km/h, class E, terrain seed {}\n",
-        r.settings.a_wz_limit_m_s2, r.settings.terrain_seed
-    );
-    s += &format!("  {:<26} {:>12} {:>12}\n", "", "nominal", "optimum");
-    for (name, a, b, digits) in rows {
-        s += &format!("  {name:<26} {:>12} {:>12}\n", v(a, digits), v(b, digits));
-    }
-    s += &format!(
-        "  {} vehicle runs in the search; the optimum is {}\n",
-        r.evaluations,
-        if r.feasible {
-            "feasible"
-        } else {
-            "NOT feasible (a_wz above the limit)"
-        }
-    );
-    s
+    super::print_told(
+        a.output.json,
+        state.batch - 1,
+        points.len(),
+        "runs",
+        finished,
+    )
 }

@@ -11,7 +11,8 @@ use afsv::output::{NotEarned, OutputGuard};
 use afsv_design::layout_ask_tell::{
     batch_points, LayoutBatchHeader, LAYOUT_BATCH_FORMAT, LAYOUT_FORMAT_VERSION,
 };
-use afsv_design::layout_optimum::{LayoutMeasure, Measured};
+use afsv_design::layout_optimum::LayoutMeasure;
+use afsv_design::report::layout_optimum::text;
 use afsv_design::{
     optimise_layout, LayoutAsk, LayoutAskTell, LayoutAskTellState, LayoutConstraint,
     LayoutGaSettings, LayoutOptimum, LayoutProblem, LayoutProblemDesc, LayoutVariable,
@@ -87,9 +88,8 @@ pub struct LayoutArgs {
     /// Replace existing output files afsv did not write.
     #[arg(long)]
     pub force: bool,
-    /// Print JSON even on a terminal.
-    #[arg(long)]
-    pub json: bool,
+    #[command(flatten)]
+    pub output: crate::cmd::args::JsonOutput,
 }
 
 /// The problem the options define.
@@ -98,7 +98,7 @@ fn problem_desc(a: &LayoutArgs) -> Result<LayoutProblemDesc, String> {
         return Err(format!("--layout {}: one layout", a.layout));
     }
     let v = crate::cmd::described::articulated(a.vehicle.as_deref())?;
-    let layout = crate::cmd::layouts::build_layouts(&v, &a.layout)?
+    let layout = afsv_design::layout_names::build_layouts(&v, &a.layout)?
         .pop()
         .ok_or("--layout: no layout named")?;
     if a.seeds == 0 || a.seeds > afsv_design::layout_optimum::MAX_SEEDS {
@@ -128,13 +128,11 @@ fn problem_desc(a: &LayoutArgs) -> Result<LayoutProblemDesc, String> {
         params: layout.params,
         front_axle: layout.front_axle,
         link,
-        seat: crate::cmd::layouts::seat_of(&v, a.seat.as_deref())?,
+        seat: afsv_design::layout_names::seat_of(&v, a.seat.as_deref())?,
         load: a.load,
         speed_kmh: a.speed_kmh,
         ride_length_m: a.ride_length_m,
-        seeds: (0..a.seeds as u64)
-            .map(|i| a.terrain_seed.wrapping_add(i))
-            .collect(),
+        seeds: afsv_design::fan_out::seed_range(a.terrain_seed, a.seeds as u64),
         variables: a
             .vary
             .iter()
@@ -200,7 +198,7 @@ pub fn run(a: &LayoutArgs) -> CmdResult {
 /// The report on stdout (JSON, or text on a terminal); [`NotEarned`] when the optimum is
 /// infeasible or a variable lies on a bound.
 fn report(a: &LayoutArgs, r: &LayoutOptimum) -> CmdResult {
-    if a.json || !std::io::stdout().is_terminal() {
+    if a.output.json || !std::io::stdout().is_terminal() {
         afsv::output::print_json(r)?;
     } else {
         print!("{}", text(r));
@@ -259,7 +257,7 @@ fn ask_tell(
             return report(a, &driver.finish(&state.run)?);
         }
         return super::print_asked(
-            a.json,
+            a.output.json,
             state.batch,
             &phase,
             points.len(),
@@ -280,85 +278,11 @@ fn ask_tell(
     state.batch += 1;
     write_json(path, &state)?;
     let finished = driver.ask(&state.run)? == LayoutAsk::Finished;
-    super::print_told(a.json, state.batch - 1, points.len(), "points", finished)
-}
-
-/// A number with 4 significant digits, or "n/a".
-fn num(x: f64) -> String {
-    if !x.is_finite() {
-        "n/a".into()
-    } else if x != 0.0 && (x.abs() < 1e-2 || x.abs() >= 1e5) {
-        format!("{x:.3e}")
-    } else {
-        format!("{x:.4}")
-    }
-}
-
-fn value(m: &Measured, k: LayoutMeasure) -> f64 {
-    m.get(&k).copied().unwrap_or(f64::NAN)
-}
-
-/// The report as text.
-fn text(r: &LayoutOptimum) -> String {
-    let mut s = format!(
-        "Layout `{}` of `{}`{}: {} rides at {} km/h ({} m window, class E), {} terrain seed(s) from {}; GA {} x {} generations ({} designs)\n",
-        r.layout,
-        r.vehicle,
-        if r.seat { " with cab and seat" } else { "" },
-        r.load,
-        r.speed_kmh,
-        r.ride_length_m,
-        r.seeds.len(),
-        r.seeds[0],
-        r.ga.population,
-        r.ga.generations,
-        r.evaluations
-    );
-    s += &format!(
-        "{} {} ({})\n\n",
-        if r.maximise { "Maximise" } else { "Minimise" },
-        r.objective.name(),
-        r.objective.unit()
-    );
-    s += &format!(
-        "  {:<28} {:>11} {:>11} {:>11} {:>11}\n",
-        "variable", "lower", "upper", "nominal", "optimum"
-    );
-    for v in &r.variables {
-        s += &format!(
-            "  {:<28} {:>11} {:>11} {:>11} {:>11}{}\n",
-            v.name,
-            num(v.lower),
-            num(v.upper),
-            num(v.nominal),
-            num(v.optimum),
-            if v.on_bound { "  ON A BOUND" } else { "" }
-        );
-    }
-    s += &format!(
-        "\n  {:<28} {:>11} {:>11}\n",
-        "measure", "nominal", "optimum"
-    );
-    for (k, v) in &r.optimum {
-        s += &format!(
-            "  {:<28} {:>11} {:>11}\n",
-            format!("{} ({})", k.name(), k.unit()),
-            num(value(&r.nominal, *k)),
-            num(*v)
-        );
-    }
-    for c in &r.constraints {
-        s += &format!(
-            "  constraint {}: bound {}, optimum {} ({})\n",
-            c.constraint,
-            num(c.bound),
-            num(c.optimum),
-            if c.met { "met" } else { "NOT met" }
-        );
-    }
-    s += &match r.earned() {
-        Ok(()) => "The optimum is feasible and inside the bounds.\n".to_string(),
-        Err(why) => format!("Not an optimum: {why}.\n"),
-    };
-    s
+    super::print_told(
+        a.output.json,
+        state.batch - 1,
+        points.len(),
+        "points",
+        finished,
+    )
 }

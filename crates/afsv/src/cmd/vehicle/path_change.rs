@@ -8,6 +8,7 @@ use super::simulate::AXES;
 use super::{axle_name, declare_inputs, print_result, terrain_and_seeds, terrain_json};
 use super::{vehicle_params, CaseArgs, CmdResult};
 use afsv::output::{OutputGuard, OutputKind};
+use afsv_design::report::vehicle::path_change_report;
 use serde_json::json;
 use std::path::{Path, PathBuf};
 use vehicle_3d::scenarios::{path_change, PathChangeMeasures, PathChangeSpec};
@@ -73,22 +74,7 @@ pub(super) fn path_change_cmd(
     if let Some(path) = out.plot.as_deref() {
         plot(path, &rec, (&spec, axle_name(axle, &p)), &m)?;
     }
-    let mut v = json!({
-        "scenario": "path change (V3, section 6.3, Fig 3.6(b))",
-        "load": case.load,
-        "front_axle": axle,
-        "rear_axle": super::rear_axle(&p),
-        "speed_kmh": spec.speed_kmh,
-        "course": {
-            "offset_m": spec.offset_m,
-            "gate_m": spec.gate_m,
-            "approach_m": spec.approach_m,
-        },
-        "duration_s": spec.t_end_s,
-        "terrain": terrain_json(&terrain, seeds),
-        "sign_convention": "afsv-v1: positive in a right-hand turn; offset positive to the right",
-        "measures": m,
-    });
+    let (mut v, text) = path_change_report(&p, &spec, seeds[0], &m);
     if let Some(o) = out.output.as_deref() {
         v["output"] = json!(o);
         v["sidecar"] = json!(o.with_extension("json"));
@@ -96,53 +82,6 @@ pub(super) fn path_change_cmd(
     if let Some(plot) = out.plot.as_deref() {
         v["plot"] = json!(plot);
     }
-    let ground = match &terrain {
-        None => "smooth ground".to_string(),
-        Some(t) => format!("class {}, m_c {}, seed {}", t.class, t.m_c, seeds[0]),
-    };
-    let mut text = format!(
-        "path change V3: {}, {}, {} km/h, {} m offset over an {} m gate, {ground}\n",
-        case.load,
-        axle_name(axle, &p),
-        spec.speed_kmh,
-        spec.offset_m,
-        spec.gate_m
-    );
-    let row = |label: &str, value: String, unit: &str| format!("{label:<36} {value:>16} {unit}\n");
-    text += &row(
-        "peak articulation",
-        format!("{:.2}", m.peak_articulation_deg),
-        "deg",
-    );
-    text += &row(
-        "left-strut displacement min / max",
-        format!(
-            "{:.3} / {:.3}",
-            m.strut_left_range_m.0, m.strut_left_range_m.1
-        ),
-        "m",
-    );
-    text += &row(
-        "peak front-unit yaw rate",
-        format!("{:.2}", m.peak_yaw_rate_deg_s),
-        "deg/s",
-    );
-    text += &row(
-        "peak front-unit lateral acceleration",
-        format!("{:.3}", m.peak_lateral_accel_m_s2),
-        "m/s²",
-    );
-    text += &row(
-        "largest deviation from the course",
-        format!("{:.3}", m.max_deviation_m),
-        "m",
-    );
-    text += &row(
-        "final lateral position",
-        format!("{:.3}", m.final_offset_m),
-        "m",
-    );
-    text += "signs: positive in a right-hand turn (afsv-v1)\n";
     print_result(out.json, &v, &text)
 }
 

@@ -2,28 +2,10 @@
 //! the sustained period, the yaw articulation with its single-DOF decay fit.
 
 use super::CmdResult;
+use afsv_design::report::vehicle::RidePsd;
 use std::path::Path;
-use terrain_psd::{welch_psd, WelchConfig};
 use vehicle_3d::scenarios::{RideSpec, RollMeasures, RollSpec, YawSpec};
 use vehicle_3d::RunRecord;
-
-/// The seed-mean Welch PSDs of the cab's vertical acceleration and the front unit's pitch
-/// acceleration over the ride window: frequencies and the two densities.
-pub(super) type RidePsd = (Vec<f64>, Vec<f64>, Vec<f64>);
-
-/// The PSDs of one ride record from `t_start_s` on, with the Welch settings of
-/// `vehicle_3d::scenarios::psd_peak` (segments of up to 8 s, at least two, Hann, 50 %).
-pub(super) fn ride_psd(rec: &RunRecord, t_start_s: f64) -> Result<RidePsd, String> {
-    let i0 = rec.t_s.partition_point(|&t| t < t_start_s);
-    let dt = rec.t_s[1] - rec.t_s[0];
-    let az = &rec.cab_accel_m_s2[2][i0..];
-    let pitch = &rec.front_angular_accel_rad_s2[1][i0..];
-    let seg = ((8.0 / dt) as usize).min(az.len() / 2).max(32);
-    let cfg = WelchConfig::new(seg);
-    let v = welch_psd(az, dt, &cfg).map_err(|e| format!("vertical PSD: {e}"))?;
-    let p = welch_psd(pitch, dt, &cfg).map_err(|e| format!("pitch PSD: {e}"))?;
-    Ok((v.freq, v.psd, p.psd))
-}
 
 pub(super) fn plot_ride(
     path: &Path,

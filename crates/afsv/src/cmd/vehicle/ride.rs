@@ -44,7 +44,7 @@ pub(super) fn ride_cmd(
         let seats: Vec<_> = seat::of_run(&p, &rec, t_window, layout.as_ref())?
             .into_iter()
             .collect();
-        return ride_report(
+        return print_ride(
             case,
             study,
             (&spec, &p, link.as_ref()),
@@ -85,7 +85,7 @@ pub(super) fn ride_cmd(
         let psds: Vec<RidePsd> = runs.into_iter().filter_map(|r| r.1).collect();
         plot_ride(path, &psds, &spec, super::axle_name(axle, &p), &seeds)?;
     }
-    let ground = road::Ground {
+    let ground = Ground {
         json: terrain_json(&Some(terrain), &seeds),
         text: format!(
             "terrain class {}, m_c {} cycles/m",
@@ -93,7 +93,7 @@ pub(super) fn ride_cmd(
         ),
         per_run: per_seed(&Some(terrain), &seeds, &measures, NO_STRUT),
     };
-    ride_report(
+    print_ride(
         case,
         study,
         (&spec, &p, link.as_ref()),
@@ -103,98 +103,18 @@ pub(super) fn ride_cmd(
     )
 }
 
-/// The ride's measures over its runs (seeds, or one measured road) as JSON or text.
-fn ride_report(
+/// The ride's report ([`ride_report`]) with its plot, printed as JSON or text.
+fn print_ride(
     case: &CaseArgs,
     study: &StudyArgs,
     (spec, p, link): (&RideSpec, &VehicleParams, Option<&Link>),
     measures: &[RideMeasures],
     seats: &[SeatRideMeasures],
-    ground: road::Ground,
+    ground: Ground,
 ) -> CmdResult {
-    let (axle, speed, length_m) = (spec.front_axle, spec.speed_kmh, spec.length_m);
-    let a_wz = spread(measures, |m| m.a_wz_m_s2)?;
-    let a_z = spread(measures, |m| m.a_z_rms_m_s2)?;
-    let vertical = spread(measures, |m| m.vertical_peak_hz)?;
-    let pitch = spread(measures, |m| m.pitch_peak_hz)?;
-    let travel = match axle {
-        FrontAxle::Rigid => None,
-        FrontAxle::Suspended => Some(spread(measures, |m| {
-            m.strut_travel_p2p_m.unwrap_or(f64::NAN)
-        })?),
-    };
-    let rear_travel = if measures.iter().all(|m| m.rear_strut_travel_p2p_m.is_some()) {
-        Some(spread(measures, |m| {
-            m.rear_strut_travel_p2p_m.unwrap_or(f64::NAN)
-        })?)
-    } else {
-        None
-    };
-    let zone = health_guidance_zone(HGCZ_HOURS, HgczRelation::SqrtTime)?;
-    let verdict = zone.classify(a_wz.mean);
-    let mut v = json!({
-        "scenario": "ride (D1, section 6.4)",
-        "load": case.load,
-        "front_axle": axle,
-        "rear_axle": super::rear_axle(p),
-        "yaw_inertia_form": options::yaw_inertia_form(case.paper_form),
-        "speed_kmh": speed,
-        "run_in_m": RUN_IN_M,
-        "length_m": length_m,
-        "terrain": ground.json,
-        "a_wz_m_s2": a_wz,
-        "a_z_rms_m_s2": a_z,
-        "strut_travel_p2p_m": travel,
-        "vertical_peak_hz": vertical,
-        "pitch_peak_hz": pitch,
-        "hgcz": {
-            "duration_h": HGCZ_HOURS,
-            "relation": zone.relation,
-            "lower_m_s2": zone.lower_m_s2,
-            "upper_m_s2": zone.upper_m_s2,
-            "a_wz_mean_zone": verdict,
-        },
-        "per_seed": ground.per_run,
-    });
-    if travel.is_none() {
-        v["strut_travel_p2p_m_reason"] = json!(NO_STRUT);
-    }
-    if let Some(t) = &rear_travel {
-        v["rear_strut_travel_p2p_m"] = json!(t);
-    }
+    let (mut v, text) = ride_report(p, spec, case.paper_form, measures, seats, ground)?;
     if let Some(plot) = &study.plot {
         v["plot"] = json!(plot);
     }
-    let verdict_text = match verdict {
-        perf_measures::iso2631::HgczZone::Below => "below the zone",
-        perf_measures::iso2631::HgczZone::Within => "within the zone (caution)",
-        perf_measures::iso2631::HgczZone::Above => "above the zone (health risk likely)",
-    };
-    let mut text = header_text("ride D1", case, (axle, p), speed, measures.len());
-    text += &format!(
-        "{}, {length_m} m after a {RUN_IN_M} m run-in\n",
-        ground.text
-    );
-    text += &spread_text("a_wz (W_k weighted RMS)", &a_wz, "m/s²");
-    text += &format!(
-        "{:<32} {verdict_text} ({:.2}-{:.2} m/s² at {HGCZ_HOURS} h)\n",
-        "ISO 2631-1 HGCZ verdict", zone.lower_m_s2, zone.upper_m_s2
-    );
-    text += &spread_text("vertical acceleration RMS", &a_z, "m/s²");
-    match &travel {
-        Some(t) => text += &spread_text("HPS travel peak-to-peak d_s", t, "m"),
-        None => {
-            text += &format!(
-                "{:<32} n/a (rigid front axle)\n",
-                "HPS travel peak-to-peak d_s"
-            )
-        }
-    }
-    if let Some(t) = &rear_travel {
-        text += &spread_text("rear HPS travel peak-to-peak", t, "m");
-    }
-    text += &spread_text("dominant vertical frequency", &vertical, "Hz");
-    text += &spread_text("dominant pitch frequency", &pitch, "Hz");
-    seat::report(seats, &mut v, &mut text)?;
     print_linked(study.json, v, &text, link)
 }

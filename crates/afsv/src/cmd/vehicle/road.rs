@@ -6,6 +6,7 @@
 //! track.
 
 use afsv::output::OutputGuard;
+use afsv_design::report::vehicle::{Ground, NO_STRUT};
 use afsv_records::Record;
 use serde_json::{json, Value};
 use std::path::Path;
@@ -18,16 +19,6 @@ const MAX_ROAD_SAMPLES: usize = 10_000_000;
 
 /// Largest OpenCRG file read (bytes): 10 million rows of eight 10-character sections.
 const MAX_CRG_BYTES: u64 = 1 << 30;
-
-/// What the ride ran on, for its report.
-pub(super) struct Ground {
-    /// The ground as JSON (`"terrain"` of the report).
-    pub json: Value,
-    /// The ground in words (one line of the text report).
-    pub text: String,
-    /// The measures of each run with what tells the runs apart (`"per_seed"`).
-    pub per_run: Value,
-}
 
 /// One D1 ride of `p` on the measured road in `file`: its record, measures and ground.
 pub(super) fn ride(
@@ -71,7 +62,7 @@ pub(super) fn ride(
         text: format!("measured road {shown} ({length:.0} m at {dx} m)"),
         per_run: json!([{
             "road": file,
-            "measures": afsv::output::explain_nulls(json!(m), super::NO_STRUT),
+            "measures": afsv_records::json::explain_nulls(json!(m), NO_STRUT),
         }]),
     };
     Ok((rec, m, ground))

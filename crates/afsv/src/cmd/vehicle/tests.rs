@@ -1,4 +1,4 @@
-//! Unit tests of `afsv vehicle`: where the seeds come from, and the text rows.
+//! Unit tests of `afsv vehicle`: where the seeds come from.
 use super::*;
 
 fn case(terrain: Option<&str>) -> CaseArgs {
@@ -37,17 +37,4 @@ fn seeds_come_from_one_place() {
     // an explicit terrain replaces the scenario's default
     let (t, _) = terrain_and_seeds(&case(Some("class:B")), None, None, d).unwrap();
     assert_eq!(t.unwrap().class, terrain_psd::IsoClass::B);
-}
-
-#[test]
-fn text_rows_show_the_spread_only_over_several_seeds() {
-    let two = Spread::of(&[1.0, 3.0]).unwrap();
-    let row = spread_text("a_wz", &two, "m/s²");
-    assert!(
-        row.contains("2.000 ± 1.414") && row.ends_with("m/s²\n"),
-        "{row}"
-    );
-    let one = Spread::of(&[1.25]).unwrap();
-    let row = spread_text("a_wz", &one, "m/s²");
-    assert!(row.contains("1.250") && !row.contains('±'), "{row}");
 }

@@ -1,9 +1,10 @@
-//! The three design measures of Chapter 6 for `afsv evaluate` and `afsv vehicle measures`:
-//! the runs, their summary and the HPS changes as JSON are the library's
-//! (`afsv_design::design_3d`, re-exported here, shared with the Python package); this
-//! module prints the text summary.
+//! The report of the D1-D3 design measures of the 3-D vehicle
+//! ([`crate::design_3d::DesignMeasures`]) as a terminal table, one column per front axle
+//! (`afsv evaluate`); their JSON is the type's own serialisation with
+//! [`crate::design_3d::hps_changes`].
 
-pub use afsv_design::design_3d::*;
+use super::wrap_note;
+use crate::design_3d::{settled, AxleSummary, DesignMeasures, RideSummary};
 use perf_measures::iso2631::HgczZone;
 use vehicle_3d::scenarios::Spread;
 
@@ -106,8 +107,16 @@ pub fn to_text(d: &DesignMeasures) -> String {
         s += "  (the description gives the front axle no strut: no HPS column)\n";
     }
     let yaws: Vec<_> = cols.iter().map(|(_, a)| a.yaw).collect();
-    if let Some(c) = super::vehicle::yaw_fit_caveat(&yaws) {
-        s += &super::evaluate::wrap_note(&format!("note on omega_z and zeta (D3): {c}"));
+    if let Some(c) = yaw_fit_caveat(&yaws) {
+        s += &wrap_note(&format!("note on omega_z and zeta (D3): {c}"));
     }
     s + "\n"
+}
+
+/// The caveat of the runs' single-mode yaw fits: the worst seed's ([`vehicle_3d::scenarios::YawMeasures::fit_caveat`]).
+pub fn yaw_fit_caveat(measures: &[vehicle_3d::scenarios::YawMeasures]) -> Option<String> {
+    measures
+        .iter()
+        .max_by(|a, b| a.fit_residual_to_noise.total_cmp(&b.fit_residual_to_noise))
+        .and_then(vehicle_3d::scenarios::YawMeasures::fit_caveat)
 }

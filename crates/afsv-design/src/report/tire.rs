@@ -1,0 +1,88 @@
+//! The rows of `afsv tire` (crate `tire-fiala`): the Fiala forces over a sweep of loads and
+//! slips, and a terrain profile enveloped by the tire (Eqs 2.3-2.4 / 6.2-6.3).
+
+use tire_fiala::{Envelope, Fiala, HandlingModel, PolylineProfile};
+
+#[derive(serde::Serialize)]
+/// One row of `afsv tire sweep`: the Fiala forces at one load and slip.
+pub struct SweepRow {
+    /// Normal load (N).
+    pub fz_n: f64,
+    /// Slip ratio (> 0 in traction).
+    pub kappa: f64,
+    /// Slip angle (deg, the sign of Eq 3.17).
+    pub alpha_deg: f64,
+    /// Longitudinal force (N).
+    pub fx_n: f64,
+    /// Lateral force (N).
+    pub fy_n: f64,
+    /// Self-aligning moment (N·m, the sign of alpha).
+    pub mz_nm: f64,
+    /// Rolling-resistance moment (N·m, < 0 opposes forward rolling).
+    pub my_nm: f64,
+}
+
+/// The Fiala forces of `tire` at every load of `fzs`, slip ratio of `kappas` and slip angle
+/// (deg) of `alphas`, in that nesting (alpha fastest).
+pub fn sweep_rows(tire: &Fiala, fzs: &[f64], kappas: &[f64], alphas: &[f64]) -> Vec<SweepRow> {
+    let mut rows = Vec::with_capacity(fzs.len() * kappas.len() * alphas.len());
+    for &fz in fzs {
+        for &kappa in kappas {
+            for &alpha_deg in alphas {
+                let f = tire.forces(fz, kappa, alpha_deg.to_radians());
+                rows.push(SweepRow {
+                    fz_n: fz,
+                    kappa,
+                    alpha_deg,
+                    fx_n: f.fx,
+                    fy_n: f.fy,
+                    mz_nm: f.mz,
+                    my_nm: f.my,
+                });
+            }
+        }
+    }
+    rows
+}
+
+#[derive(serde::Serialize)]
+/// One row of `afsv tire envelope`: the enveloped profile at one point.
+pub struct EnvelopeRow {
+    /// Distance along the profile (m).
+    pub x_m: f64,
+    /// Profile height (m).
+    pub z_profile_m: f64,
+    /// Effective elevation z_oi (m, Eqs 2.3-2.4 / 6.2-6.3).
+    pub z_eff_m: f64,
+    /// Effective slope (rad).
+    pub slope_rad: f64,
+    /// Contact length (m).
+    pub contact_length_m: f64,
+    /// Wheel-centre height at the given deflection (m).
+    pub wheel_z_m: f64,
+}
+
+/// The profile `profile` (points `xs`, heights `zs`) enveloped by `env` with the wheel held
+/// at the deflection `deflection_m` (m) at every point.
+pub fn envelope_rows(
+    env: &Envelope,
+    profile: &PolylineProfile,
+    (xs, zs): (&[f64], &[f64]),
+    deflection_m: f64,
+) -> Result<Vec<EnvelopeRow>, String> {
+    let mut rows = Vec::with_capacity(xs.len());
+    for (&x, &z) in xs.iter().zip(zs) {
+        let p = env
+            .at_deflection(profile, x, deflection_m)
+            .map_err(|e| e.to_string())?;
+        rows.push(EnvelopeRow {
+            x_m: x,
+            z_profile_m: z,
+            z_eff_m: p.contact.z_eff,
+            slope_rad: p.contact.slope,
+            contact_length_m: p.contact.contact_length,
+            wheel_z_m: p.wheel_z,
+        });
+    }
+    Ok(rows)
+}
