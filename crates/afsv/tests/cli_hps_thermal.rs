@@ -132,3 +132,44 @@ fn a_d1_ride_sets_the_dissipation() {
     let out = afsv(&["hps", "thermal", "--ride", "--power-w", "100"]);
     assert!(!out.status.success());
 }
+
+#[test]
+fn the_strut_at_the_end_of_a_shift_is_written_for_a_ride() {
+    let (hot, levelled) = (
+        scratch("hps-thermal-out", "hot.json"),
+        scratch("hps-thermal-out", "levelled.json"),
+    );
+    let v = json(&afsv(&[
+        "hps",
+        "thermal",
+        "--power-w",
+        "640",
+        "--hours",
+        "8",
+        "--strut-out",
+        hot.to_str().unwrap(),
+        "--strut-out-levelled",
+        levelled.to_str().unwrap(),
+        "--json",
+    ]));
+    let read = |p: &std::path::Path| -> serde_json::Value {
+        serde_json::from_slice(&std::fs::read(p).unwrap()).unwrap()
+    };
+    let (h, l) = (read(&hot), read(&levelled));
+    let nominal = json(&afsv(&["params", "dump", "strut"]));
+    // the same hardware: the rod side is kept; the hot gas charge presses harder at
+    // mid-stroke, and the drained oil leaves the levelled strut more gas volume
+    assert_eq!(h["v_r0"], nominal["v_r0"]);
+    assert!(num(&h["p_h0"]) > 1.1 * num(&nominal["p_h0"]), "{h}");
+    assert!(num(&l["v_g0"]) > num(&nominal["v_g0"]), "{l}");
+    // each is a valid strut file for `--hps FILE`
+    for p in [&hot, &levelled] {
+        let out = afsv(&["params", "check", "strut", p.to_str().unwrap()]);
+        assert!(
+            out.status.success(),
+            "{}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+    }
+    assert!(v["axles"].as_array().is_some());
+}

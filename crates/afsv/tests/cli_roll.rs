@@ -228,3 +228,78 @@ fn study_trucks_compares_both_trucks_with_and_without_stops() {
     let peak = |i: usize| points[i]["peak_ay_g"]["mean"].as_f64().unwrap();
     assert!(peak(1) < peak(0) && peak(0) < peak(2), "{points:?}");
 }
+
+#[test]
+fn a_measured_road_equal_to_a_seed_gives_its_record_and_a_short_one_is_refused() {
+    // the terrain the truck synthesizes for a 60 s run: 800 m of class E at 5 cm, seed 3
+    let road = scratch("roll-road", "road.csv");
+    let out = afsv(&[
+        "terrain",
+        "generate",
+        "--length",
+        "800",
+        "--dx",
+        "0.05",
+        "--seed",
+        "3",
+        "-o",
+        road.to_str().unwrap(),
+    ]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let (seeded, measured) = (
+        scratch("roll-road", "seed.csv"),
+        scratch("roll-road", "road-run.csv"),
+    );
+    let a = json(&afsv(&[
+        "roll",
+        "simulate",
+        "--seed",
+        "3",
+        "-o",
+        seeded.to_str().unwrap(),
+    ]));
+    let b = json(&afsv(&[
+        "roll",
+        "simulate",
+        "--road",
+        road.to_str().unwrap(),
+        "-o",
+        measured.to_str().unwrap(),
+    ]));
+    assert_eq!(
+        std::fs::read(&seeded).unwrap(),
+        std::fs::read(&measured).unwrap()
+    );
+    assert_eq!(a["drt_g"], b["drt_g"]);
+    assert_eq!(b["terrain"]["kind"], "measured two-track road");
+    // the road is an input: named in the provenance, never an output
+    assert!(b["provenance"]["inputs"].to_string().contains("road.csv"));
+    let clash = afsv(&[
+        "roll",
+        "simulate",
+        "--road",
+        road.to_str().unwrap(),
+        "-o",
+        road.to_str().unwrap(),
+    ]);
+    assert!(!clash.status.success());
+    // a run longer than the road carries: one line with the length it needs
+    let out = afsv(&[
+        "roll",
+        "measures",
+        "--road",
+        road.to_str().unwrap(),
+        "--duration",
+        "200",
+        "--json",
+    ]);
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        !out.status.success() && err.contains("needs") && err.lines().count() == 1,
+        "{err}"
+    );
+}

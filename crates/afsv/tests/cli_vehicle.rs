@@ -525,3 +525,55 @@ fn measures_of_one_configuration_agree_with_the_scenario_commands() {
     assert_eq!(h["ride_load"], "unloaded");
     assert!(num(&h["d1_ride"]["strut_travel_p2p_m"]["mean"]) > 0.0);
 }
+
+#[test]
+fn simulate_with_components_adds_every_strut_channel_and_keeps_the_record() {
+    let (plain, full) = (
+        scratch("vehicle-components", "plain.csv"),
+        scratch("vehicle-components", "full.csv"),
+    );
+    let run = |path: &std::path::Path, more: &[&str]| {
+        let mut a = vec![
+            "vehicle",
+            "simulate",
+            "--hps",
+            "nominal",
+            "--steer",
+            "pulse:30,0.2,0.5",
+            "--duration",
+            "1.5",
+            "-o",
+            path.to_str().unwrap(),
+        ];
+        a.extend_from_slice(more);
+        json(&afsv(&a))
+    };
+    let a = run(&plain, &[]);
+    let b = run(&full, &["--components"]);
+    let (na, nb) = (
+        a["columns"].as_array().unwrap().len(),
+        b["columns"].as_array().unwrap().len(),
+    );
+    // the steering's 10 channels and the two front struts' 8 each
+    assert_eq!(nb, na + 10 + 2 * 8);
+    // the record's own columns are the same, value for value
+    let rows = |p: &std::path::Path| -> Vec<Vec<String>> {
+        std::fs::read_to_string(p)
+            .unwrap()
+            .lines()
+            .map(|l| l.split(',').map(str::to_string).collect())
+            .collect()
+    };
+    let (ra, rb) = (rows(&plain), rows(&full));
+    assert_eq!(ra.len(), rb.len());
+    for (x, y) in ra.iter().zip(&rb) {
+        assert_eq!(x[..], y[..na]);
+    }
+    assert!(rb[0].contains(&"hps_front_right_gas_volume_m3".to_string()));
+    let sidecar: serde_json::Value =
+        serde_json::from_slice(&std::fs::read(full.with_extension("json")).unwrap()).unwrap();
+    assert_eq!(
+        sidecar["component_channels"]["units"]["steering_p_c_pa"],
+        "Pa"
+    );
+}

@@ -9,7 +9,7 @@
 use super::{args, CmdResult};
 use afsv::output::OutputGuard;
 use afsv_design::report::strut_shift::{shift_report, ShiftConditions};
-use afsv_design::strut_shift::{strut_shift, HeatInput, ShiftSpec};
+use afsv_design::strut_shift::{strut_shift, HeatInput, Shift, ShiftSpec};
 use hps_emulsion::thermal::KELVIN_AT_0C;
 use hps_emulsion::LevellingValve;
 use serde_json::json;
@@ -77,7 +77,17 @@ pub struct ThermalArgs {
     /// Levelling valve's largest flow (L/min).
     #[arg(long = "levelling-flow-l-min", default_value_t = 6.0, allow_hyphen_values = true, value_parser = args::positive_f64)]
     pub levelling_flow_l_min: f64,
-    /// Replace an existing -o file afsv did not write (never the --vehicle file).
+    /// Write the front strut as it is at the end of the shift without levelling (its
+    /// parameter set at the gas and body temperatures reached: the same hardware, gas and
+    /// oil; docs/layouts.md) to FILE, for `afsv vehicle ride --hps FILE` and the other
+    /// `--hps FILE` options.
+    #[arg(long)]
+    pub strut_out: Option<PathBuf>,
+    /// The same with the levelling valve's oil (the strut as the valve left it).
+    #[arg(long)]
+    pub strut_out_levelled: Option<PathBuf>,
+    /// Replace an existing -o or --strut-out file afsv did not write (never the --vehicle
+    /// file).
     #[arg(long)]
     pub force: bool,
     #[command(flatten)]
@@ -108,6 +118,14 @@ pub fn run(a: ThermalArgs) -> CmdResult {
         guard.input("--vehicle", v)?;
     }
     a.table.declare(&mut guard)?;
+    for (flag, path) in [
+        ("--strut-out", &a.strut_out),
+        ("--strut-out-levelled", &a.strut_out_levelled),
+    ] {
+        if let Some(path) = path {
+            guard.output(flag, path, afsv::output::OutputKind::Other)?;
+        }
+    }
     let v = super::described::articulated(a.vehicle.as_deref())?;
     let mut params = v.params.clone();
     params.hps = v.front_strut.ok_or_else(|| {
@@ -154,6 +172,7 @@ pub fn run(a: ThermalArgs) -> CmdResult {
         start_c: a.start_c.unwrap_or(a.ambient_c),
         hours: a.hours,
     };
+    write_end_struts(&a, &shift)?;
     let (table, mut full, summary) = shift_report(&v.name, &conditions, &spec, &shift)?;
     full["provenance"] = afsv::provenance::stamp();
     a.table.emit(
@@ -163,5 +182,35 @@ pub fn run(a: ThermalArgs) -> CmdResult {
         "afsv hps thermal",
         json!({ "vehicle": v.name, "conditions": full["conditions"] }),
     )?;
+    Ok(())
+}
+
+/// `--strut-out` and `--strut-out-levelled`: the front strut's parameter set at the end of
+/// the shift, without and with the levelling valve
+/// ([`hps_emulsion::ThermalStrut::strut_at`]).
+fn write_end_struts(a: &ThermalArgs, shift: &Shift) -> CmdResult {
+    let Some(front) = shift.axles.iter().find(|x| x.axle == "front") else {
+        if a.strut_out.is_some() || a.strut_out_levelled.is_some() {
+            return Err("--strut-out: the front strut rests on an end stop under this load".into());
+        }
+        return Ok(());
+    };
+    for (flag, path, rec) in [
+        ("--strut-out", &a.strut_out, &front.drift),
+        (
+            "--strut-out-levelled",
+            &a.strut_out_levelled,
+            &front.levelled,
+        ),
+    ] {
+        let Some(path) = path else { continue };
+        let n = rec.time_s.len() - 1;
+        let strut = front
+            .strut
+            .strut_at(rec.gas_k[n], rec.body_k[n], rec.levelled_m3[n])
+            .map_err(|e| format!("{flag}: the strut at the end of the shift: {e}"))?;
+        let text = serde_json::to_string_pretty(&strut)? + "\n";
+        afsv_records::atomic::write(path, text).map_err(|e| format!("{}: {e}", path.display()))?;
+    }
     Ok(())
 }

@@ -13,6 +13,7 @@ pub mod layouts;
 pub mod measures;
 pub mod optimize;
 pub mod params;
+mod road;
 pub mod roll;
 pub mod study;
 pub mod terrain;

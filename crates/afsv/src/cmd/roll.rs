@@ -11,7 +11,7 @@ use afsv_design::report::roll::measures_text;
 use afsv_records::Record;
 use perf_measures::roll::SustainedPeriodParams;
 use roll_truck::measures::RollMeasures;
-use roll_truck::studies::run_case;
+use roll_truck::studies::{run_case, run_case_on_road};
 use roll_truck::{BuiltinTruck, RunOptions, SteerDirection, TruckParams};
 use serde_json::json;
 use std::io::IsTerminal;
@@ -95,6 +95,13 @@ pub struct CaseArgs {
     /// have nothing to act on and are refused).
     #[arg(long, conflicts_with_all = ["class", "waviness", "band", "mc", "seed"])]
     pub smooth: bool,
+    /// A measured road instead of synthesized terrain: a two-track CSV with columns x_m
+    /// (uniformly spaced), left_m and right_m (other length units such as left_mm are
+    /// converted on read; docs/records.md), or an ASAM OpenCRG ASCII file (`.crg`, read at
+    /// plus and minus half the mean track). It must cover the run; a shorter road is
+    /// refused with the length it needs.
+    #[arg(long, conflicts_with_all = ["smooth", "class", "waviness", "band", "mc", "seed"])]
+    pub road: Option<PathBuf>,
     /// ISO 8608 class of the rough terrain (Table 2.4), A to E.
     #[arg(long, default_value = "E")]
     pub class: IsoClass,
@@ -274,8 +281,17 @@ fn one_run(
         acceleration_channels: true,
         ..RunOptions::default()
     };
-    let spec = if case.smooth { None } else { Some(spec(case)?) };
     let sp = case.rule.params()?;
+    if let Some(file) = &case.road {
+        // an OpenCRG road is read on the truck's two tracks: plus and minus half the mean
+        // track, as on a synthesized terrain
+        let half_track = 0.25 * (p.front_track_m + p.rear_track_m);
+        let (profile, _) = super::road::read(file, half_track)?;
+        let run = run_case_on_road(p, profile, case.direction, &options, &sp)
+            .map_err(|e| format!("{}: {e}", file.display()))?;
+        return Ok(run);
+    }
+    let spec = if case.smooth { None } else { Some(spec(case)?) };
     Ok(run_case(
         p,
         spec.as_ref(),
@@ -296,6 +312,9 @@ fn duration(case: &CaseArgs, p: &TruckParams) -> f64 {
 fn simulate(case: &CaseArgs, dt: f64, output: &Path, force: bool) -> CmdResult {
     let mut guard = OutputGuard::new(force);
     case.truck.declare_inputs(&mut guard)?;
+    if let Some(road) = &case.road {
+        guard.input("--road", road)?;
+    }
     guard.output("-o", output, OutputKind::Record)?;
     let p = truck(&case.truck, case.cg_height_m)?;
     let duration = duration(case, &p);
@@ -329,7 +348,9 @@ fn simulate(case: &CaseArgs, dt: f64, output: &Path, force: bool) -> CmdResult {
 }
 
 fn terrain_json(case: &CaseArgs) -> serde_json::Value {
-    if case.smooth {
+    if let Some(road) = &case.road {
+        json!({ "kind": "measured two-track road", "file": road })
+    } else if case.smooth {
         json!({ "kind": "level ground" })
     } else {
         json!({

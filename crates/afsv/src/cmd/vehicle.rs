@@ -215,13 +215,8 @@ pub enum Command {
         /// Output sample interval (s).
         #[arg(long, default_value_t = 0.005, allow_hyphen_values = true, value_parser = args::positive_f64)]
         dt: f64,
-        /// Output CSV file (the sidecar goes beside it with extension .json). It must not
-        /// be an input; an existing file afsv did not write needs --force.
-        #[arg(short = 'o', long)]
-        output: PathBuf,
-        /// Replace an existing output file that afsv did not write.
-        #[arg(long)]
-        force: bool,
+        #[command(flatten)]
+        output: simulate::RecordOutput,
     },
 }
 
@@ -253,8 +248,7 @@ pub fn run(cmd: Command) -> CmdResult {
             duration,
             dt,
             output,
-            force,
-        } => simulate_cmd(&case, seed, &steer, duration, dt, &output, force),
+        } => simulate_cmd(&case, seed, &steer, duration, dt, &output),
         Command::PathChange {
             case,
             seed,

@@ -10,7 +10,8 @@ use super::{
 use afsv::output::{OutputGuard, OutputKind};
 use afsv_records::Record;
 use serde_json::json;
-use std::path::Path;
+use std::path::PathBuf;
+use vehicle_3d::component_record::simulate_components;
 use vehicle_3d::interconnect::LinkedVehicle;
 use vehicle_3d::{RunOptions, Vehicle, VehicleOptions};
 use vehicle_components::FlatTerrain;
@@ -18,15 +19,33 @@ use vehicle_components::FlatTerrain;
 /// The axes and signs of the record's ride channels (the sidecar's `axes`).
 pub(super) const AXES: &str = "cab_accel_*, front_pitch_accel: the front unit's body axes (x forward, y left, z up), kinematic acceleration without gravity at the a_wz point; front_pitch_accel right-handed about y (nose down positive); front_lateral_accel and rear_lateral_accel left positive; rear_ltr = (F_zL - F_zR)/(F_zL + F_zR) of the rear axle; hps_travel compression positive";
 
+/// Where `afsv vehicle simulate` writes its record, and what goes in it.
+#[derive(clap::Args, Debug)]
+pub struct RecordOutput {
+    /// Output CSV file (the sidecar goes beside it with extension .json). It must not be an
+    /// input; an existing file afsv did not write needs --force.
+    #[arg(short = 'o', long)]
+    pub output: PathBuf,
+    /// Also record every component's own channels: the steering hydraulics' (steering_*)
+    /// and each axle strut's (hps_<axle>_<side>_*: force, pressures, friction, gas volume,
+    /// flow, ...), in the model's signs (docs/vehicle-3d.md, "Component channels"). Not
+    /// with the description's [link].
+    #[arg(long)]
+    pub components: bool,
+    /// Replace an existing output file that afsv did not write.
+    #[arg(long)]
+    pub force: bool,
+}
+
 pub(super) fn simulate_cmd(
     case: &CaseArgs,
     seed: Option<u64>,
     steer: &str,
     duration: f64,
     dt: f64,
-    output: &Path,
-    force: bool,
+    out_args: &RecordOutput,
 ) -> CmdResult {
+    let (output, force) = (out_args.output.as_path(), out_args.force);
     args::check_samples(
         &format!("--duration {}", args::show(duration)),
         &format!("duration/dt with --dt {}", args::show(dt)),
@@ -68,14 +87,34 @@ pub(super) fn simulate_cmd(
             Vehicle::new(&p, case.load, options, &ground, half)?
         }
     };
-    let rec = match &link {
-        None => vehicle_3d::simulate(&vehicle, &run)?,
+    let (rec, components) = match &link {
+        None if out_args.components => {
+            let (rec, c) = simulate_components(&vehicle, &run)?;
+            (rec, Some(c))
+        }
+        None => (vehicle_3d::simulate(&vehicle, &run)?, None),
+        Some(_) if out_args.components => {
+            return Err(
+                "--components: not with the description's [link] (the linked struts' lines are not components)"
+                    .into(),
+            )
+        }
         Some(l) => {
             let linked = LinkedVehicle::new(vehicle, l)?;
-            linked.simulate_from(&linked.initial_state()?, &run)?.record
+            (
+                linked.simulate_from(&linked.initial_state()?, &run)?.record,
+                None,
+            )
         }
     };
     let mut out = Record::from_columns(rec.afsv_v1_columns())?;
+    if let Some(c) = &components {
+        // the first column is the time, which the record has
+        for (i, name) in c.channels().names().iter().enumerate().skip(1) {
+            let column = c.column_at(i).unwrap_or_default().to_vec();
+            out.push_column(name, column)?;
+        }
+    }
     out.meta = json!({
         "written_by": "afsv vehicle simulate",
         "sample_rate_hz": 1.0 / dt,
@@ -93,6 +132,13 @@ pub(super) fn simulate_cmd(
     });
     if let Some(l) = &link {
         out.meta["link"] = json!(l);
+    }
+    if let Some(c) = &components {
+        let ch = c.channels();
+        out.meta["component_channels"] = json!({
+            "signs": "each component's own (model signs, SI): strut forces of the steering positive extending, axle strut forces and travel compression positive",
+            "units": ch.names().iter().zip(ch.units()).skip(1).map(|(n, u)| (n.clone(), json!(u))).collect::<serde_json::Map<_, _>>(),
+        });
     }
     afsv::provenance::stamp_record(&mut out);
     out.write(output)?;
