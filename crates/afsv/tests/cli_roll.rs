@@ -71,6 +71,8 @@ fn left_and_right_ramps_give_the_same_smooth_measures() {
     );
     assert!((l - r).abs() < 1e-4, "{l} vs {r}");
     assert!((l - 0.288).abs() < 0.01, "calibrated smooth DRT {l}");
+    // never airborne on smooth ground: a plain zero, not "-0.0"
+    assert_eq!(left["airborne_time_s"].to_string(), "0.0");
 }
 
 #[test]

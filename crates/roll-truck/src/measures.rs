@@ -114,10 +114,11 @@ pub fn roll_measures(
     let peak_of = |x: &[f64]| x.iter().fold(0.0_f64, |m, a| m.max(a.abs()));
     let peak = peak_of(&ay);
     let stop = rec.on_bump_stop.iter().position(|b| *b);
+    // a fold from +0: `sum` of no terms is -0, which a report would print as "-0.0"
     let airborne_time_s = (1..rec.t_s.len())
         .filter(|&i| rec.airborne[i])
         .map(|i| rec.t_s[i] - rec.t_s[i - 1])
-        .sum();
+        .fold(0.0, |total, dt| total + dt);
     Ok(RollMeasures {
         drt_g: first.map(|a| g(a.lateral_accel_m_s2)),
         drt_time_s: first.map(|a| a.time_s),
