@@ -51,19 +51,26 @@ const RIDE_CHANNELS: usize = 0b1_1111_1000_0001;
 
 /// The calibrated parameters: registry paths (`tire.` and `hps.` prefix the tire's and the
 /// strut's own registries), each one's calibration window and why it is uncertain. The
-/// last one only with the front-axle HPS.
-pub const CALIBRATED: [(&str, f64, f64, &str); 5] = [
+/// last one only with the front-axle HPS. Every entry is a value the paper does not state
+/// (Chapter 6, Tables 6.1-6.3; the project's assumptions of docs/vehicle-3d.md).
+pub const CALIBRATED: [(&str, f64, f64, &str); 8] = [
     ("joint_height_m", 0.6, 1.6, "not in Table 6.1; 1.0 m assumed (docs/vehicle-3d.md)"),
     ("drive.kp_n_m_per_m_s", 3_000.0, 27_000.0, "the PI speed gains are not given; 9 kN m/(m/s) assumed"),
     ("tire.vertical_damping_n_s_per_m", 1.0e4, 1.0e5, "Table 6.2 gives no tire damping; 35 kN s/m assumed"),
     ("tire.longitudinal_relaxation_length_m", 0.3, 3.0, "only the lateral relaxation length is stated (1.2 m); the longitudinal one is assumed equal"),
+    ("drive.ki_n_m_per_m", 0.0, 8_000.0, "the PI speed gains are not given; 2 kN m/m assumed"),
+    ("tire.rolling_resistance_coefficient", 0.005, 0.06, "not in Table 6.2; 0.03 assumed"),
+    ("wheel_spin_inertia_kg_m2", 300.0, 1_200.0, "wheel ends are not in Table 6.1; 600 kg m² assumed (tire, rim and in-wheel drive)"),
     ("hps.friction.f_c", 0.0, 5_000.0, "Table 5.1's friction constants are missing (HPS only)"),
 ];
+
+/// Entries of [`CALIBRATED`] a rigid front axle calibrates (all but the HPS friction).
+const RIGID_CALIBRATED: usize = 7;
 
 /// Relative tolerance of the replays: the fits difference outputs over parameter steps of
 /// 1e-3, so the integrator's jitter must stay well below what such a step changes
 /// (docs/discovery.md "Integration tolerance"); the scenario default is 3e-5.
-pub const REPLAY_RTOL: f64 = 1e-5;
+pub const REPLAY_RTOL: f64 = 1e-6;
 
 /// Half width of the moving average of the recorded speed that `driver-throttle` follows
 /// (s): a driver's throttle moves the speed over seconds; the faster fluctuations are the
@@ -189,7 +196,7 @@ impl Vehicle3dModel {
     /// The entries of [`CALIBRATED`] this model calibrates.
     fn calibrated(&self) -> &'static [(&'static str, f64, f64, &'static str)] {
         match self.front_axle {
-            FrontAxle::Rigid => &CALIBRATED[..4],
+            FrontAxle::Rigid => &CALIBRATED[..RIGID_CALIBRATED],
             FrontAxle::Suspended => &CALIBRATED[..],
         }
     }

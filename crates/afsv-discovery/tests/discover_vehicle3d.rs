@@ -242,3 +242,51 @@ fn variant_ride_records_without_a_hidden_effect_name_nothing() {
     assert!(d.named.is_empty(), "{}", summary(&d));
     assert!(!matches!(d.outcome, Outcome::Named { .. }));
 }
+
+/// Mean over the compared channels of the squared NRMSE of `baseline` on `recs`.
+fn mean_sq_nrmse(model: &Vehicle3dModel, recs: &[Record], baseline: &[f64]) -> f64 {
+    let e = afsv_discovery::evaluate_errors(model, recs, baseline, &[]).unwrap();
+    let v: Vec<f64> = e.iter().filter_map(|c| c.nrmse).map(|x| x * x).collect();
+    v.iter().sum::<f64>() / v.len() as f64
+}
+
+#[test]
+#[ignore]
+fn calibration_of_the_null_set() {
+    let axle = FrontAxle::Rigid;
+    let p = variant();
+    let train = records(axle, &p, &runs(RIDES, CHANGES, 11), Hidden::None, 11);
+    let hold = records(axle, &p, &runs(RIDES, CHANGES, 61), Hidden::None, 61);
+    let base = Vehicle3dModel::nominal(axle);
+    let nominal: Vec<f64> = base.baseline_params().iter().map(|s| s.initial).collect();
+    println!("nominal: {:.4e}", mean_sq_nrmse(&base, &train, &nominal));
+    for (name, x) in vehicle3d::VARIANT {
+        let mut m = base.clone();
+        afsv_discovery::vehicle3d::assign(&mut m.params, name, x).unwrap();
+        let b: Vec<f64> = m.baseline_params().iter().map(|s| s.initial).collect();
+        println!("{name} = {x}: {:.4e}", mean_sq_nrmse(&m, &train, &b));
+    }
+    let opts = DiscoveryOptions {
+        max_effects: 0,
+        ..DiscoveryOptions::default()
+    };
+    for rtol in [1e-6] {
+        let mut m = base.clone();
+        m.rtol = rtol;
+        for pass in 0..2 {
+            let t0 = std::time::Instant::now();
+            let d = discover(&m, &train, &hold, &[], &[], &opts, &Elapsed(t0)).unwrap();
+            let c = &d.calibrated;
+            println!(
+                "rtol {rtol:e} pass {pass}: {:?} train {:.4e} holdout {:.4e} excess {:.2} converged {} in {:.1} s",
+                c.baseline,
+                c.train_mse,
+                c.holdout_mse,
+                d.excess_over_noise,
+                c.converged,
+                t0.elapsed().as_secs_f64()
+            );
+            m.params = m.apply_baseline(&c.baseline).unwrap();
+        }
+    }
+}
