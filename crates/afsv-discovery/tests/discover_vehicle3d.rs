@@ -103,6 +103,23 @@ fn run(
         d.gap_shrink,
         summary(&d)
     );
+    for t in d.steps.iter().filter_map(|s| s.naming_tests.as_ref()) {
+        println!(
+            "naming tests of {}: placebo {:?} against {:.3e}; failed {:?}",
+            t.effect, t.best_placebo, t.effect_gain, t.failed
+        );
+        for g in &t.groups {
+            println!(
+                "  {} ({} records): {:?} +- {:?}{}",
+                g.group,
+                g.records,
+                g.values,
+                g.std_errors,
+                if g.at_bound { " (on a bound)" } else { "" }
+            );
+        }
+    }
+    println!("calibrated baseline {:?}", d.calibrated.baseline);
     (d, secs)
 }
 
@@ -287,6 +304,54 @@ fn calibration_of_the_null_set() {
                 t0.elapsed().as_secs_f64()
             );
             m.params = m.apply_baseline(&c.baseline).unwrap();
+        }
+    }
+}
+
+#[test]
+#[ignore]
+fn throttle_form_on_its_records() {
+    let axle = FrontAxle::Rigid;
+    let model = Vehicle3dModel::nominal(axle);
+    let hidden = Hidden::Throttle {
+        amp: 0.6,
+        period: 4.0,
+    };
+    let recs = records(axle, &variant(), &runs(RIDES, CHANGES, 14), hidden, 14);
+    let truth: Vec<f64> = model
+        .baseline_params()
+        .iter()
+        .map(|s| afsv_discovery::vehicle3d::value(&variant(), &s.name).unwrap())
+        .collect();
+    let e = model
+        .catalogue()
+        .iter()
+        .position(|c| c.name == "driver-throttle")
+        .unwrap();
+    for r in &recs {
+        let prep = model.prepare(r).unwrap();
+        for gain in [0.0, 0.5, 1.0, 1.5] {
+            let v = [gain];
+            let act = [afsv_discovery::ActiveEffect {
+                index: e,
+                values: &v,
+            }];
+            let pred = model.simulate(&prep, &truth, &act).unwrap();
+            let skip = model.skip_samples(r);
+            let mut line = format!("{} gain {gain}:", prep.condition);
+            for (name, p) in CHANNELS.iter().zip(&pred) {
+                let Some(p) = p else { continue };
+                let m = &r.column(name).unwrap()[skip..];
+                let p = &p[skip..];
+                let mean = m.iter().sum::<f64>() / m.len() as f64;
+                let sd =
+                    (m.iter().map(|v| (v - mean).powi(2)).sum::<f64>() / m.len() as f64).sqrt();
+                let rms = (m.iter().zip(p).map(|(a, b)| (a - b).powi(2)).sum::<f64>()
+                    / m.len() as f64)
+                    .sqrt();
+                line += &format!(" {}={:.3}", &name[..name.len().min(12)], rms / sd);
+            }
+            println!("{line}");
         }
     }
 }
