@@ -355,3 +355,43 @@ fn throttle_form_on_its_records() {
         }
     }
 }
+
+#[test]
+#[ignore]
+fn throttle_setpoint_against_the_truth() {
+    let axle = FrontAxle::Rigid;
+    let model = Vehicle3dModel::nominal(axle);
+    let hidden = Hidden::Throttle {
+        amp: 0.6,
+        period: 4.0,
+    };
+    let recs = records(axle, &variant(), &runs(RIDES, CHANGES, 14), hidden, 14);
+    for r in &recs {
+        let prep = model.prepare(r).unwrap();
+        let set = afsv_discovery::vehicle3d::throttle_setpoint(&variant(), &prep);
+        let truth: Vec<f64> = prep
+            .time_s
+            .iter()
+            .map(|t| prep.speed_m_s + 0.6 * (std::f64::consts::TAU * t / 4.0).sin())
+            .collect();
+        let rms = (set
+            .iter()
+            .zip(&truth)
+            .map(|(a, b)| (a - b).powi(2))
+            .sum::<f64>()
+            / set.len() as f64)
+            .sqrt();
+        println!("{}: rms {rms:.3} m/s", prep.condition);
+        for i in (0..set.len()).step_by(50) {
+            println!(
+                "  t {:.1} v {:.3} smooth {:.3} rate {:.3} set {:.3} truth {:.3}",
+                prep.time_s[i],
+                r.column("speed_m_s").unwrap()[i],
+                prep.speed_smooth.0[i],
+                prep.speed_smooth.1[i],
+                set[i],
+                truth[i]
+            );
+        }
+    }
+}
