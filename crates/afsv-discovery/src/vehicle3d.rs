@@ -773,6 +773,12 @@ impl DiscoveryModel for Vehicle3dModel {
         ]
     }
 
+    /// Ride accelerations have content up to the sampling rate (the terrain's band and the
+    /// tires' enveloping reach tens of Hz at ride speeds).
+    fn broadband_channels(&self) -> bool {
+        true
+    }
+
     fn skip_samples(&self, record: &Record) -> usize {
         match record.column("time_s") {
             Some(t) if t.len() > 1 => {
