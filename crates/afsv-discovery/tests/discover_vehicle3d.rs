@@ -119,7 +119,10 @@ fn run(
             );
         }
     }
-    println!("calibrated baseline {:?}", d.calibrated.baseline);
+    println!(
+        "calibrated baseline {:?}\nfinal baseline {:?}\nexcess over noise {:.2}; calibration problems {:?}",
+        d.calibrated.baseline, d.final_model.baseline, d.excess_over_noise, d.calibration_problems
+    );
     (d, secs)
 }
 
@@ -392,6 +395,65 @@ fn throttle_setpoint_against_the_truth() {
                 set[i],
                 truth[i]
             );
+        }
+    }
+}
+
+#[test]
+#[ignore]
+fn gas_time_constant_profile() {
+    let axle = FrontAxle::Suspended;
+    let set = runs(RIDES, CHANGES, 16);
+    let rec = vehicle3d::record(
+        axle,
+        &variant(),
+        &set[1],
+        Hidden::GasHeat(1.0),
+        0.03,
+        16_001,
+    );
+    let base = [
+        1.1512110914990006,
+        12166.191521995159,
+        45368.07656577497,
+        0.8054260002398426,
+        2422.4808374951326,
+        0.02567363247294305,
+        656.0037941162259,
+        399.70803500503877,
+    ];
+    for rtol in [1e-6, 1e-7] {
+        let mut model = Vehicle3dModel::nominal(axle);
+        model.rtol = rtol;
+        let e = model
+            .catalogue()
+            .iter()
+            .position(|c| c.name == "hps-gas-temperature")
+            .unwrap();
+        let prep = model.prepare(&rec).unwrap();
+        let skip = model.skip_samples(&rec);
+        for tau in [0.8, 1.0, 1.2, 1.5, 1.7, 1.79, 1.7957, 1.80, 1.81, 1.9, 2.2] {
+            let v = [tau];
+            let act = [afsv_discovery::ActiveEffect {
+                index: e,
+                values: &v,
+            }];
+            let pred = model.simulate(&prep, &base, &act).unwrap();
+            let mut sse = 0.0;
+            for (name, p) in CHANNELS.iter().zip(&pred) {
+                let Some(p) = p else { continue };
+                let m = &rec.column(name).unwrap()[skip..];
+                let mean = m.iter().sum::<f64>() / m.len() as f64;
+                let var = m.iter().map(|v| (v - mean).powi(2)).sum::<f64>() / m.len() as f64;
+                sse += m
+                    .iter()
+                    .zip(&p[skip..])
+                    .map(|(a, b)| (a - b).powi(2))
+                    .sum::<f64>()
+                    / var
+                    / m.len() as f64;
+            }
+            println!("rtol {rtol:e} {} tau {tau}: {sse:.6e}", prep.condition);
         }
     }
 }
