@@ -10,6 +10,9 @@
 //! | `variant_ride_records_without_a_hidden_effect_name_nothing` (ignored) | the same on 5 + 5 ride records only | same |
 //! | `twenty_ride_records` (ignored) | the timing case: one discovery on 10 + 10 ride records | same |
 //! | `replay_cost` (ignored) | prints one replay's wall time at three tolerances | same |
+//! | `calibration_of_the_null_set` (ignored) | prints what each of the records' unstated choices costs at the nominal calibration, and the calibration (twice: the second from the first's solution) with its excess over noise | same, about 30 s |
+//! | `throttle_form_on_its_records` (ignored) | prints each channel's NRMSE of the throttle records replayed at their truth's baseline with `driver-throttle` at gains 0-1.5 | same, seconds |
+//! | `gas_time_constant_profile` (ignored) | prints the error of one HPS ride record along the gas time constant at rtol 1e-6 and 1e-7 | same, seconds |
 
 mod common;
 mod vehicle3d;
@@ -355,46 +358,6 @@ fn throttle_form_on_its_records() {
                 line += &format!(" {}={:.3}", &name[..name.len().min(12)], rms / sd);
             }
             println!("{line}");
-        }
-    }
-}
-
-#[test]
-#[ignore]
-fn throttle_setpoint_against_the_truth() {
-    let axle = FrontAxle::Rigid;
-    let model = Vehicle3dModel::nominal(axle);
-    let hidden = Hidden::Throttle {
-        amp: 0.6,
-        period: 4.0,
-    };
-    let recs = records(axle, &variant(), &runs(RIDES, CHANGES, 14), hidden, 14);
-    for r in &recs {
-        let prep = model.prepare(r).unwrap();
-        let set = afsv_discovery::vehicle3d::throttle_setpoint(&variant(), &prep);
-        let truth: Vec<f64> = prep
-            .time_s
-            .iter()
-            .map(|t| prep.speed_m_s + 0.6 * (std::f64::consts::TAU * t / 4.0).sin())
-            .collect();
-        let rms = (set
-            .iter()
-            .zip(&truth)
-            .map(|(a, b)| (a - b).powi(2))
-            .sum::<f64>()
-            / set.len() as f64)
-            .sqrt();
-        println!("{}: rms {rms:.3} m/s", prep.condition);
-        for i in (0..set.len()).step_by(50) {
-            println!(
-                "  t {:.1} v {:.3} smooth {:.3} rate {:.3} set {:.3} truth {:.3}",
-                prep.time_s[i],
-                r.column("speed_m_s").unwrap()[i],
-                prep.speed_smooth.0[i],
-                prep.speed_smooth.1[i],
-                set[i],
-                truth[i]
-            );
         }
     }
 }
