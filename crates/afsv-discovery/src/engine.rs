@@ -263,7 +263,14 @@ pub fn discover<M: DiscoveryModel + ?Sized>(
     signatures.extend(locate(&ctx, &ctx.holdout, &holdout_names, &calibrated_cfg)?);
 
     // Steps 3-4: try the catalogue, name what is significant.
-    let holdout_noise_mse = ctx.holdout.noise_mse();
+    let holdout_noise_mse = if model.broadband_channels() {
+        let r =
+            ctx.holdout
+                .residual_vec(model, &calibrated_cfg.baseline, &calibrated_cfg.active())?;
+        ctx.holdout.noise_mse_bounded(&r)
+    } else {
+        ctx.holdout.noise_mse()
+    };
     let search = search(
         &ctx,
         real,

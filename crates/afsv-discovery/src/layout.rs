@@ -213,6 +213,36 @@ impl<'a, P: Send + Sync> RecordSet<'a, P> {
             0.0
         }
     }
+
+    /// As [`Self::noise_mse`], each record and channel's estimate bounded by the same
+    /// estimate on its part of `residual` (a configuration's normalised residuals, laid out
+    /// as [`Self::residual_vec`] gives them). Both are upper bounds of the noise: the
+    /// measured channel's adds the signal's own high-frequency content, the residual's the
+    /// model error's, and the noise is in both.
+    pub fn noise_mse_bounded(&self, residual: &[f64]) -> f64 {
+        let (mut sum, mut n) = (0.0, 0usize);
+        for (rec, segs) in self.records.iter().zip(&self.segments) {
+            for s in segs {
+                if let (Some(meas), Some(r)) = (
+                    rec.column(&self.channels[s.channel]),
+                    residual.get(s.offset..s.offset + s.len),
+                ) {
+                    let scale = self.scales[s.channel];
+                    let measured =
+                        optimize::noise::measurement_noise_variance(&meas[s.skip..s.skip + s.len])
+                            / (scale * scale);
+                    let left = optimize::noise::measurement_noise_variance(r);
+                    sum += measured.min(left) * s.len as f64;
+                    n += s.len;
+                }
+            }
+        }
+        if n > 0 {
+            sum / n as f64
+        } else {
+            0.0
+        }
+    }
 }
 
 /// Standard deviation of each channel over `records` (1 for a constant or absent channel).

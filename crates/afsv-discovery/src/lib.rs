@@ -201,4 +201,13 @@ pub trait DiscoveryModel: Sync {
     fn skip_samples(&self, _record: &Record) -> usize {
         0
     }
+    /// Whether the compared channels carry signal up to the records' sampling rate (ride
+    /// vibration), so that the fourth differences of a measured channel read signal as
+    /// noise. The noise floor of each record and channel is then the lower of the
+    /// fourth-difference estimates on the measured channel and on the calibrated baseline's
+    /// residual, which has the signal the model reproduces taken out (docs/discovery.md,
+    /// "Statistics"). False by default.
+    fn broadband_channels(&self) -> bool {
+        false
+    }
 }

@@ -186,6 +186,9 @@ impl<M: DiscoveryModel + ?Sized> DiscoveryModel for WithPlacebos<'_, M> {
     fn skip_samples(&self, record: &Record) -> usize {
         self.inner.skip_samples(record)
     }
+    fn broadband_channels(&self) -> bool {
+        self.inner.broadband_channels()
+    }
 }
 
 #[cfg(test)]

@@ -103,6 +103,9 @@ impl<M: DiscoveryModel + ?Sized> DiscoveryModel for WithReadings<'_, M> {
     fn skip_samples(&self, record: &Record) -> usize {
         self.inner.skip_samples(record)
     }
+    fn broadband_channels(&self) -> bool {
+        self.inner.broadband_channels()
+    }
 }
 
 /// Whether a reading scoring `(train, holdout)` replaces the current one scoring

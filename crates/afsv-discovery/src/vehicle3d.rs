@@ -51,24 +51,37 @@ const RIDE_CHANNELS: usize = 0b1_1111_1000_0001;
 
 /// The calibrated parameters: registry paths (`tire.` and `hps.` prefix the tire's and the
 /// strut's own registries), each one's calibration window and why it is uncertain. The
-/// last one only with the front-axle HPS.
-pub const CALIBRATED: [(&str, f64, f64, &str); 5] = [
+/// last one only with the front-axle HPS. Every entry is a value the paper does not state
+/// (Chapter 6, Tables 6.1-6.3; the project's assumptions of docs/vehicle-3d.md).
+pub const CALIBRATED: [(&str, f64, f64, &str); 8] = [
     ("joint_height_m", 0.6, 1.6, "not in Table 6.1; 1.0 m assumed (docs/vehicle-3d.md)"),
     ("drive.kp_n_m_per_m_s", 3_000.0, 27_000.0, "the PI speed gains are not given; 9 kN m/(m/s) assumed"),
     ("tire.vertical_damping_n_s_per_m", 1.0e4, 1.0e5, "Table 6.2 gives no tire damping; 35 kN s/m assumed"),
     ("tire.longitudinal_relaxation_length_m", 0.3, 3.0, "only the lateral relaxation length is stated (1.2 m); the longitudinal one is assumed equal"),
+    ("drive.ki_n_m_per_m", 0.0, 8_000.0, "the PI speed gains are not given; 2 kN m/m assumed"),
+    ("tire.rolling_resistance_coefficient", 0.005, 0.06, "not in Table 6.2; 0.03 assumed"),
+    ("wheel_spin_inertia_kg_m2", 300.0, 1_200.0, "wheel ends are not in Table 6.1; 600 kg m² assumed (tire, rim and in-wheel drive)"),
     ("hps.friction.f_c", 0.0, 5_000.0, "Table 5.1's friction constants are missing (HPS only)"),
 ];
+
+/// Entries of [`CALIBRATED`] a rigid front axle calibrates (all but the HPS friction).
+const RIGID_CALIBRATED: usize = 7;
 
 /// Relative tolerance of the replays: the fits difference outputs over parameter steps of
 /// 1e-3, so the integrator's jitter must stay well below what such a step changes
 /// (docs/discovery.md "Integration tolerance"); the scenario default is 3e-5.
-pub const REPLAY_RTOL: f64 = 1e-5;
+pub const REPLAY_RTOL: f64 = 1e-6;
 
-/// Half width of the moving average of the recorded speed that `driver-throttle` follows
-/// (s): a driver's throttle moves the speed over seconds; the faster fluctuations are the
-/// terrain's, which the replay produces itself (followed at +-0.25 s, the effect fed them
-/// in twice and made class E rides worse).
+/// Relative tolerance of the replays with the front-axle HPS: the strut's gas law moves the
+/// compared channels so little that at 1e-6 the integrator's jitter is of the size of what a
+/// 1e-3 step of the gas time constant changes (docs/discovery.md, "The 3-D vehicle"), and
+/// the fits of `hps-gas-temperature` stop where they start.
+pub const REPLAY_RTOL_HPS: f64 = 1e-7;
+
+/// Half width of the local quadratic fit ([`local_quadratic`]) of the recorded speed that
+/// `driver-throttle` follows (s): a driver's throttle moves the speed over seconds; the
+/// faster fluctuations are the terrain's, which the replay produces itself (and which the
+/// correction replay of [`Vehicle3dModel::replay_following`] takes out of what is followed).
 pub const THROTTLE_SMOOTH_S: f64 = 0.5;
 
 /// Leading samples left out of every comparison (s): the replay starts at the static
@@ -138,7 +151,13 @@ pub struct ReplayCache(Mutex<VecDeque<(Vec<u64>, Channels)>>);
 type Channels = Vec<Option<Vec<f64>>>;
 
 /// Replays kept per record.
-pub const CACHE_ENTRIES: usize = 12;
+pub const CACHE_ENTRIES: usize = 24;
+
+/// Cache-key marks of `driver-throttle`'s replays: the replay that finds the following
+/// setpoint, and the replay at a gain (followed by the gain's bits).
+const FOLLOW_KEY: u64 = u64::MAX;
+/// See [`FOLLOW_KEY`].
+const GAIN_KEY: u64 = u64::MAX - 1;
 
 impl Clone for ReplayCache {
     fn clone(&self) -> Self {
@@ -174,7 +193,10 @@ impl Vehicle3dModel {
             params: VehicleParams::nominal(),
             front_axle,
             default_load: None,
-            rtol: REPLAY_RTOL,
+            rtol: match front_axle {
+                FrontAxle::Rigid => REPLAY_RTOL,
+                FrontAxle::Suspended => REPLAY_RTOL_HPS,
+            },
         }
     }
 
@@ -189,7 +211,7 @@ impl Vehicle3dModel {
     /// The entries of [`CALIBRATED`] this model calibrates.
     fn calibrated(&self) -> &'static [(&'static str, f64, f64, &'static str)] {
         match self.front_axle {
-            FrontAxle::Rigid => &CALIBRATED[..4],
+            FrontAxle::Rigid => &CALIBRATED[..RIGID_CALIBRATED],
             FrontAxle::Suspended => &CALIBRATED[..],
         }
     }
@@ -269,6 +291,37 @@ impl Vehicle3dModel {
         Ok(ch)
     }
 
+    /// The setpoint under which the model follows the recorded speed of `rec`
+    /// (`driver-throttle` at gain 1): [`throttle_setpoint`], corrected once by what a replay
+    /// with it (`field` and that setpoint; cached under `key`) misses: with `d = w - y_s`
+    /// (`w` the target of [`throttle_target`], `y_s` that replay's speed smoothed as the
+    /// record's is), the setpoint becomes `set + d + e(d)` (`e` of [`drive_error`] for `d`'s
+    /// rate). The correction takes out what the inversion does not know: the tires' slip
+    /// lag, and the terrain's own speed fluctuations, which are in the record and in the
+    /// replay alike.
+    pub fn following_setpoint(
+        &self,
+        rec: &Replay3d,
+        params: &VehicleParams,
+        mut field: FieldEffects,
+        key: Vec<u64>,
+    ) -> Result<Vec<f64>, DiscoveryError> {
+        let set = throttle_setpoint(params, rec);
+        field.speed_setpoint = Some(SpeedSetpoint::new(rec.time_s.clone(), set.clone())?);
+        let first = rec.cache.get_or(key, || self.replay(rec, params, field))?;
+        let Some(Some(speed)) = first.first() else {
+            return Ok(set);
+        };
+        let half = (THROTTLE_SMOOTH_S / rec.dt_s).round() as usize;
+        let (y, y_rate) = local_quadratic(speed, half, rec.dt_s);
+        let (w, w_rate) = throttle_target(rec);
+        let d_rate: Vec<f64> = w_rate.iter().zip(&y_rate).map(|(a, b)| a - b).collect();
+        let e = drive_error(params, rec.load, rec.dt_s, &d_rate);
+        Ok((0..set.len())
+            .map(|i| set[i] + (w[i] - y[i]) + e[i])
+            .collect())
+    }
+
     /// The sensor effects on replayed channels of `rec` (sampled at its spacing).
     pub fn apply_sensor(
         &self,
@@ -287,11 +340,10 @@ impl Vehicle3dModel {
     }
 
     /// The field mechanisms, the sensor effects and the lateral compliance (mm/kN) of the
-    /// active effects on `rec` replayed with `params`.
+    /// active effects (`driver-throttle`'s setpoint is not among them: it needs a replay,
+    /// [`Self::following_setpoint`]).
     pub fn apply_effects(
         &self,
-        params: &VehicleParams,
-        rec: &Replay3d,
         effects: &[ActiveEffect<'_>],
     ) -> Result<(FieldEffects, SensorEffects, f64), DiscoveryError> {
         let (mut field, mut sensor, mut compliance) =
@@ -301,10 +353,7 @@ impl Vehicle3dModel {
             match EFFECTS.get(e.index).copied() {
                 Some("tire-lateral-compliance") => compliance = v[0],
                 Some("mount-compliance") => sensor.mount = Some((v[0], v[1])),
-                Some("driver-throttle") => {
-                    let set = throttle_setpoint(params, rec, v[0]);
-                    field.speed_setpoint = Some(SpeedSetpoint::new(rec.time_s.clone(), set)?);
-                }
+                Some("driver-throttle") => {}
                 Some("sensor-misalignment") => sensor.misalignment = Some([v[0], v[1], v[2]]),
                 Some("hps-gas-temperature") => {
                     field.hps.heat_transfer = Some(HeatTransfer {
@@ -324,38 +373,52 @@ impl Vehicle3dModel {
     }
 }
 
-/// The drive's setpoint under which `params`' PI drive reproduces the recorded speed of
-/// `rec`, scaled by `gain` about the mean: with the lumped longitudinal inertia per wheel
-/// torque `M = (m + 4 J / r^2) r / 4` (m the vehicle's mass, J the wheel spin inertia, r
-/// the unloaded radius), the drive law `kp e + ki E = M (dv/dt - dv/dt(0))` (E the
-/// integral of the speed error e) is solved for e along the smoothed recorded speed v,
-/// and `v_set = v_mean + gain (v - v_mean + e)`. The tires' slip lag between torque and
-/// force, rolling resistance and grade are left to the PI loop (asking for the
-/// acceleration one longitudinal relaxation length ahead made the replay worse).
-pub fn throttle_setpoint(params: &VehicleParams, rec: &Replay3d, gain: f64) -> Vec<f64> {
+/// The recorded speed of `rec` smoothed over +-[`THROTTLE_SMOOTH_S`] ([`local_quadratic`])
+/// and its rate: what the drive follows under `driver-throttle`.
+pub fn throttle_target(rec: &Replay3d) -> (&[f64], &[f64]) {
+    (&rec.speed_smooth.0, &rec.speed_smooth.1)
+}
+
+/// The PI drive's speed error `e` (m/s) along a record of spacing `dt_s` under which the
+/// drive gives the torque that accelerates `params`' vehicle (loaded as `load`) at `rate`:
+/// with the lumped longitudinal inertia per wheel torque `M = (m + 4 J / r^2) r / 4` (m the
+/// vehicle's mass, J the wheel spin inertia, r the unloaded radius), the drive law
+/// `kp e + ki E = M dv/dt` (E the integral of e, 0 at the start, as the replay's) is solved
+/// exactly over each sample for the torque held. Rolling resistance is the drive's
+/// feed-forward; the tires' slip lag between torque and force is left to the correction
+/// replay of [`Vehicle3dModel::replay_following`].
+pub fn drive_error(params: &VehicleParams, load: Load, dt_s: f64, rate: &[f64]) -> Vec<f64> {
     let mass = params.front_unit.mass_kg
         + params
-            .rear_parts(rec.load)
+            .rear_parts(load)
             .iter()
             .map(|p| p.mass_kg)
             .sum::<f64>();
     let r = params.tire.unloaded_radius_m;
     let inertia = (mass + 4.0 * params.wheel_spin_inertia_kg_m2 / (r * r)) * r / 4.0;
     let (kp, ki) = (params.drive.kp_n_m_per_m_s, params.drive.ki_n_m_per_m);
-    let (s, rate) = &rec.speed_smooth;
-    let a0 = rate.first().copied().unwrap_or(0.0);
-    // kp dE/dt + ki E = u, exactly over each sample for u held (E(0) = 0)
-    let decay = (-ki / kp * rec.dt_s).exp();
+    let decay = (-ki / kp * dt_s).exp();
     let mut big_e = 0.0;
-    s.iter()
-        .zip(rate)
-        .map(|(v, a)| {
-            let u = inertia * (a - a0);
+    rate.iter()
+        .map(|a| {
+            let u = inertia * a;
             let e = (u - ki * big_e) / kp;
-            big_e = u / ki + (big_e - u / ki) * decay;
-            rec.speed_m_s + gain * (v - rec.speed_m_s + e)
+            big_e = if ki > 0.0 {
+                u / ki + (big_e - u / ki) * decay
+            } else {
+                big_e + e * dt_s
+            };
+            e
         })
         .collect()
+}
+
+/// The drive's setpoint under which `params`' PI drive reproduces the target `w` of
+/// [`throttle_target`] on `rec`: `w + e` with `e` of [`drive_error`] for `w`'s rate.
+pub fn throttle_setpoint(params: &VehicleParams, rec: &Replay3d) -> Vec<f64> {
+    let (w, rate) = throttle_target(rec);
+    let e = drive_error(params, rec.load, rec.dt_s, rate);
+    w.iter().zip(&e).map(|(w, e)| w + e).collect()
 }
 
 /// Set registry path `name` of `p` (a `tire.` or `hps.` prefix addresses the nested set).
@@ -438,22 +501,60 @@ fn terrain_of(record: &Record) -> Result<Option<(TerrainSpec, u64)>, DiscoveryEr
     Ok(Some((spec, seed)))
 }
 
-/// Centred moving average of `x` over `half` samples each side, and its central difference.
-fn smooth_with_rate(x: &[f64], half: usize, dt: f64) -> (Vec<f64>, Vec<f64>) {
+/// Local quadratic least-squares fit of `x` (spacing `dt`) over `2 half + 1` samples about
+/// each sample (a Savitzky-Golay smoother; the window is shifted inside the record at its
+/// ends, so the ends are not biased as a truncated average is): the fitted value and slope
+/// at each sample.
+pub fn local_quadratic(x: &[f64], half: usize, dt: f64) -> (Vec<f64>, Vec<f64>) {
     let n = x.len();
-    let s: Vec<f64> = (0..n)
-        .map(|i| {
-            let (a, b) = (i.saturating_sub(half), (i + half).min(n - 1));
-            x[a..=b].iter().sum::<f64>() / (b - a + 1) as f64
-        })
-        .collect();
-    let r = (0..n)
-        .map(|i| {
-            let (a, b) = (i.saturating_sub(1), (i + 1).min(n - 1));
-            (s[b] - s[a]) / ((b - a).max(1) as f64 * dt)
-        })
-        .collect();
-    (s, r)
+    let width = (2 * half + 1).min(n);
+    if width < 3 {
+        return (x.to_vec(), vec![0.0; n]);
+    }
+    let mut value = Vec::with_capacity(n);
+    let mut slope = Vec::with_capacity(n);
+    for i in 0..n {
+        let a = i.saturating_sub(half).min(n - width);
+        // normal equations of y = c0 + c1 tau + c2 tau^2, tau = (j - i) dt
+        let (mut m, mut r) = ([[0.0; 3]; 3], [0.0; 3]);
+        for (j, y) in x.iter().enumerate().skip(a).take(width) {
+            let tau = (j as f64 - i as f64) * dt;
+            let basis = [1.0, tau, tau * tau];
+            for (k, bk) in basis.iter().enumerate() {
+                r[k] += bk * y;
+                for (l, bl) in basis.iter().enumerate() {
+                    m[k][l] += bk * bl;
+                }
+            }
+        }
+        let c = solve3(m, r).unwrap_or([x[i], 0.0, 0.0]);
+        value.push(c[0]);
+        slope.push(c[1]);
+    }
+    (value, slope)
+}
+
+/// Solution of the 3 x 3 system `m c = r` by Cramer's rule (`None` when singular: a window
+/// of fewer than three samples).
+fn solve3(m: [[f64; 3]; 3], r: [f64; 3]) -> Option<[f64; 3]> {
+    let det = |a: [[f64; 3]; 3]| {
+        a[0][0] * (a[1][1] * a[2][2] - a[1][2] * a[2][1])
+            - a[0][1] * (a[1][0] * a[2][2] - a[1][2] * a[2][0])
+            + a[0][2] * (a[1][0] * a[2][1] - a[1][1] * a[2][0])
+    };
+    let d = det(m);
+    if d == 0.0 || !d.is_finite() {
+        return None;
+    }
+    let mut c = [0.0; 3];
+    for (k, ck) in c.iter_mut().enumerate() {
+        let mut a = m;
+        for (row, rv) in a.iter_mut().zip(r) {
+            row[k] = rv;
+        }
+        *ck = det(a) / d;
+    }
+    Some(c)
 }
 
 impl DiscoveryModel for Vehicle3dModel {
@@ -594,7 +695,7 @@ impl DiscoveryModel for Vehicle3dModel {
             path_length_m,
             tracks,
             dt_s,
-            speed_smooth: smooth_with_rate(
+            speed_smooth: local_quadratic(
                 speed_col,
                 (THROTTLE_SMOOTH_S / dt_s).round() as usize,
                 dt_s,
@@ -624,23 +725,43 @@ impl DiscoveryModel for Vehicle3dModel {
         effects: &[ActiveEffect<'_>],
     ) -> Result<Vec<Option<Vec<f64>>>, DiscoveryError> {
         let mut p = self.apply_baseline(baseline)?;
-        let (field, sensor, compliance) = self.apply_effects(&p, prepared, effects)?;
+        let (mut field, sensor, compliance) = self.apply_effects(effects)?;
         p.tire.lateral_relaxation_length_m +=
             compliance * 1e-6 * p.tire.cornering_stiffness_n_per_rad;
-        // the vehicle-side inputs: the baseline and every model-side effect's values
+        // the vehicle-side inputs: the baseline and every model-side effect's values but
+        // the throttle's gain
         let mut key: Vec<u64> = baseline.iter().map(|x| x.to_bits()).collect();
+        let mut throttle = None;
         for e in effects {
-            key.push(e.index as u64);
-            if !matches!(
-                EFFECTS.get(e.index),
-                Some(&"mount-compliance") | Some(&"sensor-misalignment")
-            ) {
-                key.extend(e.values.iter().map(|x| x.to_bits()));
+            match EFFECTS.get(e.index) {
+                Some(&"mount-compliance") | Some(&"sensor-misalignment") => {}
+                Some(&"driver-throttle") => throttle = Some(e.values[0]),
+                _ => {
+                    key.push(e.index as u64);
+                    key.extend(e.values.iter().map(|x| x.to_bits()));
+                }
             }
         }
-        let ch = prepared
-            .cache
-            .get_or(key, || self.replay(prepared, &p, field))?;
+        let ch = match throttle {
+            None => prepared
+                .cache
+                .get_or(key, || self.replay(prepared, &p, field))?,
+            Some(gain) => {
+                // the setpoint that follows the record (one replay, shared by every gain),
+                // its swing about the drive's setpoint scaled by the gain
+                let mut follow_key = key.clone();
+                follow_key.push(FOLLOW_KEY);
+                let set = self.following_setpoint(prepared, &p, field.clone(), follow_key)?;
+                let v0 = prepared.speed_m_s;
+                let scaled = set.iter().map(|s| v0 + gain * (s - v0)).collect();
+                field.speed_setpoint = Some(SpeedSetpoint::new(prepared.time_s.clone(), scaled)?);
+                key.push(GAIN_KEY);
+                key.push(gain.to_bits());
+                prepared
+                    .cache
+                    .get_or(key, || self.replay(prepared, &p, field))?
+            }
+        };
         Ok(self.apply_sensor(prepared, p.gravity_m_s2, sensor, ch))
     }
 
@@ -659,6 +780,12 @@ impl DiscoveryModel for Vehicle3dModel {
                 mask: steering.iter().map(|s| !s).collect(),
             },
         ]
+    }
+
+    /// Ride accelerations have content up to the sampling rate (the terrain's band and the
+    /// tires' enveloping reach tens of Hz at ride speeds).
+    fn broadband_channels(&self) -> bool {
+        true
     }
 
     fn skip_samples(&self, record: &Record) -> usize {
@@ -699,6 +826,51 @@ mod tests {
         assign(&mut p, "hps.friction.f_c", 800.0).unwrap();
         assert_eq!(value(&p, "hps.friction.f_c").unwrap(), 800.0);
         assert!(assign(&mut p, "tire.no_such", 1.0).is_err());
+    }
+
+    #[test]
+    fn the_local_quadratic_fit_reproduces_a_parabola_to_its_ends() {
+        let dt = 0.01;
+        let x: Vec<f64> = (0..300)
+            .map(|i| {
+                let t = i as f64 * dt;
+                2.0 + 0.5 * t - 0.3 * t * t
+            })
+            .collect();
+        let (v, r) = local_quadratic(&x, 50, dt);
+        for (i, (v, r)) in v.iter().zip(&r).enumerate() {
+            let t = i as f64 * dt;
+            assert!((v - x[i]).abs() < 1e-9, "{i}: {v}");
+            assert!((r - (0.5 - 0.6 * t)).abs() < 1e-9, "{i}: {r}");
+        }
+        // too short to fit: the samples back, no slope
+        assert_eq!(
+            local_quadratic(&[1.0, 2.0], 5, dt),
+            (vec![1.0, 2.0], vec![0.0; 2])
+        );
+    }
+
+    #[test]
+    fn the_drive_error_solves_the_pi_law() {
+        // kp e + ki E = M a for a constant rate a: e = (M a / kp) exp(-ki t / kp)
+        let p = VehicleParams::nominal();
+        let (dt, a) = (0.01, 0.4);
+        let e = drive_error(&p, Load::Loaded, dt, &vec![a; 500]);
+        let mass = p.front_unit.mass_kg
+            + p.rear_parts(Load::Loaded)
+                .iter()
+                .map(|q| q.mass_kg)
+                .sum::<f64>();
+        let r = p.tire.unloaded_radius_m;
+        let m = (mass + 4.0 * p.wheel_spin_inertia_kg_m2 / (r * r)) * r / 4.0;
+        let (kp, ki) = (p.drive.kp_n_m_per_m_s, p.drive.ki_n_m_per_m);
+        for (i, e) in e.iter().enumerate() {
+            let want = m * a / kp * (-ki / kp * i as f64 * dt).exp();
+            assert!(
+                (e - want).abs() < 1e-9 * want.abs().max(1.0),
+                "{i}: {e} vs {want}"
+            );
+        }
     }
 
     #[test]

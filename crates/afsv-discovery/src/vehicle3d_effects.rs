@@ -51,7 +51,7 @@ pub fn catalogue(hps: bool) -> Vec<EffectSpec> {
         },
         EffectSpec {
             name: EFFECTS[2].into(),
-            description: "the driver's throttle moves the speed: the drive's setpoint is the one under which the PI drive reproduces the recorded speed (its swing about the mean scaled by a gain), where the paper's drive holds one speed".into(),
+            description: "the driver's throttle moves the speed: the drive's setpoint is the one under which the model follows the recorded speed (the PI drive inverted, then corrected by one replay), its swing about the held speed scaled by a gain, where the paper's drive holds one speed".into(),
             citation: "section 6.3 (longitudinal excitation by the driver's throttle in the field runs)".into(),
             params: vec![ParamSpec::new("gain", 1.0, 0.0, 2.0)],
         },

@@ -10,6 +10,9 @@
 //! | `variant_ride_records_without_a_hidden_effect_name_nothing` (ignored) | the same on 5 + 5 ride records only | same |
 //! | `twenty_ride_records` (ignored) | the timing case: one discovery on 10 + 10 ride records | same |
 //! | `replay_cost` (ignored) | prints one replay's wall time at three tolerances | same |
+//! | `calibration_of_the_null_set` (ignored) | prints what each of the records' unstated choices costs at the nominal calibration, and the calibration (twice: the second from the first's solution) with its excess over noise | same, about 30 s |
+//! | `throttle_form_on_its_records` (ignored) | prints each channel's NRMSE of the throttle records replayed at their truth's baseline with `driver-throttle` at gains 0-1.5 | same, seconds |
+//! | `gas_time_constant_profile` (ignored) | prints the error of one HPS ride record along the gas time constant at rtol 1e-6 and 1e-7 | same, seconds |
 
 mod common;
 mod vehicle3d;
@@ -102,6 +105,26 @@ fn run(
         d.named,
         d.gap_shrink,
         summary(&d)
+    );
+    for t in d.steps.iter().filter_map(|s| s.naming_tests.as_ref()) {
+        println!(
+            "naming tests of {}: placebo {:?} against {:.3e}; failed {:?}",
+            t.effect, t.best_placebo, t.effect_gain, t.failed
+        );
+        for g in &t.groups {
+            println!(
+                "  {} ({} records): {:?} +- {:?}{}",
+                g.group,
+                g.records,
+                g.values,
+                g.std_errors,
+                if g.at_bound { " (on a bound)" } else { "" }
+            );
+        }
+    }
+    println!(
+        "calibrated baseline {:?}\nfinal baseline {:?}\nexcess over noise {:.2}; calibration problems {:?}",
+        d.calibrated.baseline, d.final_model.baseline, d.excess_over_noise, d.calibration_problems
     );
     (d, secs)
 }
@@ -241,4 +264,159 @@ fn variant_ride_records_without_a_hidden_effect_name_nothing() {
     let (d, _) = run(FrontAxle::Rigid, Hidden::None, 5, 0, 18);
     assert!(d.named.is_empty(), "{}", summary(&d));
     assert!(!matches!(d.outcome, Outcome::Named { .. }));
+}
+
+/// Mean over the compared channels of the squared NRMSE of `baseline` on `recs`.
+fn mean_sq_nrmse(model: &Vehicle3dModel, recs: &[Record], baseline: &[f64]) -> f64 {
+    let e = afsv_discovery::evaluate_errors(model, recs, baseline, &[]).unwrap();
+    let v: Vec<f64> = e.iter().filter_map(|c| c.nrmse).map(|x| x * x).collect();
+    v.iter().sum::<f64>() / v.len() as f64
+}
+
+#[test]
+#[ignore]
+fn calibration_of_the_null_set() {
+    let axle = FrontAxle::Rigid;
+    let p = variant();
+    let train = records(axle, &p, &runs(RIDES, CHANGES, 11), Hidden::None, 11);
+    let hold = records(axle, &p, &runs(RIDES, CHANGES, 61), Hidden::None, 61);
+    let base = Vehicle3dModel::nominal(axle);
+    let nominal: Vec<f64> = base.baseline_params().iter().map(|s| s.initial).collect();
+    println!("nominal: {:.4e}", mean_sq_nrmse(&base, &train, &nominal));
+    for (name, x) in vehicle3d::VARIANT {
+        let mut m = base.clone();
+        afsv_discovery::vehicle3d::assign(&mut m.params, name, x).unwrap();
+        let b: Vec<f64> = m.baseline_params().iter().map(|s| s.initial).collect();
+        println!("{name} = {x}: {:.4e}", mean_sq_nrmse(&m, &train, &b));
+    }
+    let opts = DiscoveryOptions {
+        max_effects: 0,
+        ..DiscoveryOptions::default()
+    };
+    for rtol in [1e-6] {
+        let mut m = base.clone();
+        m.rtol = rtol;
+        for pass in 0..2 {
+            let t0 = std::time::Instant::now();
+            let d = discover(&m, &train, &hold, &[], &[], &opts, &Elapsed(t0)).unwrap();
+            let c = &d.calibrated;
+            println!(
+                "rtol {rtol:e} pass {pass}: {:?} train {:.4e} holdout {:.4e} excess {:.2} converged {} in {:.1} s",
+                c.baseline,
+                c.train_mse,
+                c.holdout_mse,
+                d.excess_over_noise,
+                c.converged,
+                t0.elapsed().as_secs_f64()
+            );
+            m.params = m.apply_baseline(&c.baseline).unwrap();
+        }
+    }
+}
+
+#[test]
+#[ignore]
+fn throttle_form_on_its_records() {
+    let axle = FrontAxle::Rigid;
+    let model = Vehicle3dModel::nominal(axle);
+    let hidden = Hidden::Throttle {
+        amp: 0.6,
+        period: 4.0,
+    };
+    let recs = records(axle, &variant(), &runs(RIDES, CHANGES, 14), hidden, 14);
+    let truth: Vec<f64> = model
+        .baseline_params()
+        .iter()
+        .map(|s| afsv_discovery::vehicle3d::value(&variant(), &s.name).unwrap())
+        .collect();
+    let e = model
+        .catalogue()
+        .iter()
+        .position(|c| c.name == "driver-throttle")
+        .unwrap();
+    for r in &recs {
+        let prep = model.prepare(r).unwrap();
+        for gain in [0.0, 0.5, 1.0, 1.5] {
+            let v = [gain];
+            let act = [afsv_discovery::ActiveEffect {
+                index: e,
+                values: &v,
+            }];
+            let pred = model.simulate(&prep, &truth, &act).unwrap();
+            let skip = model.skip_samples(r);
+            let mut line = format!("{} gain {gain}:", prep.condition);
+            for (name, p) in CHANNELS.iter().zip(&pred) {
+                let Some(p) = p else { continue };
+                let m = &r.column(name).unwrap()[skip..];
+                let p = &p[skip..];
+                let mean = m.iter().sum::<f64>() / m.len() as f64;
+                let sd =
+                    (m.iter().map(|v| (v - mean).powi(2)).sum::<f64>() / m.len() as f64).sqrt();
+                let rms = (m.iter().zip(p).map(|(a, b)| (a - b).powi(2)).sum::<f64>()
+                    / m.len() as f64)
+                    .sqrt();
+                line += &format!(" {}={:.3}", &name[..name.len().min(12)], rms / sd);
+            }
+            println!("{line}");
+        }
+    }
+}
+
+#[test]
+#[ignore]
+fn gas_time_constant_profile() {
+    let axle = FrontAxle::Suspended;
+    let set = runs(RIDES, CHANGES, 16);
+    let rec = vehicle3d::record(
+        axle,
+        &variant(),
+        &set[1],
+        Hidden::GasHeat(1.0),
+        0.03,
+        16_001,
+    );
+    let base = [
+        1.1512110914990006,
+        12166.191521995159,
+        45368.07656577497,
+        0.8054260002398426,
+        2422.4808374951326,
+        0.02567363247294305,
+        656.0037941162259,
+        399.70803500503877,
+    ];
+    for rtol in [1e-6, 1e-7] {
+        let mut model = Vehicle3dModel::nominal(axle);
+        model.rtol = rtol;
+        let e = model
+            .catalogue()
+            .iter()
+            .position(|c| c.name == "hps-gas-temperature")
+            .unwrap();
+        let prep = model.prepare(&rec).unwrap();
+        let skip = model.skip_samples(&rec);
+        for tau in [0.8, 1.0, 1.2, 1.5, 1.7, 1.79, 1.7957, 1.80, 1.81, 1.9, 2.2] {
+            let v = [tau];
+            let act = [afsv_discovery::ActiveEffect {
+                index: e,
+                values: &v,
+            }];
+            let pred = model.simulate(&prep, &base, &act).unwrap();
+            let mut sse = 0.0;
+            for (name, p) in CHANNELS.iter().zip(&pred) {
+                let Some(p) = p else { continue };
+                let m = &rec.column(name).unwrap()[skip..];
+                let mean = m.iter().sum::<f64>() / m.len() as f64;
+                let var = m.iter().map(|v| (v - mean).powi(2)).sum::<f64>() / m.len() as f64;
+                sse += m
+                    .iter()
+                    .zip(&p[skip..])
+                    .map(|(a, b)| (a - b).powi(2))
+                    .sum::<f64>()
+                    / var
+                    / m.len() as f64;
+            }
+            println!("rtol {rtol:e} {} tau {tau}: {sse:.6e}", prep.condition);
+        }
+    }
 }

@@ -46,18 +46,21 @@ pub enum Hidden {
 
 /// The second set of unstated choices (module docs): calibrated ones first, then the
 /// ones the adapter does not calibrate.
+pub const VARIANT: [(&str, f64); 8] = [
+    ("joint_height_m", 1.15),
+    ("drive.kp_n_m_per_m_s", 12_000.0),
+    ("tire.vertical_damping_n_s_per_m", 45_000.0),
+    ("tire.longitudinal_relaxation_length_m", 0.8),
+    ("wheel_tilt_inertia_kg_m2", 420.0),
+    ("wheel_spin_inertia_kg_m2", 660.0),
+    ("drive.ki_n_m_per_m", 2_600.0),
+    ("tire.rolling_resistance_coefficient", 0.026),
+];
+
+/// The nominal parameters with [`VARIANT`]'s choices.
 pub fn variant() -> VehicleParams {
     let mut p = VehicleParams::nominal();
-    for (name, x) in [
-        ("joint_height_m", 1.15),
-        ("drive.kp_n_m_per_m_s", 12_000.0),
-        ("tire.vertical_damping_n_s_per_m", 45_000.0),
-        ("tire.longitudinal_relaxation_length_m", 0.8),
-        ("wheel_tilt_inertia_kg_m2", 420.0),
-        ("wheel_spin_inertia_kg_m2", 660.0),
-        ("drive.ki_n_m_per_m", 2_600.0),
-        ("tire.rolling_resistance_coefficient", 0.026),
-    ] {
+    for (name, x) in VARIANT {
         assign(&mut p, name, x).unwrap();
     }
     p
