@@ -37,9 +37,15 @@ pub fn rough_terrain(
 /// the tracks themselves) the mean of the front and rear tracks, the rest nominal.
 fn truck_surface(p: &TruckParams) -> SurfaceParams {
     SurfaceParams {
-        track_width_m: 0.5 * (p.front_track_m + p.rear_track_m),
+        track_width_m: 2.0 * half_track_m(p),
         ..SurfaceParams::nominal()
     }
+}
+
+/// Where the truck's tires read a two-track terrain (m): plus and minus half the mean of the
+/// front and rear tracks (an OpenCRG road is sampled there too).
+pub fn half_track_m(p: &TruckParams) -> f64 {
+    0.25 * (p.front_track_m + p.rear_track_m)
 }
 
 /// The truck `p` on `terrain`, each side's tires on its track, the enveloping cache
@@ -148,10 +154,12 @@ fn run_on_terrain(
 /// start ([`ModelOptions::start_s_m`]) plus the run's path (the target speed over the run,
 /// 10 % over, plus 10 m) plus a wheelbase and a tire diameter.
 pub fn road_length_needed_m(p: &TruckParams, options: &RunOptions) -> f64 {
-    ModelOptions::default().start_s_m
-        + run_path_length_m(p, options)
-        + p.wheelbase_m
-        + 2.0 * p.tire_free_radius_m
+    road_beyond_path_m(p) + run_path_length_m(p, options)
+}
+
+/// What a road needs besides the run's path (m): the start, a wheelbase and a tire diameter.
+fn road_beyond_path_m(p: &TruckParams) -> f64 {
+    ModelOptions::default().start_s_m + p.wheelbase_m + 2.0 * p.tire_free_radius_m
 }
 
 /// A ramp-steer run of `p` on a measured two-track road `profile` (laid out from its first
@@ -185,11 +193,8 @@ pub fn run_case_on_road(
 /// Longest run (s) a road `length_m` long carries ([`road_length_needed_m`] solved for the
 /// run's duration; 0 when the road is too short for any run).
 fn max_duration_on_road_s(p: &TruckParams, length_m: f64) -> f64 {
-    let path = length_m
-        - ModelOptions::default().start_s_m
-        - p.wheelbase_m
-        - 2.0 * p.tire_free_radius_m
-        - 10.0;
+    // run_path_length_m solved for the run's duration
+    let path = length_m - road_beyond_path_m(p) - 10.0;
     (path / (1.1 * p.target_speed_m_s)).max(0.0)
 }
 

@@ -17,12 +17,8 @@
 use multibody::Workspace;
 use vehicle_components::{Channels, Component, Recorder};
 
-use afs_hydraulics::StrutInput;
-use hps_emulsion::StrutMotion;
-
 use crate::error::VehicleError;
 use crate::simulate::{initial_run, simulate_system, RunOptions, RunRecord};
-use crate::steering::strut_geometry;
 use crate::vehicle::{Vehicle, MAX_DIM};
 
 /// Most channels one row holds: time, the steering's and four struts'.
@@ -50,18 +46,7 @@ impl Vehicle {
         let o = self.offsets;
         let mut scratch = [0.0; MAX_DIM];
         row[0] = t;
-        let g = strut_geometry(ws, &self.layout);
-        let l0 = self.steering().initial_strut_length();
-        let input = StrutInput {
-            disp_left: g.length[0] - l0,
-            disp_right: g.length[1] - l0,
-            vel_left: g.rate[0],
-            vel_right: g.rate[1],
-            steer_wheel: match o.driver {
-                Some(i) => y[i],
-                None => self.options.steer.angle(t),
-            },
-        };
+        let (_, input) = self.steering_input(t, y, ws);
         let afs = self.steering();
         let n = Component::channels(afs).len();
         let out = Component::evaluate(
@@ -75,18 +60,8 @@ impl Vehicle {
         for struts in self.axle_struts().into_iter().flatten() {
             let n = Component::channels(&struts.strut).len();
             for side in 0..2 {
-                let (z, zdot) = struts.motion(y, o.v, side);
-                let motion = StrutMotion {
-                    deflection_m: z,
-                    velocity_m_s: zdot,
-                };
-                let states = struts.states(side);
-                let out = Component::evaluate(
-                    &struts.strut,
-                    &motion,
-                    &y[states.clone()],
-                    &mut scratch[..states.len()],
-                );
+                let states = struts.n_states();
+                let (_, _, out) = struts.evaluate(y, o.v, side, &mut scratch[..states]);
                 Component::record(&struts.strut, &out, &mut row[at..at + n]);
                 at += n;
             }

@@ -13,7 +13,9 @@ use std::ops::Range;
 
 use vehicle_components::{Component, StateLayout};
 
-use hps_emulsion::{emulsion::emulsion, HpsExtensions, HpsStrut, StrutMotion, StrutParams};
+use hps_emulsion::{
+    emulsion::emulsion, HpsExtensions, HpsStrut, StrutMotion, StrutOutputs, StrutParams,
+};
 
 use crate::error::{positive, rejected, VehicleError};
 use crate::params::{Load, VehicleParams};
@@ -165,6 +167,25 @@ impl AxleStruts {
         (self.static_travel_m + y[qi], y[v_at + vi])
     }
 
+    /// Strut `side`'s travel, rate and outputs at the vehicle state `y` (velocities from
+    /// `v_at`), its state rates into `d_state` (its own states' length).
+    #[inline]
+    pub fn evaluate(
+        &self,
+        y: &[f64],
+        v_at: usize,
+        side: usize,
+        d_state: &mut [f64],
+    ) -> (f64, f64, StrutOutputs) {
+        let (z, zdot) = self.motion(y, v_at, side);
+        let motion = StrutMotion {
+            deflection_m: z,
+            velocity_m_s: zdot,
+        };
+        let out = Component::evaluate(&self.strut, &motion, &y[self.states(side)], d_state);
+        (z, zdot, out)
+    }
+
     /// Both struts' forces (Eq 6.9 plus the end stop, compressive positive) applied to the
     /// carriers' joint forces `tau`, their state rates into `dydt`; returns the travels and
     /// forces, left then right. Allocation free.
@@ -178,13 +199,8 @@ impl AxleStruts {
     ) -> ([f64; 2], [f64; 2]) {
         let (mut travel, mut force) = ([0.0; 2], [0.0; 2]);
         for side in 0..2 {
-            let (z, zdot) = self.motion(y, v_at, side);
             let at = self.states(side);
-            let motion = StrutMotion {
-                deflection_m: z,
-                velocity_m_s: zdot,
-            };
-            let out = Component::evaluate(&self.strut, &motion, &y[at.clone()], &mut dydt[at]);
+            let (z, zdot, out) = self.evaluate(y, v_at, side, &mut dydt[at]);
             let stop = end_stop_force(z, zdot, self.strut.params().travel);
             tau[self.carriers[side].1] -= out.force + stop;
             travel[side] = z;

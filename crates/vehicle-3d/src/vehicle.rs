@@ -537,18 +537,8 @@ impl Vehicle {
         let mut snap = Snapshot::default();
 
         // steering struts (Eqs 6.6-6.8)
-        let g: StrutGeometry = strut_geometry(ws, &self.layout);
-        let steer = match o.driver {
-            Some(i) => y[i],
-            None => self.options.steer.angle(t),
-        };
-        let input = StrutInput {
-            disp_left: g.length[0] - self.l0,
-            disp_right: g.length[1] - self.l0,
-            vel_left: g.rate[0],
-            vel_right: g.rate[1],
-            steer_wheel: steer,
-        };
+        let (g, input) = self.steering_input(t, y, ws);
+        let steer = input.steer_wheel;
         let afs = Component::evaluate(
             &self.afs,
             &input,
@@ -638,6 +628,31 @@ impl Vehicle {
         snap.path_rate_m_s = path_rate;
         snap.heading_rad = heading;
         Ok(snap)
+    }
+
+    /// The steering struts' geometry at the kinematics of `y` in `ws` and what the steering
+    /// hydraulics get from it (Eqs 6.6-6.8): the extensions from `l0`, their rates and the
+    /// steering-wheel angle (the driver's state, else the input's at `t`).
+    #[inline]
+    pub(crate) fn steering_input(
+        &self,
+        t: f64,
+        y: &[f64],
+        ws: &Workspace,
+    ) -> (StrutGeometry, StrutInput) {
+        let g: StrutGeometry = strut_geometry(ws, &self.layout);
+        let steer = match self.offsets.driver {
+            Some(i) => y[i],
+            None => self.options.steer.angle(t),
+        };
+        let input = StrutInput {
+            disp_left: g.length[0] - self.l0,
+            disp_right: g.length[1] - self.l0,
+            vel_left: g.rate[0],
+            vel_right: g.rate[1],
+            steer_wheel: steer,
+        };
+        (g, input)
     }
 
     /// Full evaluation at `(t, y)`: derivatives into `dydt` and the snapshot. Leaves the

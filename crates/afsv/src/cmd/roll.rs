@@ -283,10 +283,7 @@ fn one_run(
     };
     let sp = case.rule.params()?;
     if let Some(file) = &case.road {
-        // an OpenCRG road is read on the truck's two tracks: plus and minus half the mean
-        // track, as on a synthesized terrain
-        let half_track = 0.25 * (p.front_track_m + p.rear_track_m);
-        let (profile, _) = super::road::read(file, half_track)?;
+        let (profile, _) = super::road::read(file, roll_truck::studies::half_track_m(p))?;
         let run = run_case_on_road(p, profile, case.direction, &options, &sp)
             .map_err(|e| format!("{}: {e}", file.display()))?;
         return Ok(run);
