@@ -17,6 +17,7 @@
 
 use crate::error::{positive, TireError};
 use crate::terrain::Profile;
+use arrayvec::ArrayVec;
 
 /// Capacity of the stack sample buffer; the sample spacing is widened if the window needs
 /// more.
@@ -183,19 +184,19 @@ impl Envelope {
         x_c: f64,
         solve: impl FnOnce(&dyn Fn(f64) -> EffectiveContact) -> R,
     ) -> R {
-        let mut buf = [0.0f64; MAX_SAMPLES];
+        // stack buffers filled to the window's length only: zero-filling all MAX_SAMPLES
+        // points cost more than the sampling itself
+        let mut buf = ArrayVec::<f64, MAX_SAMPLES>::new();
         let half = self.window_half_width();
         let i0 = ((x_c - half) / self.spacing).ceil();
         let i1 = ((x_c + half) / self.spacing).floor();
         let n = ((i1 - i0) as usize + 1).min(MAX_SAMPLES);
         let x0 = i0 * self.spacing;
-        for (i, z) in buf[..n].iter_mut().enumerate() {
-            *z = profile.height_at(x0 + i as f64 * self.spacing);
-        }
+        buf.extend((0..n).map(|i| profile.height_at(x0 + i as f64 * self.spacing)));
         let samples = Samples {
             x0,
             h: self.spacing,
-            z: &buf[..n],
+            z: &buf,
         };
         match self.method {
             EnvelopeMethod::CircleLine => {
@@ -205,9 +206,9 @@ impl Envelope {
                 let mut cams = Cams {
                     s: &samples,
                     rc: self.cam_radius,
-                    slope: [0.0; MAX_SAMPLES],
-                    offset: [0.0; MAX_SAMPLES],
-                    lift: [0.0; MAX_SAMPLES],
+                    slope: ArrayVec::new(),
+                    offset: ArrayVec::new(),
+                    lift: ArrayVec::new(),
                 };
                 cams.fill_segments();
                 let central = cams.base(x_c);
@@ -394,9 +395,9 @@ impl Samples<'_> {
 struct Cams<'a> {
     s: &'a Samples<'a>,
     rc: f64,
-    slope: [f64; MAX_SAMPLES],
-    offset: [f64; MAX_SAMPLES],
-    lift: [f64; MAX_SAMPLES],
+    slope: ArrayVec<f64, MAX_SAMPLES>,
+    offset: ArrayVec<f64, MAX_SAMPLES>,
+    lift: ArrayVec<f64, MAX_SAMPLES>,
 }
 
 impl Cams<'_> {
@@ -405,9 +406,9 @@ impl Cams<'_> {
         for i in 0..s.z.len().saturating_sub(1) {
             let m = (s.z[i + 1] - s.z[i]) / s.h;
             let q = (1.0 + m * m).sqrt();
-            self.slope[i] = m;
-            self.offset[i] = rc * m / q;
-            self.lift[i] = rc * (q - 1.0);
+            self.slope.push(m);
+            self.offset.push(rc * m / q);
+            self.lift.push(rc * (q - 1.0));
         }
     }
 
