@@ -192,7 +192,8 @@ impl TwoTrackProfile {
             return None;
         }
         let s = x / self.dx_m;
-        let i = (s.floor() as usize).min(self.len() - 1);
+        // s >= 0 here, so the cast truncates to floor(s) without a call to libm's floor
+        let i = (s as usize).min(self.len() - 1);
         let j = (i + 1).min(self.len() - 1);
         let t = s - i as f64;
         let lerp = |v: &[f64]| v[i] + t * (v[j] - v[i]);
