@@ -10,6 +10,7 @@
 use perf_measures::iso2631::{health_guidance_zone, HgczRelation, HgczZone};
 use serde::Serialize;
 use std::sync::Arc;
+use vehicle_3d::interconnect::{ride_linked_on, roll_linked_on, yaw_linked, Link};
 use vehicle_3d::scenarios::{
     ride_on, ride_tracks, roll_on, roll_tracks, yaw, RideSpec, RollSpec, Spread, YawMeasures,
     YawSpec,
@@ -55,6 +56,9 @@ pub struct DesignMeasures {
     /// With the vehicle's front-axle strut (Table 6.3 for the prototype); `None` when its
     /// description gives the front axle no strut.
     pub nominal_hps: Option<AxleSummary>,
+    /// The struts' interconnection (`[link]` of the description) in the `nominal_hps` runs;
+    /// the rigid-front-axle runs have no front struts to link and run without it.
+    pub link: Option<Link>,
 }
 
 /// The three measures of one front axle of one parameter set over common seeds: the D1
@@ -114,8 +118,16 @@ struct SeedTracks {
     roll: Arc<TireTracks>,
 }
 
-fn run_job(p: &VehicleParams, job: Job, tracks: &[SeedTracks]) -> Result<Outcome, String> {
+/// One run of `job`; with the front-axle HPS the struts are interconnected by `link`, when
+/// given.
+fn run_job(
+    p: &VehicleParams,
+    job: Job,
+    tracks: &[SeedTracks],
+    link: Option<Link>,
+) -> Result<Outcome, String> {
     let e = |e: vehicle_3d::VehicleError| e.to_string();
+    let link_of = |axle: FrontAxle| link.filter(|_| axle == FrontAxle::Suspended);
     let of = |seed: u64| {
         tracks
             .iter()
@@ -130,27 +142,43 @@ fn run_job(p: &VehicleParams, job: Job, tracks: &[SeedTracks]) -> Result<Outcome
                 .find(|(l, _)| *l == load)
                 .map(|(_, t)| Arc::clone(t))
                 .ok_or_else(|| format!("no {load} ride tracks for seed {seed}"))?;
-            let (_, m) = ride_on(p, &RideSpec::d1(load, axle), t).map_err(e)?;
+            let spec = RideSpec::d1(load, axle);
+            let m = match link_of(axle) {
+                Some(l) => ride_linked_on(p, &spec, t, l).map_err(e)?.1,
+                None => ride_on(p, &spec, t).map_err(e)?.1,
+            };
             Outcome::Ride(m.a_wz_m_s2, m.strut_travel_p2p_m)
         }
         Job::Roll(axle, seed) => {
             let t = Arc::clone(&of(seed)?.roll);
-            let (_, m) = roll_on(p, &RollSpec::d2(axle), t).map_err(e)?;
+            let spec = RollSpec::d2(axle);
+            let m = match link_of(axle) {
+                Some(l) => roll_linked_on(p, &spec, t, l).map_err(e)?.1,
+                None => roll_on(p, &spec, t).map_err(e)?.1,
+            };
             Outcome::Roll(m.sp_drt_m_s2)
         }
-        Job::Yaw(axle) => Outcome::Yaw(yaw(p, &YawSpec::d3(axle), 0).map_err(e)?.1),
+        Job::Yaw(axle) => {
+            let spec = YawSpec::d3(axle);
+            Outcome::Yaw(match link_of(axle) {
+                Some(l) => yaw_linked(p, &spec, l).map_err(e)?.1,
+                None => yaw(p, &spec, 0).map_err(e)?.1,
+            })
+        }
     })
 }
 
 /// The design measures D1 (a_wz and d_s for each of `ride_loads`), D2 (SP-DRT) and D3
 /// (omega_z, zeta) of the vehicle `p` with each of `axles`, over common terrain `seeds`
-/// (section 6.4), all runs in parallel; `progress` is called once per finished run with a
-/// short description. One entry per axle, in order.
+/// (section 6.4), all runs in parallel; with the front-axle HPS the struts are
+/// interconnected by `link` (the description's `[link]`), when given. `progress` is called
+/// once per finished run with a short description. One entry per axle, in order.
 pub fn measure(
     p: &VehicleParams,
     axles: &[FrontAxle],
     ride_loads: &[Load],
     seeds: &[u64],
+    link: Option<Link>,
     progress: &(dyn Fn(&str) + Sync),
 ) -> Result<Vec<ConfigMeasures>, String> {
     if seeds.is_empty() || seeds.len() as u64 > MAX_SEEDS {
@@ -191,7 +219,7 @@ pub fn measure(
             })
         },
         &jobs,
-        |&j, tracks| run_job(p, j, tracks),
+        |&j, tracks| run_job(p, j, tracks, link),
         |&j| progress(&job_text(j)),
     )?
     .into_iter()
@@ -252,20 +280,35 @@ pub fn hgcz_8h_band() -> Result<(f64, f64), String> {
 }
 
 /// Run the assessment of the vehicle `p` over `seeds` (in parallel): [`measure`] with a
-/// rigid front axle and, when `with_hps`, with its front-axle strut `p.hps`, both load
-/// cases; `progress` is called once per finished run with a short description.
+/// rigid front axle and, when `with_hps`, with its front-axle strut `p.hps` (interconnected
+/// by `link`, when given), both load cases; `progress` is called once per finished run with
+/// a short description.
 pub fn assess(
     p: &VehicleParams,
     with_hps: bool,
     seeds: &[u64],
+    link: Option<Link>,
     progress: &(dyn Fn(&str) + Sync),
 ) -> Result<DesignMeasures, String> {
+    if link.is_some() && !with_hps {
+        return Err(
+            "a [link] interconnects the front-axle struts: the vehicle needs its front-axle HPS"
+                .into(),
+        );
+    }
     let axles: &[FrontAxle] = if with_hps {
         &[FrontAxle::Rigid, FrontAxle::Suspended]
     } else {
         &[FrontAxle::Rigid]
     };
-    let configs = measure(p, axles, &[Load::Unloaded, Load::Loaded], seeds, progress)?;
+    let configs = measure(
+        p,
+        axles,
+        &[Load::Unloaded, Load::Loaded],
+        seeds,
+        link,
+        progress,
+    )?;
     let axle = |c: &ConfigMeasures| -> Result<AxleSummary, String> {
         let ride = |load| {
             c.ride_of(load)
@@ -284,6 +327,7 @@ pub fn assess(
         hgcz_8h_m_s2: hgcz_8h_band()?,
         unsuspended: axle(&configs[0])?,
         nominal_hps: configs.get(1).map(axle).transpose()?,
+        link,
     })
 }
 

@@ -72,7 +72,7 @@ pub fn assess(
     } else {
         EquationForm::EnergyConsistent
     };
-    let vehicle = crate::design_3d::assess(&p, v.front_strut.is_some(), seeds, progress)?;
+    let vehicle = crate::design_3d::assess(&p, v.front_strut.is_some(), seeds, v.link, progress)?;
     let strut = match &v.front_strut {
         Some(s) => Some(hps_emulsion::characterize::summary(s, 0.025).map_err(|e| e.to_string())?),
         None => None,

@@ -1,6 +1,9 @@
 //! A vehicle description with a `[link]` (docs/vehicles.md): `afsv vehicle yaw` runs the
 //! linked vehicle and says so, the same description without the link runs as before, and
-//! the commands that cannot run the link, or `--hps off`, refuse it in one line.
+//! the commands that cannot run the link (the path change, and the Chapter 6 studies of the
+//! front strut alone), or `--hps off`, refuse it in one line. `vehicle measures` and
+//! `evaluate` run the link (their library code is tested in afsv-design's
+//! `tests/linked_measures.rs`).
 
 mod cli_support;
 use cli_support::{afsv, json, scratch};
@@ -50,7 +53,18 @@ fn a_roll_link_runs_in_vehicle_yaw_and_is_refused_where_it_cannot_run() {
             vec!["vehicle", "yaw", "--vehicle", l, "--hps", "off"],
             "--hps off",
         ),
-        (vec!["vehicle", "measures", "--vehicle", l], "has a [link]"),
+        (
+            vec!["vehicle", "path-change", "--vehicle", l],
+            "has a [link]",
+        ),
+        (
+            vec!["optimize", "hps", "--vehicle", l],
+            "interconnects its struts",
+        ),
+        (
+            vec!["study", "hps-sensitivity", "--vehicle", l],
+            "interconnects its struts",
+        ),
     ] {
         let out = afsv(&args);
         assert_eq!(out.status.code(), Some(1), "{args:?}");

@@ -40,7 +40,12 @@ pub fn to_text(d: &DesignMeasures) -> String {
     );
     let mut cols = vec![("rigid front axle", &d.unsuspended)];
     if let Some(h) = &d.nominal_hps {
-        cols.push(("front-axle HPS", h));
+        let head = match d.link {
+            None => "front-axle HPS",
+            Some(vehicle_3d::interconnect::Link::Roll(_)) => "HPS + roll link",
+            Some(vehicle_3d::interconnect::Link::Pitch(_)) => "HPS + pitch link",
+        };
+        cols.push((head, h));
     }
     let row = |name: &str, f: &dyn Fn(&AxleSummary) -> String, unit: &str| {
         let cells: String = cols.iter().map(|(_, a)| format!(" {:>18}", f(a))).collect();

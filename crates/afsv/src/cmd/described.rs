@@ -49,12 +49,14 @@ pub fn is_file(arg: &Path) -> bool {
 
 /// The 3-D parameters of the articulated vehicle `arg` names, with its front-axle strut as
 /// `hps`, for a command (`what`) that designs or varies that strut; an error when the
-/// description gives the front axle no strut.
+/// description gives the front axle no strut, or interconnects its struts (`[link]`: these
+/// commands run the strut unlinked, so they would answer for another vehicle).
 pub fn with_front_strut(
     arg: Option<&Path>,
     what: &str,
 ) -> Result<vehicle_3d::VehicleParams, String> {
     let v = articulated(arg)?;
+    refuse_link(&v, what)?;
     let strut = v.front_strut.ok_or_else(|| {
         format!(
             "{what}: the vehicle description `{}` gives the front axle no strut (add `strut = \"front-axle\"` or a strut file to its front [[axle]])",
@@ -65,4 +67,16 @@ pub fn with_front_strut(
         hps: strut,
         ..v.params
     })
+}
+
+/// Refuses a description whose struts are interconnected (`[link]`) in a command (`what`)
+/// that runs the front strut alone, unlinked: its answer would be for another vehicle.
+pub fn refuse_link(v: &afsv_vehicle::ArticulatedVehicle, what: &str) -> Result<(), String> {
+    match v.link {
+        None => Ok(()),
+        Some(_) => Err(format!(
+            "{what}: the vehicle description `{}` interconnects its struts ([link]); this study varies the front strut alone, unlinked (use `afsv optimize layout` for a linked layout, or remove the [link])",
+            v.name
+        )),
+    }
 }

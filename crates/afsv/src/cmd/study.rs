@@ -158,7 +158,9 @@ fn sweep_vehicle(
     } else {
         let file = std::path::Path::new(&a.hps);
         guard.input("--hps", file)?;
-        let mut p = super::described::articulated(a.vehicle.as_deref())?.params;
+        let v = super::described::articulated(a.vehicle.as_deref())?;
+        super::described::refuse_link(&v, "--hps FILE")?;
+        let mut p = v.params;
         p.hps = super::vehicle::read_strut(file, "nominal or a strut file")?;
         p
     };

@@ -1,9 +1,10 @@
 //! `afsv vehicle measures`: the three design measures of section 6.4 for one configuration
 //! (parameter set, front axle, ride load case) over common terrain seeds, through the code
 //! `afsv evaluate` uses (`afsv_design::design_3d::measure`): D1 a_wz with the 8 h
-//! HGCZ verdict and the strut travel d_s (Eq 6.19), D2 SP-DRT, D3 omega_z and zeta.
+//! HGCZ verdict and the strut travel d_s (Eq 6.19), D2 SP-DRT, D3 omega_z and zeta. With
+//! the front-axle HPS the struts run interconnected as the description's `[link]` says.
 
-use super::{declare_inputs, print_result, vehicle_params, CaseArgs, CmdResult};
+use super::{declare_inputs, vehicle_params, CaseArgs, CmdResult};
 use afsv::output::OutputGuard;
 use afsv::progress::Progress;
 use afsv_design::design_3d::{measure, MAX_SEEDS};
@@ -33,15 +34,17 @@ pub(super) fn measures_cmd(
     let mut guard = OutputGuard::new(false);
     declare_inputs(case, &mut guard)?;
     let seeds = measure_seeds(seeds, seed)?;
-    super::unlinked(case, "measures")?;
     let (p, axle) = vehicle_params(case)?;
+    let link = super::described_link(case, axle)?;
     let runs = seeds.len() * 2 + 1;
     let progress = Progress::new("afsv vehicle measures", "runs", Some(runs));
-    let result = measure(&p, &[axle], &[case.load], &seeds, &|d| progress.step(d));
+    let result = measure(&p, &[axle], &[case.load], &seeds, link, &|d| {
+        progress.step(d)
+    });
     progress.finish();
     let c = result?.pop().ok_or("no configuration was measured")?;
     let (v, text) = measures_report(&p, axle, case.load, case.paper_form, &seeds, &c)?;
-    print_result(json_out, &v, &text)
+    super::print_linked(json_out, v, &text, link.as_ref())
 }
 
 #[cfg(test)]
