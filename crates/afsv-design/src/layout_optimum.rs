@@ -16,7 +16,8 @@
 //! - D4 for `d4_speed`: the ride (frame a_wz, the problem's load and window) at every one
 //!   of the problem's D4 speeds, the mean a_wz's first upward crossing of the ISO 2631-1
 //!   8 h caution-zone bound ([`crate::hps_speed_sweep::first_upward_crossing`]), censored
-//!   at the ends of the swept range ([`LayoutMeasure::D4Speed`]).
+//!   at the ends of the swept range ([`LayoutMeasure::D4Speed`]); `d4_speed_seat` the same
+//!   on the seat pan's a_wz of the same runs ([`LayoutMeasure::D4SpeedSeat`]).
 //!
 //! The search is the real-coded GA of `optimize::ga` (Deb's feasibility rules, seeded, so
 //! a run is reproducible bit for bit), its initial population the nominal design projected
@@ -305,10 +306,7 @@ impl LayoutProblem {
         }
         let problem_measures =
             std::iter::once(d.objective).chain(d.constraints.iter().map(|c| c.measure));
-        if problem_measures
-            .clone()
-            .any(|m| m == LayoutMeasure::D4Speed)
-        {
+        if problem_measures.clone().any(|m| m.run() == Run::Sweep) {
             let s = &d.d4_speeds_kmh;
             let ok = (2..=MAX_D4_SPEEDS).contains(&s.len())
                 && s.iter().all(|v| v.is_finite() && (5.0..=100.0).contains(v))
@@ -317,14 +315,16 @@ impl LayoutProblem {
                 return Err(shape(
                     "d4_speeds_kmh",
                     format!(
-                        "`d4_speed` needs 2 to {MAX_D4_SPEEDS} strictly ascending speeds within 5-100 km/h, got {s:?}"
+                        "`d4_speed` and `d4_speed_seat` need 2 to {MAX_D4_SPEEDS} strictly ascending speeds within 5-100 km/h, got {s:?}"
                     ),
                 ));
             }
         }
         for m in problem_measures {
             let why = match m {
-                LayoutMeasure::AwzSeat | LayoutMeasure::Seat if d.seat.is_none() => {
+                LayoutMeasure::AwzSeat | LayoutMeasure::Seat | LayoutMeasure::D4SpeedSeat
+                    if d.seat.is_none() =>
+                {
                     Some("needs a cab and seat")
                 }
                 LayoutMeasure::StrutTravel if d.front_axle != FrontAxle::Suspended => {
@@ -538,7 +538,14 @@ impl LayoutProblem {
             sums.insert(LayoutMeasure::OmegaZ, m.omega_z_hz);
         }
         if needs(Run::Sweep) {
-            sums.insert(LayoutMeasure::D4Speed, self.d4_speed(&p)?);
+            let at_seat = needed.contains(&LayoutMeasure::D4SpeedSeat);
+            let (frame, on_seat) = self.d4_speed(&p, seat.as_ref().filter(|_| at_seat))?;
+            if needed.contains(&LayoutMeasure::D4Speed) {
+                sums.insert(LayoutMeasure::D4Speed, frame);
+            }
+            if let Some(v) = on_seat {
+                sums.insert(LayoutMeasure::D4SpeedSeat, v);
+            }
         }
         for m in &needed {
             match sums.get(m) {
@@ -553,15 +560,21 @@ impl LayoutProblem {
     /// `d4_speed` of the layout `p` ([`LayoutMeasure::D4Speed`]): the ride at every D4
     /// speed on every seed (its own tracks: they depend on the speed), the frame's a_wz
     /// averaged over the seeds, its first upward crossing of the 8 h caution-zone bound,
-    /// censored at the ends of the range.
-    fn d4_speed(&self, p: &VehicleParams) -> Result<f64, String> {
+    /// censored at the ends of the range; with `seat`, also `d4_speed_seat`
+    /// ([`LayoutMeasure::D4SpeedSeat`]) from the seat pan's a_wz on the same runs.
+    fn d4_speed(
+        &self,
+        p: &VehicleParams,
+        seat: Option<&CabSeatLayout>,
+    ) -> Result<(f64, Option<f64>), String> {
         let d = &self.desc;
         let sim = |e: vehicle_3d::VehicleError| e.to_string();
         let speeds = &d.d4_speeds_kmh;
         let runs: Vec<(usize, u64)> = (0..speeds.len())
             .flat_map(|i| d.seeds.iter().map(move |&s| (i, s)))
             .collect();
-        let awz: Vec<Result<(usize, f64), String>> = runs
+        // per run: the frame's a_wz and, with a seat, the seat pan's
+        let awz: Vec<Result<(usize, f64, f64), String>> = runs
             .into_par_iter()
             .map(|(i, seed)| {
                 let spec = RideSpec {
@@ -570,37 +583,66 @@ impl LayoutProblem {
                     ..RideSpec::d1(d.load, d.front_axle)
                 };
                 let t = ride_tracks(p, &spec, seed).map_err(sim)?;
-                let m = match &d.link {
-                    None => ride_on(p, &spec, t).map_err(sim)?.1,
-                    Some(link) => ride_linked_on(p, &spec, t, link).map_err(sim)?.1,
+                let (rec, m) = match &d.link {
+                    None => ride_on(p, &spec, t).map_err(sim)?,
+                    Some(link) => {
+                        let (run, m) = ride_linked_on(p, &spec, t, link).map_err(sim)?;
+                        (run.record, m)
+                    }
                 };
-                Ok((i, m.a_wz_m_s2))
+                let on_seat = match seat {
+                    Some(s) => {
+                        let t0 = RUN_IN_M / (speeds[i] / 3.6);
+                        seat_ride_measures(p, &rec, t0, s)
+                            .map_err(sim)?
+                            .a_wz_seat_m_s2
+                    }
+                    None => f64::NAN,
+                };
+                Ok((i, m.a_wz_m_s2, on_seat))
             })
             .collect();
-        let mut mean = vec![0.0; speeds.len()];
+        let (mut frame, mut on_seat) = (vec![0.0; speeds.len()], vec![0.0; speeds.len()]);
         for r in awz {
-            let (i, a) = r.map_err(|e| format!("d4_speed: {e}"))?;
-            mean[i] += a / d.seeds.len() as f64;
+            let (i, a, s) = r.map_err(|e| format!("d4_speed: {e}"))?;
+            frame[i] += a / d.seeds.len() as f64;
+            on_seat[i] += s / d.seeds.len() as f64;
         }
         let upper = health_guidance_zone(HGCZ_HOURS, HgczRelation::SqrtTime)
             .map_err(|e| e.to_string())?
             .upper_m_s2;
-        Ok(d4_crossing(speeds, &mean, upper))
+        Ok((
+            d4_crossing(speeds, &frame, upper),
+            seat.map(|_| d4_crossing(speeds, &on_seat, upper)),
+        ))
     }
 
-    /// Whether `m`'s `d4_speed` (if measured) lies at an end of the swept D4 range, where
-    /// it is censored ([`LayoutMeasure::D4Speed`]).
-    pub fn d4_censored(&self, m: &Measured) -> Option<String> {
-        let v = *m.get(&LayoutMeasure::D4Speed)?;
+    /// The D4 measures of `m` (`d4_speed`, `d4_speed_seat`, those measured) that lie at an
+    /// end of the swept D4 range, where they are censored ([`LayoutMeasure::D4Speed`]),
+    /// each with the sentence that says so.
+    pub fn d4_censored(&self, m: &Measured) -> Vec<(LayoutMeasure, String)> {
         let s = &self.desc.d4_speeds_kmh;
-        let (lo, hi) = (*s.first()?, *s.last()?);
-        if v >= hi {
-            Some(format!("d4_speed: the frame's a_wz stays below the 8 h caution zone up to {hi} km/h, the top of the D4 speeds (the crossing lies beyond: raise the top speed)"))
-        } else if v <= lo {
-            Some(format!("d4_speed: the frame's a_wz is in the 8 h caution zone already at {lo} km/h, the lowest D4 speed (the crossing lies at or below it: lower the lowest speed)"))
-        } else {
-            None
-        }
+        let (Some(&lo), Some(&hi)) = (s.first(), s.last()) else {
+            return Vec::new();
+        };
+        [
+            (LayoutMeasure::D4Speed, "the frame's"),
+            (LayoutMeasure::D4SpeedSeat, "the seat pan's"),
+        ]
+        .into_iter()
+        .filter_map(|(measure, whose)| {
+            let v = *m.get(&measure)?;
+            let name = measure.name();
+            let text = if v >= hi {
+                format!("{name}: {whose} a_wz stays below the 8 h caution zone up to {hi} km/h, the top of the D4 speeds (the crossing lies beyond: raise the top speed)")
+            } else if v <= lo {
+                format!("{name}: {whose} a_wz is in the 8 h caution zone already at {lo} km/h, the lowest D4 speed (the crossing lies at or below it: lower the lowest speed)")
+            } else {
+                return None;
+            };
+            Some((measure, text))
+        })
+        .collect()
     }
 
     /// The GA's evaluation of measures `m` given the nominal ones (module docs).

@@ -29,6 +29,9 @@ pub enum LayoutMeasure {
     /// lies at or above it), one already in it at the lowest speed the lowest (at or
     /// below it); such a value at the optimum is reported and not earned.
     D4Speed,
+    /// D4 read where the operator sits: [`LayoutMeasure::D4Speed`] of the seat pan's a_wz
+    /// (needs a cab and seat), censored alike.
+    D4SpeedSeat,
 }
 
 /// The run a measure needs.
@@ -42,7 +45,7 @@ pub(super) enum Run {
 
 impl LayoutMeasure {
     /// Every measure.
-    pub const ALL: [LayoutMeasure; 8] = [
+    pub const ALL: [LayoutMeasure; 9] = [
         LayoutMeasure::AwzFrame,
         LayoutMeasure::AwzSeat,
         LayoutMeasure::Seat,
@@ -51,6 +54,7 @@ impl LayoutMeasure {
         LayoutMeasure::SpDrt,
         LayoutMeasure::OmegaZ,
         LayoutMeasure::D4Speed,
+        LayoutMeasure::D4SpeedSeat,
     ];
 
     /// Its name on the command line and in reports.
@@ -64,6 +68,7 @@ impl LayoutMeasure {
             LayoutMeasure::SpDrt => "sp_drt",
             LayoutMeasure::OmegaZ => "omega_z",
             LayoutMeasure::D4Speed => "d4_speed",
+            LayoutMeasure::D4SpeedSeat => "d4_speed_seat",
         }
     }
 
@@ -74,7 +79,7 @@ impl LayoutMeasure {
             LayoutMeasure::Seat => "-",
             LayoutMeasure::StrutTravel | LayoutMeasure::RearStrutTravel => "m",
             LayoutMeasure::OmegaZ => "Hz",
-            LayoutMeasure::D4Speed => "km/h",
+            LayoutMeasure::D4Speed | LayoutMeasure::D4SpeedSeat => "km/h",
         }
     }
 
@@ -94,7 +99,7 @@ impl LayoutMeasure {
         match self {
             LayoutMeasure::SpDrt => Run::Roll,
             LayoutMeasure::OmegaZ => Run::Yaw,
-            LayoutMeasure::D4Speed => Run::Sweep,
+            LayoutMeasure::D4Speed | LayoutMeasure::D4SpeedSeat => Run::Sweep,
             _ => Run::Ride,
         }
     }

@@ -73,8 +73,9 @@ pub struct LayoutOptimum {
     pub feasible: bool,
     /// Designs evaluated by the GA (the nominal and the optimum's report not counted).
     pub evaluations: usize,
-    /// Censored values the optimum's verdict rests on: the optimum's `d4_speed` at an end
-    /// of the D4 range, or the nominal's where a constraint scales it (empty otherwise).
+    /// Censored values the optimum's verdict rests on: the optimum's `d4_speed` or
+    /// `d4_speed_seat` at an end of the D4 range, or the nominal's where a constraint scales
+    /// it (empty otherwise).
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub censored: Vec<String>,
 }
@@ -144,15 +145,21 @@ pub(crate) fn result(
             met: c.value_of(&optimum, nominal) <= 0.0,
         })
         .collect();
-    let mut censored: Vec<String> = problem.d4_censored(&optimum).into_iter().collect();
-    let scaled = d
-        .constraints
-        .iter()
-        .any(|c| c.of_nominal && c.measure == LayoutMeasure::D4Speed);
-    if let Some(n) = problem.d4_censored(nominal).filter(|_| scaled) {
-        censored.push(format!(
-            "the nominal's {n}; a bound on `* nominal` rests on it"
-        ));
+    let mut censored: Vec<String> = problem
+        .d4_censored(&optimum)
+        .into_iter()
+        .map(|(_, text)| text)
+        .collect();
+    for (measure, n) in problem.d4_censored(nominal) {
+        let scaled = d
+            .constraints
+            .iter()
+            .any(|c| c.of_nominal && c.measure == measure);
+        if scaled {
+            censored.push(format!(
+                "the nominal's {n}; a bound on `* nominal` rests on it"
+            ));
+        }
     }
     Ok(LayoutOptimum {
         censored,

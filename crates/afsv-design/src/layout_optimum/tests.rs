@@ -266,5 +266,46 @@ fn d4_speed_is_the_crossing_of_the_rides_at_each_speed() {
         .upper_m_s2;
     assert_eq!(got, d4_crossing(&d.d4_speeds_kmh, &awz, upper), "{awz:?}");
     let censored = p.d4_censored(&[(LayoutMeasure::D4Speed, got)].into_iter().collect());
-    assert_eq!(censored.is_some(), got == 20.0 || got == 40.0, "{got}");
+    assert_eq!(
+        censored.len(),
+        usize::from(got == 20.0 || got == 40.0),
+        "{got}"
+    );
+}
+
+#[test]
+fn d4_speed_seat_is_the_crossing_of_the_seat_measure_over_the_d4_speeds() {
+    let mut d = tiny();
+    d.variables.truncate(1);
+    d.constraints.clear();
+    d.objective = LayoutMeasure::D4SpeedSeat;
+    d.ride_length_m = 10.0;
+    d.d4_speeds_kmh = vec![20.0, 40.0];
+    let got = LayoutProblem::new(d.clone())
+        .unwrap()
+        .measure(None)
+        .unwrap();
+    assert!(!got.contains_key(&LayoutMeasure::D4Speed), "{got:?}");
+    let awz: Vec<f64> = d
+        .d4_speeds_kmh
+        .iter()
+        .map(|&v| {
+            let mut one = d.clone();
+            one.objective = LayoutMeasure::AwzSeat;
+            one.speed_kmh = v;
+            LayoutProblem::new(one).unwrap().measure(None).unwrap()[&LayoutMeasure::AwzSeat]
+        })
+        .collect();
+    let upper = health_guidance_zone(HGCZ_HOURS, HgczRelation::SqrtTime)
+        .unwrap()
+        .upper_m_s2;
+    assert_eq!(
+        got[&LayoutMeasure::D4SpeedSeat],
+        d4_crossing(&d.d4_speeds_kmh, &awz, upper),
+        "{awz:?}"
+    );
+    // without a seat the measure is refused by name
+    d.seat = None;
+    let e = LayoutProblem::new(d).err().unwrap().to_string();
+    assert!(e.contains("`d4_speed_seat` needs a cab and seat"), "{e}");
 }

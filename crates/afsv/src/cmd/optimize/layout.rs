@@ -45,7 +45,8 @@ pub struct LayoutArgs {
     pub vary: Vec<String>,
     /// The measure to minimise: awz_frame, awz_seat, seat, strut_travel,
     /// rear_strut_travel, sp_drt, omega_z, d4_speed (the frame's 8 h caution-zone crossing
-    /// speed over --d4-speeds: one ride per D4 speed and seed per design).
+    /// speed over --d4-speeds: one ride per D4 speed and seed per design), d4_speed_seat
+    /// (the same on the seat pan's a_wz; needs the seat).
     #[arg(long)]
     pub objective: String,
     /// Maximise the objective instead.
@@ -64,8 +65,9 @@ pub struct LayoutArgs {
     /// Load case of the rides (D2 and D3 are loaded by definition).
     #[arg(long, default_value = "loaded")]
     pub load: Load,
-    /// The D4 speeds of `d4_speed` (km/h), comma separated, strictly ascending, 2 to 20 of
-    /// them within 5 to 100; read only when `d4_speed` is the objective or constrained.
+    /// The D4 speeds of `d4_speed` and `d4_speed_seat` (km/h), comma separated, strictly
+    /// ascending, 2 to 20 of them within 5 to 100; read only when one of them is the
+    /// objective or constrained.
     #[arg(long, default_value = "10,15,20,25,30,35,40")]
     pub d4_speeds: String,
     /// Terrain seeds of every design, 1 to 100 (each measure is the mean over them).
@@ -112,16 +114,17 @@ fn problem_desc(a: &LayoutArgs) -> Result<LayoutProblemDesc, String> {
         .iter()
         .map(|t| LayoutConstraint::parse(t).map_err(flag("constraint")))
         .collect::<Result<_, _>>()?;
-    let d4 = LayoutMeasure::D4Speed;
-    let d4_speeds_kmh = if objective == d4 || constraints.iter().any(|c| c.measure == d4) {
-        crate::cmd::study::parse_list(
-            "--d4-speeds",
-            &a.d4_speeds,
-            afsv_design::layout_optimum::MAX_D4_SPEEDS,
-        )?
-    } else {
-        Vec::new()
-    };
+    let d4 = [LayoutMeasure::D4Speed, LayoutMeasure::D4SpeedSeat];
+    let d4_speeds_kmh =
+        if d4.contains(&objective) || constraints.iter().any(|c| d4.contains(&c.measure)) {
+            crate::cmd::study::parse_list(
+                "--d4-speeds",
+                &a.d4_speeds,
+                afsv_design::layout_optimum::MAX_D4_SPEEDS,
+            )?
+        } else {
+            Vec::new()
+        };
     Ok(LayoutProblemDesc {
         vehicle: v.name.clone(),
         layout: layout.name,
