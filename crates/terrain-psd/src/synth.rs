@@ -167,11 +167,13 @@ impl TwoTrackProfile {
     }
 
     /// Number of samples per track.
+    #[inline]
     pub fn len(&self) -> usize {
         self.left_m.len()
     }
 
     /// True when there are no samples.
+    #[inline]
     pub fn is_empty(&self) -> bool {
         self.left_m.is_empty()
     }
@@ -182,11 +184,13 @@ impl TwoTrackProfile {
     }
 
     /// Length `(len - 1) dx` (m).
+    #[inline]
     pub fn length_m(&self) -> f64 {
         self.len().saturating_sub(1) as f64 * self.dx_m
     }
 
     /// Linearly interpolated `(left, right)` elevations at `x` (m); `None` outside `[0, length]`.
+    #[inline]
     pub fn heights_at(&self, x: f64) -> Option<(f64, f64)> {
         if self.is_empty() || !(x >= 0.0 && x <= self.length_m()) {
             return None;
