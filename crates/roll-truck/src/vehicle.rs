@@ -193,8 +193,9 @@ fn track_index(m: &TireMount) -> usize {
 impl TruckVehicle {
     /// The truck of `params` on `terrain`, its left tires on the line `y = +half_width`,
     /// its right tires on `y = -half_width` (for terrain-psd's `TwoTrackTerrain`, half its
-    /// track width). Validates the parameters and options and builds the enveloping cache.
-    pub fn new<T: Terrain>(
+    /// track width). Validates the parameters and options and builds the enveloping cache
+    /// (the two sides in parallel).
+    pub fn new<T: Terrain + Sync>(
         params: &TruckParams,
         terrain: &T,
         half_width: f64,
@@ -228,10 +229,12 @@ impl TruckVehicle {
             )
         };
         let deflection = 0.5 * (statics.front_tire_deflection_m + statics.rear_tire_deflection_m);
-        let tracks = [
-            build(half_width, deflection)?,
-            build(-half_width, deflection)?,
-        ];
+        // the two sides' caches are independent: built side by side
+        let (left, right) = rayon::join(
+            || build(half_width, deflection),
+            || build(-half_width, deflection),
+        );
+        let tracks = [left?, right?];
         let vertical = VerticalContact::new(
             LoadDeflectionTable::linear(params.tire_vertical_stiffness_n_per_m)?,
             params.tire_vertical_damping_n_s_per_m,
