@@ -15,6 +15,7 @@
 //!   [`path_change`](mod@path_change): the V3 path change (section 6.3) with the
 //!   path-following driver (re-exported by `scenarios`);
 //!   [`yaw_mode`]: which addition of the 3-D model moves the yaw mode;
+//! - [`bogie`]: the rear walking-beam bogie (a tandem, one beam and strut per side);
 //! - [`suspension`]: HPS struts on any axle (the rear strut's default, static travel,
 //!   stored energy);
 //! - [`cab_ride`]: the cab on mounts and the suspension seat driven by a ride run's frame
@@ -24,6 +25,7 @@
 //!
 //! Model notes: `docs/vehicle-3d.md`.
 
+pub mod bogie;
 pub mod cab_ride;
 pub mod channels;
 pub mod component_record;
@@ -45,6 +47,7 @@ pub mod tires;
 pub mod vehicle;
 pub mod yaw_mode;
 
+pub use bogie::BogieParams;
 pub use error::VehicleError;
 pub use field::{FieldEffects, SpeedSetpoint};
 pub use model::FrontAxle;
