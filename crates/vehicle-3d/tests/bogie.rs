@@ -220,7 +220,7 @@ fn the_beam_pitch_mode_matches_the_hand_model() {
         let other: f64 = (0..o.afs - o.v)
             .filter(|k| !beams.contains(k) && !spins.contains(k))
             .map(|k| {
-                if k >= 3 && k < 6 {
+                if (3..6).contains(&k) {
                     rates(k)
                 } else {
                     lever * rates(k)
