@@ -6,7 +6,7 @@
 //!
 //! - [`params`]: Table 6.1 and every documented assumption, [`registry`]: the same by name;
 //!   [`statics`]: the hand tire loads; [`model`]: the tree (14 DOF, 16 with the front
-//!   HPS, 18 with HPS on both axles);
+//!   HPS, 18 with HPS on both axles; 4 more with the rear bogie);
 //! - [`steering`]: the struts between their 3-D mounts; [`tires`]: one tire on its cached
 //!   track; [`vehicle`]: the ODE system; [`simulate`](mod@simulate): a recorded run;
 //!   [`channels`]: its channels in the record convention `afsv-v1`;
