@@ -60,6 +60,7 @@ pub fn prototype() -> Articulated {
         tire: PROTOTYPE_TIRE.to_string(),
         suspension: Suspension::Rigid,
         strut,
+        bogie: None,
     };
     let mut tire: BTreeMap<String, TireParams> = BTreeMap::new();
     tire.insert(PROTOTYPE_TIRE.to_string(), p.tire.clone());

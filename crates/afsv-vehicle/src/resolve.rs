@@ -184,6 +184,7 @@ fn articulated_path(name: &str) -> String {
         "wheel_mass_kg" => "wheel_end.mass_kg",
         "wheel_spin_inertia_kg_m2" => "wheel_end.spin_inertia_kg_m2",
         "wheel_tilt_inertia_kg_m2" => "wheel_end.tilt_inertia_kg_m2",
+        other if other.starts_with("bogie.") => return format!("axle[1].{other}"),
         other => return other.replace("cab_point_m", "cab.point_m"),
     };
     mapped.to_string()
@@ -223,6 +224,7 @@ fn articulated(a: &Articulated, o: &Origin<'_>) -> Result<ArticulatedVehicle, De
         steering: a.steering.clone(),
         hps: front_strut.unwrap_or_else(StrutParams::front_axle),
         rear_hps: None,
+        bogie: rear.bogie,
         drive: a.drive,
         // a description is a vehicle, not a model form: the CLI's --paper-form sets it
         yaw_inertia_form: vehicle_3d::YawInertiaForm::EnergyConsistent,
@@ -391,6 +393,12 @@ fn axles<'a>(a: &'a Articulated, o: &Origin<'_>) -> Result<[&'a Axle; 2], Descri
     }
     if rear.unit != UnitName::Rear {
         return Err(o.err("axle[1].unit", "the second axle must hang on the rear unit"));
+    }
+    if front.bogie.is_some() {
+        return Err(o.err(
+            "axle[0].bogie",
+            "a walking-beam bogie carries the rear axle only (a rear tandem); remove it from the front axle",
+        ));
     }
     if rear.suspension == Suspension::Rigid && rear.strut.is_some() {
         return Err(o.err(

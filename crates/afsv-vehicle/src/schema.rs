@@ -216,6 +216,11 @@ pub struct Axle {
     /// studies try (`--hps nominal`). Optional on a rigid axle.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub strut: Option<StrutSource>,
+    /// A walking-beam bogie (rear axle only): the axle becomes a tandem at
+    /// `distance_from_joint_m`, one beam per side (`vehicle_3d::bogie`); a field left out
+    /// takes its documented default.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub bogie: Option<vehicle_3d::BogieParams>,
 }
 
 /// The yaw-plane model's own data for one load case (Chapter 3, Table 3.1 columns), when

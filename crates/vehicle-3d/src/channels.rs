@@ -38,6 +38,37 @@ pub const RECORD_CHANNELS: [&str; 24] = [
     "drive_torque_n_m",
 ];
 
+/// The channels of a written record of the vehicle with the rear bogie: those of
+/// [`RECORD_CHANNELS`] with the six tires' normal forces ([`crate::model::TANDEM_TIRE_NAMES`]).
+pub const TANDEM_RECORD_CHANNELS: [&str; 26] = [
+    "time_s",
+    "steer_wheel_deg",
+    "speed_m_s",
+    "articulation_deg",
+    "strut_left_disp_m",
+    "strut_right_disp_m",
+    "p_c_pa",
+    "p_r_pa",
+    "yaw_rate_front_deg_s",
+    "cab_accel_x_m_s2",
+    "cab_accel_y_m_s2",
+    "cab_accel_z_m_s2",
+    "front_pitch_accel_rad_s2",
+    "front_lateral_accel_m_s2",
+    "rear_lateral_accel_m_s2",
+    "rear_ltr",
+    "rear_roll_deg",
+    "hps_travel_left_m",
+    "hps_travel_right_m",
+    "normal_force_front_left_n",
+    "normal_force_front_right_n",
+    "normal_force_rear_left_lead_n",
+    "normal_force_rear_right_lead_n",
+    "normal_force_rear_left_trail_n",
+    "normal_force_rear_right_trail_n",
+    "drive_torque_n_m",
+];
+
 impl RunRecord {
     /// Channel `name` in the `afsv-v1` convention, or `None` for a name the vehicle does not
     /// record. Besides [`RECORD_CHANNELS`] the front unit's roll and yaw accelerations
@@ -70,18 +101,34 @@ impl RunRecord {
             "rear_roll_deg" => deg(&self.rear_roll_rad, 1.0),
             "hps_travel_left_m" => copy(&self.hps_travel_m[0]),
             "hps_travel_right_m" => copy(&self.hps_travel_m[1]),
-            "normal_force_front_left_n" => copy(&self.normal_force_n[0]),
-            "normal_force_front_right_n" => copy(&self.normal_force_n[1]),
-            "normal_force_rear_left_n" => copy(&self.normal_force_n[2]),
-            "normal_force_rear_right_n" => copy(&self.normal_force_n[3]),
             "drive_torque_n_m" => copy(&self.drive_torque_n_m),
-            _ => return None,
+            other => {
+                let tire = other.strip_prefix("normal_force_")?.strip_suffix("_n")?;
+                let k = self.tire_names().iter().position(|&t| t == tire)?;
+                copy(self.normal_force_n.get(k)?)
+            }
         })
     }
 
-    /// Every channel of [`RECORD_CHANNELS`], in order, in the `afsv-v1` convention.
+    /// The tire names of the record's normal forces: six with the rear bogie, else four.
+    fn tire_names(&self) -> &'static [&'static str] {
+        crate::model::tire_names(self.normal_force_n.len() == crate::model::MAX_TIRES)
+    }
+
+    /// The written channels: [`RECORD_CHANNELS`], or [`TANDEM_RECORD_CHANNELS`] for a run
+    /// with the rear bogie.
+    pub fn record_channels(&self) -> &'static [&'static str] {
+        if self.normal_force_n.len() == crate::model::MAX_TIRES {
+            &TANDEM_RECORD_CHANNELS
+        } else {
+            &RECORD_CHANNELS
+        }
+    }
+
+    /// Every channel of [`RunRecord::record_channels`], in order, in the `afsv-v1`
+    /// convention.
     pub fn afsv_v1_columns(&self) -> Vec<(&'static str, Vec<f64>)> {
-        vehicle_run::columns(&RECORD_CHANNELS, |name| self.afsv_v1_channel(name))
+        vehicle_run::columns(self.record_channels(), |name| self.afsv_v1_channel(name))
     }
 }
 
@@ -114,7 +161,7 @@ mod tests {
             pressure_pa: [next(), next()],
             hps_travel_m: [next(), next()],
             rear_hps_travel_m: [next(), next()],
-            normal_force_n: [next(), next(), next(), next()],
+            normal_force_n: vec![next(), next(), next(), next()],
             drive_torque_n_m: next(),
             position_m: [next(), next()],
             front_axle_m: [next(), next()],

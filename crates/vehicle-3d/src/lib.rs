@@ -6,7 +6,7 @@
 //!
 //! - [`params`]: Table 6.1 and every documented assumption, [`registry`]: the same by name;
 //!   [`statics`]: the hand tire loads; [`model`]: the tree (14 DOF, 16 with the front
-//!   HPS, 18 with HPS on both axles);
+//!   HPS, 18 with HPS on both axles; 4 more with the rear bogie);
 //! - [`steering`]: the struts between their 3-D mounts; [`tires`]: one tire on its cached
 //!   track; [`vehicle`]: the ODE system; [`simulate`](mod@simulate): a recorded run;
 //!   [`channels`]: its channels in the record convention `afsv-v1`;
@@ -15,6 +15,7 @@
 //!   [`path_change`](mod@path_change): the V3 path change (section 6.3) with the
 //!   path-following driver (re-exported by `scenarios`);
 //!   [`yaw_mode`]: which addition of the 3-D model moves the yaw mode;
+//! - [`bogie`]: the rear walking-beam bogie (a tandem, one beam and strut per side);
 //! - [`suspension`]: HPS struts on any axle (the rear strut's default, static travel,
 //!   stored energy);
 //! - [`cab_ride`]: the cab on mounts and the suspension seat driven by a ride run's frame
@@ -24,6 +25,7 @@
 //!
 //! Model notes: `docs/vehicle-3d.md`.
 
+pub mod bogie;
 pub mod cab_ride;
 pub mod channels;
 pub mod component_record;
@@ -45,6 +47,7 @@ pub mod tires;
 pub mod vehicle;
 pub mod yaw_mode;
 
+pub use bogie::BogieParams;
 pub use error::VehicleError;
 pub use field::{FieldEffects, SpeedSetpoint};
 pub use model::FrontAxle;

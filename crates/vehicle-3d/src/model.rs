@@ -10,11 +10,26 @@
 //! | 7, 9 rear-left / rear-right wheel carrier (massless) | prismatic along the rear unit's z (rear HPS), else fixed | strut travel |
 //! | 8, 10 rear-left / rear-right wheel end | revolute about y | spin |
 //!
+//! With the rear walking-beam bogie ([`crate::bogie`], `VehicleParams::bogie`) the rear
+//! bodies are instead:
+//!
+//! | body | joint | DOF |
+//! |---|---|---|
+//! | 7, 11 rear-left / rear-right bogie carrier (massless, at the pivot) | prismatic along the rear unit's z (rear HPS), else fixed | strut travel |
+//! | 8, 12 rear-left / rear-right beam (cg at the pivot) | revolute about the carrier's y | beam pitch |
+//! | 9, 13 leading wheel end, `+s/2` along the beam | revolute about y | spin |
+//! | 10, 14 trailing wheel end, `-s/2` along the beam | revolute about y | spin |
+//!
 //! 14 DOF unsuspended, 16 with the front-axle HPS (Table "s6_model_dof"), 18 with HPS on
 //! both axles: the rear struts are mounted as the front ones, at the wheel centres along
-//! the carrying unit's z, ratio 1 (`docs/layouts.md`, "HPS on any axle"). The two steering
-//! struts are massless force elements between the front unit and the hitch, so their spins
-//! about their own axes (Fig 6.2) do not appear.
+//! the carrying unit's z, ratio 1 (`docs/layouts.md`, "HPS on any axle"). The bogie adds
+//! two beam pitches and two spins (18, 20, 22); its struts sit at the pivots, one per side.
+//! The two steering struts are massless force elements between the front unit and the
+//! hitch, so their spins about their own axes (Fig 6.2) do not appear.
+//!
+//! The bogie's pivot lies at the rear axle position (`rear_axle_to_joint_m`) at the wheel
+//! centres' height (assumption: the drive torque reacted on the beam then balances the
+//! tires' longitudinal forces about the pivot, so driving does not pitch the beam).
 //!
 //! The geometry is laid out in the static pose: every body level, the cgs at their Table 6.1
 //! heights, the wheel centres at the free radius minus the static tire deflection
@@ -35,6 +50,7 @@
 use multibody::{Body, Joint, Model, ModelBuilder};
 use nalgebra::{Isometry3, Matrix3, Vector3};
 
+use crate::bogie::BogieParams;
 use crate::error::{rejected, VehicleError};
 use crate::params::{Load, RigidPart, VehicleParams, YawInertiaForm};
 use crate::statics::Statics;
@@ -63,10 +79,58 @@ pub mod body {
     pub const CARRIER_RR: usize = 9;
     /// Rear-right wheel end.
     pub const WHEEL_RR: usize = 10;
+    /// With the bogie: rear-left carrier at the pivot.
+    pub const BOGIE_CARRIER_RL: usize = 7;
+    /// With the bogie: rear-left beam.
+    pub const BEAM_RL: usize = 8;
+    /// With the bogie: rear-left leading wheel end.
+    pub const WHEEL_RL_LEAD: usize = 9;
+    /// With the bogie: rear-left trailing wheel end.
+    pub const WHEEL_RL_TRAIL: usize = 10;
+    /// With the bogie: rear-right carrier at the pivot.
+    pub const BOGIE_CARRIER_RR: usize = 11;
+    /// With the bogie: rear-right beam.
+    pub const BEAM_RR: usize = 12;
+    /// With the bogie: rear-right leading wheel end.
+    pub const WHEEL_RR_LEAD: usize = 13;
+    /// With the bogie: rear-right trailing wheel end.
+    pub const WHEEL_RR_TRAIL: usize = 14;
 }
+
+/// Largest number of tires (the rear tandem's six).
+pub const MAX_TIRES: usize = 6;
 
 /// Tire names in state and record order.
 pub const TIRE_NAMES: [&str; 4] = ["front_left", "front_right", "rear_left", "rear_right"];
+
+/// Tire names with the rear bogie, in state and record order: the front pair, the leading
+/// rear pair, the trailing rear pair.
+pub const TANDEM_TIRE_NAMES: [&str; MAX_TIRES] = [
+    "front_left",
+    "front_right",
+    "rear_left_lead",
+    "rear_right_lead",
+    "rear_left_trail",
+    "rear_right_trail",
+];
+
+/// The tire names of a vehicle with or without the rear bogie.
+pub fn tire_names(bogie: bool) -> &'static [&'static str] {
+    if bogie {
+        &TANDEM_TIRE_NAMES
+    } else {
+        &TIRE_NAMES
+    }
+}
+
+/// The tire mounts of a vehicle with or without the rear bogie, in [`tire_names`] order.
+pub fn tire_mounts(bogie: bool) -> &'static [TireMount] {
+    if bogie {
+        &TANDEM_MOUNTS
+    } else {
+        &TIRE_MOUNTS
+    }
+}
 
 /// Where a tire sits: its wheel body, the non-spinning body that carries it (its heading
 /// and axle direction), its side and axle.
@@ -80,6 +144,15 @@ pub struct TireMount {
     pub left: bool,
     /// Front axle.
     pub front: bool,
+}
+
+impl TireMount {
+    /// Index of the effective track the tire runs on ([`crate::tires::TireTracks`]: front
+    /// left, front right, rear left, rear right): the tandem's two wheels of a side share
+    /// their side's rear track, read at their own path coordinate.
+    pub fn track(&self) -> usize {
+        2 * usize::from(!self.front) + usize::from(!self.left)
+    }
 }
 
 /// The four tire mounts in [`TIRE_NAMES`] order.
@@ -105,6 +178,37 @@ pub const TIRE_MOUNTS: [TireMount; 4] = [
     TireMount {
         wheel: body::WHEEL_RR,
         carrier: body::CARRIER_RR,
+        left: false,
+        front: false,
+    },
+];
+
+/// The six tire mounts with the rear bogie in [`TANDEM_TIRE_NAMES`] order: the rear
+/// wheels' carrier is their side's bogie carrier (its x axis the heading; the beam pitches).
+pub const TANDEM_MOUNTS: [TireMount; MAX_TIRES] = [
+    TIRE_MOUNTS[0],
+    TIRE_MOUNTS[1],
+    TireMount {
+        wheel: body::WHEEL_RL_LEAD,
+        carrier: body::BOGIE_CARRIER_RL,
+        left: true,
+        front: false,
+    },
+    TireMount {
+        wheel: body::WHEEL_RR_LEAD,
+        carrier: body::BOGIE_CARRIER_RR,
+        left: false,
+        front: false,
+    },
+    TireMount {
+        wheel: body::WHEEL_RL_TRAIL,
+        carrier: body::BOGIE_CARRIER_RL,
+        left: true,
+        front: false,
+    },
+    TireMount {
+        wheel: body::WHEEL_RR_TRAIL,
+        carrier: body::BOGIE_CARRIER_RR,
         left: false,
         front: false,
     },
@@ -165,6 +269,27 @@ impl MassProps {
         let about_com = self.about(&com) + sign * other.about(&com);
         Self::new(mass, com, about_com)
     }
+}
+
+/// One beam of the bogie at the origin: its mass, and its inertia about the pivot with the
+/// roll part of [`crate::bogie::BEAM_ROLL_TO_PITCH`] and yaw equal to pitch.
+fn beam_props(bogie: &BogieParams) -> MassProps {
+    let pitch = bogie.beam_pitch_inertia_kg_m2;
+    MassProps::new(
+        bogie.beam_mass_kg,
+        Vector3::zeros(),
+        Matrix3::from_diagonal(&Vector3::new(
+            crate::bogie::BEAM_ROLL_TO_PITCH * pitch,
+            pitch,
+            pitch,
+        )),
+    )
+}
+
+/// The two wheel centres of a beam from its pivot, leading then trailing.
+fn tandem_ends(bogie: &BogieParams) -> [Vector3<f64>; 2] {
+    let h = bogie.half_spacing_m();
+    [Vector3::new(h, 0.0, 0.0), Vector3::new(-h, 0.0, 0.0)]
 }
 
 /// Whether the front wheel carriers slide (front-axle HPS) or are fixed.
@@ -239,13 +364,28 @@ pub fn build_tree(
     }
     let z_rw = r - statics.rear_tire_deflection_m - h_j;
     let half_r = 0.5 * p.rear_track_m;
+    // the single rear axle's wheel centres, or the bogie's pivots
     let rear_wheels = [
         Vector3::new(-p.rear_axle_to_joint_m, half_r, z_rw),
         Vector3::new(-p.rear_axle_to_joint_m, -half_r, z_rw),
     ];
     let mut rear = rear_all;
-    for c in rear_wheels {
-        rear = rear.combine(&at(c), -1.0);
+    match &p.bogie {
+        None => {
+            for c in rear_wheels {
+                rear = rear.combine(&at(c), -1.0);
+            }
+        }
+        Some(bogie) => {
+            let beam = beam_props(bogie);
+            let ends = tandem_ends(bogie);
+            for pivot in rear_wheels {
+                rear = rear.combine(&MassProps { com: pivot, ..beam }, -1.0);
+                for e in ends {
+                    rear = rear.combine(&at(pivot + e), -1.0);
+                }
+            }
+        }
     }
     for (field, m) in [
         ("front_unit.roll_inertia_kg_m2", &front),
@@ -342,11 +482,34 @@ pub fn build_tree(
             rear_joint,
             c,
         ));
-        b.add_body(wheel_body(
-            &format!("wheel_rear_{side}"),
-            carrier,
-            Isometry3::identity(),
-        ));
+        match &p.bogie {
+            None => {
+                b.add_body(wheel_body(
+                    &format!("wheel_rear_{side}"),
+                    carrier,
+                    Isometry3::identity(),
+                ));
+            }
+            Some(bogie) => {
+                let beam = beam_props(bogie);
+                let beam_body = b.add_body(Body {
+                    name: format!("beam_rear_{side}"),
+                    parent: Some(carrier),
+                    joint: spin,
+                    placement: Isometry3::identity(),
+                    mass: beam.mass,
+                    com: Vector3::zeros(),
+                    inertia: beam.inertia,
+                });
+                for (end, e) in ["lead", "trail"].into_iter().zip(tandem_ends(bogie)) {
+                    b.add_body(wheel_body(
+                        &format!("wheel_rear_{side}_{end}"),
+                        beam_body,
+                        place(e),
+                    ));
+                }
+            }
+        }
     }
     let model = b.build()?;
 
@@ -396,6 +559,38 @@ mod tests {
         let s = Statics::of(&p, Load::Loaded).unwrap();
         let (m, _) = build_tree(&p, Load::Loaded, &s, FrontAxle::Suspended, false).unwrap();
         assert_eq!(m.nv() + 2, 18);
+    }
+
+    #[test]
+    fn the_bogie_adds_two_beam_pitches_and_two_spins_and_keeps_the_masses() {
+        let mut p = VehicleParams::nominal();
+        p.bogie = Some(BogieParams::default());
+        for (rear_hps, dof) in [(false, 18), (true, 20)] {
+            if rear_hps {
+                p.rear_hps = Some(p.default_rear_strut().unwrap());
+            }
+            let s = Statics::of(&p, Load::Loaded).unwrap();
+            let (m, l) = build_tree(&p, Load::Loaded, &s, FrontAxle::Rigid, false).unwrap();
+            assert_eq!(m.nv() + 2, dof);
+            assert!((m.total_mass() - 73_220.0).abs() < 1e-6);
+            assert!((l.rear_mass_kg - 52_220.0).abs() < 1e-6);
+            assert!((l.rear_cg.x + 2.6852).abs() < 1e-3, "{:?}", l.rear_cg);
+        }
+        // the mounts name the bodies the tree builds
+        let s = Statics::of(&p, Load::Loaded).unwrap();
+        let (m, _) = build_tree(&p, Load::Loaded, &s, FrontAxle::Rigid, false).unwrap();
+        assert_eq!(m.body_index("beam_rear_left"), Some(body::BEAM_RL));
+        assert_eq!(
+            m.body_index("wheel_rear_right_trail"),
+            Some(body::WHEEL_RR_TRAIL)
+        );
+        assert_eq!(
+            m.body_index("carrier_rear_right"),
+            Some(body::BOGIE_CARRIER_RR)
+        );
+        for (i, mount) in TANDEM_MOUNTS.iter().enumerate() {
+            assert_eq!(mount.track(), TIRE_MOUNTS[i.min(2 + i % 2)].track());
+        }
     }
 
     #[test]

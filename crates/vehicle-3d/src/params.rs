@@ -12,6 +12,7 @@ use hps_emulsion::StrutParams;
 use serde::{Deserialize, Serialize};
 use tire_fiala::TireParams;
 
+use crate::bogie::BogieParams;
 use crate::error::{finite, non_negative, positive, rejected, VehicleError};
 
 /// Mass, cg and inertias of one rigid part (a unit or the payload), Table 6.1.
@@ -154,6 +155,11 @@ pub struct VehicleParams {
     /// front strut scaled for the rear static load.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub rear_hps: Option<StrutParams>,
+    /// The rear walking-beam bogie ([`crate::bogie`]): `Some` replaces the single rear axle
+    /// by a tandem, one beam per side pitching about a pivot at `rear_axle_to_joint_m`, the
+    /// side's strut (with `rear_hps`) at the pivot; `None`, the prototype, one rear axle.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub bogie: Option<BogieParams>,
     /// The speed controller.
     pub drive: DriveParams,
     /// The yaw-inertia form ([`YawInertiaForm`]); left out of a file, energy-consistent.
@@ -209,6 +215,7 @@ impl VehicleParams {
             steering: AfsParams::nominal(),
             hps: StrutParams::front_axle(),
             rear_hps: None,
+            bogie: None,
             drive: DriveParams {
                 kp_n_m_per_m_s: 9_000.0,
                 ki_n_m_per_m: 2_000.0,
@@ -267,6 +274,30 @@ impl VehicleParams {
                     unit,
                     wheels.mass_kg,
                     "must exceed the two wheel ends it carries (2 wheel_mass_kg)",
+                ));
+            }
+        }
+        if let Some(b) = &self.bogie {
+            b.validate()?;
+            if self.rear_unit.mass_kg <= 4.0 * self.wheel_mass_kg + 2.0 * b.beam_mass_kg {
+                return Err(rejected(
+                    "rear_unit.mass_kg",
+                    self.rear_unit.mass_kg,
+                    "must exceed the bogie it carries (4 wheel_mass_kg + 2 bogie.beam_mass_kg)",
+                ));
+            }
+            if b.spacing_m <= 2.0 * self.tire.unloaded_radius_m {
+                return Err(rejected(
+                    "bogie.spacing_m",
+                    b.spacing_m,
+                    "the tandem tires overlap: must exceed the tire diameter (2 tire.unloaded_radius_m)",
+                ));
+            }
+            if b.half_spacing_m() >= self.rear_axle_to_joint_m {
+                return Err(rejected(
+                    "bogie.spacing_m",
+                    b.spacing_m,
+                    "the leading tandem axle reaches the articulation joint (spacing / 2 >= rear_axle_to_joint_m)",
                 ));
             }
         }

@@ -98,7 +98,8 @@ pub struct RunRecord {
     /// Horizontal lateral acceleration of the rear unit's cg with payload, along the rear
     /// unit's horizontal y axis (m/s², left positive).
     pub rear_lateral_accel_m_s2: Vec<f64>,
-    /// Load transfer ratio of the rear axle, `(F_zL - F_zR) / (F_zL + F_zR)` (signed).
+    /// Load transfer ratio of the rear axle, `(F_zL - F_zR) / (F_zL + F_zR)` (signed; with
+    /// the bogie each side's two tires summed).
     pub rear_ltr: Vec<f64>,
     /// Rear-unit rollover margin (m).
     pub rollover_margin_m: Vec<f64>,
@@ -111,8 +112,9 @@ pub struct RunRecord {
     /// Rear HPS travel z_s, left and right (m, compression positive; 0 on a rigid rear
     /// axle).
     pub rear_hps_travel_m: [Vec<f64>; 2],
-    /// Tire normal forces (N) in [`crate::model::TIRE_NAMES`] order.
-    pub normal_force_n: [Vec<f64>; 4],
+    /// Tire normal forces (N) in [`crate::model::tire_names`] order: four channels, six
+    /// with the rear bogie.
+    pub normal_force_n: Vec<Vec<f64>>,
     /// Drive torque per wheel (N m).
     pub drive_torque_n_m: Vec<f64>,
     /// Position of the front unit's cg, x and y (m).
@@ -165,10 +167,19 @@ fn push_sample(vehicle: &Vehicle, t: f64, y: &[f64], rec: &mut RunRecord) {
     };
     let front_lat = lateral(body::FRONT, &nalgebra::Vector3::zeros());
     let rear_lat = lateral(body::REAR, &layout.rear_cg);
+    let n_tires = vehicle.mounts.len();
     let fz = snap.tires.map(|c| c.normal_force);
-    let rear_sum = fz[2] + fz[3];
+    let (mut left, mut right) = (0.0, 0.0);
+    for (m, f) in vehicle.mounts.iter().zip(fz) {
+        match (m.front, m.left) {
+            (false, true) => left += f,
+            (false, false) => right += f,
+            _ => {}
+        }
+    }
+    let rear_sum = left + right;
     let ltr = if rear_sum > 0.0 {
-        (fz[2] - fz[3]) / rear_sum
+        (left - right) / rear_sum
     } else {
         0.0
     };
@@ -200,8 +211,8 @@ fn push_sample(vehicle: &Vehicle, t: f64, y: &[f64], rec: &mut RunRecord) {
         );
     }
     rec.heading_rad.push(snap.heading_rad);
-    for (ch, f) in rec.normal_force_n.iter_mut().zip(fz) {
-        ch.push(f);
+    for (ch, f) in rec.normal_force_n.iter_mut().zip(&fz[..n_tires]) {
+        ch.push(*f);
     }
     rec.drive_torque_n_m.push(snap.drive_torque_n_m);
 }
@@ -266,7 +277,10 @@ pub(crate) fn simulate_system<S: OdeSystem>(
     }
     let integrator = vehicle_run::integrator(options.solver, &span, typical);
     let mut ws = odeint::Workspace::with_events(sys.dim(), 1);
-    let mut rec = RunRecord::default();
+    let mut rec = RunRecord {
+        normal_force_n: vec![Vec::new(); vehicle.mounts.len()],
+        ..RunRecord::default()
+    };
     integrator
         .run(sys, &problem, &mut ws, |s| {
             push_sample(vehicle, s.t, &s.y[..dim], &mut rec);

@@ -10,7 +10,7 @@
 use vehicle_components::{StateInfo, StateLayout};
 
 use crate::error::{rejected, VehicleError};
-use crate::model::TIRE_NAMES;
+use crate::model::MAX_TIRES;
 use crate::vehicle::Joints;
 
 /// A joint after the floating base: its coordinate and its rate. Angles and travels are
@@ -28,7 +28,7 @@ const REAR_ROLL: JointStates = [
     StateInfo::new("rear_roll_rate_rad_s", "rad/s", 0.1),
 ];
 
-/// Per tire in [`TIRE_NAMES`] order.
+/// Per tire in [`crate::model::TIRE_NAMES`] order.
 const SPIN: [JointStates; 4] = [
     [
         StateInfo::new("front_left_spin_rad", "rad", 10.0),
@@ -45,6 +45,40 @@ const SPIN: [JointStates; 4] = [
     [
         StateInfo::new("rear_right_spin_rad", "rad", 10.0),
         StateInfo::new("rear_right_spin_rate_rad_s", "rad/s", 10.0),
+    ],
+];
+
+/// Per tire in [`crate::model::TANDEM_TIRE_NAMES`] order (with the rear bogie).
+const TANDEM_SPIN: [JointStates; MAX_TIRES] = [
+    SPIN[0],
+    SPIN[1],
+    [
+        StateInfo::new("rear_left_lead_spin_rad", "rad", 10.0),
+        StateInfo::new("rear_left_lead_spin_rate_rad_s", "rad/s", 10.0),
+    ],
+    [
+        StateInfo::new("rear_right_lead_spin_rad", "rad", 10.0),
+        StateInfo::new("rear_right_lead_spin_rate_rad_s", "rad/s", 10.0),
+    ],
+    [
+        StateInfo::new("rear_left_trail_spin_rad", "rad", 10.0),
+        StateInfo::new("rear_left_trail_spin_rate_rad_s", "rad/s", 10.0),
+    ],
+    [
+        StateInfo::new("rear_right_trail_spin_rad", "rad", 10.0),
+        StateInfo::new("rear_right_trail_spin_rate_rad_s", "rad/s", 10.0),
+    ],
+];
+
+/// The bogie's beam pitches, left then right (small angles, typical 0.05 rad).
+const BEAM_PITCH: [JointStates; 2] = [
+    [
+        StateInfo::new("rear_left_beam_pitch_rad", "rad", 0.05),
+        StateInfo::new("rear_left_beam_pitch_rate_rad_s", "rad/s", 0.1),
+    ],
+    [
+        StateInfo::new("rear_right_beam_pitch_rad", "rad", 0.05),
+        StateInfo::new("rear_right_beam_pitch_rate_rad_s", "rad/s", 0.1),
     ],
 ];
 
@@ -92,7 +126,13 @@ pub(crate) fn add_tree_states(
     let mut by_joint: Vec<((usize, usize), &JointStates)> =
         vec![(joints.articulation, &ARTICULATION)];
     by_joint.extend(joints.rear_roll.map(|j| (j, &REAR_ROLL)));
-    by_joint.extend(joints.spin.iter().copied().zip(&SPIN));
+    let spin_names: &[JointStates] = if joints.beam.is_some() {
+        &TANDEM_SPIN
+    } else {
+        &SPIN
+    };
+    by_joint.extend(joints.spins().iter().copied().zip(spin_names));
+    by_joint.extend(joints.beam.iter().flatten().copied().zip(&BEAM_PITCH));
     for (axle, carriers) in [joints.carrier, joints.rear_carrier].iter().enumerate() {
         by_joint.extend(carriers.iter().flatten().copied().zip(&CARRIER[axle]));
     }
@@ -118,10 +158,14 @@ pub(crate) fn add_tree_states(
     Ok(())
 }
 
-/// Append each tire's slip-lag block, in [`TIRE_NAMES`] order; returns the first index.
-pub(crate) fn add_tire_states(layout: &mut StateLayout) -> Result<usize, VehicleError> {
+/// Append each tire's slip-lag block, in `names` order ([`crate::model::tire_names`]);
+/// returns the first index.
+pub(crate) fn add_tire_states(
+    layout: &mut StateLayout,
+    names: &[&str],
+) -> Result<usize, VehicleError> {
     let at = layout.len();
-    for name in TIRE_NAMES {
+    for name in names {
         layout.add(name, &tire_fiala::relaxation::SLIP_LAG_STATES)?;
     }
     Ok(at)

@@ -6,6 +6,11 @@
 //! axles at `+a` and `-b`, the front axle carries `W (x_cg + b) / (a + b)`, the rear axle the
 //! rest; each tire half of its axle. Table 6.1 gives unloaded 122.69 / 71.06 kN and loaded
 //! 149.83 / 209.32 kN per front / rear tire.
+//!
+//! With the rear walking-beam bogie ([`crate::bogie`]) the pivots sit where the single rear
+//! axle sat, so the axle loads are the same; each centred beam shares its pivot's load
+//! equally between its wheels, so each of the four rear tires carries a quarter of the rear
+//! axle.
 
 use hps_emulsion::HpsStrut;
 use tire_fiala::LoadDeflectionTable;
@@ -22,7 +27,7 @@ pub struct Statics {
     pub cg_x_m: f64,
     /// Load of one front tire (N).
     pub front_tire_load_n: f64,
-    /// Load of one rear tire (N).
+    /// Load of one rear tire (N); with the bogie, of one of its four tires.
     pub rear_tire_load_n: f64,
     /// Deflection of a front tire under its load (m), from the load-deflection table.
     pub front_tire_deflection_m: f64,
@@ -67,13 +72,14 @@ impl Statics {
                 ))
             }
         };
+        let rear_share = if p.bogie.is_some() { 0.25 } else { 0.5 };
         Ok(Self {
             total_mass_kg: mass,
             cg_x_m: cg_x,
             front_tire_load_n: 0.5 * front_axle,
-            rear_tire_load_n: 0.5 * rear_axle,
+            rear_tire_load_n: rear_share * rear_axle,
             front_tire_deflection_m: deflection(0.5 * front_axle)?,
-            rear_tire_deflection_m: deflection(0.5 * rear_axle)?,
+            rear_tire_deflection_m: deflection(rear_share * rear_axle)?,
         })
     }
 
@@ -84,9 +90,27 @@ impl Statics {
     }
 
     /// Static force of one rear strut (N): the tire load less the weight of the wheel end
-    /// below the strut.
+    /// below the strut; with the bogie, the side's two tire loads less the weight of its
+    /// beam and two wheel ends, `W_r / 2 - (2 m_w + m_b) g`.
     pub fn rear_strut_force_n(&self, p: &VehicleParams) -> f64 {
-        self.rear_tire_load_n - p.wheel_mass_kg * p.gravity_m_s2
+        match &p.bogie {
+            None => self.rear_tire_load_n - p.wheel_mass_kg * p.gravity_m_s2,
+            Some(b) => {
+                2.0 * self.rear_tire_load_n
+                    - (2.0 * p.wheel_mass_kg + b.beam_mass_kg) * p.gravity_m_s2
+            }
+        }
+    }
+
+    /// Mean static tire load (N) and deflection (m) over the vehicle's tires (two front, two
+    /// or, with the bogie, four rear): the rolling-resistance feed-forward of the drive.
+    pub fn mean_tire_load_and_deflection(&self, p: &VehicleParams) -> (f64, f64) {
+        let (f, r) = (self.front_tire_load_n, self.rear_tire_load_n);
+        let (df, dr) = (self.front_tire_deflection_m, self.rear_tire_deflection_m);
+        match p.bogie {
+            None => (0.5 * (f + r), 0.5 * (df + dr)),
+            Some(_) => ((f + 2.0 * r) / 3.0, (df + 2.0 * dr) / 3.0),
+        }
     }
 }
 

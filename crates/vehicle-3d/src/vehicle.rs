@@ -1,9 +1,10 @@
 //! The vehicle as one ODE system (section 6.2): the multibody tree of [`crate::model`], the
 //! strut-space AFS (Eqs 6.6-6.8), the HPS on the front and optionally the rear axle
-//! (Eqs 6.9-6.18, [`crate::suspension`]), four Fiala tires with
+//! (Eqs 6.9-6.18, [`crate::suspension`]), four Fiala tires (six with the rear bogie,
+//! [`crate::bogie`]) with
 //! relaxation on cached tandem-cam tracks (Eqs 6.1-6.3, Table 6.2), and the PI drive.
 //!
-//! State `y = [q, v, AFS (P_c, P_r, theta_h), tire lags (kappa, alpha) x 4, front HPS
+//! State `y = [q, v, AFS (P_c, P_r, theta_h), tire lags (kappa, alpha) x 4 (x 6), front HPS
 //! states x 2 (front HPS only), rear HPS states x 2 (rear HPS only), speed-error integral,
 //! path coordinate, steering-wheel angle (driver only)]`, laid out in one
 //! `StateLayout` from the components' states (module `state_layout`); [`Offsets`] gives
@@ -20,7 +21,7 @@
 //! 4. per tire ([`crate::tires`]): the contact on its effective track, the normal force with
 //!    damping (Eq 2.1 form with the nonlinear load curve), the slips and their lags, the
 //!    Fiala forces and moments, applied at the contact point;
-//! 5. one drive torque for all four wheels from the PI law ([`crate::params::DriveParams`]);
+//! 5. one drive torque for all wheels from the PI law ([`crate::params::DriveParams`]);
 //! 6. with the path-following driver ([`VehicleOptions::driver`], section 3.4.1), the
 //!    steering-wheel rate `PathDriver::wheel_rate(theta_d, theta)` from the front-axle
 //!    centre (the mid-point of the front wheel centres) and the front unit's heading,
@@ -41,7 +42,9 @@ use tire_fiala::{EnvelopeMethod, Fiala, LoadDeflectionTable, Relaxation, Vertica
 use vehicle_components::{Component, Course, PathDriver, StateLayout, SteerInput, Terrain};
 
 use crate::error::{finite, positive, rejected, VehicleError};
-use crate::model::{body, build_tree, FrontAxle, Layout, TIRE_MOUNTS};
+use crate::model::{
+    body, build_tree, tire_mounts, tire_names, FrontAxle, Layout, TireMount, MAX_TIRES,
+};
 use crate::params::{Load, VehicleParams};
 use crate::state_layout::{add_drive_states, add_tire_states, add_tree_states, STRUT_LABELS};
 use crate::statics::Statics;
@@ -90,8 +93,9 @@ pub fn course_frame(
     (x - axle_x0 + x_s, y_s - y, -heading)
 }
 
-/// Largest state dimension (the HPS model with every strut extension on stays below it).
-pub const MAX_DIM: usize = 64;
+/// Largest state dimension (HPS on both axles with the rear bogie, 70 states, and every
+/// strut extension on stay below it).
+pub const MAX_DIM: usize = 96;
 
 /// How the vehicle is set up for a run.
 #[derive(Debug, Clone, PartialEq)]
@@ -184,19 +188,32 @@ pub struct Joints {
     pub articulation: (usize, usize),
     /// Rear-unit roll (None when locked).
     pub rear_roll: Option<(usize, usize)>,
-    /// Wheel spins, q and v index, per tire.
-    pub spin: [(usize, usize); 4],
+    /// Wheel spins, q and v index, per tire; the first [`Joints::tires`] are used
+    /// ([`Joints::spins`]).
+    pub spin: [(usize, usize); MAX_TIRES],
+    /// Number of tires: 4, or 6 with the rear bogie.
+    pub tires: usize,
+    /// The bogie's beam pitches (rear bogie only), left then right.
+    pub beam: Option<[(usize, usize); 2]>,
     /// Front carriers (HPS only), left then right.
     pub carrier: Option<[(usize, usize); 2]>,
     /// Rear carriers (rear HPS only), left then right.
     pub rear_carrier: Option<[(usize, usize); 2]>,
 }
 
+impl Joints {
+    /// The wheel spins' q and v indices, per tire in [`crate::model::tire_names`] order.
+    pub fn spins(&self) -> &[(usize, usize)] {
+        &self.spin[..self.tires]
+    }
+}
+
 /// What one evaluation computes besides the derivatives.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct Snapshot {
-    /// Per tire in [`crate::model::TIRE_NAMES`] order.
-    pub tires: [TireContact; 4],
+    /// Per tire in [`crate::model::tire_names`] order; the first
+    /// [`Vehicle::tire_mounts`]`.len()` are used (the rest stay at their default).
+    pub tires: [TireContact; MAX_TIRES],
     /// Steering-wheel angle (rad).
     pub steer_wheel_rad: f64,
     /// Strut extensions d_L, d_R from l_0 (m).
@@ -213,7 +230,7 @@ pub struct Snapshot {
     pub rear_hps_travel_m: [f64; 2],
     /// Rear HPS forces (N, compressive positive; 0 without the rear HPS).
     pub rear_hps_force_n: [f64; 2],
-    /// Mean forward speed of the four wheel centres (m/s), the controlled speed.
+    /// Mean forward speed of the wheel centres (m/s), the controlled speed.
     pub speed_m_s: f64,
     /// Drive torque per wheel (N m).
     pub drive_torque_n_m: f64,
@@ -237,6 +254,8 @@ pub struct Vehicle {
     states: StateLayout,
     pub(crate) offsets: Offsets,
     pub(crate) joints: Joints,
+    /// The tire mounts ([`crate::model::tire_mounts`]: four, or six with the bogie).
+    pub(crate) mounts: &'static [TireMount],
     afs: AfsSystem,
     l0: f64,
     /// The front struts (front HPS only).
@@ -314,24 +333,35 @@ impl Vehicle {
         let q_of = |b: usize| model.q_offset(b);
         let v_of = |b: usize| model.v_offset(b);
         let joint = |b: usize| (q_of(b), v_of(b));
+        let bogie = params.bogie.is_some();
+        let mounts = tire_mounts(bogie);
+        let mut spin = [(0, 0); MAX_TIRES];
+        for (s, m) in spin.iter_mut().zip(mounts) {
+            *s = joint(m.wheel);
+        }
+        let rear_carriers = if bogie {
+            [body::BOGIE_CARRIER_RL, body::BOGIE_CARRIER_RR]
+        } else {
+            [body::CARRIER_RL, body::CARRIER_RR]
+        };
         let joints = Joints {
             articulation: joint(body::HITCH),
             rear_roll: (!options.lock_rear_roll).then(|| joint(body::REAR)),
-            spin: TIRE_MOUNTS.map(|m| joint(m.wheel)),
+            spin,
+            tires: mounts.len(),
+            beam: bogie.then(|| [joint(body::BEAM_RL), joint(body::BEAM_RR)]),
             carrier: match options.front_axle {
                 FrontAxle::Rigid => None,
                 FrontAxle::Suspended => Some([joint(body::CARRIER_FL), joint(body::CARRIER_FR)]),
             },
-            rear_carrier: params
-                .rear_hps
-                .map(|_| [joint(body::CARRIER_RL), joint(body::CARRIER_RR)]),
+            rear_carrier: params.rear_hps.map(|_| rear_carriers.map(joint)),
         };
         let afs = AfsSystem::new(params.steering.clone())?;
         let mut states = StateLayout::new();
         add_tree_states(&mut states, &joints, model.nq(), model.nv())?;
         let afs_at = states.len();
         states.add("steering", Component::states(&afs))?;
-        let tires_at = add_tire_states(&mut states)?;
+        let tires_at = add_tire_states(&mut states, tire_names(bogie))?;
         let hps_at = states.len();
         let front_struts = match joints.carrier {
             None => None,
@@ -384,13 +414,13 @@ impl Vehicle {
             LoadDeflectionTable::new(&params.tire.load_deflection)?,
             params.tire.vertical_damping_n_s_per_m,
         )?;
-        let mean_load = 0.5 * (statics.front_tire_load_n + statics.rear_tire_load_n);
+        let (mean_load, mean_deflection) = statics.mean_tire_load_and_deflection(params);
         // the rolling-resistance moment of the tires is signed smoothly with the spin
         // (`tires::ROLLING_SIGN_SPEED_M_S`): so is its feed-forward
         let rolling_sign = (options.speed_m_s / crate::tires::ROLLING_SIGN_SPEED_M_S).tanh();
         let rolling_torque_n_m = rolling_sign
             * params.tire.rolling_resistance_coefficient
-            * (radius - 0.5 * (statics.front_tire_deflection_m + statics.rear_tire_deflection_m))
+            * (radius - mean_deflection)
             * mean_load;
         let ws = RefCell::new(Workspace::new(&model));
         Ok(Self {
@@ -404,6 +434,7 @@ impl Vehicle {
             states,
             offsets,
             joints,
+            mounts,
             afs,
             l0,
             front_struts,
@@ -457,6 +488,11 @@ impl Vehicle {
         &self.joints
     }
 
+    /// The tire mounts in [`crate::model::tire_names`] order: four, or six with the bogie.
+    pub fn tire_mounts(&self) -> &'static [TireMount] {
+        self.mounts
+    }
+
     /// The state vector's layout: every state's name, unit and typical magnitude, in
     /// order (module `state_layout`).
     pub fn state_layout(&self) -> &StateLayout {
@@ -503,7 +539,7 @@ impl Vehicle {
         y[3] = 1.0;
         y[o.v + 3] = speed;
         let r = self.params.tire.unloaded_radius_m;
-        for (i, m) in TIRE_MOUNTS.iter().enumerate() {
+        for (i, m) in self.mounts.iter().enumerate() {
             let d = if m.front {
                 self.statics.front_tire_deflection_m
             } else {
@@ -565,7 +601,9 @@ impl Vehicle {
         let h = Vector3::new(heading.cos(), heading.sin(), 0.0);
         let origin = ws.body_position(body::FRONT);
         let mut speed = 0.0;
-        for (i, m) in TIRE_MOUNTS.iter().enumerate() {
+        // 1/4 exactly for four tires (the bits of the four-wheel vehicle)
+        let share = 1.0 / self.mounts.len() as f64;
+        for (i, m) in self.mounts.iter().enumerate() {
             let c = ws.body_position(m.wheel);
             let s = y[o.path] + (c - origin).dot(&h);
             let at = o.tires + 2 * i;
@@ -576,7 +614,7 @@ impl Vehicle {
                 wheel_angular_velocity: ws.body_rotation(m.wheel)
                     * multibody::spatial::angular(&ws.body_velocity(m.wheel)),
                 path_direction: h,
-                contact: self.tracks.contact(i, s, c.z),
+                contact: self.tracks.contact(m.track(), s, c.z),
                 lag: [y[at], y[at + 1]],
             };
             let out = tire_forces(
@@ -594,7 +632,7 @@ impl Vehicle {
             dydt[at + 1] = rates[1];
             ws.apply_force_world(m.wheel, &out.force, &out.point);
             ws.apply_moment_world(m.wheel, &out.moment);
-            speed += 0.25 * out.contact.forward_velocity;
+            speed += share * out.contact.forward_velocity;
             snap.tires[i] = out.contact;
         }
         let d = &self.params.drive;
@@ -602,7 +640,7 @@ impl Vehicle {
         let torque =
             (self.rolling_torque_n_m + d.kp_n_m_per_m_s * error + d.ki_n_m_per_m * y[o.pi])
                 .clamp(-d.max_torque_n_m, d.max_torque_n_m);
-        for &(_, vi) in &self.joints.spin {
+        for &(_, vi) in self.joints.spins() {
             tau[vi] += torque;
         }
         dydt[o.pi] = error;
@@ -708,14 +746,19 @@ impl Vehicle {
             &y[o.afs..o.afs + 3],
         );
         let table = self.vertical.load_deflection();
-        let tires: f64 = snap.tires.iter().map(|c| table.energy(c.deflection)).sum();
+        let tires: f64 = snap.tires[..self.mounts.len()]
+            .iter()
+            .map(|c| table.energy(c.deflection))
+            .sum();
         Ok(kinetic + gravity + hydraulic + tires + struts)
     }
 
     /// Signed horizontal distance (m) of the rear unit's cg (with payload) inside the nearer
     /// of the two vertical planes through the articulation joint and a rear wheel's contact
     /// centre: absolute rollover of the rear unit when it reaches zero (L1843, point C).
-    /// Needs current kinematics in `ws`.
+    /// With the bogie the planes run through the pivots, each side's load centre (the
+    /// tandem's tipping edge lies between its wheels as the load shifts). Needs current
+    /// kinematics in `ws`.
     pub(crate) fn rear_rollover_margin(&self, ws: &Workspace) -> f64 {
         let cg = ws.point_position(body::REAR, &self.layout.rear_cg);
         let joint = ws.point_position(body::FRONT, &self.layout.joint_on_front);
@@ -727,7 +770,12 @@ impl Vehicle {
             let (nx, ny) = (inward * dy / len, -inward * dx / len);
             (cg.x - w.x) * nx + (cg.y - w.y) * ny
         };
-        side(body::WHEEL_RL, 1.0).min(side(body::WHEEL_RR, -1.0))
+        let [left, right] = if self.params.bogie.is_some() {
+            [body::BOGIE_CARRIER_RL, body::BOGIE_CARRIER_RR]
+        } else {
+            [body::WHEEL_RL, body::WHEEL_RR]
+        };
+        side(left, 1.0).min(side(right, -1.0))
     }
 }
 
