@@ -1,7 +1,7 @@
 //! The calibrate / locate / try / name loop of [`discover`](super).
 
 use super::evidence;
-use super::fitting::{finalists, spanning_subset, Config, Context, Fitted, Scouted};
+use super::fitting::{finalists, spanning_subset, Config, Context, Fitted, Scouted, RIVAL_SHARE};
 use super::form::{self, FormRule, NamingTests};
 use super::layout::{channel_scales, RecordSet};
 use super::placebo::WithPlacebos;
@@ -47,8 +47,9 @@ pub struct DiscoveryOptions {
     pub polish_iterations: usize,
     /// Candidates fitted to convergence per round, those with the lowest scouting error
     /// (beyond the best, only those that lowered the scouting error by at least half the
-    /// held-out gain the rule requires); the others stop after scouting (the report lists
-    /// them as pruned). Each full fit replays every training record dozens of times.
+    /// held-out gain the rule requires and by a tenth of what the best lowered it by); the
+    /// others stop after scouting (the report lists them as pruned). Each full fit replays
+    /// every training record dozens of times.
     pub finalists: usize,
     /// The naming tests a significant candidate must pass to be named ([`form`]).
     pub form: FormRule,
@@ -145,6 +146,7 @@ pub fn calibrate<M: DiscoveryModel + ?Sized>(
         model,
         train,
         &prep,
+        None,
         train,
         &prep,
         opts,
@@ -204,7 +206,7 @@ pub fn discover<M: DiscoveryModel + ?Sized>(
                 choice: choice.to_vec(),
             };
             let wrapped = WithPlacebos::new(&read);
-            let ctx = context(&wrapped, train, &tp, holdout, &hp, opts, wrapped.real)?;
+            let ctx = context(&wrapped, train, &tp, None, holdout, &hp, opts, wrapped.real)?;
             let nominal = nominal_config(&ctx);
             let fitted = ctx.fit(
                 Config {
@@ -229,7 +231,10 @@ pub fn discover<M: DiscoveryModel + ?Sized>(
     let wrapped = WithPlacebos::new(&read);
     let real = wrapped.real;
     let model = &wrapped;
-    let ctx = context(model, train, &tp, holdout, &hp, opts, real)?;
+    // Coarse replays for scouting (the same for every reading: a reading changes the
+    // replay, not the prepared inputs).
+    let tc: Option<Vec<_>> = tp.iter().map(|p| model.coarse(p)).collect();
+    let ctx = context(model, train, &tp, tc.as_deref(), holdout, &hp, opts, real)?;
     let mut conditions = Vec::new();
     for (set, names, prep) in [
         ("train", &train_names, &tp),
@@ -415,11 +420,14 @@ fn check_candidates<M: DiscoveryModel + ?Sized>(
 }
 
 /// The fitting context: record sets laid out by the nominal baseline, channel scales from
-/// the training records, and the scouting subset.
+/// the training records, and the scouting subset (also in the coarse replays `tc` of the
+/// training records, when given).
+#[allow(clippy::too_many_arguments)]
 fn context<'a, M: DiscoveryModel + ?Sized>(
     model: &'a M,
     train: &'a [Record],
     tp: &'a [M::Prepared],
+    tc: Option<&'a [M::Prepared]>,
     holdout: &'a [Record],
     hp: &'a [M::Prepared],
     opts: &'a DiscoveryOptions,
@@ -440,20 +448,23 @@ fn context<'a, M: DiscoveryModel + ?Sized>(
         )
     };
     let all: Vec<usize> = (0..train.len()).collect();
-    let scout = if train.len() > opts.scout_records.max(1) {
+    let scout_idx = (train.len() > opts.scout_records.max(1)).then(|| {
         let conditions: Vec<String> = tp.iter().map(|p| model.condition(p)).collect();
-        Some(set(
-            train,
-            tp,
-            &spanning_subset(&conditions, opts.scout_records.max(1)),
-        )?)
-    } else {
-        None
+        spanning_subset(&conditions, opts.scout_records.max(1))
+    });
+    let scout = match &scout_idx {
+        Some(idx) => Some(set(train, tp, idx)?),
+        None => None,
+    };
+    let coarse = match tc {
+        Some(tc) => Some(set(train, tc, scout_idx.as_deref().unwrap_or(&all))?),
+        None => None,
     };
     Ok(Context {
         model,
         train: set(train, tp, &all)?,
         scout,
+        coarse,
         holdout: set(holdout, hp, &(0..holdout.len()).collect::<Vec<_>>())?,
         base_specs,
         catalogue: model.catalogue(),
@@ -619,6 +630,18 @@ fn search<M: DiscoveryModel + ?Sized>(
         repeats = 0;
         s.current = cand;
     }
+    if !s.named.is_empty() && !s.current.0.converged {
+        // The final model was polished for a few iterations only: continue on all training
+        // records until a convergence test is met (or the iteration limit says it was not).
+        let last = ctx.converge(s.current.1.clone(), Some(s.current.2))?;
+        progress.fit_done("final fit to convergence");
+        if last.0.train_mse <= s.current.0.train_mse {
+            if let Some(link) = s.chain.last_mut() {
+                link.1 = last.1.clone();
+            }
+            s.current = last;
+        }
+    }
     Ok(s)
 }
 
@@ -675,9 +698,10 @@ fn round<M: DiscoveryModel + ?Sized>(
                     ctx.finish_candidate(c, *n_eff).map_err(|err| err.to_string())
                 }
                 Ok((_, rss)) => Err(format!(
-                        "pruned after scouting: it changed the training error on the scouting records by {:+.1} % (not among the {} best, or less than half the held-out gain the rule requires)",
+                        "pruned after scouting: it changed the training error on the scouting records by {:+.1} % (not among the {} best, or less than half the held-out gain the rule requires, or less than {:.0} % of the best candidate's change)",
                         100.0 * (rss - ref_rss) / ref_rss.max(f64::MIN_POSITIVE),
-                        opts.finalists
+                        opts.finalists,
+                        100.0 * RIVAL_SHARE
                     )),
             };
             progress.fit_done(&ctx.catalogue[e].name);

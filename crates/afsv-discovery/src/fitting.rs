@@ -86,6 +86,10 @@ pub(crate) struct Context<'a, M: DiscoveryModel + ?Sized> {
     /// A subset of the training records spanning their conditions, for scouting start
     /// points (the whole training set when it is small).
     pub scout: Option<RecordSet<'a, M::Prepared>>,
+    /// The scouting records (the subset, else all training records) in the model's coarse
+    /// replays ([`DiscoveryModel::coarse`]), for ranking start points and scouting; `None`
+    /// when the model has none.
+    pub coarse: Option<RecordSet<'a, M::Prepared>>,
     pub holdout: RecordSet<'a, M::Prepared>,
     pub base_specs: Vec<ParamSpec>,
     pub catalogue: Vec<EffectSpec>,
@@ -95,8 +99,13 @@ pub(crate) struct Context<'a, M: DiscoveryModel + ?Sized> {
 }
 
 impl<M: DiscoveryModel + ?Sized> Context<'_, M> {
+    /// The records start points are ranked and scouted on: the coarse replays of the
+    /// scouting subset where the model has them, else the subset, else all training records.
     fn scout_set(&self) -> &RecordSet<'_, M::Prepared> {
-        self.scout.as_ref().unwrap_or(&self.train)
+        self.coarse
+            .as_ref()
+            .or(self.scout.as_ref())
+            .unwrap_or(&self.train)
     }
 
     fn bounds(&self, config: &Config) -> (Vec<f64>, Vec<f64>, Vec<f64>) {
@@ -196,6 +205,13 @@ impl<M: DiscoveryModel + ?Sized> Context<'_, M> {
     ) -> Result<Fitted, DiscoveryError> {
         let (fitted, se, converged, _) = self.fit_on(&start, &self.train, max_iter)?;
         self.score(fitted, &se, converged, n_eff)
+    }
+
+    /// Fit a configuration on all training records for up to
+    /// [`DiscoveryOptions::max_iter`] iterations (the final model's fit to convergence),
+    /// and score.
+    pub fn converge(&self, config: Config, n_eff: Option<f64>) -> Result<Fitted, DiscoveryError> {
+        self.polish(config, self.opts.max_iter, n_eff)
     }
 
     /// A short fit of a scouted configuration: [`DiscoveryOptions::polish_iterations`] on
@@ -470,20 +486,59 @@ pub(crate) fn spanning_subset(conditions: &[String], k: usize) -> Vec<usize> {
 
 /// The candidates worth a fit to convergence: the `k` with the lowest scouting error, of
 /// which all but the best must have lowered the scouting records' error (against the
-/// round's reference `ref_rss`) by at least half the held-out gain the rule requires. A
-/// candidate that has not done that on the training subset is not expected to pass on the
-/// held-out records; the best one is always fitted, so the report can say how close the
-/// round came.
+/// round's reference `ref_rss`) by at least half the held-out gain the rule requires, and
+/// by at least [`RIVAL_SHARE`] of what the best lowered it by. A candidate that has not
+/// done the first on the training subset is not expected to pass on the held-out records;
+/// one that has not done the second is not expected to overtake the best, and only the
+/// round's best can be named (the others' full fits would only be reported). The best one
+/// is always fitted, so the report can say how close the round came.
 pub(crate) fn finalists(scouted: &[Scouted], k: usize, ref_rss: f64, min_gain: f64) -> Vec<usize> {
     let mut ok: Vec<(usize, f64)> = scouted
         .iter()
         .filter_map(|(e, r)| r.as_ref().ok().map(|(_, rss)| (*e, *rss)))
         .collect();
     ok.sort_by(|a, b| a.1.total_cmp(&b.1));
+    let best_gain = ok.first().map_or(0.0, |(_, rss)| ref_rss - rss);
     ok.into_iter()
         .enumerate()
-        .filter(|(i, (_, rss))| *i == 0 || ref_rss - rss >= 0.5 * min_gain * ref_rss)
+        .filter(|(i, (_, rss))| {
+            *i == 0
+                || (ref_rss - rss >= 0.5 * min_gain * ref_rss
+                    && ref_rss - rss >= RIVAL_SHARE * best_gain)
+        })
         .take(k.max(1))
         .map(|(_, (e, _))| e)
         .collect()
+}
+
+/// Share of the best candidate's scouting gain another candidate must reach to be fitted
+/// to convergence in the same round ([`finalists`]).
+pub(crate) const RIVAL_SHARE: f64 = 0.1;
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn scouted(e: usize, rss: f64) -> Scouted {
+        let config = Config {
+            baseline: Vec::new(),
+            free_baseline: Vec::new(),
+            effects: Vec::new(),
+        };
+        (e, Ok((config, rss)))
+    }
+
+    #[test]
+    fn finalists_beyond_the_best_must_rival_it() {
+        // Reference 100; the best removes 97, the others 1.8 and 20.
+        let s = [scouted(0, 98.2), scouted(1, 3.0), scouted(2, 80.0)];
+        // Both others pass the rule's half gain (1 %); only the 20 reaches a tenth of 97.
+        assert_eq!(finalists(&s, 3, 100.0, 0.02), vec![1, 2]);
+        // Two comparable candidates are both fitted.
+        let s = [scouted(0, 50.0), scouted(1, 40.0), scouted(2, 99.5)];
+        assert_eq!(finalists(&s, 3, 100.0, 0.02), vec![1, 0]);
+        // The best is fitted even when it gains nothing.
+        let s = [scouted(0, 100.5), scouted(1, 101.0)];
+        assert_eq!(finalists(&s, 3, 100.0, 0.02), vec![0]);
+    }
 }

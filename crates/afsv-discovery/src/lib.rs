@@ -201,6 +201,14 @@ pub trait DiscoveryModel: Sync {
     fn skip_samples(&self, _record: &Record) -> usize {
         0
     }
+    /// A copy of a prepared record that replays faster and less exactly, for scouting: the
+    /// ranking of start points and the short scouting fits ([`DiscoveryOptions::starts`]),
+    /// which only choose a basin and the round's finalists. Every fit to convergence, every
+    /// polish and every score replays the prepared record itself. `None` (the default):
+    /// scouting replays as the fits do.
+    fn coarse(&self, _prepared: &Self::Prepared) -> Option<Self::Prepared> {
+        None
+    }
     /// Whether the compared channels carry signal up to the records' sampling rate (ride
     /// vibration), so that the fourth differences of a measured channel read signal as
     /// noise. The noise floor of each record and channel is then the lower of the

@@ -189,6 +189,12 @@ impl<M: DiscoveryModel + ?Sized> DiscoveryModel for WithPlacebos<'_, M> {
     fn broadband_channels(&self) -> bool {
         self.inner.broadband_channels()
     }
+    fn coarse(&self, prepared: &Self::Prepared) -> Option<Self::Prepared> {
+        Some(PlaceboPrepared {
+            inner: self.inner.coarse(&prepared.inner)?,
+            time_s: prepared.time_s.clone(),
+        })
+    }
 }
 
 #[cfg(test)]

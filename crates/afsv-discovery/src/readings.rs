@@ -106,6 +106,9 @@ impl<M: DiscoveryModel + ?Sized> DiscoveryModel for WithReadings<'_, M> {
     fn broadband_channels(&self) -> bool {
         self.inner.broadband_channels()
     }
+    fn coarse(&self, prepared: &Self::Prepared) -> Option<Self::Prepared> {
+        self.inner.coarse(prepared)
+    }
 }
 
 /// Whether a reading scoring `(train, holdout)` replaces the current one scoring

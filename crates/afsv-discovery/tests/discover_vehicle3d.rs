@@ -4,7 +4,7 @@
 //!
 //! | test | proves | cost |
 //! |---|---|---|
-//! | `the_replay_reproduces_records_of_its_own_model` | the adapter rebuilds each record's conditions (ground from the sidecar, layout, speed, steering) so that a record of the nominal model replays at the nominal parameters within the integrator's and the open-loop replay's error | CI, a few seconds |
+//! | `the_replay_reproduces_records_of_its_own_model` | the adapter rebuilds each record's conditions (ground from the sidecar, layout, speed, steering) so that a record of the nominal model replays at the nominal parameters within the integrator's and the open-loop replay's error; the scouting copy (`DiscoveryModel::coarse`, 10x the tolerance) replays it as closely, and not at the model's tolerance | CI, a few seconds |
 //! | `hidden_<effect>_is_named_first` (ignored) | each catalogue effect hidden in variant records is named first, with the held-out gap shrink and the wall time printed | `cargo test --release -p afsv-discovery --test discover_vehicle3d -- --ignored --nocapture` |
 //! | `variant_records_without_a_hidden_effect_name_nothing` (ignored) | the null set: nothing named | same |
 //! | `variant_ride_records_without_a_hidden_effect_name_nothing` (ignored) | the same on 5 + 5 ride records only | same |
@@ -46,7 +46,36 @@ fn the_replay_reproduces_records_of_its_own_model() {
     for r in &recs {
         let prep = model.prepare(r).unwrap();
         let pred = model.simulate(&prep, &nominal, &[]).unwrap();
+        // the scouting copy (10x the tolerance) replays the record as closely, differently
+        let coarse = model.coarse(&prep).unwrap();
+        assert!(coarse.coarse && !prep.coarse);
+        let scouting = model.simulate(&coarse, &nominal, &[]).unwrap();
         let skip = model.skip_samples(r);
+        let mut differs = false;
+        for ((name, p), q) in CHANNELS.iter().zip(&pred).zip(&scouting) {
+            let (Some(p), Some(q)) = (p, q) else { continue };
+            let m = &r.column(name).unwrap()[skip..];
+            let mean = m.iter().sum::<f64>() / m.len() as f64;
+            let sd = (m.iter().map(|v| (v - mean).powi(2)).sum::<f64>() / m.len() as f64).sqrt();
+            let rms = (m
+                .iter()
+                .zip(&q[skip..])
+                .map(|(a, b)| (a - b).powi(2))
+                .sum::<f64>()
+                / m.len() as f64)
+                .sqrt();
+            differs |= p != q;
+            assert!(
+                rms <= 0.01 * sd + 1e-9,
+                "{} {name} scouting: {rms} vs sd {sd}",
+                prep.condition
+            );
+        }
+        assert!(
+            differs,
+            "{}: the scouting copy replayed at the model's tolerance",
+            prep.condition
+        );
         for (name, p) in CHANNELS.iter().zip(&pred) {
             let Some(p) = p else { continue };
             let m = &r.column(name).unwrap()[skip..];
@@ -123,8 +152,8 @@ fn run(
         }
     }
     println!(
-        "calibrated baseline {:?}\nfinal baseline {:?}\nexcess over noise {:.2}; calibration problems {:?}",
-        d.calibrated.baseline, d.final_model.baseline, d.excess_over_noise, d.calibration_problems
+        "calibrated baseline {:?}\nfinal baseline {:?} (converged {})\nexcess over noise {:.2}; calibration problems {:?}",
+        d.calibrated.baseline, d.final_model.baseline, d.final_model.converged, d.excess_over_noise, d.calibration_problems
     );
     (d, secs)
 }
