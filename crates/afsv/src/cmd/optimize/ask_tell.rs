@@ -43,7 +43,7 @@ impl AskTell<'_> {
             &self.settings_json,
             self.problems,
         )?;
-        let id = super::StateIdentity::of(self.stored.clone(), &state)?;
+        let id = afsv_records::stored::StateIdentity::of(self.stored.clone(), &state)?;
         match &self.args.ask_tell.ask {
             Some(path) => self.ask(&drivers, &state, &id, path),
             None => self.tell(&drivers, state, &id.sha),
@@ -56,7 +56,7 @@ impl AskTell<'_> {
         &self,
         drivers: &[AfsAskTell],
         state: &AskTellState,
-        id: &super::StateIdentity,
+        id: &afsv_records::stored::StateIdentity,
         path: &Path,
     ) -> CmdResult {
         let asked = state.asked(drivers, &self.descs)?;

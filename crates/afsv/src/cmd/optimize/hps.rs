@@ -189,7 +189,7 @@ fn ask_tell(a: &HpsArgs, desc: &HpsProblemDesc, path: &Path, stored: Option<Stri
         a.ask_tell.ask.is_some(),
         desc,
     )?;
-    let id = super::StateIdentity::of(stored, &state)?;
+    let id = afsv_records::stored::StateIdentity::of(stored, &state)?;
     let asked = driver.ask(&state.run)?;
     if let Some(batch_path) = &a.ask_tell.ask {
         let (phase, points) = match &asked {

@@ -229,7 +229,7 @@ fn ask_tell(
         problem.desc(),
         ga,
     )?;
-    let id = super::StateIdentity::of(stored, &state)?;
+    let id = afsv_records::stored::StateIdentity::of(stored, &state)?;
     let asked = driver.ask(&state.run)?;
     if let Some(batch_path) = &a.ask_tell.ask {
         let (phase, points) = match &asked {
