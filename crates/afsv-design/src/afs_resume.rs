@@ -241,7 +241,11 @@ mod tests {
         ck.record(0, &fresh);
         ck.record(1, &fresh);
         ck.record(0, &fresh);
-        assert_eq!(ck.runs.len(), 1, "a run recorded again drops the later ones");
+        assert_eq!(
+            ck.runs.len(),
+            1,
+            "a run recorded again drops the later ones"
+        );
         let text = serde_json::to_string(&ck).unwrap();
         let back = AfsCheckpoint::read("--checkpoint", path, &text, &settings, 1).unwrap();
         assert_eq!(back, ck);
@@ -264,7 +268,8 @@ mod tests {
             .check_runs("--checkpoint", path, std::slice::from_ref(&p), &s)
             .unwrap_err();
         assert!(
-            e.starts_with("--checkpoint ck.json: run 1: ") && e.ends_with("remove it to start afresh"),
+            e.starts_with("--checkpoint ck.json: run 1: ")
+                && e.ends_with("remove it to start afresh"),
             "{e}"
         );
     }
