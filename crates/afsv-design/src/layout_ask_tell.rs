@@ -660,7 +660,11 @@ mod tests {
         let mut phases = Vec::new();
         let mut number = 0;
         let sha = "0".repeat(64);
-        while let asked @ LayoutAsk::Evaluate(ref b) = driver.ask(&run).unwrap() {
+        loop {
+            let asked = driver.ask(&run).unwrap();
+            let LayoutAsk::Evaluate(b) = &asked else {
+                break;
+            };
             phases.push(b.phase);
             let (header, points) = batch_file(problem.desc(), number, &sha, &asked);
             assert_eq!(points, batch_points(problem.desc(), number, b));

@@ -70,7 +70,11 @@ fn ask_tell(p: &VehicleParams, settings: &HpsGaSettings) -> (HpsOptimum, Vec<Hps
     let mut phases = Vec::new();
     let mut number = 0;
     let sha = "0".repeat(64);
-    while let asked @ HpsAsk::Evaluate(ref b) = driver.ask(&run).unwrap() {
+    loop {
+        let asked = driver.ask(&run).unwrap();
+        let HpsAsk::Evaluate(b) = &asked else {
+            break;
+        };
         phases.push(b.phase);
         let (header, points) = batch_file(&desc, number, &sha, &asked);
         assert_eq!(points, batch_points(number, b));

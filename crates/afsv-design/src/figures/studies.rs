@@ -100,12 +100,15 @@ pub fn speed_sweep(s: &SpeedSweep) -> Chart {
     )
 }
 
+/// One measure of a sensitivity row.
+type Pick = fn(&HpsMeasures) -> f64;
+
 /// Table 6.4 as curves: a_wz unloaded and loaded against the change of each area (%),
 /// the nominal design at 0 %.
 pub fn hps_sensitivity(s: &HpsSensitivity) -> Chart {
     let mut curves = Vec::new();
     for v in HpsVariable::ALL {
-        let picks: [(&str, fn(&HpsMeasures) -> f64); 2] = [
+        let picks: [(&str, Pick); 2] = [
             ("unloaded", |m| m.a_wz_unloaded_m_s2.mean),
             ("loaded", |m| m.a_wz_loaded_m_s2.mean),
         ];
