@@ -68,6 +68,32 @@ pub struct BatchHeader {
     pub problems: Vec<ProblemDesc>,
 }
 
+impl BatchHeader {
+    /// The header an `--ask` writes for batch `batch` of `points` points over `problems`,
+    /// identified by the asking state's SHA-256 `state_sha256` (`finished`: the run has
+    /// finished and the batch holds no point).
+    pub fn asked(
+        batch: usize,
+        state_sha256: &str,
+        finished: bool,
+        points: usize,
+        problems: &[ProblemDesc],
+    ) -> Self {
+        Self {
+            format: BATCH_FORMAT.into(),
+            version: FORMAT_VERSION,
+            written_by: "afsv optimize afs --ask".into(),
+            sign_convention: afsv_records::SIGN_CONVENTION.into(),
+            batch,
+            state_sha256: state_sha256.into(),
+            finished,
+            points,
+            variables: variable_names(),
+            problems: problems.to_vec(),
+        }
+    }
+}
+
 /// One point of a batch file.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
@@ -487,6 +513,19 @@ pub fn evaluate_shard(
 mod tests {
     use super::*;
     use proptest::prelude::*;
+
+    #[test]
+    fn an_asked_header_names_the_format_the_variables_and_the_state() {
+        let h = BatchHeader::asked(3, "ab", false, 7, &[]);
+        assert_eq!(
+            (h.format.as_str(), h.version),
+            (BATCH_FORMAT, FORMAT_VERSION)
+        );
+        assert_eq!((h.batch, h.state_sha256.as_str(), h.points), (3, "ab", 7));
+        assert_eq!(h.variables.len(), AfsVariable::ALL.len());
+        assert_eq!(h.written_by, "afsv optimize afs --ask");
+        assert!(!h.finished && h.problems.is_empty());
+    }
 
     proptest! {
         /// The round robin gives every point to exactly one shard, and the shards' sizes

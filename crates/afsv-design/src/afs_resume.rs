@@ -10,8 +10,12 @@
 use crate::afs_optimum::{start_points, AfsOptimisationSettings, AfsRunState};
 use crate::afs_problem::AfsProblem;
 use crate::error::DesignError;
+use afsv_records::stored::{parse_stored, same_settings};
 use optimize::pattern_search::{PatternSearch, PatternSearchOptions, PatternSearchState};
 use optimize::{ConstrainedProblem, Evaluation};
+use serde::{Deserialize, Serialize};
+use serde_json::Value;
+use std::path::Path;
 
 /// The pattern-search settings of screened start `i`: its own seed (seed + 1 + i) and the
 /// screening mesh as its final mesh (section 4.3.5).
@@ -138,6 +142,83 @@ pub fn check_run_state(
     Ok(())
 }
 
+/// The checkpoint file of a resumable run (`afsv optimize afs --checkpoint`): one run
+/// state per configuration, in order, with the settings of the command line it belongs to.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct AfsCheckpoint {
+    /// The command that wrote it.
+    pub written_by: String,
+    /// Sign convention of the toolkit's files (`afsv-v1`).
+    pub sign_convention: String,
+    /// The settings of the command line the checkpoint belongs to.
+    pub settings: Value,
+    /// The run states so far, one per configuration started.
+    pub runs: Vec<AfsRunState>,
+}
+
+impl AfsCheckpoint {
+    /// A checkpoint of no run yet, for `settings`, written by `written_by`.
+    pub fn new(written_by: &str, settings: Value) -> Self {
+        Self {
+            written_by: written_by.into(),
+            sign_convention: afsv_records::SIGN_CONVENTION.into(),
+            settings,
+            runs: Vec::new(),
+        }
+    }
+
+    /// The checkpoint stored as `text` at `path` (given as `flag`), for a command line with
+    /// `settings` and `configs` configurations: refused when it does not parse, was
+    /// written for other settings or holds more runs than there are configurations.
+    pub fn read(
+        flag: &str,
+        path: &Path,
+        text: &str,
+        settings: &Value,
+        configs: usize,
+    ) -> Result<Self, String> {
+        let ck: Self = parse_stored(flag, path, text)?;
+        same_settings(flag, path, &ck.settings, settings)?;
+        if ck.runs.len() > configs {
+            return Err(format!(
+                "{flag} {}: {} runs, these options make {configs}",
+                path.display(),
+                ck.runs.len()
+            ));
+        }
+        Ok(ck)
+    }
+
+    /// Every stored run checked against its problem ([`check_run_state`]) before any run
+    /// continues, so a refused resume leaves the file as it was.
+    pub fn check_runs(
+        &self,
+        flag: &str,
+        path: &Path,
+        problems: &[AfsProblem],
+        s: &AfsOptimisationSettings,
+    ) -> Result<(), String> {
+        for (i, (run, problem)) in self.runs.iter().zip(problems).enumerate() {
+            check_run_state(problem, s, run).map_err(|e| {
+                format!(
+                    "{flag} {}: run {}: {e}; remove it to start afresh",
+                    path.display(),
+                    i + 1
+                )
+            })?;
+        }
+        Ok(())
+    }
+
+    /// The state of run `i` after an iteration: it replaces run `i` and drops any later
+    /// run (a resumed configuration restarts the ones after it).
+    pub fn record(&mut self, i: usize, state: &AfsRunState) {
+        self.runs.truncate(i);
+        self.runs.push(state.clone());
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -146,6 +227,52 @@ mod tests {
     use optimize::Silent;
 
     use crate::afs_ask_tell::tests::small;
+
+    #[test]
+    fn a_checkpoint_is_refused_for_other_settings_or_too_many_runs_and_checks_its_runs() {
+        let w = AhpHierarchy::chapter4().weights().unwrap().composite;
+        let p = AfsProblem::new(AfsProblemSpec::default(), Objective::new(w).unwrap()).unwrap();
+        let s = small();
+        let path = Path::new("ck.json");
+        let settings = serde_json::json!({"seed": 1});
+        let mut ck = AfsCheckpoint::new("afsv optimize afs", settings.clone());
+        assert_eq!(ck.sign_convention, "afsv-v1");
+        let fresh = AfsRunState::default();
+        ck.record(0, &fresh);
+        ck.record(1, &fresh);
+        ck.record(0, &fresh);
+        assert_eq!(
+            ck.runs.len(),
+            1,
+            "a run recorded again drops the later ones"
+        );
+        let text = serde_json::to_string(&ck).unwrap();
+        let back = AfsCheckpoint::read("--checkpoint", path, &text, &settings, 1).unwrap();
+        assert_eq!(back, ck);
+        back.check_runs("--checkpoint", path, std::slice::from_ref(&p), &s)
+            .unwrap();
+        let other = serde_json::json!({"seed": 2});
+        let e = AfsCheckpoint::read("--checkpoint", path, &text, &other, 1).unwrap_err();
+        assert!(e.contains("written for other settings"), "{e}");
+        let e = AfsCheckpoint::read("--checkpoint", path, &text, &settings, 0).unwrap_err();
+        assert_eq!(e, "--checkpoint ck.json: 1 runs, these options make 0");
+        let mut bad = ck.clone();
+        bad.runs[0].sqp_log.push(optimize::sqp::LoggedEvaluation {
+            u: vec![0.5; 5],
+            eval: Evaluation {
+                f: 1.0,
+                constraints: Vec::new(),
+            },
+        });
+        let e = bad
+            .check_runs("--checkpoint", path, std::slice::from_ref(&p), &s)
+            .unwrap_err();
+        assert!(
+            e.starts_with("--checkpoint ck.json: run 1: ")
+                && e.ends_with("remove it to start afresh"),
+            "{e}"
+        );
+    }
 
     #[test]
     fn every_checkpoint_of_a_run_passes_and_tampered_ones_are_refused() {

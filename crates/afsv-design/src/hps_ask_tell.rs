@@ -39,7 +39,7 @@ use vehicle_3d::VehicleParams;
 mod shard;
 
 pub use shard::{
-    batch_points, evaluate_hps_shard, read_hps_batch, HpsBatchHeader, HpsBatchPoint,
+    batch_file, batch_points, evaluate_hps_shard, read_hps_batch, HpsBatchHeader, HpsBatchPoint,
     HpsPointResult, HpsResultsHeader,
 };
 

@@ -380,6 +380,34 @@ pub fn batch_points(
         .collect()
 }
 
+/// What an `--ask` of batch `number` writes for `asked`: the header, identified by the
+/// asking state's SHA-256 `state_sha256`, and the points (none once the run has finished,
+/// with the header's `finished` set).
+pub fn batch_file(
+    desc: &LayoutProblemDesc,
+    number: usize,
+    state_sha256: &str,
+    asked: &LayoutAsk,
+) -> (LayoutBatchHeader, Vec<LayoutBatchPoint>) {
+    let (phase, points) = match asked {
+        LayoutAsk::Evaluate(b) => (b.phase.name(), batch_points(desc, number, b)),
+        LayoutAsk::Finished => (String::new(), Vec::new()),
+    };
+    let header = LayoutBatchHeader {
+        format: LAYOUT_BATCH_FORMAT.into(),
+        version: LAYOUT_FORMAT_VERSION,
+        written_by: "afsv optimize layout --ask".into(),
+        sign_convention: afsv_records::SIGN_CONVENTION.into(),
+        batch: number,
+        state_sha256: state_sha256.into(),
+        finished: *asked == LayoutAsk::Finished,
+        phase,
+        points: points.len(),
+        problem: desc.clone(),
+    };
+    (header, points)
+}
+
 /// The design of a batch point in the variables' order (`None`: the nominal layout).
 pub fn point_design(
     desc: &LayoutProblemDesc,
@@ -631,21 +659,16 @@ mod tests {
         let mut run = LayoutRunState::default();
         let mut phases = Vec::new();
         let mut number = 0;
-        while let LayoutAsk::Evaluate(b) = driver.ask(&run).unwrap() {
-            phases.push(b.phase);
-            let points = batch_points(problem.desc(), number, &b);
-            let header = LayoutBatchHeader {
-                format: LAYOUT_BATCH_FORMAT.into(),
-                version: LAYOUT_FORMAT_VERSION,
-                written_by: "test".into(),
-                sign_convention: "afsv-v1".into(),
-                batch: number,
-                state_sha256: "0".repeat(64),
-                finished: false,
-                phase: b.phase.name(),
-                points: points.len(),
-                problem: problem.desc().clone(),
+        let sha = "0".repeat(64);
+        loop {
+            let asked = driver.ask(&run).unwrap();
+            let LayoutAsk::Evaluate(b) = &asked else {
+                break;
             };
+            phases.push(b.phase);
+            let (header, points) = batch_file(problem.desc(), number, &sha, &asked);
+            assert_eq!(points, batch_points(problem.desc(), number, b));
+            assert!(!header.finished && header.points == points.len() && header.batch == number);
             // through the files' text, two shards
             let header = through(&header);
             let points: Vec<LayoutBatchPoint> = points.iter().map(through).collect();
@@ -675,6 +698,8 @@ mod tests {
                 LayoutPhase::Generation(2)
             ]
         );
+        let (done, none) = batch_file(problem.desc(), number, &sha, &LayoutAsk::Finished);
+        assert!(done.finished && done.points == 0 && none.is_empty() && done.phase.is_empty());
         let ours = driver.finish(&run).unwrap();
         assert_eq!(ours, theirs);
         assert_eq!(ours.evaluations, 4 * 3);

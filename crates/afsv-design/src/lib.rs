@@ -26,6 +26,8 @@
 //! - [`sweep`]: the optimum of a one-variable design sweep (parabolic peak);
 //! - [`evaluate`]: the assessment of `afsv evaluate` (design measures, yaw-plane measures,
 //!   strut, terrain) of one vehicle description;
+//! - `figures` (cargo feature `plots`): the figures of the commands' `--plot` options as
+//!   `afsv_plot::Chart` values, pure functions of a result like the reports;
 //! - [`layouts`]: `afsv study layouts`, several suspension layouts of one vehicle through
 //!   D1-D4 on common seeds, on the frame and at the seat;
 //! - [`layout_names`]: the layouts of those commands by name (`--layouts`, `--seat`),
@@ -58,6 +60,8 @@ pub mod design_3d;
 pub mod error;
 pub mod evaluate;
 pub mod fan_out;
+#[cfg(feature = "plots")]
+pub mod figures;
 pub mod hps_ask_tell;
 pub mod hps_design;
 pub mod hps_optimum;

@@ -4,8 +4,7 @@
 //! (determinism and resumption of the GA itself: `optimize`'s tests).
 
 use afsv_design::hps_ask_tell::{
-    batch_points, evaluate_hps_shard, HpsBatchHeader, HpsPhase, HpsPointResult, HpsValues,
-    HPS_BATCH_FORMAT, HPS_FORMAT_VERSION,
+    batch_file, batch_points, evaluate_hps_shard, HpsPhase, HpsPointResult, HpsValues,
 };
 use afsv_design::{
     optimise_hps, HpsAsk, HpsAskTell, HpsGaSettings, HpsOptimum, HpsProblemDesc, HpsRunState,
@@ -70,21 +69,17 @@ fn ask_tell(p: &VehicleParams, settings: &HpsGaSettings) -> (HpsOptimum, Vec<Hps
     let mut run = HpsRunState::default();
     let mut phases = Vec::new();
     let mut number = 0;
-    while let HpsAsk::Evaluate(b) = driver.ask(&run).unwrap() {
+    let sha = "0".repeat(64);
+    loop {
+        let asked = driver.ask(&run).unwrap();
+        let HpsAsk::Evaluate(b) = &asked else {
+            break;
+        };
         phases.push(b.phase);
-        let points = batch_points(number, &b);
-        let header = through(&HpsBatchHeader {
-            format: HPS_BATCH_FORMAT.into(),
-            version: HPS_FORMAT_VERSION,
-            written_by: "test".into(),
-            sign_convention: "afsv-v1".into(),
-            batch: number,
-            state_sha256: "0".repeat(64),
-            finished: false,
-            phase: b.phase.name(),
-            points: points.len(),
-            problem: desc.clone(),
-        });
+        let (header, points) = batch_file(&desc, number, &sha, &asked);
+        assert_eq!(points, batch_points(number, b));
+        assert!(!header.finished && header.points == points.len() && header.batch == number);
+        let header = through(&header);
         let points: Vec<_> = points.iter().map(through).collect();
         let mut by_id: HashMap<String, HpsPointResult> = HashMap::new();
         for i in 1..=2 {
@@ -104,6 +99,8 @@ fn ask_tell(p: &VehicleParams, settings: &HpsGaSettings) -> (HpsOptimum, Vec<Hps
         run = through(&run);
         number += 1;
     }
+    let (done, none) = batch_file(&desc, number, &sha, &HpsAsk::Finished);
+    assert!(done.finished && done.points == 0 && none.is_empty() && done.phase.is_empty());
     (driver.finish(&run).unwrap(), phases)
 }
 

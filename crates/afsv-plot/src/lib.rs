@@ -30,6 +30,10 @@
 //! .unwrap();
 //! ```
 
+mod chart;
+
+pub use chart::{Chart, ChartPanel, Curve};
+
 use plotters::coord::ranged1d::ValueFormatter;
 use plotters::coord::Shift;
 use plotters::prelude::*;

@@ -86,9 +86,69 @@ pub fn write_json<T: Serialize>(path: &Path, value: &T) -> Result<(), String> {
     crate::atomic::write(path, text).map_err(|e| format!("{}: {e}", path.display()))
 }
 
+/// What an ask/tell state asks, identified: whether the state is new, its text (as stored,
+/// or as the new state will be written) and that text's SHA-256, which every batch header
+/// carries and every results file must carry back.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct StateIdentity {
+    /// The state did not exist: its file is written by [`StateIdentity::write_if_new`].
+    pub created: bool,
+    /// The state's text.
+    pub text: String,
+    /// SHA-256 of the text (lower-case hex).
+    pub sha: String,
+}
+
+impl StateIdentity {
+    /// The identity of `state`, read as `stored` (from [`read_stored`]; `None`: a new
+    /// state, serialised as it will be written).
+    pub fn of<S: Serialize>(stored: Option<String>, state: &S) -> Result<Self, String> {
+        let created = stored.is_none();
+        let text = match stored {
+            Some(t) => t,
+            None => serde_json::to_string(state).map_err(|e| e.to_string())?,
+        };
+        let sha = crate::provenance::sha256_hex(text.as_bytes());
+        Ok(Self { created, text, sha })
+    }
+
+    /// After an `--ask`: writes a new state's file at `path`, whole or not at all (an
+    /// existing one is left as it is).
+    pub fn write_if_new(&self, path: &Path) -> Result<(), String> {
+        if self.created {
+            crate::atomic::write(path, &self.text)
+                .map_err(|e| format!("{}: {e}", path.display()))?;
+        }
+        Ok(())
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_state_is_identified_by_the_sha_of_its_text_and_written_only_when_new() {
+        let d = std::env::temp_dir().join(format!("afsv-stored-id-{}", std::process::id()));
+        std::fs::create_dir_all(&d).unwrap();
+        let p = d.join("state.json");
+        let state = serde_json::json!({"written_by": "afsv x", "batch": 0});
+        let new = StateIdentity::of(None, &state).unwrap();
+        assert!(new.created);
+        assert_eq!(new.text, serde_json::to_string(&state).unwrap());
+        assert_eq!(new.sha, crate::provenance::sha256_hex(new.text.as_bytes()));
+        assert_eq!(new.sha.len(), 64);
+        new.write_if_new(&p).unwrap();
+        assert_eq!(std::fs::read_to_string(&p).unwrap(), new.text);
+        // a stored state keeps its own text (not a re-serialisation) and is not rewritten
+        let stored = "{ \"written_by\": \"afsv x\", \"batch\": 0 }".to_string();
+        let old = StateIdentity::of(Some(stored.clone()), &state).unwrap();
+        assert!(!old.created);
+        assert_ne!(old.sha, new.sha);
+        std::fs::write(&p, "kept").unwrap();
+        old.write_if_new(&p).unwrap();
+        assert_eq!(std::fs::read_to_string(&p).unwrap(), "kept");
+    }
 
     #[test]
     fn stored_files_are_refused_with_their_cause() {

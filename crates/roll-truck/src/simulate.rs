@@ -9,7 +9,7 @@ use std::cell::{Cell, RefCell};
 
 use odeint::{Control, Direction, Event, OdeError, Problem, SampleKind, Solver};
 use serde::Serialize;
-use vehicle_run::RunSpan;
+use vehicle_run::{RunSettings, RunSpan};
 
 use crate::error::TruckError;
 use crate::model::NV;
@@ -58,14 +58,9 @@ impl Default for RunOptions {
     }
 }
 
-impl RunOptions {
-    /// Check the fields and bound the sample count ([`MAX_SAMPLES`]); returns the number
-    /// of samples.
-    pub fn validate(&self) -> Result<usize, TruckError> {
-        self.span().samples(MAX_SAMPLES)
-    }
+impl RunSettings for RunOptions {
+    const MAX_SAMPLES: usize = MAX_SAMPLES;
 
-    /// The run's span: end time, output interval, tolerance, largest step.
     fn span(&self) -> RunSpan {
         RunSpan {
             t_end_s: self.t_end_s,

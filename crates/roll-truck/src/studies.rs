@@ -12,6 +12,7 @@ use crate::measures::{level_ground, roll_measures, RollMeasures};
 use crate::params::TruckParams;
 use crate::simulate::{simulate, RunOptions, RunRecord};
 use crate::vehicle::{ModelOptions, TruckVehicle};
+use vehicle_run::RunSettings;
 
 /// Sample spacing of the synthesized profiles (m): Nyquist 10 cycles/m, the highest band
 /// limit of the study (L682).

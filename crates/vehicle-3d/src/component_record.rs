@@ -16,6 +16,7 @@
 
 use multibody::Workspace;
 use vehicle_components::{Channels, Component, Recorder};
+use vehicle_run::RunSettings;
 
 use crate::error::VehicleError;
 use crate::simulate::{initial_run, simulate_system, RunOptions, RunRecord};

@@ -12,7 +12,7 @@
 
 use odeint::{Control, Direction, Event, OdeSystem, Problem, SampleKind, Solver};
 use serde::Serialize;
-use vehicle_run::RunSpan;
+use vehicle_run::{RunSettings, RunSpan};
 
 use crate::error::{rejected, VehicleError};
 use crate::model::body;
@@ -55,14 +55,9 @@ impl Default for RunOptions {
     }
 }
 
-impl RunOptions {
-    /// Check the fields and bound the sample count ([`MAX_SAMPLES`]); returns the number
-    /// of samples.
-    pub fn validate(&self) -> Result<usize, VehicleError> {
-        self.span().samples(MAX_SAMPLES)
-    }
+impl RunSettings for RunOptions {
+    const MAX_SAMPLES: usize = MAX_SAMPLES;
 
-    /// The run's span: end time, output interval, tolerance, largest step.
     fn span(&self) -> RunSpan {
         RunSpan {
             t_end_s: self.t_end_s,

@@ -45,6 +45,22 @@ impl RunSpan {
     }
 }
 
+/// The settings of a multibody vehicle's run (each vehicle's `RunOptions`): the span they
+/// fix, and their check, written once here.
+pub trait RunSettings {
+    /// Largest number of output samples of one run.
+    const MAX_SAMPLES: usize;
+
+    /// The run's span: end time, output interval, tolerance, largest step.
+    fn span(&self) -> RunSpan;
+
+    /// Check the fields and bound the sample count by [`RunSettings::MAX_SAMPLES`];
+    /// returns the number of samples ([`RunSpan::samples`]).
+    fn validate(&self) -> Result<usize, RunError> {
+        self.span().samples(Self::MAX_SAMPLES)
+    }
+}
+
 /// The integrator of a run: `solver` at the span's relative tolerance, the absolute
 /// tolerance of state `i` `rtol * typical[i]`, steps of at most the span's largest step.
 pub fn integrator(
@@ -97,6 +113,27 @@ mod tests {
             .unwrap_err()
             .to_string()
             .contains("max_step_s"));
+    }
+
+    #[test]
+    fn settings_are_checked_through_their_span_against_their_own_bound() {
+        struct Few(RunSpan);
+        impl RunSettings for Few {
+            const MAX_SAMPLES: usize = 4;
+            fn span(&self) -> RunSpan {
+                self.0
+            }
+        }
+        assert_eq!(
+            Few(RunSpan {
+                t_end_s: 0.5,
+                ..span()
+            })
+            .validate(),
+            Ok(3)
+        );
+        let e = Few(span()).validate().unwrap_err().to_string();
+        assert!(e.contains("too many output samples"), "{e}");
     }
 
     #[test]

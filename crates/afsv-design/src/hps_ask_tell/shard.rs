@@ -2,7 +2,7 @@
 //! evaluation of one shard: each point's vehicle run ([`HpsTask`]) in parallel, the search
 //! seed's enveloping cache built once.
 
-use super::{finite, HpsBatch, HpsProblemDesc, HpsTask, HpsValues};
+use super::{finite, HpsAsk, HpsBatch, HpsProblemDesc, HpsTask, HpsValues};
 use super::{HPS_BATCH_FORMAT, HPS_FORMAT_VERSION};
 use crate::afs_batch::{in_shard, point_id};
 use crate::batch_files::{read_batch_file, BatchHeaderFields, BatchKind, PointId};
@@ -169,6 +169,34 @@ pub fn batch_points(number: usize, batch: &HpsBatch) -> Vec<HpsBatchPoint> {
             x: p.x,
         })
         .collect()
+}
+
+/// What an `--ask` of batch `number` writes for `asked`: the header, identified by the
+/// asking state's SHA-256 `state_sha256`, and the points (none once the run has finished,
+/// with the header's `finished` set).
+pub fn batch_file(
+    desc: &HpsProblemDesc,
+    number: usize,
+    state_sha256: &str,
+    asked: &HpsAsk,
+) -> (HpsBatchHeader, Vec<HpsBatchPoint>) {
+    let (phase, points) = match asked {
+        HpsAsk::Evaluate(b) => (b.phase.name(), batch_points(number, b)),
+        HpsAsk::Finished => (String::new(), Vec::new()),
+    };
+    let header = HpsBatchHeader {
+        format: HPS_BATCH_FORMAT.into(),
+        version: HPS_FORMAT_VERSION,
+        written_by: "afsv optimize hps --ask".into(),
+        sign_convention: afsv_records::SIGN_CONVENTION.into(),
+        batch: number,
+        state_sha256: state_sha256.into(),
+        finished: *asked == HpsAsk::Finished,
+        phase,
+        points: points.len(),
+        problem: desc.clone(),
+    };
+    (header, points)
 }
 
 /// Reads and checks an HPS batch file: format, version, SHA-256, point count and ids.

@@ -11,7 +11,7 @@ use afsv_records::Record;
 use hps_emulsion::{
     characterize, identify, lab_programme, loop_metrics, simulate_displacement, Excitation,
     FitParam, HarmonicTest, HpsExtensions, IdentifyOptions, LabConfig, Measured, SimOptions,
-    Solver, StrutParams, StrutRecord,
+    Solver, StrutParams,
 };
 use std::path::{Path, PathBuf};
 
@@ -306,8 +306,9 @@ fn harmonic(a: HarmonicArgs) -> CmdResult {
             args::show(a.freq),
             args::show(a.amp_mm)
         );
-        plot_loops(path, &rec, &test, &conditions)?;
-        afsv::output::mark_svg(path)?;
+        let chart = afsv_design::figures::strut::loops(&rec, &test, &conditions)
+            .map_err(|e| format!("{}: {e}", path.display()))?;
+        super::write_chart(path, &chart)?;
     }
     afsv::output::print_json(&serde_json::json!({
         "strut": a.strut.name(),
@@ -456,59 +457,4 @@ fn identify_strut(
             sidecar.display()
         )),
     }
-}
-
-/// The four loops of the last period, drawn as in Figs 5.7, 5.9 and 5.10:
-/// pressure-deflection (MPa, mm), force-deflection (kN, mm), force-velocity and damping
-/// force-velocity (kN, m/s).
-fn plot_loops(
-    path: &Path,
-    rec: &StrutRecord,
-    test: &HarmonicTest,
-    conditions: &str,
-) -> Result<(), String> {
-    use afsv_plot::{Axis, Panel, Series};
-    let lp = hps_emulsion::HysteresisLoop::last_period(rec, test.frequency_hz)
-        .map_err(|e| format!("{}: {e}", path.display()))?;
-    let scaled = |v: &[f64], s: f64| v.iter().map(|x| x * s).collect::<Vec<f64>>();
-    let z = scaled(&lp.displacement, 1e3);
-    let f = scaled(&lp.force, 1e-3);
-    let pc = scaled(&lp.p_piston, 1e-6);
-    let pr = scaled(&lp.p_rod, 1e-6);
-    let fd = scaled(&lp.damping_force, 1e-3);
-    let v = &lp.velocity;
-    let deflection = Axis::new("deflection", "mm");
-    let velocity = Axis::new("velocity", "m/s");
-    let force = Axis::new("force", "kN");
-    let series = |label, x, y| Series { label, x, y };
-    let panels = [
-        Panel {
-            caption: "pressure-deflection",
-            x: deflection,
-            y: Axis::new("pressure", "MPa"),
-            series: vec![
-                series("P_hc piston side", &z, &pc),
-                series("P_hr rod side", &z, &pr),
-            ],
-        },
-        Panel {
-            caption: "force-deflection",
-            x: deflection,
-            y: force,
-            series: vec![series("F_h", &z, &f)],
-        },
-        Panel {
-            caption: "force-velocity",
-            x: velocity,
-            y: force,
-            series: vec![series("F_h", v, &f)],
-        },
-        Panel {
-            caption: "damping force-velocity",
-            x: velocity,
-            y: Axis::new("damping force", "kN"),
-            series: vec![series("F_h - spring", v, &fd)],
-        },
-    ];
-    afsv_plot::panels(path, "strut loops, last period", conditions, 2, &panels)
 }

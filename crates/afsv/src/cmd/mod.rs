@@ -23,3 +23,10 @@ pub mod yaw;
 
 /// Result of a subcommand: errors are printed as one line by `main`.
 pub type CmdResult = Result<(), Box<dyn std::error::Error>>;
+
+/// Write a `--plot` figure (built by `afsv_design::figures`) to `path`, marked as afsv's.
+pub fn write_chart(path: &std::path::Path, chart: &afsv_plot::Chart) -> CmdResult {
+    chart.write(path)?;
+    afsv::output::mark_svg(path)?;
+    Ok(())
+}

@@ -12,11 +12,11 @@ use afsv::output::{NotEarned, OutputGuard, OutputKind};
 use afsv_design::afs_batch::{
     chapter4_objective, Eq49Desc, ProblemDesc, VehicleDesc, AFS_KIND, MAX_SHARDS,
 };
-use afsv_design::{optimise, AfsOptimisationSettings, AfsProblem, AfsRunState, Objective};
+use afsv_design::afs_resume::AfsCheckpoint;
+use afsv_design::{optimise, AfsOptimisationSettings, AfsProblem, Objective};
 use afsv_records::lock::RunLock;
-use afsv_records::stored::{parse_stored, read_stored, same_settings, write_json};
-use serde::{Deserialize, Serialize};
-use serde_json::{json, Value};
+use afsv_records::stored::{read_stored, write_json};
+use serde_json::json;
 use std::io::IsTerminal;
 use std::path::PathBuf;
 
@@ -92,37 +92,6 @@ impl AskTellArgs {
         }
         if let Some(p) = &self.ask {
             guard.output("--ask", p, OutputKind::JsonLines)?;
-        }
-        Ok(())
-    }
-}
-
-/// What an ask/tell state asks, identified: whether the state is new, its text (as stored,
-/// or as the new state will be written) and that text's SHA-256, which every batch header
-/// carries and every results file must carry back.
-struct StateIdentity {
-    created: bool,
-    text: String,
-    sha: String,
-}
-
-impl StateIdentity {
-    /// The identity of `state`, read as `stored` (`None`: a new state).
-    fn of<S: Serialize>(stored: Option<String>, state: &S) -> Result<Self, String> {
-        let created = stored.is_none();
-        let text = match stored {
-            Some(t) => t,
-            None => serde_json::to_string(state).map_err(|e| e.to_string())?,
-        };
-        let sha = afsv_records::provenance::sha256_hex(text.as_bytes());
-        Ok(Self { created, text, sha })
-    }
-
-    /// After an `--ask`: writes a new state's file at `path` (an existing one is left).
-    fn write_if_new(&self, path: &std::path::Path) -> Result<(), String> {
-        if self.created {
-            afsv_records::atomic::write(path, &self.text)
-                .map_err(|e| format!("{}: {e}", path.display()))?;
         }
         Ok(())
     }
@@ -285,17 +254,6 @@ pub fn run(cmd: Command) -> CmdResult {
     }
 }
 
-/// The checkpoint file: one run state per configuration, with the settings it belongs to.
-#[derive(Serialize, Deserialize)]
-#[serde(deny_unknown_fields)]
-struct Checkpoint {
-    written_by: String,
-    sign_convention: String,
-    /// The settings of the command line the checkpoint belongs to.
-    settings: Value,
-    runs: Vec<AfsRunState>,
-}
-
 fn form_name(f: FormArg) -> &'static str {
     match f {
         FormArg::EnergyConsistent => "energy_consistent",
@@ -435,43 +393,16 @@ fn run_afs(a: &AfsArgs) -> CmdResult {
     }
     let mut ck = match (&a.checkpoint, stored) {
         (Some(p), Some(text)) => {
-            let ck: Checkpoint = parse_stored("--checkpoint", p, &text)?;
-            same_settings("--checkpoint", p, &ck.settings, &settings_json)?;
-            if ck.runs.len() > configs.len() {
-                return Err(format!(
-                    "--checkpoint {}: {} runs, these options make {}",
-                    p.display(),
-                    ck.runs.len(),
-                    configs.len()
-                )
-                .into());
-            }
-            Some(ck)
+            AfsCheckpoint::read("--checkpoint", p, &text, &settings_json, configs.len())?
         }
-        _ => None,
-    }
-    .unwrap_or(Checkpoint {
-        written_by: "afsv optimize afs".into(),
-        sign_convention: "afsv-v1".into(),
-        settings: settings_json,
-        runs: Vec::new(),
-    });
+        _ => AfsCheckpoint::new("afsv optimize afs", settings_json),
+    };
     let problems: Vec<AfsProblem> = descs
         .iter()
         .map(|d| AfsProblem::new(d.spec()?, objective).map_err(|e| e.to_string()))
         .collect::<Result<_, String>>()?;
-    // Every stored run is checked before any run starts (and so before the checkpoint is
-    // written again): a refused resume leaves the file as it was.
     if let Some(p) = &a.checkpoint {
-        for (i, (run, problem)) in ck.runs.iter().zip(&problems).enumerate() {
-            afsv_design::check_run_state(problem, &settings, run).map_err(|e| {
-                format!(
-                    "--checkpoint {}: run {}: {e}; remove it to start afresh",
-                    p.display(),
-                    i + 1
-                )
-            })?;
-        }
+        ck.check_runs("--checkpoint", p, &problems, &settings)?;
     }
     let progress = Bar::new()?;
     let mut outcomes = Vec::new();
@@ -482,8 +413,7 @@ fn run_afs(a: &AfsArgs) -> CmdResult {
             let Some(path) = &a.checkpoint else {
                 return Ok(());
             };
-            ck.runs.truncate(i);
-            ck.runs.push(st.clone());
+            ck.record(i, st);
             write_json(path, &ck)
         })?;
         progress.done(label, &optimum, t.elapsed().as_secs_f64());

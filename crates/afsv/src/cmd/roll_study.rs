@@ -6,10 +6,10 @@ use super::{truck, CmdResult, RuleArgs, TruckArgs};
 use afsv::output::{OutputGuard, OutputKind};
 use afsv_design::report::roll::{sensitivity_text, study_text};
 use roll_truck::sensitivity::run_sensitivity;
-use roll_truck::studies::{run_study, Study, StudyResult, MAX_SEEDS};
+use roll_truck::studies::{run_study, Study, MAX_SEEDS};
 use roll_truck::{BuiltinTruck, RunOptions, TruckParams};
 use std::io::IsTerminal;
-use std::path::{Path, PathBuf};
+use std::path::PathBuf;
 
 /// Which study `afsv roll study` runs.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -134,7 +134,7 @@ pub(super) fn run_study_cmd(a: &StudyArgs) -> CmdResult {
         p.finish();
     }
     if let Some(path) = &a.plot {
-        plot_study(path, &result)?;
+        crate::cmd::write_chart(path, &afsv_design::figures::studies::roll_study(&result))?;
     }
     if pretty {
         print!("{}", study_text(&result));
@@ -143,59 +143,5 @@ pub(super) fn run_study_cmd(a: &StudyArgs) -> CmdResult {
         v["findings"] = serde_json::to_value(result.findings())?;
         afsv::output::print_json(&v)?;
     }
-    Ok(())
-}
-
-fn plot_study(path: &Path, r: &StudyResult) -> CmdResult {
-    let mut groups: Vec<&str> = r.points.iter().map(|p| p.group.as_str()).collect();
-    groups.dedup();
-    let mut columns: Vec<(String, Vec<f64>, Vec<f64>)> = Vec::new();
-    for g in &groups {
-        let pts: Vec<_> = r.points.iter().filter(|p| p.group == *g).collect();
-        let x: Vec<f64> = pts.iter().map(|p| p.x).collect();
-        let y = |f: &dyn Fn(&roll_truck::studies::StudyPoint) -> f64| {
-            pts.iter().map(|p| f(p)).collect()
-        };
-        columns.push((format!("SP-DRT {g}"), x.clone(), y(&|p| p.sp_drt_g.mean)));
-        columns.push((
-            format!("- SD {g}"),
-            x.clone(),
-            y(&|p| p.sp_drt_g.mean - p.sp_drt_g.sd),
-        ));
-        columns.push((
-            format!("+ SD {g}"),
-            x.clone(),
-            y(&|p| p.sp_drt_g.mean + p.sp_drt_g.sd),
-        ));
-        if r.study == Study::CgHeight {
-            columns.push((
-                "smooth DRT".into(),
-                x.clone(),
-                y(&|p| p.smooth_drt_g.unwrap_or(f64::NAN)),
-            ));
-            columns.push(("SSF".into(), x, y(&|p| p.ssf)));
-        }
-    }
-    let series: Vec<afsv_plot::Series> = columns
-        .iter()
-        .map(|(label, x, y)| afsv_plot::Series { label, x, y })
-        .collect();
-    // A study variable that spans decades (α_r in ×4 steps) reads on a log axis.
-    let (lo, hi) = r.points.iter().fold((f64::INFINITY, 0.0_f64), |(a, b), p| {
-        (a.min(p.x), b.max(p.x))
-    });
-    let plot = if lo > 0.0 && hi / lo > 20.0 {
-        afsv_plot::line_plot_log_x
-    } else {
-        afsv_plot::line_plot
-    };
-    plot(
-        path,
-        &format!("rough-terrain SP-DRT over {} seeds", r.seeds.len()),
-        r.study.x_label(),
-        "lateral acceleration (g) / SSF",
-        &series,
-    )?;
-    afsv::output::mark_svg(path)?;
     Ok(())
 }

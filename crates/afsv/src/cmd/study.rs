@@ -8,7 +8,7 @@
 
 use super::CmdResult;
 use afsv::output::{OutputGuard, OutputKind};
-use afsv_design::hps_sensitivity::{HpsSensitivity, HpsVariable, StudyScope, MAX_SEEDS};
+use afsv_design::hps_sensitivity::{StudyScope, MAX_SEEDS};
 use std::io::IsTerminal;
 use std::path::PathBuf;
 
@@ -197,7 +197,7 @@ fn speed_sweep(a: SweepArgs) -> CmdResult {
     let s = hps_speed_sweep(&p, &speeds, &seeds, &|d| progress.step(d))?;
     progress.finish();
     if let Some(path) = &a.plot {
-        sweep_plot(path, &s)?;
+        super::write_chart(path, &afsv_design::figures::studies::speed_sweep(&s))?;
     }
     emit(a.output.json, &s, || {
         afsv_design::report::speed_sweep::text(&s)
@@ -235,33 +235,6 @@ pub(super) fn line_svg(
     Ok(())
 }
 
-fn sweep_plot(path: &std::path::Path, s: &afsv_design::SpeedSweep) -> CmdResult {
-    use vehicle_3d::Load;
-    let mut columns: Vec<(String, Vec<f64>, Vec<f64>)> = [Load::Unloaded, Load::Loaded]
-        .iter()
-        .map(|&load| {
-            (
-                format!("a_wz {load}"),
-                s.of_load(load).map(|p| p.speed_kmh).collect(),
-                s.of_load(load).map(|p| p.a_wz_m_s2.mean).collect(),
-            )
-        })
-        .collect();
-    let xs: Vec<f64> = s.of_load(Load::Unloaded).map(|p| p.speed_kmh).collect();
-    let bound = vec![s.hgcz_upper_m_s2; xs.len()];
-    columns.push(("8 h HGCZ upper bound".into(), xs, bound));
-    line_svg(
-        path,
-        &format!(
-            "D4 speed sweep of a_wz (class E, HPS), {} seeds",
-            s.seeds.len()
-        ),
-        "forward speed (km/h)",
-        "a_wz (m/s²)",
-        &columns,
-    )
-}
-
 fn hps(a: HpsArgs) -> CmdResult {
     if a.seeds == 0 || a.seeds > MAX_SEEDS {
         return Err(format!("--seeds {}: must be 1 to {MAX_SEEDS}", a.seeds).into());
@@ -289,49 +262,11 @@ fn hps(a: HpsArgs) -> CmdResult {
     let s = afsv_design::hps_sensitivity(&p, &changes, &seeds, scope, &|d| progress.step(d))?;
     progress.finish();
     if let Some(path) = &a.plot {
-        plot(path, &s)?;
+        super::write_chart(path, &afsv_design::figures::studies::hps_sensitivity(&s))?;
     }
     emit(a.output.json, &s, || {
         afsv_design::report::hps_sensitivity::text(&s)
     })
-}
-
-fn plot(path: &std::path::Path, s: &HpsSensitivity) -> CmdResult {
-    let mut columns: Vec<(String, Vec<f64>, Vec<f64>)> = Vec::new();
-    for v in HpsVariable::ALL {
-        for (load, pick) in [
-            (
-                "unloaded",
-                (|m: &afsv_design::hps_sensitivity::HpsMeasures| m.a_wz_unloaded_m_s2.mean)
-                    as fn(&afsv_design::hps_sensitivity::HpsMeasures) -> f64,
-            ),
-            ("loaded", |m| m.a_wz_loaded_m_s2.mean),
-        ] {
-            let mut pts: Vec<(f64, f64)> = s
-                .rows
-                .iter()
-                .filter(|r| r.variable == v)
-                .map(|r| (100.0 * r.change, pick(&r.measures)))
-                .collect();
-            pts.push((0.0, pick(&s.nominal)));
-            pts.sort_by(|a, b| a.0.total_cmp(&b.0));
-            columns.push((
-                format!("{} {load}", v.symbol()),
-                pts.iter().map(|p| p.0).collect(),
-                pts.iter().map(|p| p.1).collect(),
-            ));
-        }
-    }
-    line_svg(
-        path,
-        &format!(
-            "HPS sensitivity of a_wz (D1, class E, 20 km/h), {} seeds",
-            s.seeds.len()
-        ),
-        "change of the area (%)",
-        "a_wz (m/s²)",
-        &columns,
-    )
 }
 
 #[cfg(test)]

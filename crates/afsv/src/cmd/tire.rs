@@ -2,8 +2,8 @@
 
 use super::{args, CmdResult};
 use afsv::output::{OutputGuard, OutputKind};
-use afsv_design::report::tire::{envelope_rows, sweep_rows, SweepRow};
-use std::path::{Path, PathBuf};
+use afsv_design::report::tire::{envelope_rows, sweep_rows};
+use std::path::PathBuf;
 use tire_fiala::{Envelope, EnvelopeMethod, Fiala, PolylineProfile, TireParams};
 
 /// Subcommands of `afsv tire`.
@@ -243,8 +243,8 @@ fn sweep(args: SweepArgs) -> CmdResult {
             Some(f) => format!("tire {}", f.display()),
             None => "nominal 29.5R29 tire".to_string(),
         };
-        plot_sweep(path, &tire_name, &rows, &fzs, &kappas, &alphas)?;
-        afsv::output::mark_svg(path)?;
+        let chart = afsv_design::figures::tire::sweep(&tire_name, &rows, &fzs, &kappas, &alphas)?;
+        super::write_chart(path, &chart)?;
     }
     let full = serde_json::to_value(&rows)?;
     let table = afsv::table::from_rows(
@@ -271,98 +271,6 @@ fn sweep(args: SweepArgs) -> CmdResult {
         serde_json::json!({ "tire": tire }),
     )?;
     Ok(())
-}
-
-/// One curve per (F_z, other slip): F_y(alpha) if alpha is swept, else F_x(kappa).
-fn plot_sweep(
-    path: &Path,
-    tire_name: &str,
-    rows: &[SweepRow],
-    fzs: &[f64],
-    kappas: &[f64],
-    alphas: &[f64],
-) -> Result<(), String> {
-    let lateral = alphas.len() > 1;
-    if !lateral && kappas.len() < 2 {
-        return Err("--plot needs a swept --alpha-deg or --kappa (a range)".into());
-    }
-    let mut curves: Vec<(String, Vec<(f64, f64)>)> = Vec::new();
-    for (i, &fz) in fzs.iter().enumerate() {
-        if lateral {
-            for (j, &k) in kappas.iter().enumerate() {
-                let start = (i * kappas.len() + j) * alphas.len();
-                let pts = rows[start..start + alphas.len()]
-                    .iter()
-                    .map(|r| (r.alpha_deg, r.fy_n / 1e3))
-                    .collect();
-                curves.push((format!("Fz = {:.0} kN, kappa = {k}", fz / 1e3), pts));
-            }
-        } else {
-            for (j, &a) in alphas.iter().enumerate() {
-                let pts = (0..kappas.len())
-                    .map(|m| {
-                        let r = &rows[(i * kappas.len() + m) * alphas.len() + j];
-                        (r.kappa, r.fx_n / 1e3)
-                    })
-                    .collect();
-                curves.push((format!("Fz = {:.0} kN, alpha = {a} deg", fz / 1e3), pts));
-            }
-        }
-    }
-    if curves.len() > 50 {
-        return Err(format!(
-            "--plot: {} curves is too many to read (at most 50)",
-            curves.len()
-        ));
-    }
-    let (title, x, y) = if lateral {
-        (
-            "Fiala lateral force F_y versus slip angle",
-            afsv_plot::Axis::new("slip angle alpha", "deg"),
-            afsv_plot::Axis::new("lateral force F_y", "kN"),
-        )
-    } else {
-        (
-            "Fiala longitudinal force F_x versus slip ratio",
-            afsv_plot::Axis::new("slip ratio kappa", "-"),
-            afsv_plot::Axis::new("longitudinal force F_x", "kN"),
-        )
-    };
-    let show = |v: &[f64], s: f64| match v {
-        [a, .., b] if v.len() > 6 => format!("{} to {} ({} values)", a * s, b * s, v.len()),
-        _ => {
-            let parts: Vec<String> = v.iter().map(|x| format!("{}", x * s)).collect();
-            parts.join(", ")
-        }
-    };
-    let conditions = format!(
-        "{tire_name}; F_z = {} kN; {}",
-        show(fzs, 1e-3),
-        if lateral {
-            format!("kappa = {}", show(kappas, 1.0))
-        } else {
-            format!("alpha = {} deg", show(alphas, 1.0))
-        }
-    );
-    let xy: Vec<(Vec<f64>, Vec<f64>)> = curves
-        .iter()
-        .map(|(_, pts)| pts.iter().copied().unzip())
-        .collect();
-    let series: Vec<afsv_plot::Series<'_>> = curves
-        .iter()
-        .zip(&xy)
-        .map(|((label, _), (x, y))| afsv_plot::Series { label, x, y })
-        .collect();
-    afsv_plot::figure(
-        path,
-        &afsv_plot::Figure {
-            title,
-            conditions: &conditions,
-            x,
-            y,
-        },
-        &series,
-    )
 }
 
 fn envelope(args: EnvelopeArgs) -> CmdResult {

@@ -7,7 +7,6 @@
 mod measures;
 mod options;
 mod path_change;
-mod plots;
 mod ride;
 mod road;
 mod seat;
@@ -16,6 +15,7 @@ mod simulate;
 use super::{args, CmdResult};
 use afsv::output::{OutputGuard, OutputKind};
 use afsv::progress::Progress;
+use afsv_design::figures;
 use afsv_design::report::vehicle::{
     axle_name, link_note, per_seed, rear_axle, ride_report, roll_report, terrain_json, yaw_report,
     Ground, NO_STRUT,
@@ -29,7 +29,6 @@ use options::{
     MAX_DURATION_S,
 };
 use path_change::{offset_m, path_change_cmd, PathChangeFiles};
-use plots::{plot_ride, plot_roll, plot_yaw};
 use serde_json::{json, Value};
 use simulate::simulate_cmd;
 use std::io::IsTerminal;
@@ -501,7 +500,8 @@ fn roll_cmd(case: &CaseArgs, study: &StudyArgs, ramp_deg_s: f64, duration: f64) 
         })?;
     let measures: Vec<RollMeasures> = runs.iter().map(|r| r.0).collect();
     if let (Some(path), Some((m, Some(rec)))) = (&study.plot, runs.first()) {
-        plot_roll(path, rec, m, &spec, axle_name(axle, &p), seeds[0])?;
+        let chart = figures::vehicle::roll(rec, m, &spec, axle_name(axle, &p), seeds[0]);
+        super::write_chart(path, &chart)?;
     }
     let (mut v, text) = roll_report(&p, &spec, case.paper_form, &seeds, &measures)?;
     if let Some(plot) = &study.plot {
@@ -534,7 +534,8 @@ fn yaw_cmd(case: &CaseArgs, study: &StudyArgs, pulse_deg: f64) -> CmdResult {
         })?;
     let measures: Vec<YawMeasures> = runs.iter().map(|r| r.0).collect();
     if let (Some(path), Some((_, Some(rec)))) = (&study.plot, runs.first()) {
-        plot_yaw(path, rec, &spec, axle_name(axle, &p), seeds[0])?;
+        let chart = figures::vehicle::yaw(rec, &spec, axle_name(axle, &p), seeds[0])?;
+        super::write_chart(path, &chart)?;
     }
     let (mut v, text) = yaw_report(&p, &spec, case.paper_form, &seeds, &measures)?;
     if let Some(plot) = &study.plot {

@@ -3,9 +3,7 @@
 
 use super::{report, AfsArgs, RunOutcome};
 use crate::cmd::CmdResult;
-use afsv_design::afs_batch::{
-    variable_names, BatchHeader, ProblemDesc, BATCH_FORMAT, FORMAT_VERSION,
-};
+use afsv_design::afs_batch::{BatchHeader, ProblemDesc};
 use afsv_design::afs_state::AskTellState;
 use afsv_design::{AfsAskTell, AfsOptimisationSettings, AfsProblem, Objective};
 use afsv_records::jsonl::write_jsonl;
@@ -43,7 +41,7 @@ impl AskTell<'_> {
             &self.settings_json,
             self.problems,
         )?;
-        let id = super::StateIdentity::of(self.stored.clone(), &state)?;
+        let id = afsv_records::stored::StateIdentity::of(self.stored.clone(), &state)?;
         match &self.args.ask_tell.ask {
             Some(path) => self.ask(&drivers, &state, &id, path),
             None => self.tell(&drivers, state, &id.sha),
@@ -56,23 +54,18 @@ impl AskTell<'_> {
         &self,
         drivers: &[AfsAskTell],
         state: &AskTellState,
-        id: &super::StateIdentity,
+        id: &afsv_records::stored::StateIdentity,
         path: &Path,
     ) -> CmdResult {
         let asked = state.asked(drivers, &self.descs)?;
         let points = asked.as_ref().map_or(&[][..], |a| &a.points[..]);
-        let header = BatchHeader {
-            format: BATCH_FORMAT.into(),
-            version: FORMAT_VERSION,
-            written_by: "afsv optimize afs --ask".into(),
-            sign_convention: afsv_records::SIGN_CONVENTION.into(),
-            batch: state.batch,
-            state_sha256: id.sha.clone(),
-            finished: asked.is_none(),
-            points: points.len(),
-            variables: variable_names(),
-            problems: self.descs.clone(),
-        };
+        let header = BatchHeader::asked(
+            state.batch,
+            &id.sha,
+            asked.is_none(),
+            points.len(),
+            &self.descs,
+        );
         write_jsonl(path, &header, points)?;
         id.write_if_new(self.state_path)?;
         let Some(asked) = asked else {

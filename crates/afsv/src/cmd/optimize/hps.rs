@@ -9,9 +9,7 @@
 use super::AskTellArgs;
 use crate::cmd::CmdResult;
 use afsv::output::OutputGuard;
-use afsv_design::hps_ask_tell::{
-    batch_points, HpsBatchHeader, HPS_BATCH_FORMAT, HPS_FORMAT_VERSION,
-};
+use afsv_design::hps_ask_tell::{batch_file, batch_points};
 use afsv_design::hps_optimum::{
     optimise_hps, optimum_speed_sweep, optimum_vehicle, HpsGaSettings, HpsOptimum, D4_SPEEDS_KMH,
 };
@@ -189,25 +187,10 @@ fn ask_tell(a: &HpsArgs, desc: &HpsProblemDesc, path: &Path, stored: Option<Stri
         a.ask_tell.ask.is_some(),
         desc,
     )?;
-    let id = super::StateIdentity::of(stored, &state)?;
+    let id = afsv_records::stored::StateIdentity::of(stored, &state)?;
     let asked = driver.ask(&state.run)?;
     if let Some(batch_path) = &a.ask_tell.ask {
-        let (phase, points) = match &asked {
-            HpsAsk::Evaluate(b) => (b.phase.name(), batch_points(state.batch, b)),
-            HpsAsk::Finished => (String::new(), Vec::new()),
-        };
-        let header = HpsBatchHeader {
-            format: HPS_BATCH_FORMAT.into(),
-            version: HPS_FORMAT_VERSION,
-            written_by: "afsv optimize hps --ask".into(),
-            sign_convention: afsv_records::SIGN_CONVENTION.into(),
-            batch: state.batch,
-            state_sha256: id.sha.clone(),
-            finished: asked == HpsAsk::Finished,
-            phase: phase.clone(),
-            points: points.len(),
-            problem: desc.clone(),
-        };
+        let (header, points) = batch_file(desc, state.batch, &id.sha, &asked);
         write_jsonl(batch_path, &header, &points)?;
         id.write_if_new(path)?;
         if asked == HpsAsk::Finished {
@@ -217,7 +200,7 @@ fn ask_tell(a: &HpsArgs, desc: &HpsProblemDesc, path: &Path, stored: Option<Stri
         return super::print_asked(
             a.output.json,
             state.batch,
-            &phase,
+            &header.phase,
             points.len(),
             "runs",
             batch_path,

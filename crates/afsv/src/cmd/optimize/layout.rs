@@ -8,9 +8,7 @@
 use super::AskTellArgs;
 use crate::cmd::CmdResult;
 use afsv::output::{NotEarned, OutputGuard};
-use afsv_design::layout_ask_tell::{
-    batch_points, LayoutBatchHeader, LAYOUT_BATCH_FORMAT, LAYOUT_FORMAT_VERSION,
-};
+use afsv_design::layout_ask_tell::{batch_file, batch_points};
 use afsv_design::layout_optimum::LayoutMeasure;
 use afsv_design::report::layout_optimum::text;
 use afsv_design::{
@@ -232,27 +230,10 @@ fn ask_tell(
         problem.desc(),
         ga,
     )?;
-    let id = super::StateIdentity::of(stored, &state)?;
+    let id = afsv_records::stored::StateIdentity::of(stored, &state)?;
     let asked = driver.ask(&state.run)?;
     if let Some(batch_path) = &a.ask_tell.ask {
-        let (phase, points) = match &asked {
-            LayoutAsk::Evaluate(b) => {
-                (b.phase.name(), batch_points(problem.desc(), state.batch, b))
-            }
-            LayoutAsk::Finished => (String::new(), Vec::new()),
-        };
-        let header = LayoutBatchHeader {
-            format: LAYOUT_BATCH_FORMAT.into(),
-            version: LAYOUT_FORMAT_VERSION,
-            written_by: "afsv optimize layout --ask".into(),
-            sign_convention: afsv_records::SIGN_CONVENTION.into(),
-            batch: state.batch,
-            state_sha256: id.sha.clone(),
-            finished: asked == LayoutAsk::Finished,
-            phase: phase.clone(),
-            points: points.len(),
-            problem: problem.desc().clone(),
-        };
+        let (header, points) = batch_file(problem.desc(), state.batch, &id.sha, &asked);
         write_jsonl(batch_path, &header, &points)?;
         id.write_if_new(path)?;
         if asked == LayoutAsk::Finished {
@@ -262,7 +243,7 @@ fn ask_tell(
         return super::print_asked(
             a.output.json,
             state.batch,
-            &phase,
+            &header.phase,
             points.len(),
             "points",
             batch_path,

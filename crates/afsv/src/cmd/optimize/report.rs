@@ -9,14 +9,12 @@ pub(super) fn write_plots(
     a: &AfsArgs,
     problem: &AfsProblem,
     opt: &AfsDesign,
-) -> Result<(), String> {
+) -> Result<(), Box<dyn std::error::Error>> {
     if a.plot_step.is_none() && a.plot_pulse.is_none() {
         return Ok(());
     }
-    let (p_opt, s_opt) = problem.responses(opt).map_err(|e| e.to_string())?;
-    let (p_cur, s_cur) = problem
-        .responses(&problem.current_design())
-        .map_err(|e| e.to_string())?;
+    let (p_opt, s_opt) = problem.responses(opt)?;
+    let (p_cur, s_cur) = problem.responses(&problem.current_design())?;
     for (path, title, opt, cur) in [
         (
             &a.plot_step,
@@ -31,21 +29,10 @@ pub(super) fn write_plots(
             &p_cur,
         ),
     ] {
-        let Some(path) = path else { continue };
-        let series = [
-            afsv_plot::Series {
-                label: "optimum (PS/SQP)",
-                x: &opt.time_s,
-                y: &opt.articulation_deg,
-            },
-            afsv_plot::Series {
-                label: "current design",
-                x: &cur.time_s,
-                y: &cur.articulation_deg,
-            },
-        ];
-        afsv_plot::line_plot(path, title, "time (s)", "articulation angle (deg)", &series)?;
-        afsv::output::mark_svg(path)?;
+        if let Some(path) = path {
+            let chart = afsv_design::figures::studies::afs_response(title, opt, cur);
+            crate::cmd::write_chart(path, &chart)?;
+        }
     }
     Ok(())
 }

@@ -8,11 +8,11 @@ use super::simulate::AXES;
 use super::{axle_name, declare_inputs, print_result, terrain_and_seeds, terrain_json};
 use super::{vehicle_params, CaseArgs, CmdResult};
 use afsv::output::{OutputGuard, OutputKind};
+use afsv_design::figures;
 use afsv_design::report::vehicle::path_change_report;
 use serde_json::json;
-use std::path::{Path, PathBuf};
-use vehicle_3d::scenarios::{path_change, PathChangeMeasures, PathChangeSpec};
-use vehicle_3d::RunRecord;
+use std::path::PathBuf;
+use vehicle_3d::scenarios::{path_change, PathChangeSpec};
 
 /// Largest lateral offset of the course (m): a lane change of a few truck widths.
 const MAX_OFFSET_M: f64 = 20.0;
@@ -72,7 +72,8 @@ pub(super) fn path_change_cmd(
         r.write(path)?;
     }
     if let Some(path) = out.plot.as_deref() {
-        plot(path, &rec, (&spec, axle_name(axle, &p)), &m)?;
+        let chart = figures::vehicle::path_change(&rec, &spec, axle_name(axle, &p), &m);
+        super::super::write_chart(path, &chart)?;
     }
     let (mut v, text) = path_change_report(&p, &spec, seeds[0], &m);
     if let Some(o) = out.output.as_deref() {
@@ -83,46 +84,6 @@ pub(super) fn path_change_cmd(
         v["plot"] = json!(plot);
     }
     print_result(out.json, &v, &text)
-}
-
-/// The four Fig 6.12 channels in a 2 × 2 grid, afsv-v1 signs.
-fn plot(
-    path: &Path,
-    rec: &RunRecord,
-    (spec, axles): (&PathChangeSpec, &str),
-    m: &PathChangeMeasures,
-) -> CmdResult {
-    let deg =
-        |v: &[f64], sign: f64| -> Vec<f64> { v.iter().map(|x| sign * x.to_degrees()).collect() };
-    let theta = deg(&rec.articulation_rad, 1.0);
-    let yaw_rate = deg(&rec.front_rate_rad_s[2], -1.0);
-    let lateral: Vec<f64> = rec.front_lateral_accel_m_s2.iter().map(|a| -a).collect();
-    let t = &rec.t_s;
-    let time = || afsv_plot::Axis::new("time", "s");
-    let panel = |caption, label, unit, y| afsv_plot::Panel {
-        caption,
-        x: time(),
-        y: afsv_plot::Axis::new(label, unit),
-        series: vec![afsv_plot::Series { label, x: t, y }],
-    };
-    let conditions = format!(
-        "{}, {}, {} km/h, {} m offset, {} m gate; max deviation {:.2} m",
-        spec.load, axles, spec.speed_kmh, spec.offset_m, spec.gate_m, m.max_deviation_m
-    );
-    afsv_plot::panels(
-        path,
-        "path change (V3): the Fig 6.12 channels, positive in a right-hand turn",
-        &conditions,
-        2,
-        &[
-            panel("articulation angle", "articulation", "deg", &theta),
-            panel("left-strut displacement", "d_L", "m", &rec.strut_disp_m[0]),
-            panel("front-unit yaw rate", "yaw rate", "deg/s", &yaw_rate),
-            panel("front-unit lateral acceleration", "a_y", "m/s²", &lateral),
-        ],
-    )?;
-    afsv::output::mark_svg(path)?;
-    Ok(())
 }
 
 /// Output options of `afsv vehicle path-change`.

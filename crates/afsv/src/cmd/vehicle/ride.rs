@@ -83,7 +83,8 @@ pub(super) fn ride_cmd(
     let seats: Vec<SeatRideMeasures> = runs.iter().filter_map(|r| r.2).collect();
     if let Some(path) = &study.plot {
         let psds: Vec<RidePsd> = runs.into_iter().filter_map(|r| r.1).collect();
-        plot_ride(path, &psds, &spec, super::axle_name(axle, &p), &seeds)?;
+        let chart = figures::vehicle::ride(&psds, &spec, super::axle_name(axle, &p), &seeds)?;
+        super::super::write_chart(path, &chart)?;
     }
     let ground = Ground {
         json: terrain_json(&Some(terrain), &seeds),
