@@ -74,6 +74,9 @@ pub fn check_vehicle(file: &Path) -> Result<Value, String> {
             if let Some(l) = &a.link {
                 v["link"] = json!(l);
             }
+            if let Some(b) = &a.params.bogie {
+                v["rear_bogie"] = json!(b);
+            }
             v
         }
         afsv_vehicle::Vehicle::RigidTruck(t) => json!({

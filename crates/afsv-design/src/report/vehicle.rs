@@ -94,12 +94,14 @@ pub fn axle_name(front: FrontAxle, p: &VehicleParams) -> &'static str {
     }
 }
 
-/// The rear axle of `p` in JSON: `rigid` or `suspended` (as `front_axle`).
+/// The rear axle of `p` in JSON: `rigid` or `suspended` (as `front_axle`); a rear
+/// walking-beam tandem is `rigid tandem` or `suspended tandem` (one strut per side).
 pub fn rear_axle(p: &VehicleParams) -> Value {
-    json!(if p.rear_hps.is_some() {
-        "suspended"
-    } else {
-        "rigid"
+    json!(match (p.rear_hps.is_some(), p.bogie.is_some()) {
+        (true, false) => "suspended",
+        (false, false) => "rigid",
+        (true, true) => "suspended tandem",
+        (false, true) => "rigid tandem",
     })
 }
 
