@@ -12,7 +12,10 @@ use super::{ActiveEffect, DiscoveryError, DiscoveryModel};
 use afsv_records::Record;
 use rayon::prelude::*;
 
+mod attribution;
 mod outcome;
+
+use attribution::attribution_check;
 
 pub use outcome::{
     ChannelError, Discovery, EffectChoice, EffectParam, FitOutcome, RecordCondition, Step,
@@ -762,41 +765,4 @@ fn round<M: DiscoveryModel + ?Sized>(
         ref_bic,
         k_ref,
     }))
-}
-
-/// Attribution check: the gain must come from the effect, not from a better optimum of the
-/// model as it stands. Refit that model started from the candidate's solution (without the
-/// candidate); if it comes as close, returns a note and the better reference.
-fn attribution_check<M: DiscoveryModel + ?Sized>(
-    ctx: &Context<'_, M>,
-    current: &Fitted,
-    candidate: &Fitted,
-    k_ref: usize,
-    baseline_gap: f64,
-    progress: &dyn Progress,
-) -> Result<Option<(String, Fitted)>, DiscoveryError> {
-    let mut probe = candidate.1.clone();
-    probe.effects.pop();
-    let refit = ctx.fit(probe, Some(current.2))?;
-    progress.fit_done("attribution check");
-    let n = ctx.train.n as f64;
-    let ref_bic_probe = stats::bic(refit.0.train_mse * n, n, current.2, k_ref);
-    let explained_without = refit.0.train_mse < current.0.train_mse
-        && !ctx.opts.rule.accepts(
-            ref_bic_probe,
-            candidate.0.bic,
-            refit.0.holdout_mse,
-            candidate.0.holdout_mse,
-            baseline_gap,
-        );
-    if !explained_without {
-        return Ok(None);
-    }
-    let note = format!(
-        "{} failed the attribution check: the model without it, refitted from its solution, reaches train MSE {:.3e} / held-out MSE {:.3e}; round repeated",
-        candidate.0.effects.last().map_or("?", String::as_str),
-        refit.0.train_mse,
-        refit.0.holdout_mse
-    );
-    Ok(Some((note, refit)))
 }
