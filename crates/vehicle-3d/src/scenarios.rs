@@ -502,13 +502,14 @@ pub fn yaw(
     Ok((rec, m))
 }
 
-/// Yaw measures of `rec`: the articulation's free decay after `pulse_end_s`, from its second
-/// extremum on (the first swing is driven by the input), fitted over `window_s`.
-pub fn yaw_measures(
+/// The articulation of `rec` in degrees and the sample range `i0..i1` of its free decay
+/// after `pulse_end_s`: from its second extremum on (the first swing is driven by the
+/// input), `window_s` long. [`yaw_measures`] fits it.
+pub fn yaw_decay_window(
     rec: &RunRecord,
     pulse_end_s: f64,
     window_s: f64,
-) -> Result<YawMeasures, VehicleError> {
+) -> Result<(Vec<f64>, std::ops::Range<usize>), VehicleError> {
     let deg: Vec<f64> = rec
         .articulation_rad
         .iter()
@@ -518,6 +519,18 @@ pub fn yaw_measures(
     let i0 = perf_measures::decay_onset(t, &deg, pulse_end_s)
         .ok_or_else(|| measure("omega_z", "no free oscillation after the pulse"))?;
     let i1 = t.partition_point(|&x| x < t[i0] + window_s);
+    Ok((deg, i0..i1))
+}
+
+/// Yaw measures of `rec`: the articulation's free decay after `pulse_end_s`
+/// ([`yaw_decay_window`]), fitted over `window_s`.
+pub fn yaw_measures(
+    rec: &RunRecord,
+    pulse_end_s: f64,
+    window_s: f64,
+) -> Result<YawMeasures, VehicleError> {
+    let (deg, window) = yaw_decay_window(rec, pulse_end_s, window_s)?;
+    let (t, i0, i1) = (&rec.t_s, window.start, window.end);
     let fit = perf_measures::fit_free_decay(&t[i0..i1], &deg[i0..i1])
         .map_err(|e| measure("omega_z", e))?;
     Ok(YawMeasures {

@@ -120,15 +120,13 @@ pub fn roll(rec: &RunRecord, m: &RollMeasures, spec: &RollSpec, axles: &str, see
 /// The articulation of a D3 run after its pulse, the single-DOF decay fit over the window
 /// of `vehicle_3d::scenarios::yaw_measures` drawn over it, and the window's edges.
 pub fn yaw(rec: &RunRecord, spec: &YawSpec, axles: &str, seed: u64) -> Result<Chart, String> {
-    let deg: Vec<f64> = rec
-        .articulation_rad
-        .iter()
-        .map(|a| a.to_degrees())
-        .collect();
-    let t = &rec.t_s;
-    let i0 = perf_measures::decay_onset(t, &deg, spec.pulse_start_s + spec.pulse_s)
-        .ok_or("no free oscillation after the pulse")?;
-    let i1 = t.partition_point(|&x| x < t[i0] + spec.fit_window_s);
+    let (deg, window) = vehicle_3d::scenarios::yaw_decay_window(
+        rec,
+        spec.pulse_start_s + spec.pulse_s,
+        spec.fit_window_s,
+    )
+    .map_err(|e| e.to_string())?;
+    let (t, i0, i1) = (&rec.t_s, window.start, window.end);
     let fit = perf_measures::fit_free_decay(&t[i0..i1], &deg[i0..i1]).map_err(|e| e.to_string())?;
     let wd = 2.0 * std::f64::consts::PI * fit.damped_frequency_hz;
     let fitted: Vec<f64> = t[i0..i1]
