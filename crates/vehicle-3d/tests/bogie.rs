@@ -5,6 +5,9 @@
 //! and the two wheels keep equal loads), energy (nothing created, the struts only take
 //! it) and mirror symmetry. Seconds in total.
 
+mod support;
+use support::sampled;
+
 use multibody::Workspace;
 use odeint::{Control, Integrator, OdeSystem, Problem, Solver};
 use tire_fiala::LoadDeflectionTable;
@@ -341,31 +344,6 @@ fn a_step_under_one_tandem_wheel_lifts_the_pivot_by_half_and_shares_the_load() {
         "pivot lift {lift} m against {} m",
         0.5 * h + extension
     );
-}
-
-/// Fixed RK4 steps, `channel` sampled every 10 ms over `t_end` s.
-fn sampled(
-    v: &Vehicle,
-    y0: &[f64],
-    t_end: f64,
-    mut channel: impl FnMut(&[f64]) -> Vec<f64>,
-) -> Vec<Vec<f64>> {
-    let t_out: Vec<f64> = (0..=(t_end * 100.0).round() as usize)
-        .map(|i| i as f64 * 0.01)
-        .collect();
-    let mut out = Vec::new();
-    Integrator::new(Solver::Rk4 { step: 2e-4 }, 1e-6, 1e-6)
-        .run(
-            v,
-            &Problem::new(0.0, y0, &t_out),
-            &mut odeint::Workspace::new(y0.len()),
-            |s| {
-                out.push(channel(s.y));
-                Control::Continue
-            },
-        )
-        .unwrap();
-    out
 }
 
 /// Released moving in bounce, pitch, roll and both beams' pitch on flat ground (the

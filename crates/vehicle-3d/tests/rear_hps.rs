@@ -3,9 +3,12 @@
 //! inputs give mirrored motion, the struts only dissipate energy, and the linear bounce and
 //! pitch modes against a hand-derived two-axle model.
 
+mod support;
+use support::sampled;
+
 use hps_emulsion::emulsion::emulsion_volume;
 use hps_emulsion::StrutParams;
-use odeint::{Control, Integrator, OdeSystem, Problem, Solver};
+use odeint::OdeSystem;
 use vehicle_3d::vehicle::END_STOP_STIFFNESS_N_M;
 use vehicle_3d::{FrontAxle, Load, Vehicle, VehicleOptions, VehicleParams};
 use vehicle_components::{FlatTerrain, SteerInput};
@@ -125,32 +128,6 @@ fn each_strut_settles_at_its_hand_pressure_and_travel() {
             assert!(rear.static_travel_m < -p.hps.travel);
         }
     }
-}
-
-/// Fixed RK4 steps (both runs of a comparison take the same steps), `channel` sampled
-/// every 10 ms over `t_end` s.
-fn sampled(
-    v: &Vehicle,
-    y0: &[f64],
-    t_end: f64,
-    mut channel: impl FnMut(&[f64]) -> Vec<f64>,
-) -> Vec<Vec<f64>> {
-    let t_out: Vec<f64> = (0..=(t_end * 100.0).round() as usize)
-        .map(|i| i as f64 * 0.01)
-        .collect();
-    let mut out = Vec::new();
-    Integrator::new(Solver::Rk4 { step: 2e-4 }, 1e-6, 1e-6)
-        .run(
-            v,
-            &Problem::new(0.0, y0, &t_out),
-            &mut odeint::Workspace::new(y0.len()),
-            |s| {
-                out.push(channel(s.y));
-                Control::Continue
-            },
-        )
-        .unwrap();
-    out
 }
 
 /// A steering pulse to the right and its mirror to the left: articulation, rear-unit roll
