@@ -1,7 +1,7 @@
 //! A vehicle description with a `[link]` (docs/vehicles.md): `afsv vehicle yaw` runs the
-//! linked vehicle and says so, the same description without the link runs as before, and
-//! the commands that cannot run the link (the path change, and the Chapter 6 studies of the
-//! front strut alone), or `--hps off`, refuse it in one line. `vehicle measures` and
+//! linked vehicle and says so, the same description without the link runs as before, the
+//! path change runs it too, and the commands that cannot run the link (the Chapter 6
+//! studies of the front strut alone), or `--hps off`, refuse it in one line. `vehicle measures` and
 //! `evaluate` run the link (their library code is tested in afsv-design's
 //! `tests/linked_measures.rs`).
 
@@ -48,14 +48,22 @@ fn a_roll_link_runs_in_vehicle_yaw_and_is_refused_where_it_cannot_run() {
     assert!(omega(&a).is_finite() && omega(&b).is_finite());
     assert_ne!(omega(&a), omega(&b), "the link changes the run");
     let l = linked.to_str().unwrap();
+    let path_change = |v: &str| json(&afsv(&["vehicle", "path-change", "--json", "--vehicle", v]));
+    let (a, b) = (path_change(plain.to_str().unwrap()), path_change(l));
+    assert!(a.get("link").is_none());
+    assert!(b["link"]["Roll"].is_object(), "{}", b["link"]);
+    let articulation =
+        |v: &serde_json::Value| v["measures"]["peak_articulation_deg"].as_f64().unwrap();
+    assert!(articulation(&a).abs() > 5.0 && articulation(&b).abs() > 5.0);
+    assert_ne!(
+        articulation(&a),
+        articulation(&b),
+        "the link changes the run"
+    );
     for (args, says) in [
         (
             vec!["vehicle", "yaw", "--vehicle", l, "--hps", "off"],
             "--hps off",
-        ),
-        (
-            vec!["vehicle", "path-change", "--vehicle", l],
-            "has a [link]",
         ),
         (
             vec!["optimize", "hps", "--vehicle", l],

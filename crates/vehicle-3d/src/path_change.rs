@@ -7,6 +7,7 @@ use vehicle_components::FlatTerrain;
 use vehicle_components::{Course, PathDriver};
 
 use crate::error::{measure, positive, VehicleError};
+use crate::interconnect::{Link, LinkedRun, LinkedVehicle};
 use crate::model::FrontAxle;
 use crate::params::{Load, VehicleParams};
 use crate::scenarios::{TerrainSpec, OUTPUT_DT_S};
@@ -98,6 +99,39 @@ fn path_change_options(spec: &PathChangeSpec) -> VehicleOptions {
     }
 }
 
+/// The vehicle of a path-change run: on smooth ground, or on the terrain of `seed` when the
+/// spec has one.
+fn path_change_vehicle(
+    p: &VehicleParams,
+    spec: &PathChangeSpec,
+    seed: u64,
+) -> Result<Vehicle, VehicleError> {
+    positive("speed_kmh", spec.speed_kmh)?;
+    positive("t_end_s", spec.t_end_s)?;
+    let options = path_change_options(spec);
+    let half = 0.5 * p.front_track_m;
+    match &spec.terrain {
+        None => {
+            let flat = FlatTerrain::new(0.0, vehicle_components::DEFAULT_FRICTION)
+                .map_err(|e| measure("terrain", e))?;
+            Vehicle::new(p, spec.load, options, &flat, half)
+        }
+        Some(t) => {
+            let terrain = t.build(p, options.start_s_m + options.path_length_m + 50.0, seed)?;
+            Vehicle::new(p, spec.load, options, &terrain, half)
+        }
+    }
+}
+
+/// The integration settings of a path-change run.
+fn path_change_run(spec: &PathChangeSpec) -> RunOptions {
+    RunOptions {
+        t_end_s: spec.t_end_s,
+        output_dt_s: OUTPUT_DT_S,
+        ..RunOptions::default()
+    }
+}
+
 /// One path-change run (on terrain `seed` when the spec has a terrain): the record and its
 /// measures.
 pub fn path_change(
@@ -105,28 +139,23 @@ pub fn path_change(
     spec: &PathChangeSpec,
     seed: u64,
 ) -> Result<(RunRecord, PathChangeMeasures), VehicleError> {
-    positive("speed_kmh", spec.speed_kmh)?;
-    positive("t_end_s", spec.t_end_s)?;
-    let options = path_change_options(spec);
-    let run = RunOptions {
-        t_end_s: spec.t_end_s,
-        output_dt_s: OUTPUT_DT_S,
-        ..RunOptions::default()
-    };
-    let half = 0.5 * p.front_track_m;
-    let rec = match &spec.terrain {
-        None => {
-            let flat = FlatTerrain::new(0.0, vehicle_components::DEFAULT_FRICTION)
-                .map_err(|e| measure("terrain", e))?;
-            simulate(&Vehicle::new(p, spec.load, options, &flat, half)?, &run)?
-        }
-        Some(t) => {
-            let terrain = t.build(p, options.start_s_m + options.path_length_m + 50.0, seed)?;
-            simulate(&Vehicle::new(p, spec.load, options, &terrain, half)?, &run)?
-        }
-    };
+    let rec = simulate(&path_change_vehicle(p, spec, seed)?, &path_change_run(spec))?;
     let m = path_change_measures(p, &rec, &spec.course())?;
     Ok((rec, m))
+}
+
+/// [`path_change`] with the struts interconnected by `link` ([`LinkedVehicle`]): the run
+/// with its line pressures, and the measures of its vehicle record.
+pub fn path_change_linked(
+    p: &VehicleParams,
+    spec: &PathChangeSpec,
+    seed: u64,
+    link: impl Into<Link>,
+) -> Result<(LinkedRun, PathChangeMeasures), VehicleError> {
+    let linked = LinkedVehicle::new(path_change_vehicle(p, spec, seed)?, &link.into())?;
+    let run = linked.simulate_from(&linked.initial_state()?, &path_change_run(spec))?;
+    let m = path_change_measures(p, &run.record, &spec.course())?;
+    Ok((run, m))
 }
 
 /// The value of largest magnitude of `x`, with its sign (0 for an empty slice).

@@ -220,3 +220,49 @@ fn the_course_frame_puts_the_front_axle_at_the_course_start() {
     // is a negative course heading
     assert_eq!(course_frame(&c, 2.0, 7.0, 1.0, 0.1), (-15.0, -1.0, -0.1));
 }
+
+/// The V3 path change with the front struts roll-linked (`path_change_linked`): the two
+/// lines' circuits mirror between a right and a left path change (each line is the other's
+/// mirror), and the link stiffens the front unit's roll on its struts against the unlinked
+/// HPS run of the same strut, with the course still followed.
+#[test]
+fn a_roll_linked_path_change_mirrors_and_rolls_less_on_its_struts() {
+    use hps_emulsion::LineParams;
+    use vehicle_3d::interconnect::suspension_roll_rad;
+    use vehicle_3d::path_change::path_change_linked;
+    let p = VehicleParams::nominal();
+    let right = PathChangeSpec::v3(Load::Loaded, FrontAxle::Suspended);
+    let left = PathChangeSpec {
+        offset_m: -right.offset_m,
+        ..right
+    };
+    let line = LineParams::front_axle_roll();
+    let (rr, mr) = path_change_linked(&p, &right, 0, &line).unwrap();
+    let (rl, ml) = path_change_linked(&p, &left, 0, &line).unwrap();
+    // the two runs take their own adaptive steps (the mirrored line states enter the error
+    // norm in the other order), so they mirror to the integrator's tolerance, not to
+    // round-off as the rigid runs above
+    let tol = 1e-3;
+    assert!(rel(mr.peak_articulation_deg, -ml.peak_articulation_deg) < tol);
+    assert!(rel(mr.peak_yaw_rate_deg_s, -ml.peak_yaw_rate_deg_s) < tol);
+    assert!(rel(mr.final_offset_m, -ml.final_offset_m) < tol);
+    // line 0 of one run (left piston side to right rod side) is line 1 of the mirrored run
+    let scale = rr.node_pressure_pa[0][0];
+    for (a, b) in rr.node_pressure_pa[0].iter().zip(&rl.node_pressure_pa[1]) {
+        assert!((a - b).abs() < tol * scale, "{a} vs {b}");
+    }
+    let peak = |x: &[f64]| x.iter().fold(0.0f64, |m, v| m.max(v.abs()));
+    let (free, _) = path_change(&p, &right, 0).unwrap();
+    let roll_linked = peak(&suspension_roll_rad(&p, &rr.record));
+    let roll_free = peak(&suspension_roll_rad(&p, &free));
+    assert!(
+        roll_linked < 0.5 * roll_free,
+        "suspension roll {roll_linked} rad linked against {roll_free} rad unlinked"
+    );
+    assert!(
+        mr.max_deviation_m < 0.5,
+        "deviation {} m",
+        mr.max_deviation_m
+    );
+    assert!(rel(mr.final_offset_m, right.offset_m) < 0.1);
+}

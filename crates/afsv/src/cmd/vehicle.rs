@@ -356,20 +356,6 @@ fn described_link(case: &CaseArgs, axle: FrontAxle) -> Result<Option<Link>, Stri
     Ok(Some(link))
 }
 
-/// Refuses a description with a `[link]` in a command that runs the vehicle without it.
-fn unlinked(case: &CaseArgs, command: &str) -> Result<(), String> {
-    if case.params.is_none()
-        && super::described::articulated(case.vehicle.as_deref())?
-            .link
-            .is_some()
-    {
-        return Err(format!(
-            "afsv vehicle {command}: the vehicle description has a [link]; linked struts run in afsv vehicle ride|roll|yaw|simulate (remove the [link] to run {command})"
-        ));
-    }
-    Ok(())
-}
-
 /// [`print_result`] of a run of a vehicle whose struts `link` interconnects (the report of
 /// a vehicle without one unchanged).
 fn print_linked(json_out: bool, mut value: Value, text: &str, link: Option<&Link>) -> CmdResult {

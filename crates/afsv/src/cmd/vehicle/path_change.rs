@@ -5,13 +5,15 @@
 
 use super::super::args;
 use super::simulate::AXES;
-use super::{axle_name, declare_inputs, print_result, terrain_and_seeds, terrain_json};
+use super::{axle_name, declare_inputs, described_link, print_linked};
+use super::{terrain_and_seeds, terrain_json};
 use super::{vehicle_params, CaseArgs, CmdResult};
 use afsv::output::{OutputGuard, OutputKind};
 use afsv_design::figures;
 use afsv_design::report::vehicle::path_change_report;
 use serde_json::json;
 use std::path::PathBuf;
+use vehicle_3d::path_change::path_change_linked;
 use vehicle_3d::scenarios::{path_change, PathChangeSpec};
 
 /// Largest lateral offset of the course (m): a lane change of a few truck widths.
@@ -42,8 +44,8 @@ pub(super) fn path_change_cmd(
     if let Some(p) = out.plot.as_deref() {
         guard.output("--plot", p, OutputKind::Svg)?;
     }
-    super::unlinked(case, "path-change")?;
     let (p, axle) = vehicle_params(case)?;
+    let link = described_link(case, axle)?;
     let (terrain, seeds) = terrain_and_seeds(case, None, seed, None)?;
     let seeds = &seeds[..1];
     let v3 = PathChangeSpec::v3(case.load, axle);
@@ -54,7 +56,10 @@ pub(super) fn path_change_cmd(
         terrain,
         ..v3
     };
-    let (rec, m) = path_change(&p, &spec, seeds[0])?;
+    let (rec, m) = match &link {
+        None => path_change(&p, &spec, seeds[0])?,
+        Some(l) => path_change_linked(&p, &spec, seeds[0], l).map(|(r, m)| (r.record, m))?,
+    };
     if let Some(path) = out.output.as_deref() {
         let mut r = afsv_records::Record::from_columns(rec.afsv_v1_columns())?;
         r.meta = json!({
@@ -68,6 +73,9 @@ pub(super) fn path_change_cmd(
             "axes": AXES,
             "params": p,
         });
+        if let Some(l) = &link {
+            r.meta["link"] = json!(l);
+        }
         afsv::provenance::stamp_record(&mut r);
         r.write(path)?;
     }
@@ -83,7 +91,7 @@ pub(super) fn path_change_cmd(
     if let Some(plot) = out.plot.as_deref() {
         v["plot"] = json!(plot);
     }
-    print_result(out.json, &v, &text)
+    print_linked(out.json, v, &text, link.as_ref())
 }
 
 /// Output options of `afsv vehicle path-change`.
