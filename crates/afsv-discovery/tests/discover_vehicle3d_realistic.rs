@@ -8,7 +8,8 @@
 //!
 //! | test | proves | cost |
 //! |---|---|---|
-//! | `the_realistic_variant_differs_from_the_model_by_a_few_percent` | a realistic ride record replayed by the adapter at the records' own values of the calibrated parameters leaves a few % NRMSE on the sensor axes (so the variant cannot silently become kind), and a record of the nominal model on the same ground does not | CI, about 1 s |
+//! | `the_realistic_variant_differs_from_the_model_by_a_few_percent` | a realistic ride record replayed by the adapter at the records' own values of the calibrated parameters leaves a few % NRMSE on the sensor axes (so the variant cannot silently become kind), and a record of the mild variant (`tests/vehicle3d::VARIANT`) on the same ground below 1 % | CI, about 1 s |
+//! | `realistic_readings_one_at_a_time` (ignored) | prints each channel's NRMSE of each reading alone (on the mild variant), on the 3 + 1 runs of the null set, at the records' calibrated values | seconds |
 //! | `realistic_channel_errors` (ignored) | prints each channel's NRMSE of the 3 + 1 null set at the nominal model and at the records' calibrated values | seconds |
 //! | `realistic_null_set_names_nothing` (ignored) | the null set: nothing named | `cargo test --release --workspace --test discover_vehicle3d_realistic -- --ignored --nocapture`, about 100 s of CPU each |
 //! | `realistic_<effect>_is_named_first_or_a_discrepancy` (ignored) | each rigid-axle catalogue effect: no wrong name, the hidden one first or a discrepancy | same |
@@ -87,16 +88,17 @@ fn the_realistic_variant_differs_from_the_model_by_a_few_percent() {
     let e = channel_nrmse(&model, &realistic, &truth_baseline(&model, &real));
     print_channels("realistic at its calibrated values", &e);
     let [_, axes, _] = groups(&e);
-    // measured 0.0 (2026-12-06)
+    // measured 0.080 (2026-12-06): x 0.138, y 0.059, z 0.067, roll 0.034, pitch 0.053, yaw
+    // 0.086; the mild variant of `tests/vehicle3d::VARIANT` leaves 0.0003
     assert!(
         (0.02..0.15).contains(&axes),
         "the sensor axes differ by {axes:.4}, not a few %"
     );
-    let nominal = VehicleParams::nominal();
-    let kind = [rec(&nominal, Readings::default())];
-    let e = channel_nrmse(&model, &kind, &truth_baseline(&model, &nominal));
+    let mild = vehicle3d::variant();
+    let kind = [rec(&mild, Readings::default())];
+    let e = channel_nrmse(&model, &kind, &truth_baseline(&model, &mild));
     let [_, axes, _] = groups(&e);
-    assert!(axes < 0.01, "the nominal model's own record: {axes:.4}");
+    assert!(axes < 0.01, "the mild variant's record: {axes:.4}");
 }
 
 #[test]
