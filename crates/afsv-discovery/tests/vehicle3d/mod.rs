@@ -10,6 +10,10 @@
 //! rolling resistance): those leave a model-form difference. The path changes are driven
 //! by the path-following driver; the adapter replays their recorded steering-wheel angle
 //! open loop. None of these settings is in the adapter's defaults.
+//!
+//! Replayed at their own values of the calibrated parameters, these records leave 0.03 %
+//! NRMSE on the sensor axes: too kind a test. [`realistic`] adds readings the adapter does
+//! not calibrate ([`record_read`] takes its layout readings).
 #![allow(dead_code)]
 
 pub mod realistic;
