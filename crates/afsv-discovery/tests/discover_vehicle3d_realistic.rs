@@ -13,7 +13,8 @@
 //! | `realistic_channel_errors` (ignored) | prints each channel's NRMSE of the 3 + 1 null set at the nominal model and at the records' calibrated values | seconds |
 //! | `tire_compliance_on_rides_by_reading` (ignored) | prints the lateral compliance that fits the tire set's ride records best at the records' calibrated values, for the mild variant, the realistic one and each reading alone | about a minute of CPU |
 //! | `realistic_null_set_names_nothing`, `realistic_second_null_set_names_nothing` (ignored) | two null sets (seeds 21 and 31): nothing named | `cargo test --release --workspace --test discover_vehicle3d_realistic -- --ignored --nocapture`, about 100 s of CPU each |
-//! | `realistic_<effect>_is_named_first_or_a_discrepancy` (ignored) | each rigid-axle catalogue effect: no wrong name, the hidden one first or a discrepancy | same |
+//! | `realistic_<effect>_is_named_first_or_a_discrepancy` (ignored) | each catalogue effect: no wrong name, the hidden one first or a discrepancy (`hps_gas_temperature`: the front-axle HPS with the strut's readings too, rtol 1e-7, about 25 min of CPU) | same |
+//! | `strut_readings_one_at_a_time` (ignored) | prints each channel's NRMSE of a ride and a V3 record of the HPS vehicle for each strut reading alone | seconds |
 
 mod common;
 mod vehicle3d;
@@ -23,7 +24,9 @@ use afsv_discovery::Outcome;
 use afsv_discovery::{discover, evaluate_errors, Discovery, DiscoveryModel, DiscoveryOptions};
 use afsv_records::Record;
 use common::summary;
-use vehicle3d::realistic::{params, Readings, READINGS, VEHICLE_READINGS};
+use vehicle3d::realistic::{
+    hps_params, params, Readings, READINGS, STRUT_READINGS, VEHICLE_READINGS,
+};
 use vehicle3d::{record_read, records_read, runs, Hidden, RunSpec};
 use vehicle_3d::{FrontAxle, Load, VehicleParams};
 
@@ -233,12 +236,58 @@ fn tire_compliance_on_rides_by_reading() {
     }
 }
 
+#[test]
+#[ignore]
+fn strut_readings_one_at_a_time() {
+    let axle = FrontAxle::Suspended;
+    let model = Vehicle3dModel::nominal(axle);
+    let set = runs(RIDES, CHANGES, 26);
+    for k in [1, 3] {
+        let rec = |p: &VehicleParams| {
+            [record_read(
+                axle,
+                p,
+                READINGS,
+                &set[k],
+                Hidden::None,
+                0.0,
+                7,
+            )]
+        };
+        let real = params();
+        let base = truth_baseline(&model, &real);
+        print_channels(
+            &format!("run {k}: vehicle readings only"),
+            &channel_nrmse(&model, &rec(&real), &base),
+        );
+        for (name, read) in STRUT_READINGS {
+            let mut p = real.clone();
+            read(&mut p);
+            print_channels(
+                &format!("run {k}: and {name}"),
+                &channel_nrmse(&model, &rec(&p), &base),
+            );
+        }
+        print_channels(
+            &format!("run {k}: all"),
+            &channel_nrmse(&model, &rec(&hps_params()), &base),
+        );
+    }
+}
+
 /// One discovery on a realistic training set of `seed` and a held-out set of `seed + 50`,
 /// printed with the calibrated baseline's per-channel NRMSE on the held-out records.
 fn run(hidden: Hidden, seed: u64) -> Discovery {
-    let axle = FrontAxle::Rigid;
+    run_axle(FrontAxle::Rigid, hidden, seed)
+}
+
+/// [`run`] with the front axle `axle` (the HPS: [`hps_params`]).
+fn run_axle(axle: FrontAxle, hidden: Hidden, seed: u64) -> Discovery {
     let model = Vehicle3dModel::nominal(axle);
-    let p = params();
+    let p = match axle {
+        FrontAxle::Rigid => params(),
+        FrontAxle::Suspended => hps_params(),
+    };
     let train = records_read(
         axle,
         &p,
@@ -379,4 +428,11 @@ fn realistic_driver_throttle_is_named_first_or_a_discrepancy() {
         24,
     );
     right_first_or_discrepancy(&d, "driver-throttle");
+}
+
+#[test]
+#[ignore]
+fn realistic_hps_gas_temperature_is_named_first_or_a_discrepancy() {
+    let d = run_axle(FrontAxle::Suspended, Hidden::GasHeat(1.0), 27);
+    right_first_or_discrepancy(&d, "hps-gas-temperature");
 }
