@@ -12,7 +12,7 @@
 //! | `realistic_readings_one_at_a_time` (ignored) | prints each channel's NRMSE of each reading alone (on the mild variant), on the 3 + 1 runs of the null set, at the records' calibrated values | seconds |
 //! | `realistic_channel_errors` (ignored) | prints each channel's NRMSE of the 3 + 1 null set at the nominal model and at the records' calibrated values | seconds |
 //! | `tire_compliance_on_rides_by_reading` (ignored) | prints the lateral compliance that fits the tire set's ride records best at the records' calibrated values, for the mild variant, the realistic one and each reading alone | about a minute of CPU |
-//! | `realistic_null_set_names_nothing`, `realistic_second_null_set_names_nothing` (ignored) | two null sets (seeds 21 and 31): nothing named | `cargo test --release --workspace --test discover_vehicle3d_realistic -- --ignored --nocapture`, about 100 s of CPU each |
+//! | `realistic_null_set_names_nothing`, `realistic_second_null_set_names_nothing`, `realistic_ride_null_set_names_nothing` (ignored) | three null sets (3 + 1 records, seeds 21 and 31; 5 ride records, seed 32): nothing named | `cargo test --release --workspace --test discover_vehicle3d_realistic -- --ignored --nocapture`, about 100 s of CPU each |
 //! | `realistic_<effect>_is_named_first_or_a_discrepancy` (ignored) | each rigid-axle catalogue effect: no wrong name, the hidden one first or a discrepancy | same |
 //! | `strut_readings_one_at_a_time` (ignored) | prints each channel's NRMSE of a ride and a V3 record of the HPS vehicle for each strut reading alone | seconds |
 //! | `strut_readings_gas_path_change_probe` (ignored) | prints whether the HPS gas set's V3 record can be written with each strut reading alone, all but one, and all (with all, the integrator stops: too many steps at 9.7 s) | about 150 s of CPU |
@@ -312,6 +312,11 @@ fn strut_readings_gas_path_change_probe() {
 /// One discovery on a realistic training set of `seed` and a held-out set of `seed + 50`,
 /// printed with the calibrated baseline's per-channel NRMSE on the held-out records.
 fn run(hidden: Hidden, seed: u64) -> Discovery {
+    run_sets(hidden, RIDES, CHANGES, seed)
+}
+
+/// [`run`] on `rides` ride records and `changes` V3 path changes per set.
+fn run_sets(hidden: Hidden, rides: usize, changes: usize, seed: u64) -> Discovery {
     let axle = FrontAxle::Rigid;
     let model = Vehicle3dModel::nominal(axle);
     let p = params();
@@ -319,7 +324,7 @@ fn run(hidden: Hidden, seed: u64) -> Discovery {
         axle,
         &p,
         READINGS,
-        &runs(RIDES, CHANGES, seed),
+        &runs(rides, changes, seed),
         hidden,
         seed,
     );
@@ -328,7 +333,7 @@ fn run(hidden: Hidden, seed: u64) -> Discovery {
         axle,
         &p,
         READINGS,
-        &runs(RIDES, CHANGES, hold_seed),
+        &runs(rides, changes, hold_seed),
         hidden,
         hold_seed,
     );
@@ -419,6 +424,14 @@ fn realistic_null_set_names_nothing() {
 #[ignore]
 fn realistic_second_null_set_names_nothing() {
     let d = run(Hidden::None, 31);
+    assert!(d.named.is_empty(), "{}", summary(&d));
+    assert!(!matches!(d.outcome, Outcome::Named { .. }));
+}
+
+#[test]
+#[ignore]
+fn realistic_ride_null_set_names_nothing() {
+    let d = run_sets(Hidden::None, 5, 0, 32);
     assert!(d.named.is_empty(), "{}", summary(&d));
     assert!(!matches!(d.outcome, Outcome::Named { .. }));
 }
