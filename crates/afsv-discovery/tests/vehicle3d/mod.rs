@@ -4,10 +4,10 @@
 //!
 //! What these records are: not an independent implementation (none of the 3-D vehicle
 //! exists in the repository), but the same code with other values wherever the paper is
-//! silent, as a second faithful implementation would choose them. Some of those values
-//! are in the adapter's calibration set (joint height, drive gain, tire damping and
-//! longitudinal relaxation), the others are not (wheel inertias, the drive's integral gain,
-//! rolling resistance): those leave a model-form difference. The path changes are driven
+//! silent, as a second faithful implementation would choose them. All but one of those
+//! values are in the adapter's calibration set (joint height, the drive's gains, tire
+//! damping, longitudinal relaxation, rolling resistance, wheel spin inertia); the wheel tilt
+//! inertia is not, and changes nothing the adapter compares. The path changes are driven
 //! by the path-following driver; the adapter replays their recorded steering-wheel angle
 //! open loop. None of these settings is in the adapter's defaults.
 //!
