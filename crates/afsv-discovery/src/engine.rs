@@ -156,13 +156,10 @@ pub fn calibrate<M: DiscoveryModel + ?Sized>(
         model.catalogue().len(),
     )?;
     let nominal = nominal_config(&ctx);
-    let (calibrated, _, _) = ctx.fit(
-        Config {
-            free_baseline: (0..nominal.baseline.len()).collect(),
-            ..nominal
-        },
-        None,
-    )?;
+    let (calibrated, _, _) = ctx.calibrate(Config {
+        free_baseline: (0..nominal.baseline.len()).collect(),
+        ..nominal
+    })?;
     Ok(calibrated)
 }
 
@@ -211,14 +208,11 @@ pub fn discover<M: DiscoveryModel + ?Sized>(
             let wrapped = WithPlacebos::new(&read);
             let ctx = context(&wrapped, train, &tp, None, holdout, &hp, opts, wrapped.real)?;
             let nominal = nominal_config(&ctx);
-            let fitted = ctx.fit(
-                Config {
-                    free_baseline: (0..nominal.baseline.len()).collect(),
-                    baseline: start.map_or(nominal.baseline, <[f64]>::to_vec),
-                    ..nominal
-                },
-                None,
-            )?;
+            let fitted = ctx.calibrate(Config {
+                free_baseline: (0..nominal.baseline.len()).collect(),
+                baseline: start.map_or(nominal.baseline, <[f64]>::to_vec),
+                ..nominal
+            })?;
             Ok((fitted, ctx.holdout.noise_mse()))
         };
     let (choice, reading_choices, switched_fit) = if switches.is_empty() {
@@ -261,7 +255,7 @@ pub fn discover<M: DiscoveryModel + ?Sized>(
     };
     let calibrated_fit = match switched_fit {
         Some(f) => f,
-        None => ctx.fit(start, None)?,
+        None => ctx.calibrate(start)?,
     };
     progress.fit_done("baseline calibration");
     let calibrated_cfg = calibrated_fit.1.clone();

@@ -5,7 +5,7 @@ use super::engine::{DiscoveryOptions, FitOutcome, SCOUT_ITERATIONS};
 use super::layout::RecordSet;
 use super::stats;
 use super::{ActiveEffect, DiscoveryError, DiscoveryModel, EffectSpec, ParamSpec};
-use optimize::least_squares::{fit, FitOptions, Problem};
+use optimize::least_squares::{fit, BroydenUpdates, FitOptions, Problem};
 
 /// A configuration to fit: which baseline parameters are free and which effects are on.
 #[derive(Debug, Clone, PartialEq)]
@@ -127,18 +127,28 @@ impl<M: DiscoveryModel + ?Sized> Context<'_, M> {
 
     /// Least-squares fit of the free parameters of `config` on `set`; returns the fitted
     /// configuration, the standard errors of the free parameters, whether the fit
-    /// converged, and its residual sum of squares.
+    /// converged, and its residual sum of squares. Every fit updates its Jacobian between
+    /// finite-difference ones ([`JACOBIAN_REFRESH`]); `stop` says which convergence test
+    /// ends it and whether the standard errors are wanted.
     fn fit_on(
         &self,
         config: &Config,
         set: &RecordSet<'_, M::Prepared>,
         max_iter: usize,
+        stop: Stop,
     ) -> Result<(Config, Vec<f64>, bool, f64), DiscoveryError> {
         let p0 = config.pack();
         if p0.is_empty() {
             let r = set.residual_vec(self.model, &config.baseline, &config.active())?;
             return Ok((config.clone(), Vec::new(), true, sum_sq(&r)));
         }
+        let resolvable_decrease = match stop {
+            Stop::Statistical => {
+                let r = set.residual_vec(self.model, &config.baseline, &config.active())?;
+                resolvable_decrease(stats::effective_samples(&set.segment_slices(&r)))
+            }
+            Stop::Converged => 0.0,
+        };
         let (lower, upper, typical) = self.bounds(config);
         let obj = Objective {
             model: self.model,
@@ -156,6 +166,11 @@ impl<M: DiscoveryModel + ?Sized> Context<'_, M> {
                 upper: Some(upper),
                 diff_step: 1e-3,
                 typical: Some(typical),
+                broyden: Some(BroydenUpdates {
+                    refresh_every: JACOBIAN_REFRESH,
+                    exact_at_solution: stop == Stop::Converged,
+                }),
+                resolvable_decrease,
             },
         )?;
         Ok((
@@ -175,9 +190,28 @@ impl<M: DiscoveryModel + ?Sized> Context<'_, M> {
     /// subset spans the records' conditions, so its optimum is close, and most iterations
     /// then cost a fraction of a full replay.
     pub fn fit(&self, config: Config, n_eff: Option<f64>) -> Result<Fitted, DiscoveryError> {
+        self.fit_until(config, n_eff, Stop::Converged)
+    }
+
+    /// The baseline's calibration: [`Self::fit`], with the fit on the scouting subset ended
+    /// by the statistical stop ([`Stop::Statistical`]). The calibrated baseline is where
+    /// the search starts and every candidate frees it again; a misspecified baseline
+    /// otherwise crawls along a valley for its whole iteration limit.
+    pub fn calibrate(&self, config: Config) -> Result<Fitted, DiscoveryError> {
+        self.fit_until(config, None, Stop::Statistical)
+    }
+
+    /// [`Self::fit`] with `subset_stop` ending the fit on the scouting subset.
+    fn fit_until(
+        &self,
+        config: Config,
+        n_eff: Option<f64>,
+        subset_stop: Stop,
+    ) -> Result<Fitted, DiscoveryError> {
         let (start, max_iter) = match &self.scout {
             Some(scout) => (
-                self.fit_on(&config, scout, self.opts.max_iter)?.0,
+                self.fit_on(&config, scout, self.opts.max_iter, subset_stop)?
+                    .0,
                 self.opts.polish_iterations,
             ),
             None => (config, self.opts.max_iter),
@@ -203,7 +237,8 @@ impl<M: DiscoveryModel + ?Sized> Context<'_, M> {
         max_iter: usize,
         n_eff: Option<f64>,
     ) -> Result<Fitted, DiscoveryError> {
-        let (fitted, se, converged, _) = self.fit_on(&start, &self.train, max_iter)?;
+        let (fitted, se, converged, _) =
+            self.fit_on(&start, &self.train, max_iter, Stop::Converged)?;
         self.score(fitted, &se, converged, n_eff)
     }
 
@@ -415,7 +450,7 @@ impl<M: DiscoveryModel + ?Sized> Context<'_, M> {
         let mut best: Option<(f64, Config)> = None;
         let mut last_err = None;
         for start in &starts[..k] {
-            match self.fit_on(&config_at(start), set, SCOUT_ITERATIONS) {
+            match self.fit_on(&config_at(start), set, SCOUT_ITERATIONS, Stop::Statistical) {
                 Ok((cfg, _, _, rss)) => {
                     if best.as_ref().is_none_or(|(b, _)| rss < *b) {
                         best = Some((rss, cfg));
@@ -450,6 +485,37 @@ impl<M: DiscoveryModel + ?Sized> Context<'_, M> {
             .ok();
         set.per_channel(r.as_deref())
     }
+}
+
+/// Which test ends a fit of [`Context::fit_on`]. Both update the Jacobian between
+/// finite-difference ones ([`JACOBIAN_REFRESH`]).
+#[derive(Debug, Clone, Copy, PartialEq)]
+enum Stop {
+    /// The statistical stop ([`resolvable_decrease`]) besides the relative decrease of
+    /// 1e-8; the standard errors come from the last (possibly updated) Jacobian and are
+    /// not used. For fits that only lead to another: scouting, and the calibration's fit on
+    /// the scouting records before its polish on all training records.
+    Statistical,
+    /// Only the relative decrease of 1e-8 (or a step along a finite-difference Jacobian
+    /// that finds no decrease); the standard errors from a finite-difference Jacobian at
+    /// the solution. For the fits on all training records, which are scored and reported,
+    /// and the finalists' and the attribution check's fits on the scouting records (a
+    /// finalist stopped early leaves the final fit more to do than its iteration limit
+    /// allows; a reference stopped early would favour the candidate it is checked
+    /// against).
+    Converged,
+}
+
+/// Accepted steps between finite-difference Jacobians of a discovery fit; Broyden rank-1
+/// updates in between (`optimize::least_squares::BroydenUpdates`).
+pub(crate) const JACOBIAN_REFRESH: usize = 3;
+
+/// Relative decrease of a residual sum of squares the records cannot resolve: the standard
+/// error of a mean square over `n_eff` effective samples, `sqrt(2 / n_eff)` (the variance
+/// of a Gaussian residual's square is twice its squared variance; docs/discovery.md,
+/// "Statistics", for `n_eff`).
+pub(crate) fn resolvable_decrease(n_eff: f64) -> f64 {
+    (2.0 / n_eff.max(1.0)).sqrt()
 }
 
 /// True when `value` sits on (within 1e-6 of the range of) one of its bounds.
@@ -526,6 +592,14 @@ mod tests {
             effects: Vec::new(),
         };
         (e, Ok((config, rss)))
+    }
+
+    #[test]
+    fn resolvable_decrease_is_the_mean_squares_standard_error() {
+        assert_eq!(resolvable_decrease(2.0), 1.0);
+        assert!((resolvable_decrease(20_000.0) - 0.01).abs() < 1e-15);
+        // Fewer than one effective sample counts as one.
+        assert_eq!(resolvable_decrease(0.0), resolvable_decrease(1.0));
     }
 
     #[test]

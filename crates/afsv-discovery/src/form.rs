@@ -437,6 +437,7 @@ fn group_fits<M: DiscoveryModel + ?Sized>(
                 upper: Some(specs.iter().map(|s| s.upper).collect()),
                 diff_step: 1e-3,
                 typical: Some(specs.iter().map(|s| s.typical).collect()),
+                ..FitOptions::default()
             },
         )?;
         let mut r = vec![0.0; set.n];

@@ -469,6 +469,7 @@ pub fn identify(
         upper: Some(upper),
         diff_step: 1e-4,
         typical: Some(vec![1.0; which.len()]),
+        ..FitOptions::default()
     };
     let res = fit(&problem, &x0, &fo).map_err(|e| HpsError::Identification(e.to_string()))?;
     let params = problem.params_at(&res.params)?;
