@@ -252,15 +252,9 @@ fn harmonic(a: HarmonicArgs) -> CmdResult {
         args::MAX_HPS_SAMPLES,
     )?;
     let mut guard = OutputGuard::new(a.force);
-    if let Some(file) = a.strut.file() {
-        guard.input("--strut", file)?;
-    }
-    if let Some(path) = &a.output {
-        guard.output("-o", path, OutputKind::Record)?;
-    }
-    if let Some(path) = &a.plot {
-        guard.output("--plot", path, OutputKind::Svg)?;
-    }
+    guard.input_if("--strut", a.strut.file())?;
+    guard.output_if("-o", a.output.as_deref(), OutputKind::Record)?;
+    guard.output_if("--plot", a.plot.as_deref(), OutputKind::Svg)?;
     let params = with_gamma0(a.strut.params()?, a.gamma0)?;
     let test = HarmonicTest {
         frequency_hz: a.freq,
@@ -320,9 +314,7 @@ fn harmonic(a: HarmonicArgs) -> CmdResult {
 
 fn characterize_cmd(a: CharacterizeArgs) -> CmdResult {
     let mut guard = afsv::output::OutputGuard::new(a.force);
-    if let Some(f) = a.strut.file() {
-        guard.input("--strut", f)?;
-    }
+    guard.input_if("--strut", a.strut.file())?;
     let out = &a.table;
     out.declare(&mut guard)?;
     let params = with_gamma0(a.strut.params()?, a.gamma0)?;

@@ -87,12 +87,8 @@ impl AskTellArgs {
 
     /// Declare the state file and the asked batch as outputs.
     fn declare_outputs(&self, guard: &mut OutputGuard) -> CmdResult {
-        if let Some(p) = &self.state {
-            guard.output("--state", p, OutputKind::Sidecar)?;
-        }
-        if let Some(p) = &self.ask {
-            guard.output("--ask", p, OutputKind::JsonLines)?;
-        }
+        guard.output_if("--state", self.state.as_deref(), OutputKind::Sidecar)?;
+        guard.output_if("--ask", self.ask.as_deref(), OutputKind::JsonLines)?;
         Ok(())
     }
 }
@@ -331,17 +327,9 @@ fn run_afs(a: &AfsArgs) -> CmdResult {
     };
     let mut guard = OutputGuard::new(a.force);
     a.ask_tell.declare_inputs(&mut guard)?;
-    for (label, p) in [
-        ("--plot-step", &a.plot_step),
-        ("--plot-pulse", &a.plot_pulse),
-    ] {
-        if let Some(p) = p {
-            guard.output(label, p, OutputKind::Svg)?;
-        }
-    }
-    if let Some(p) = &a.checkpoint {
-        guard.output("--checkpoint", p, OutputKind::Sidecar)?;
-    }
+    guard.output_if("--plot-step", a.plot_step.as_deref(), OutputKind::Svg)?;
+    guard.output_if("--plot-pulse", a.plot_pulse.as_deref(), OutputKind::Svg)?;
+    guard.output_if("--checkpoint", a.checkpoint.as_deref(), OutputKind::Sidecar)?;
     a.ask_tell.declare_outputs(&mut guard)?;
     let mut settings = AfsOptimisationSettings {
         extra_starts: a.starts,

@@ -218,16 +218,8 @@ impl TruckArgs {
 
     /// Declare the files the truck is read from as inputs.
     pub fn declare_inputs(&self, guard: &mut OutputGuard) -> Result<(), String> {
-        if let Some(p) = &self.params {
-            guard.input("--params", p)?;
-        }
-        if let Some(v) = self
-            .vehicle
-            .as_deref()
-            .filter(|v| super::described::is_file(v))
-        {
-            guard.input("--vehicle", v)?;
-        }
+        guard.input_if("--params", self.params.as_deref())?;
+        super::described::declare(guard, self.vehicle.as_deref())?;
         Ok(())
     }
 }
@@ -309,9 +301,7 @@ fn duration(case: &CaseArgs, p: &TruckParams) -> f64 {
 fn simulate(case: &CaseArgs, dt: f64, output: &Path, force: bool) -> CmdResult {
     let mut guard = OutputGuard::new(force);
     case.truck.declare_inputs(&mut guard)?;
-    if let Some(road) = &case.road {
-        guard.input("--road", road)?;
-    }
+    guard.input_if("--road", case.road.as_deref())?;
     guard.output("-o", output, OutputKind::Record)?;
     let p = truck(&case.truck, case.cg_height_m)?;
     let duration = duration(case, &p);

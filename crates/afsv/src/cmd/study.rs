@@ -146,13 +146,7 @@ fn sweep_vehicle(
     a: &SweepArgs,
     guard: &mut OutputGuard,
 ) -> Result<vehicle_3d::VehicleParams, String> {
-    if let Some(v) = a
-        .vehicle
-        .as_deref()
-        .filter(|v| super::described::is_file(v))
-    {
-        guard.input("--vehicle", v)?;
-    }
+    super::described::declare(guard, a.vehicle.as_deref())?;
     let mut p = if a.hps == "nominal" {
         super::described::with_front_strut(a.vehicle.as_deref(), "--hps nominal")?
     } else {
@@ -188,9 +182,7 @@ fn speed_sweep(a: SweepArgs) -> CmdResult {
     let speeds = parse_list("--speeds", &a.speeds, MAX_SPEEDS)?;
     let mut guard = OutputGuard::new(a.force);
     let p = sweep_vehicle(&a, &mut guard)?;
-    if let Some(path) = &a.plot {
-        guard.output("--plot", path, OutputKind::Svg)?;
-    }
+    guard.output_if("--plot", a.plot.as_deref(), OutputKind::Svg)?;
     let seeds: Vec<u64> = afsv_design::fan_out::seed_range(a.seed, a.seeds as u64);
     let runs = afsv_design::hps_speed_sweep::speed_sweep_runs(speeds.len(), seeds.len());
     let progress = afsv::progress::Progress::new("afsv study speed-sweep", "runs", Some(runs));
@@ -241,16 +233,8 @@ fn hps(a: HpsArgs) -> CmdResult {
     }
     let changes = parse_changes(&a.changes)?;
     let mut guard = OutputGuard::new(a.force);
-    if let Some(v) = a
-        .vehicle
-        .as_deref()
-        .filter(|v| super::described::is_file(v))
-    {
-        guard.input("--vehicle", v)?;
-    }
-    if let Some(p) = &a.plot {
-        guard.output("--plot", p, OutputKind::Svg)?;
-    }
+    super::described::declare(&mut guard, a.vehicle.as_deref())?;
+    guard.output_if("--plot", a.plot.as_deref(), OutputKind::Svg)?;
     let p = super::described::with_front_strut(a.vehicle.as_deref(), "study hps-sensitivity")?;
     let seeds: Vec<u64> = afsv_design::fan_out::seed_range(a.seed, a.seeds as u64);
     let scope = StudyScope {

@@ -203,12 +203,8 @@ fn load_params(args: &SweepArgs) -> Result<TireParams, Box<dyn std::error::Error
 
 fn sweep(args: SweepArgs) -> CmdResult {
     let mut guard = OutputGuard::new(args.force);
-    if let Some(p) = &args.params {
-        guard.input("--params", p)?;
-    }
-    if let Some(p) = &args.plot {
-        guard.output("--plot", p, OutputKind::Svg)?;
-    }
+    guard.input_if("--params", args.params.as_deref())?;
+    guard.output_if("--plot", args.plot.as_deref(), OutputKind::Svg)?;
     let out = &args.table;
     out.declare(&mut guard)?;
     let fzs = parse_range(&args.fz, "--fz")?;

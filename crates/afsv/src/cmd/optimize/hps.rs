@@ -104,17 +104,13 @@ pub fn run(a: &HpsArgs) -> CmdResult {
         None => (None, None),
     };
     let mut guard = OutputGuard::new(a.force);
-    if let Some(v) = a
-        .vehicle
-        .as_deref()
-        .filter(|v| crate::cmd::described::is_file(v))
-    {
-        guard.input("--vehicle", v)?;
-    }
+    crate::cmd::described::declare(&mut guard, a.vehicle.as_deref())?;
     a.ask_tell.declare_inputs(&mut guard)?;
-    if let Some(path) = &a.strut_out {
-        guard.output("--strut-out", path, afsv::output::OutputKind::Other)?;
-    }
+    guard.output_if(
+        "--strut-out",
+        a.strut_out.as_deref(),
+        afsv::output::OutputKind::Other,
+    )?;
     a.ask_tell.declare_outputs(&mut guard)?;
     let base = crate::cmd::described::with_front_strut(a.vehicle.as_deref(), "optimize hps")?;
     if let Some(state) = &a.ask_tell.state {

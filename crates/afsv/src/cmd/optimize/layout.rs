@@ -172,13 +172,7 @@ pub fn run(a: &LayoutArgs) -> CmdResult {
         None => (None, None),
     };
     let mut guard = OutputGuard::new(a.force);
-    if let Some(v) = a
-        .vehicle
-        .as_deref()
-        .filter(|v| crate::cmd::described::is_file(v))
-    {
-        guard.input("--vehicle", v)?;
-    }
+    crate::cmd::described::declare(&mut guard, a.vehicle.as_deref())?;
     a.ask_tell.declare_inputs(&mut guard)?;
     a.ask_tell.declare_outputs(&mut guard)?;
     let desc = problem_desc(a)?;
