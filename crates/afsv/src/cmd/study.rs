@@ -252,33 +252,3 @@ fn hps(a: HpsArgs) -> CmdResult {
         afsv_design::report::hps_sensitivity::text(&s)
     })
 }
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn changes_parse_and_bad_ones_are_named() {
-        assert_eq!(parse_changes("-30, 15").unwrap(), vec![-0.3, 0.15]);
-        assert!(parse_changes("-100").unwrap_err().contains("above -100"));
-        assert!(parse_changes("x").unwrap_err().contains("item 1"));
-        assert!(parse_changes("nan").is_err());
-        let many = vec!["1"; 21].join(",");
-        assert!(parse_changes(&many).unwrap_err().contains("at most 20"));
-    }
-
-    #[test]
-    fn lists_parse_and_bad_items_are_named() {
-        assert_eq!(
-            parse_list("--speeds", "10, 20", 5).unwrap(),
-            vec![10.0, 20.0]
-        );
-        assert!(parse_list("--speeds", "10,x", 5)
-            .unwrap_err()
-            .contains("item 2"));
-        assert!(parse_list("--speeds", "inf", 5).is_err());
-        assert!(parse_list("--design", "1,2,3,4", 3)
-            .unwrap_err()
-            .contains("at most 3"));
-    }
-}

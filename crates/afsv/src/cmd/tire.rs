@@ -321,26 +321,3 @@ fn envelope(args: EnvelopeArgs) -> CmdResult {
     )?;
     Ok(())
 }
-
-#[cfg(test)]
-mod tests {
-    use super::parse_range;
-
-    #[test]
-    fn ranges() {
-        assert_eq!(parse_range("5", "--x").unwrap(), vec![5.0]);
-        let r = parse_range("-20:20:0.5", "--x").unwrap();
-        assert_eq!(r.len(), 81);
-        assert_eq!(r[80], 20.0);
-        assert_eq!(parse_range("0:1:0.3", "--x").unwrap().len(), 4);
-        assert!(parse_range("1:0:0.1", "--x")
-            .unwrap_err()
-            .contains("below start"));
-        assert!(parse_range("0:1:0", "--x").unwrap_err().contains("step"));
-        assert!(parse_range("0:a:1", "--x")
-            .unwrap_err()
-            .contains("stop `a`"));
-        assert!(parse_range("0:1", "--x").is_err());
-        assert!(parse_range("nan", "--x").is_err());
-    }
-}
