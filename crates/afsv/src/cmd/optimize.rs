@@ -14,8 +14,8 @@ use afsv_design::afs_batch::{
 };
 use afsv_design::afs_resume::AfsCheckpoint;
 use afsv_design::{optimise, AfsOptimisationSettings, AfsProblem, Objective};
-use afsv_records::lock::RunLock;
-use afsv_records::stored::{read_stored, write_json};
+use afsv_records::lock::take_and_read;
+use afsv_records::stored::write_json;
 use serde_json::json;
 use std::io::IsTerminal;
 use std::path::PathBuf;
@@ -314,16 +314,9 @@ fn run_afs(a: &AfsArgs) -> CmdResult {
     a.ask_tell.check()?;
     // One run at a time on a checkpoint or state file; the lock is held until the command
     // returns, and taken before the file is read.
-    let (_lock, stored) = match (&a.checkpoint, &a.ask_tell.state) {
-        (Some(p), _) => (
-            Some(RunLock::take("--checkpoint", p)?),
-            read_stored("--checkpoint", p)?,
-        ),
-        (None, Some(p)) => (
-            Some(RunLock::take("--state", p)?),
-            read_stored("--state", p)?,
-        ),
-        (None, None) => (None, None),
+    let (_lock, stored) = match &a.checkpoint {
+        Some(p) => take_and_read("--checkpoint", Some(p))?,
+        None => take_and_read("--state", a.ask_tell.state.as_deref())?,
     };
     let mut guard = OutputGuard::new(a.force);
     a.ask_tell.declare_inputs(&mut guard)?;
