@@ -531,6 +531,3 @@ fn yaw_cmd(case: &CaseArgs, study: &StudyArgs, pulse_deg: f64) -> CmdResult {
     }
     print_linked(study.json, v, &text, link.as_ref())
 }
-
-#[cfg(test)]
-mod tests;
