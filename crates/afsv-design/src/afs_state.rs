@@ -8,7 +8,10 @@ use crate::afs_batch::{
     MAX_BATCH_POINTS, RESULTS_FORMAT,
 };
 use crate::batch_files::collect_results;
-use crate::{AfsAsk, AfsAskTell, AfsOptimisationSettings, AfsProblem, AfsRunState, AfsVariable};
+use crate::report::afs::AfsRun;
+use crate::{
+    AfsAsk, AfsAskTell, AfsOptimisationSettings, AfsProblem, AfsRunState, AfsVariable, DesignError,
+};
 use afsv_records::stored::{parse_stored, same_settings};
 use optimize::Evaluation;
 use serde::{Deserialize, Serialize};
@@ -147,6 +150,50 @@ impl AskTellState {
             }
         }
         Ok((!finished).then_some(asked))
+    }
+
+    /// Tells every run its share of `evals`, the results of the batch `asked` in its order
+    /// ([`Asked::per_run`] points per run, a run with none is not told), and counts the
+    /// batch as told.
+    pub fn tell(
+        &mut self,
+        drivers: &[AfsAskTell],
+        asked: &Asked,
+        evals: Vec<Evaluation>,
+    ) -> Result<(), DesignError> {
+        let mut evals = evals.into_iter();
+        for ((d, run), n) in drivers.iter().zip(self.runs.iter_mut()).zip(&asked.per_run) {
+            let mine: Vec<Evaluation> = evals.by_ref().take(*n).collect();
+            if *n > 0 {
+                d.tell(run, mine)?;
+            }
+        }
+        self.batch += 1;
+        Ok(())
+    }
+
+    /// The results of the finished runs, one per configuration of `descs` (its label and
+    /// steering-arm bound), each with the wall time of its final step.
+    pub fn finish(
+        &self,
+        drivers: &[AfsAskTell],
+        descs: &[ProblemDesc],
+    ) -> Result<Vec<AfsRun>, DesignError> {
+        drivers
+            .iter()
+            .zip(&self.runs)
+            .zip(descs)
+            .map(|((d, run), desc)| {
+                let t = std::time::Instant::now();
+                let optimum = d.finish(run)?;
+                Ok(AfsRun {
+                    label: desc.label.clone(),
+                    min_arm_m: desc.min_steering_arm_m,
+                    optimum,
+                    seconds: t.elapsed().as_secs_f64(),
+                })
+            })
+            .collect()
     }
 
     /// Reads every results file (`--tell`) and returns the evaluations in the batch's order, checking

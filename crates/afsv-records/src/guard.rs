@@ -129,12 +129,33 @@ impl OutputGuard {
         Ok(self)
     }
 
+    /// Declare an input file when an option gave one ([`OutputGuard::input`]).
+    pub fn input_if(&mut self, label: &str, path: Option<&Path>) -> Result<&mut Self, String> {
+        if let Some(p) = path {
+            self.input(label, p)?;
+        }
+        Ok(self)
+    }
+
     /// Declare a record input: the CSV and its sidecar.
     pub fn record_input(&mut self, label: &str, csv: &Path) -> Result<&mut Self, String> {
         self.input(label, csv)?;
         let side = csv.with_extension("json");
         if side.exists() {
             self.input(&format!("{label} (sidecar)"), &side)?;
+        }
+        Ok(self)
+    }
+
+    /// Declare an output of `kind` when an option gave one ([`OutputGuard::output`]).
+    pub fn output_if(
+        &mut self,
+        label: &str,
+        path: Option<&Path>,
+        kind: OutputKind,
+    ) -> Result<&mut Self, String> {
+        if let Some(p) = path {
+            self.output(label, p, kind)?;
         }
         Ok(self)
     }

@@ -27,10 +27,12 @@
 //! replaces an input or a file the toolkit did not write); [`json`] holds the JSON output
 //! rules (no NaN, every `null` explained); [`provenance`] lists the input files read;
 //! [`jsonl`] reads and writes JSON Lines files, [`stored`] state files read back (a
-//! checkpoint), [`lock`] takes the one-run-at-a-time lock of such a file.
+//! checkpoint), [`lock`] takes the one-run-at-a-time lock of such a file; [`folders`] lists
+//! the records of folders and guards the folders of records the toolkit writes.
 
 pub mod atomic;
 pub mod convention;
+pub mod folders;
 pub mod guard;
 pub mod json;
 pub mod jsonl;
@@ -186,6 +188,38 @@ impl Record {
             out.push_column(name.as_ref(), values)?;
         }
         Ok(out)
+    }
+
+    /// A record of the columns of `all` named in `wanted` (all when it is empty), `time_s`
+    /// first: an unknown or repeated name is an error listing the known ones (the
+    /// `--columns` option of a command that writes a record).
+    pub fn from_selected(all: Vec<(String, &[f64])>, wanted: &[String]) -> Result<Self, String> {
+        if wanted.is_empty() {
+            return Self::from_columns(all.into_iter().map(|(n, v)| (n, v.to_vec())))
+                .map_err(|e| e.to_string());
+        }
+        let mut names: Vec<&str> = vec!["time_s"];
+        for w in wanted.iter().map(|w| w.trim()) {
+            if w == "time_s" {
+                continue;
+            }
+            if names.contains(&w) {
+                return Err(format!("--columns: `{w}` is named twice"));
+            }
+            if !all.iter().any(|(n, _)| n == w) {
+                let known: Vec<&str> = all.iter().map(|(n, _)| n.as_str()).collect();
+                return Err(format!(
+                    "--columns: no column `{w}` (known: {})",
+                    known.join(", ")
+                ));
+            }
+            names.push(w);
+        }
+        let picked = names
+            .iter()
+            .filter_map(|n| all.iter().find(|(m, _)| m == n))
+            .map(|(n, v)| (n, v.to_vec()));
+        Self::from_columns(picked).map_err(|e| e.to_string())
     }
 
     /// Column names in file order.

@@ -167,6 +167,20 @@ impl RunLock {
     }
 }
 
+/// Take the lock of the state file `target` when an option (`flag`) gave one, then read the
+/// file under it ([`crate::stored::read_stored`]): the lock, held until it is dropped, and
+/// the file's text (`None` when it does not exist yet); neither without a file.
+pub fn take_and_read(
+    flag: &str,
+    target: Option<&Path>,
+) -> Result<(Option<RunLock>, Option<String>), String> {
+    let Some(path) = target else {
+        return Ok((None, None));
+    };
+    let lock = RunLock::take(flag, path)?;
+    Ok((Some(lock), crate::stored::read_stored(flag, path)?))
+}
+
 impl Drop for RunLock {
     /// Removes the lock file (while still holding the lock, so that no other run can have
     /// taken it), then releases the lock by closing it.

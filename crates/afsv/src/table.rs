@@ -30,9 +30,7 @@ pub struct TableOutput {
 impl TableOutput {
     /// Declare the CSV output (and its sidecar) to `guard` before anything is computed.
     pub fn declare(&self, guard: &mut OutputGuard) -> Result<(), String> {
-        if let Some(p) = &self.csv {
-            guard.output("-o", p, OutputKind::Record)?;
-        }
+        guard.output_if("-o", self.csv.as_deref(), OutputKind::Record)?;
         Ok(())
     }
 

@@ -199,7 +199,9 @@ fn results_that_do_not_belong_to_the_asked_batch_are_refused_in_one_line() {
         "{}",
         stderr(&out)
     );
-    for bad in ["0/3", "4/3", "1/0", "x"] {
+    for bad in [
+        "0/3", "4/3", "1/0", "x", "1/100001", "1", "a/b", "1/2/3", "",
+    ] {
         let out = afsv(&[
             "batch",
             "evaluate",

@@ -63,6 +63,22 @@ fn hps_sensitivity_reports_every_variable_and_plots() {
     );
 }
 
+#[test]
+fn hps_sensitivity_refuses_bad_changes_by_name() {
+    let many = vec!["1"; 21].join(",");
+    for (changes, needle) in [
+        ("-100", "above -100"),
+        ("x", "item 1"),
+        ("nan", "--changes"),
+        (many.as_str(), "at most 20"),
+    ] {
+        let out = afsv(&["study", "hps-sensitivity", "--changes", changes]);
+        assert!(!out.status.success(), "{changes} accepted");
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert!(err.contains(needle), "{changes}: {err}");
+    }
+}
+
 /// `afsv study speed-sweep` on two speeds and one seed: both loads at each speed, the
 /// caution-zone bound of ISO 2631-1 Eq B.1, a_wz rising with speed, the plot written.
 #[test]
@@ -74,7 +90,7 @@ fn speed_sweep_reports_both_loads_and_the_caution_zone() {
         "study",
         "speed-sweep",
         "--speeds",
-        "15,30",
+        "15, 30",
         "--seeds",
         "1",
         "--plot",
@@ -110,6 +126,8 @@ fn speed_sweep_refuses_bad_requests_by_name() {
     for (args, needle) in [
         (&["--speeds", "20,10"][..], "ascending"),
         (&["--speeds", "20,x"], "item 2"),
+        (&["--speeds", "inf"], "--speeds"),
+        (&["--design", "1,2,3,4"], "at most 3"),
         (&["--design", "0.038,8"], "three values"),
         (&["--design", "0.038,-8,11"], "--design"),
         (&["--seeds", "0"], "--seeds"),

@@ -34,7 +34,16 @@ fn tire_terrain_and_strut_tables_write_csv() {
         ]
     );
     assert_eq!(rec.meta["written_by"], "afsv tire sweep");
-    assert!(rec.meta["provenance"]["version"].is_string());
+    // The sidecar's provenance: the tool, its version, the commit (or why there is none)
+    // and the inputs read.
+    let p = &rec.meta["provenance"];
+    assert_eq!(p["tool"], "afsv");
+    assert_eq!(p["version"], env!("CARGO_PKG_VERSION"));
+    assert!(p["inputs"].is_array(), "{p}");
+    assert!(
+        p["commit"].is_string() || p["commit_reason"].is_string(),
+        "{p}"
+    );
     // The JSON of a pipe holds the same numbers.
     let rows = json(&afsv(&[
         "tire",

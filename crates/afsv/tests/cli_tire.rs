@@ -94,6 +94,16 @@ fn sweep_params_file_and_errors() {
         p.to_str().unwrap(),
     ]));
     assert!((v[0]["fy_n"].as_f64().unwrap() - 0.5e5).abs() < 1e-6);
+    // A range that does not land on its stop ends below it.
+    let v = json(&afsv(&[
+        "tire",
+        "sweep",
+        "--fz",
+        "1e5",
+        "--alpha-deg",
+        "0:1:0.3",
+    ]));
+    assert_eq!(v.as_array().unwrap().len(), 4);
 
     for (args, needle) in [
         (
@@ -101,6 +111,9 @@ fn sweep_params_file_and_errors() {
             "below start",
         ),
         (vec!["--fz", "1e5", "--alpha-deg", "-20:20:0"], "step"),
+        (vec!["--fz", "1e5", "--alpha-deg", "0:a:1"], "stop `a`"),
+        (vec!["--fz", "1e5", "--alpha-deg", "0:1"], "start:stop:step"),
+        (vec!["--fz", "1e5", "--alpha-deg", "nan"], "not finite"),
         (vec!["--fz", "abc"], "--fz"),
         (vec!["--fz", "1e5", "--u-max", "0.3"], "u_max"),
         (

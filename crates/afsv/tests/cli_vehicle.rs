@@ -350,6 +350,65 @@ fn bad_input_is_a_one_line_error() {
         ),
         (vec!["vehicle", "ride", "--terrain", "class:Z"], "class `Z`"),
         (vec!["vehicle", "ride", "--terrain", "mc:nan"], "mc `nan`"),
+        (vec!["vehicle", "ride", "--terrain", "mc:-1"], "mc `-1`"),
+        (
+            vec!["vehicle", "ride", "--terrain", "class:E,class:C"],
+            "twice",
+        ),
+        (
+            vec!["vehicle", "ride", "--terrain", "slope:3"],
+            "unknown key `slope`",
+        ),
+        (vec!["vehicle", "ride", "--terrain", "E"], "KEY:VALUE"),
+        (vec!["vehicle", "ride", "--terrain", "seed:-1"], "seed `-1`"),
+        (
+            vec![
+                "vehicle",
+                "ride",
+                "--terrain",
+                "class:C,seed:4",
+                "--seed",
+                "4",
+            ],
+            "seed:N",
+        ),
+        (
+            vec![
+                "vehicle",
+                "ride",
+                "--terrain",
+                "class:C,seed:4",
+                "--seeds",
+                "2",
+            ],
+            "seed:N",
+        ),
+        (
+            vec!["vehicle", "ride", "--terrain", "smooth", "--seeds", "2"],
+            "smooth ground",
+        ),
+        (
+            vec!["vehicle", "ride", "--speed-kmh", "80.01"],
+            "--speed-kmh",
+        ),
+        (vec!["vehicle", "ride", "--seeds", "0"], "--seeds"),
+        (vec!["vehicle", "ride", "--seeds", "1e3"], "--seeds"),
+        (
+            vec!["vehicle", "simulate", "--duration", "600.5", "-o", "x.csv"],
+            "--duration",
+        ),
+        (
+            vec!["vehicle", "roll", "--ramp-deg-s", "0.009"],
+            "--ramp-deg-s",
+        ),
+        (
+            vec!["vehicle", "roll", "--ramp-deg-s", "1000.1"],
+            "--ramp-deg-s",
+        ),
+        (
+            vec!["vehicle", "yaw", "--pulse-deg", "1000.1"],
+            "--pulse-deg",
+        ),
         (
             vec!["vehicle", "ride", "--terrain", "smooth"],
             "--terrain smooth",
@@ -576,4 +635,67 @@ fn simulate_with_components_adds_every_strut_channel_and_keeps_the_record() {
         sidecar["component_channels"]["units"]["steering_p_c_pa"],
         "Pa"
     );
+}
+
+/// The `--terrain`, `--steer` and seed options as the outputs state them: the record's
+/// sidecar (terrain keys in any order, the default coherence, a seed in the terrain; the
+/// pulse and ramp inputs with the ramp's default limit) and the ride's report (the seeds
+/// from one place: the scenario's ten, `--seeds N`, `--seed S`, or the terrain's `seed:N`).
+#[test]
+fn terrain_steer_and_seed_options_reach_the_outputs() {
+    let csv = scratch("vehicle-options", "run.csv");
+    let sidecar = |args: &[&str]| -> Value {
+        let mut a = vec!["vehicle", "simulate", "--duration", "0.05"];
+        a.extend_from_slice(args);
+        a.extend(["-o", csv.to_str().unwrap()]);
+        json(&afsv(&a));
+        let text = std::fs::read_to_string(csv.with_extension("json")).unwrap();
+        serde_json::from_str(&text).unwrap()
+    };
+    let t = sidecar(&["--terrain", "mc:0.2,class:c"])["terrain"].clone();
+    assert_eq!(
+        (t["class"].as_str(), num(&t["m_c_cycles_per_m"])),
+        (Some("C"), 0.2)
+    );
+    assert_eq!(t["seeds"], serde_json::json!([1]));
+    let t = sidecar(&["--terrain", "class:H,seed:7"])["terrain"].clone();
+    assert_eq!(
+        (num(&t["m_c_cycles_per_m"]), &t["seeds"]),
+        (0.3, &serde_json::json!([7]))
+    );
+    let t = sidecar(&["--terrain", "flat"])["terrain"].clone();
+    assert_eq!(t["kind"], "smooth ground");
+    assert_eq!(sidecar(&["--steer", "none"])["steer"]["kind"], "none");
+    let s = sidecar(&["--steer", "pulse:30,0.2,1"])["steer"].clone();
+    assert_eq!(s["kind"], "pulse");
+    assert_eq!(num(&s["amplitude_rad"]), 30f64.to_radians());
+    assert_eq!((num(&s["duration_s"]), num(&s["start_s"])), (0.2, 1.0));
+    let s = sidecar(&["--steer", "ramp:5,1", "--speed-kmh", "80"])["steer"].clone();
+    assert!(
+        (num(&s["rate_rad_s"]) - 5f64.to_radians()).abs() < 1e-15,
+        "{s}"
+    );
+    assert_eq!(num(&s["start_s"]), 1.0);
+    assert!(
+        (num(&s["limit_rad"]) - 1000f64.to_radians()).abs() < 1e-12,
+        "{s}"
+    );
+    let s = sidecar(&["--steer", "ramp:-5,1"])["steer"].clone();
+    assert!(num(&s["rate_rad_s"]) < 0.0, "a left-hand ramp: {s}");
+
+    let ride = |args: &[&str]| -> Value {
+        let mut a = vec!["--quiet", "vehicle", "ride", "--length-m", "10"];
+        a.extend_from_slice(args);
+        json(&afsv(&a))["terrain"].clone()
+    };
+    let seeds = |args: &[&str]| ride(args)["seeds"].clone();
+    assert_eq!(seeds(&[]), serde_json::json!((1..=10).collect::<Vec<_>>()));
+    assert_eq!(seeds(&["--seeds", "3"]), serde_json::json!([1, 2, 3]));
+    assert_eq!(seeds(&["--seed", "7"]), serde_json::json!([7]));
+    assert_eq!(
+        seeds(&["--terrain", "class:C,seed:4"]),
+        serde_json::json!([4])
+    );
+    // an explicit terrain replaces the scenario's default
+    assert_eq!(ride(&["--terrain", "class:B"])["class"], "B");
 }

@@ -195,3 +195,26 @@ pub fn to_text(relaxed: bool, current: &DesignEvaluation, runs: &[AfsRun]) -> St
     s += &format!("\ncurrent design: {}\n", geometry_line(&current.geometry));
     s
 }
+
+/// The line of an asked batch (`afsv optimize afs --ask` on a terminal): its number, its
+/// points, the file they went to and each run's phase.
+pub fn asked_text(batch: usize, asked: &crate::afs_state::Asked, file: &std::path::Path) -> String {
+    let phases = asked
+        .phases
+        .iter()
+        .map(|p| {
+            format!(
+                "{} {}: {}",
+                p["run"].as_str().unwrap_or(""),
+                p["phase"].as_str().unwrap_or(""),
+                p["points"]
+            )
+        })
+        .collect::<Vec<_>>()
+        .join("; ");
+    format!(
+        "batch {batch}: {} points written to {} ({phases})",
+        asked.points.len(),
+        file.display()
+    )
+}

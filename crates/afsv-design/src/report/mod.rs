@@ -17,6 +17,8 @@
 //! - [`terrain`]: `afsv terrain` (crate `terrain-psd`), the spectral analysis of a profile;
 //! - [`tire`]: the rows of `afsv tire sweep` and `afsv tire envelope` (crate `tire-fiala`);
 //! - [`vehicle`]: `afsv vehicle ride|roll|yaw` (D1-D3 of the 3-D vehicle over seeds);
+//! - [`strut`]: `afsv hps harmonic|characterize|identify`: a harmonic record's sidecar,
+//!   the laboratory programme's table, a strut record read for a fit;
 //! - [`strut_shift`]: `afsv hps thermal`, the struts over a working shift;
 //! - [`weighting`]: an ISO 2631-1 weighting's response (`afsv measures weighting`);
 //! - [`table`]: aligned text tables of records and plainly read numbers;
@@ -36,6 +38,7 @@ pub mod layouts;
 pub mod params;
 pub mod roll;
 pub mod speed_sweep;
+pub mod strut;
 pub mod strut_shift;
 pub mod table;
 pub mod terrain;

@@ -1,11 +1,86 @@
-//! The reports of `afsv roll` (the rigid truck of Chapter 2, crate `roll-truck`) as text:
-//! the roll measures of one run, the section 2.4 studies and the sensitivity of ΔT; their
-//! JSON is the types' own serialisation.
+//! The reports of `afsv roll` (the rigid truck of Chapter 2, crate `roll-truck`): the roll
+//! measures of one run as JSON (with the ground, the truck and the detection rule) and as
+//! text, the section 2.4 studies and the sensitivity of ΔT as text (their JSON is the
+//! types' own serialisation).
 
 use super::table::number;
+use perf_measures::roll::SustainedPeriodParams;
 use roll_truck::measures::RollMeasures;
 use roll_truck::sensitivity::SensitivityCell;
 use roll_truck::studies::{Stat, Study, StudyResult};
+use serde_json::{json, Value};
+use std::path::Path;
+use terrain_psd::{Band, IsoClass};
+
+/// The ground a truck run drove on, as its report and record sidecar name it.
+#[derive(Debug, Clone, Copy)]
+pub enum Ground<'a> {
+    /// A measured two-track road, read from this file.
+    Road(&'a Path),
+    /// Level ground.
+    Level,
+    /// Synthesised two-track rough terrain: G_d(n) = alpha_r n^-w (Eq 2.8) of the ISO 8608
+    /// class, within the band, with the coherence cut-off m_c of Eq 2.10, from the seed.
+    Rough {
+        /// ISO 8608 class (Table 2.4).
+        class: IsoClass,
+        /// Waviness w of Eq 2.8.
+        waviness: f64,
+        /// Spatial band (cycles/m).
+        band: Band,
+        /// Coherence cut-off m_c (cycles/m).
+        m_c: f64,
+        /// Terrain seed.
+        seed: u64,
+    },
+}
+
+impl Ground<'_> {
+    /// The ground as JSON: its kind and the file or the terrain's spectrum and seed.
+    pub fn to_json(&self) -> Value {
+        match *self {
+            Ground::Road(file) => json!({ "kind": "measured two-track road", "file": file }),
+            Ground::Level => json!({ "kind": "level ground" }),
+            Ground::Rough {
+                class,
+                waviness,
+                band,
+                m_c,
+                seed,
+            } => json!({
+                "kind": "two-track rough terrain",
+                "class": class.to_string(),
+                "alpha_r": class.alpha_r(),
+                "waviness": waviness,
+                "band_cycles_per_m": [band.n_min, band.n_max],
+                "m_c_cycles_per_m": m_c,
+                "seed": seed,
+            }),
+        }
+    }
+}
+
+/// The roll measures of one run as JSON: the measures, the `ground`, the `truck` by name,
+/// whether its bump stops are in reach, the sustained-period `rule` (`None` when it is
+/// invalid) and the g the accelerations are reported in; each `null` measure explained.
+pub fn measures_json(
+    m: &RollMeasures,
+    ground: &Ground,
+    truck: &str,
+    bump_stops: bool,
+    rule: Option<SustainedPeriodParams>,
+) -> Value {
+    let mut v = serde_json::to_value(m).unwrap_or_default();
+    v["terrain"] = ground.to_json();
+    v["truck"] = json!(truck);
+    v["bump_stops"] = json!(bump_stops);
+    v["sustained_period_rule"] = json!(rule);
+    v["g_for_reporting_m_s2"] = json!(roll_truck::measures::G_REPORT);
+    afsv_records::json::explain_nulls(
+        v,
+        "not found in this run (no LTR of 1, no sustained period, or no rollover)",
+    )
+}
 
 /// `v` with 3 decimals and its unit, or "n/a".
 fn show(v: Option<f64>, unit: &str) -> String {

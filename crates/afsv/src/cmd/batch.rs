@@ -161,19 +161,3 @@ fn summary(
     }
     Ok(())
 }
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn shards_parse_and_are_bounded() {
-        assert_eq!(shard("2/3"), Ok((2, 3)));
-        assert_eq!(shard(" 1 / 1 "), Ok((1, 1)));
-        for bad in [
-            "0/3", "4/3", "1/0", "1/100001", "1", "a/b", "1/2/3", "-1/2", "",
-        ] {
-            assert!(shard(bad).unwrap_err().contains("I/N"), "{bad}");
-        }
-    }
-}

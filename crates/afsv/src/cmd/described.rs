@@ -47,6 +47,12 @@ pub fn is_file(arg: &Path) -> bool {
     arg.exists() || afsv_vehicle::builtin(&arg.to_string_lossy()).is_none()
 }
 
+/// Declare `--vehicle` to `guard` as an input when it names a file (not a built-in).
+pub fn declare(guard: &mut afsv::output::OutputGuard, arg: Option<&Path>) -> Result<(), String> {
+    guard.input_if("--vehicle", arg.filter(|v| is_file(v)))?;
+    Ok(())
+}
+
 /// The 3-D parameters of the articulated vehicle `arg` names, with its front-axle strut as
 /// `hps`, for a command (`what`) that designs or varies that strut; an error when the
 /// description gives the front axle no strut, or interconnects its struts (`[link]`: these

@@ -7,7 +7,7 @@ use afsv_discovery::synth;
 use afsv_discovery::vehicle3d::Vehicle3dModel;
 use afsv_discovery::yaw::YawPlaneModel;
 use afsv_discovery::{discover, DiscoveryModel, DiscoveryOptions, Progress};
-use afsv_records::{ReadOptions, Record};
+use afsv_records::{folders, ReadOptions};
 use std::path::{Path, PathBuf};
 
 /// Which model the workflow works on.
@@ -192,89 +192,6 @@ fn yaw_model(
     Ok(m)
 }
 
-/// Refuse, before any fit runs: an `-o` that is an existing file; an output folder that
-/// holds any input record (the report's plots would land among them); and a record given
-/// as both training and held-out (the held-out test would then measure nothing). Paths are
-/// compared canonically, so `x`, `./x` and a link to `x` are the same.
-fn check_output_folder(
-    output: &Path,
-    train: &[PathBuf],
-    holdout: &[PathBuf],
-) -> Result<(), String> {
-    if output.exists() && !output.is_dir() {
-        return Err(format!(
-            "-o {}: exists and is not a folder; the report is a folder (report.md, report.json, plots)",
-            output.display()
-        ));
-    }
-    let out = afsv::output::canonical_path(output)?;
-    let canon = |f: &PathBuf| afsv::output::canonical_path(f);
-    let train_c = train.iter().map(canon).collect::<Result<Vec<_>, _>>()?;
-    let hold_c = holdout.iter().map(canon).collect::<Result<Vec<_>, _>>()?;
-    for (f, c) in train
-        .iter()
-        .zip(&train_c)
-        .chain(holdout.iter().zip(&hold_c))
-    {
-        if c.parent() == Some(out.as_path()) {
-            return Err(format!(
-                "-o {}: holds the input record {}; choose a folder of its own for the report",
-                output.display(),
-                f.display()
-            ));
-        }
-    }
-    if let Some((f, _)) = holdout
-        .iter()
-        .zip(&hold_c)
-        .find(|(_, c)| train_c.contains(c))
-    {
-        return Err(format!(
-            "{} is both a training and a held-out record; the held-out records must be others",
-            f.display()
-        ));
-    }
-    Ok(())
-}
-
-/// CSV files of the given files and folders (folders: their `*.csv`, sorted).
-fn csv_files(inputs: &[PathBuf]) -> Result<Vec<PathBuf>, String> {
-    let mut out = Vec::new();
-    for p in inputs {
-        if p.is_dir() {
-            let mut v: Vec<PathBuf> = std::fs::read_dir(p)
-                .map_err(|e| format!("{}: {e}", p.display()))?
-                .filter_map(|e| e.ok().map(|e| e.path()))
-                .filter(|f| f.extension().is_some_and(|x| x == "csv"))
-                .collect();
-            if v.is_empty() {
-                return Err(format!("{}: no .csv records in this folder", p.display()));
-            }
-            v.sort();
-            out.extend(v);
-        } else if p.is_file() {
-            out.push(p.clone());
-        } else {
-            return Err(format!("{}: no such file or folder", p.display()));
-        }
-    }
-    Ok(out)
-}
-
-fn load(files: &[PathBuf], opts: &ReadOptions) -> Result<(Vec<Record>, Vec<String>), String> {
-    let mut recs = Vec::new();
-    let mut names = Vec::new();
-    for f in files {
-        recs.push(Record::read_with(f, opts).map_err(|e| e.to_string())?);
-        names.push(
-            f.file_stem()
-                .map(|s| s.to_string_lossy().into_owned())
-                .unwrap_or_default(),
-        );
-    }
-    Ok((recs, names))
-}
-
 /// Progress of the fits on stderr ([`afsv::progress::Progress`]; the number of fits is
 /// not known in advance).
 struct FitProgress(afsv::progress::Progress);
@@ -301,15 +218,15 @@ fn run_discover<M: DiscoveryModel>(model: &M, args: &DiscoverArgs) -> DiscoverRe
         return Ok(0);
     }
     let output = args.output.as_deref().ok_or("-o/--output is required")?;
-    let train_files = csv_files(&args.train)?;
-    let hold_files = csv_files(&args.holdout)?;
-    check_output_folder(output, &train_files, &hold_files)?;
+    let train_files = folders::csv_files(&args.train)?;
+    let hold_files = folders::csv_files(&args.holdout)?;
+    folders::check_report_folder(output, &train_files, &hold_files)?;
     let read = ReadOptions {
         assume_convention: args.assume_convention.clone(),
     };
     read.validate()?;
-    let (train, train_names) = load(&train_files, &read)?;
-    let (hold, hold_names) = load(&hold_files, &read)?;
+    let (train, train_names) = folders::read_records(&train_files, &read)?;
+    let (hold, hold_names) = folders::read_records(&hold_files, &read)?;
     let opts = DiscoveryOptions {
         candidates: args.effects.clone(),
         max_effects: args.max_effects,
@@ -395,7 +312,7 @@ pub fn run_discover_cmd(args: DiscoverArgs) -> DiscoverResult {
 
 /// Run `afsv synth`.
 pub fn run_synth(args: SynthArgs) -> CmdResult {
-    let replace = synth_folder_to_replace(&args.output, args.force)?;
+    let replace = folders::synth_folder_to_replace(&args.output, args.force)?;
     let noiseless = match args.noise.as_str() {
         "default" => false,
         "none" => true,
@@ -445,10 +362,10 @@ pub fn run_synth(args: SynthArgs) -> CmdResult {
         ),
     };
     let (mut records, mut truth) = (records, truth);
-    truth["written_by"] = SYNTH_WRITTEN_BY.into();
+    truth["written_by"] = folders::SYNTH_WRITTEN_BY.into();
     for r in &mut records {
         if let Some(meta) = r.record.meta.as_object_mut() {
-            meta.insert("written_by".into(), SYNTH_WRITTEN_BY.into());
+            meta.insert("written_by".into(), folders::SYNTH_WRITTEN_BY.into());
         }
     }
     for f in &replace {
@@ -467,106 +384,3 @@ pub fn run_synth(args: SynthArgs) -> CmdResult {
 /// Default sample rate of `afsv synth`'s strut records (Hz): 45 samples per cycle of the
 /// programme's fastest (8 Hz) test.
 const STRUT_RATE_HZ: f64 = 360.0;
-
-/// `"written_by"` of the `truth.json` that marks a folder `afsv synth` wrote.
-const SYNTH_WRITTEN_BY: &str = "afsv synth";
-
-/// The files to delete before `afsv synth` writes into `dir`: none when `dir` does not
-/// exist or is empty. A non-empty `dir` is replaced only with `force` and only when afsv
-/// wrote all of it: a `truth.json` with `"written_by": "afsv synth"`, and `train/` and
-/// `holdout/` holding nothing but records (CSV) with afsv-written sidecars. Anything else
-/// in it is refused, so no file afsv did not write is ever deleted.
-fn synth_folder_to_replace(dir: &Path, force: bool) -> Result<Vec<PathBuf>, String> {
-    if !dir.exists() {
-        return Ok(Vec::new());
-    }
-    if !dir.is_dir() {
-        return Err(format!(
-            "-o {}: exists and is not a folder; synth writes a folder (train/, holdout/, truth.json)",
-            dir.display()
-        ));
-    }
-    let entries = list_dir(dir)?;
-    if entries.is_empty() {
-        return Ok(Vec::new());
-    }
-    let foreign = |what: &str| {
-        format!(
-            "-o {}: {what}; afsv synth did not write this folder, so it is never replaced (choose another folder)",
-            dir.display()
-        )
-    };
-    let truth = dir.join("truth.json");
-    let text = std::fs::read_to_string(&truth).map_err(|_| foreign("has no truth.json"))?;
-    let by_synth = serde_json::from_str::<serde_json::Value>(&text)
-        .ok()
-        .and_then(|v| v.get("written_by")?.as_str().map(|s| s == SYNTH_WRITTEN_BY))
-        .unwrap_or(false);
-    if !by_synth {
-        return Err(foreign(
-            "its truth.json does not say `\"written_by\": \"afsv synth\"`",
-        ));
-    }
-    let mut files = vec![truth.clone()];
-    for e in entries {
-        if e == truth {
-            continue;
-        }
-        let name = e.file_name().unwrap_or_default();
-        if !(is_real_dir(&e) && (name == "train" || name == "holdout")) {
-            return Err(foreign(&format!("holds {}", e.display())));
-        }
-        files.extend(synth_records(&e).map_err(|f| foreign(&format!("holds {}", f.display())))?);
-    }
-    if !force {
-        return Err(format!(
-            "-o {}: exists (written by an earlier afsv synth); add --force to replace it",
-            dir.display()
-        ));
-    }
-    Ok(files)
-}
-
-/// The records and sidecars in `sub` when all are afsv-written, else the first other file.
-fn synth_records(sub: &Path) -> Result<Vec<PathBuf>, PathBuf> {
-    let mut files = Vec::new();
-    for f in list_dir(sub).map_err(|_| sub.to_path_buf())? {
-        let ext = f.extension().and_then(|x| x.to_str());
-        let afsv_json = |j: &Path| {
-            j.is_file() && std::fs::read_to_string(j).is_ok_and(|t| afsv::output::is_afsv_json(&t))
-        };
-        let ours = !is_link(&f)
-            && f.is_file()
-            && match ext {
-                Some("csv") => afsv_json(&f.with_extension("json")),
-                Some("json") => afsv_json(&f) && f.with_extension("csv").is_file(),
-                _ => false,
-            };
-        if !ours {
-            return Err(f);
-        }
-        files.push(f);
-    }
-    Ok(files)
-}
-
-/// True when `p` is a symbolic link (never followed when replacing a folder).
-fn is_link(p: &Path) -> bool {
-    std::fs::symlink_metadata(p).map_or(true, |m| m.file_type().is_symlink())
-}
-
-/// True when `p` is a folder and not a link to one.
-fn is_real_dir(p: &Path) -> bool {
-    !is_link(p) && p.is_dir()
-}
-
-/// Entries of `dir`, sorted.
-fn list_dir(dir: &Path) -> Result<Vec<PathBuf>, String> {
-    let mut v = std::fs::read_dir(dir)
-        .map_err(|e| format!("{}: {e}", dir.display()))?
-        .map(|e| e.map(|e| e.path()))
-        .collect::<Result<Vec<_>, _>>()
-        .map_err(|e| format!("{}: {e}", dir.display()))?;
-    v.sort();
-    Ok(v)
-}

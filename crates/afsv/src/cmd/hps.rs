@@ -7,11 +7,12 @@ use super::{args, CmdResult};
 use afsv::output::{OutputGuard, OutputKind};
 use afsv::progress::Progress;
 use afsv_design::report::hps_identify::identify_report;
+use afsv_design::report::strut;
 use afsv_records::Record;
 use hps_emulsion::{
     characterize, identify, lab_programme, loop_metrics, simulate_displacement, Excitation,
-    FitParam, HarmonicTest, HpsExtensions, IdentifyOptions, LabConfig, Measured, SimOptions,
-    Solver, StrutParams,
+    FitParam, HarmonicTest, HpsExtensions, IdentifyOptions, LabConfig, SimOptions, Solver,
+    StrutParams,
 };
 use std::path::{Path, PathBuf};
 
@@ -252,15 +253,9 @@ fn harmonic(a: HarmonicArgs) -> CmdResult {
         args::MAX_HPS_SAMPLES,
     )?;
     let mut guard = OutputGuard::new(a.force);
-    if let Some(file) = a.strut.file() {
-        guard.input("--strut", file)?;
-    }
-    if let Some(path) = &a.output {
-        guard.output("-o", path, OutputKind::Record)?;
-    }
-    if let Some(path) = &a.plot {
-        guard.output("--plot", path, OutputKind::Svg)?;
-    }
+    guard.input_if("--strut", a.strut.file())?;
+    guard.output_if("-o", a.output.as_deref(), OutputKind::Record)?;
+    guard.output_if("--plot", a.plot.as_deref(), OutputKind::Svg)?;
     let params = with_gamma0(a.strut.params()?, a.gamma0)?;
     let test = HarmonicTest {
         frequency_hz: a.freq,
@@ -281,15 +276,13 @@ fn harmonic(a: HarmonicArgs) -> CmdResult {
         for (name, v) in rec.columns() {
             r.push_column(name, v)?;
         }
-        r.meta = serde_json::json!({
-            "written_by": "afsv hps harmonic",
-            "model": "hps-emulsion",
-            "strut": a.strut.name(),
-            "sample_rate_hz": a.rate,
-            "excitation": {"kind": "harmonic", "frequency_hz": a.freq, "amplitude_m": test.amplitude_m, "cycles": a.cycles},
-            "gamma0": params.gamma0,
-            "units": {"time_s": "s", "displacement_m": "m (+ compression)", "velocity_m_s": "m/s",
-                      "force_n": "N (+ compressive)", "p_piston_pa": "Pa absolute", "p_rod_pa": "Pa absolute"},
+        r.meta = strut::harmonic_sidecar(&strut::HarmonicRun {
+            strut: a.strut.name(),
+            gamma0: params.gamma0,
+            sample_rate_hz: a.rate,
+            frequency_hz: a.freq,
+            amplitude_m: test.amplitude_m,
+            cycles: a.cycles,
         });
         afsv::provenance::stamp_record(&mut r);
         r.write(path)?;
@@ -320,9 +313,7 @@ fn harmonic(a: HarmonicArgs) -> CmdResult {
 
 fn characterize_cmd(a: CharacterizeArgs) -> CmdResult {
     let mut guard = afsv::output::OutputGuard::new(a.force);
-    if let Some(f) = a.strut.file() {
-        guard.input("--strut", f)?;
-    }
+    guard.input_if("--strut", a.strut.file())?;
     let out = &a.table;
     out.declare(&mut guard)?;
     let params = with_gamma0(a.strut.params()?, a.gamma0)?;
@@ -351,22 +342,7 @@ fn characterize_cmd(a: CharacterizeArgs) -> CmdResult {
     });
     let table = afsv::table::from_rows(
         full["tests"].as_array().map_or(&[], Vec::as_slice),
-        &[
-            "frequency_hz",
-            "amplitude_m",
-            "peak_velocity_m_s",
-            "effective_stiffness_n_m",
-            "equivalent_damping_n_s_m",
-            "peak_damping_compression_n",
-            "peak_damping_extension_n",
-            "dissipated_energy_j",
-            "spring_loop_area_j",
-            "damping_loop_area_n_m_s",
-            "p_piston_min_pa",
-            "p_piston_max_pa",
-            "p_rod_min_pa",
-            "p_rod_max_pa",
-        ],
+        &strut::CHARACTERIZE_COLUMNS,
     )?;
     out.emit(
         &table,
@@ -386,17 +362,7 @@ fn identify_cmd(a: IdentifyArgs) -> CmdResult {
     let which = FitParam::parse_list(&a.fit)?;
     let progress = Progress::new("afsv hps identify", "steps", Some(2));
     let rec = Record::read(&a.input)?;
-    let time = rec.require("time_s", &a.input)?.to_vec();
-    let displacement = rec.require("displacement_m", &a.input)?.to_vec();
-    let col = |n: &str| rec.column(n).map(|c| c.to_vec());
-    let meas = Measured {
-        time,
-        displacement,
-        velocity: col("velocity_m_s"),
-        force: col("force_n"),
-        p_piston: col("p_piston_pa"),
-        p_rod: col("p_rod_pa"),
-    };
+    let meas = strut::measured(&rec, &a.input)?;
     let opts = IdentifyOptions {
         warmup_s: a.warmup,
         ..IdentifyOptions::default()

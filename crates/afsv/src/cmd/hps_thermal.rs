@@ -110,22 +110,15 @@ pub fn run(a: ThermalArgs) -> CmdResult {
         args::MAX_HPS_SAMPLES,
     )?;
     let mut guard = OutputGuard::new(a.force);
-    if let Some(v) = a
-        .vehicle
-        .as_deref()
-        .filter(|v| super::described::is_file(v))
-    {
-        guard.input("--vehicle", v)?;
-    }
+    super::described::declare(&mut guard, a.vehicle.as_deref())?;
     a.table.declare(&mut guard)?;
-    for (flag, path) in [
-        ("--strut-out", &a.strut_out),
-        ("--strut-out-levelled", &a.strut_out_levelled),
-    ] {
-        if let Some(path) = path {
-            guard.output(flag, path, afsv::output::OutputKind::Other)?;
-        }
-    }
+    let other = afsv::output::OutputKind::Other;
+    guard.output_if("--strut-out", a.strut_out.as_deref(), other)?;
+    guard.output_if(
+        "--strut-out-levelled",
+        a.strut_out_levelled.as_deref(),
+        other,
+    )?;
     let v = super::described::articulated(a.vehicle.as_deref())?;
     let mut params = v.params.clone();
     params.hps = v.front_strut.ok_or_else(|| {

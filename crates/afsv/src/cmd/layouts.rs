@@ -65,16 +65,8 @@ pub fn run(a: LayoutArgs) -> CmdResult {
     }
     let speeds = super::study::parse_list("--speeds", &a.speeds, 50)?;
     let mut guard = OutputGuard::new(a.force);
-    if let Some(v) = a
-        .vehicle
-        .as_deref()
-        .filter(|v| super::described::is_file(v))
-    {
-        guard.input("--vehicle", v)?;
-    }
-    if let Some(p) = &a.plot {
-        guard.output("--plot", p, OutputKind::Svg)?;
-    }
+    super::described::declare(&mut guard, a.vehicle.as_deref())?;
+    guard.output_if("--plot", a.plot.as_deref(), OutputKind::Svg)?;
     let v = super::described::articulated(a.vehicle.as_deref())?;
     let list = build_layouts(&v, &a.layouts)?;
     let options = LayoutOptions {

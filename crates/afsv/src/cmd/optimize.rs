@@ -14,8 +14,8 @@ use afsv_design::afs_batch::{
 };
 use afsv_design::afs_resume::AfsCheckpoint;
 use afsv_design::{optimise, AfsOptimisationSettings, AfsProblem, Objective};
-use afsv_records::lock::RunLock;
-use afsv_records::stored::{read_stored, write_json};
+use afsv_records::lock::take_and_read;
+use afsv_records::stored::write_json;
 use serde_json::json;
 use std::io::IsTerminal;
 use std::path::PathBuf;
@@ -87,12 +87,8 @@ impl AskTellArgs {
 
     /// Declare the state file and the asked batch as outputs.
     fn declare_outputs(&self, guard: &mut OutputGuard) -> CmdResult {
-        if let Some(p) = &self.state {
-            guard.output("--state", p, OutputKind::Sidecar)?;
-        }
-        if let Some(p) = &self.ask {
-            guard.output("--ask", p, OutputKind::JsonLines)?;
-        }
+        guard.output_if("--state", self.state.as_deref(), OutputKind::Sidecar)?;
+        guard.output_if("--ask", self.ask.as_deref(), OutputKind::JsonLines)?;
         Ok(())
     }
 }
@@ -318,30 +314,15 @@ fn run_afs(a: &AfsArgs) -> CmdResult {
     a.ask_tell.check()?;
     // One run at a time on a checkpoint or state file; the lock is held until the command
     // returns, and taken before the file is read.
-    let (_lock, stored) = match (&a.checkpoint, &a.ask_tell.state) {
-        (Some(p), _) => (
-            Some(RunLock::take("--checkpoint", p)?),
-            read_stored("--checkpoint", p)?,
-        ),
-        (None, Some(p)) => (
-            Some(RunLock::take("--state", p)?),
-            read_stored("--state", p)?,
-        ),
-        (None, None) => (None, None),
+    let (_lock, stored) = match &a.checkpoint {
+        Some(p) => take_and_read("--checkpoint", Some(p))?,
+        None => take_and_read("--state", a.ask_tell.state.as_deref())?,
     };
     let mut guard = OutputGuard::new(a.force);
     a.ask_tell.declare_inputs(&mut guard)?;
-    for (label, p) in [
-        ("--plot-step", &a.plot_step),
-        ("--plot-pulse", &a.plot_pulse),
-    ] {
-        if let Some(p) = p {
-            guard.output(label, p, OutputKind::Svg)?;
-        }
-    }
-    if let Some(p) = &a.checkpoint {
-        guard.output("--checkpoint", p, OutputKind::Sidecar)?;
-    }
+    guard.output_if("--plot-step", a.plot_step.as_deref(), OutputKind::Svg)?;
+    guard.output_if("--plot-pulse", a.plot_pulse.as_deref(), OutputKind::Svg)?;
+    guard.output_if("--checkpoint", a.checkpoint.as_deref(), OutputKind::Sidecar)?;
     a.ask_tell.declare_outputs(&mut guard)?;
     let mut settings = AfsOptimisationSettings {
         extra_starts: a.starts,

@@ -7,7 +7,7 @@
 
 use super::{args, CmdResult};
 use afsv::output::{OutputGuard, OutputKind};
-use afsv_design::report::roll::measures_text;
+use afsv_design::report::roll::{self, measures_text, Ground};
 use afsv_records::Record;
 use perf_measures::roll::SustainedPeriodParams;
 use roll_truck::measures::RollMeasures;
@@ -218,16 +218,8 @@ impl TruckArgs {
 
     /// Declare the files the truck is read from as inputs.
     pub fn declare_inputs(&self, guard: &mut OutputGuard) -> Result<(), String> {
-        if let Some(p) = &self.params {
-            guard.input("--params", p)?;
-        }
-        if let Some(v) = self
-            .vehicle
-            .as_deref()
-            .filter(|v| super::described::is_file(v))
-        {
-            guard.input("--vehicle", v)?;
-        }
+        guard.input_if("--params", self.params.as_deref())?;
+        super::described::declare(guard, self.vehicle.as_deref())?;
         Ok(())
     }
 }
@@ -309,9 +301,7 @@ fn duration(case: &CaseArgs, p: &TruckParams) -> f64 {
 fn simulate(case: &CaseArgs, dt: f64, output: &Path, force: bool) -> CmdResult {
     let mut guard = OutputGuard::new(force);
     case.truck.declare_inputs(&mut guard)?;
-    if let Some(road) = &case.road {
-        guard.input("--road", road)?;
-    }
+    guard.input_if("--road", case.road.as_deref())?;
     guard.output("-o", output, OutputKind::Record)?;
     let p = truck(&case.truck, case.cg_height_m)?;
     let duration = duration(case, &p);
@@ -329,7 +319,7 @@ fn simulate(case: &CaseArgs, dt: f64, output: &Path, force: bool) -> CmdResult {
         "sample_rate_hz": 1.0 / dt,
         "model": "roll-truck rigid mining truck (chapter 2)",
         "manoeuvre": format!("ramp steer ({})", case.direction),
-        "terrain": terrain_json(case),
+        "terrain": ground(case).to_json(),
         "params": p,
         "rollover_s": run.record.rollover_s,
     });
@@ -344,33 +334,23 @@ fn simulate(case: &CaseArgs, dt: f64, output: &Path, force: bool) -> CmdResult {
     Ok(())
 }
 
-fn terrain_json(case: &CaseArgs) -> serde_json::Value {
-    if let Some(road) = &case.road {
-        json!({ "kind": "measured two-track road", "file": road })
-    } else if case.smooth {
-        json!({ "kind": "level ground" })
-    } else {
-        json!({
-            "kind": "two-track rough terrain",
-            "class": case.class.to_string(),
-            "alpha_r": case.class.alpha_r(),
-            "waviness": case.waviness,
-            "band_cycles_per_m": [case.band.n_min, case.band.n_max],
-            "m_c_cycles_per_m": case.mc,
-            "seed": case.seed,
-        })
+/// The ground of `case` for its report and sidecar.
+fn ground(case: &CaseArgs) -> Ground<'_> {
+    match &case.road {
+        Some(road) => Ground::Road(road),
+        None if case.smooth => Ground::Level,
+        None => Ground::Rough {
+            class: case.class,
+            waviness: case.waviness,
+            band: case.band,
+            m_c: case.mc,
+            seed: case.seed,
+        },
     }
 }
 
 fn measures_json(m: &RollMeasures, case: &CaseArgs) -> serde_json::Value {
-    let mut v = serde_json::to_value(m).unwrap_or_default();
-    v["terrain"] = terrain_json(case);
-    v["truck"] = json!(case.truck.name());
-    v["bump_stops"] = json!(!case.truck.no_bump_stops);
-    v["sustained_period_rule"] = json!(case.rule.params().ok());
-    v["g_for_reporting_m_s2"] = json!(roll_truck::measures::G_REPORT);
-    afsv::output::explain_nulls(
-        v,
-        "not found in this run (no LTR of 1, no sustained period, or no rollover)",
-    )
+    let truck = case.truck.name();
+    let rule = case.rule.params().ok();
+    roll::measures_json(m, &ground(case), &truck, !case.truck.no_bump_stops, rule)
 }

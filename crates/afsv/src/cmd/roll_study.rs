@@ -78,9 +78,7 @@ pub(super) fn run_study_cmd(a: &StudyArgs) -> CmdResult {
     }
     let mut guard = OutputGuard::new(a.force);
     t.declare_inputs(&mut guard)?;
-    if let Some(p) = &a.plot {
-        guard.output("--plot", p, OutputKind::Svg)?;
-    }
+    guard.output_if("--plot", a.plot.as_deref(), OutputKind::Svg)?;
     let seed_list: Vec<u64> = (1..=seeds as u64).collect();
     // The number of runs is known once the study has built its variants.
     let progress = std::sync::OnceLock::new();

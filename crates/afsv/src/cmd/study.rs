@@ -146,13 +146,7 @@ fn sweep_vehicle(
     a: &SweepArgs,
     guard: &mut OutputGuard,
 ) -> Result<vehicle_3d::VehicleParams, String> {
-    if let Some(v) = a
-        .vehicle
-        .as_deref()
-        .filter(|v| super::described::is_file(v))
-    {
-        guard.input("--vehicle", v)?;
-    }
+    super::described::declare(guard, a.vehicle.as_deref())?;
     let mut p = if a.hps == "nominal" {
         super::described::with_front_strut(a.vehicle.as_deref(), "--hps nominal")?
     } else {
@@ -188,9 +182,7 @@ fn speed_sweep(a: SweepArgs) -> CmdResult {
     let speeds = parse_list("--speeds", &a.speeds, MAX_SPEEDS)?;
     let mut guard = OutputGuard::new(a.force);
     let p = sweep_vehicle(&a, &mut guard)?;
-    if let Some(path) = &a.plot {
-        guard.output("--plot", path, OutputKind::Svg)?;
-    }
+    guard.output_if("--plot", a.plot.as_deref(), OutputKind::Svg)?;
     let seeds: Vec<u64> = afsv_design::fan_out::seed_range(a.seed, a.seeds as u64);
     let runs = afsv_design::hps_speed_sweep::speed_sweep_runs(speeds.len(), seeds.len());
     let progress = afsv::progress::Progress::new("afsv study speed-sweep", "runs", Some(runs));
@@ -241,16 +233,8 @@ fn hps(a: HpsArgs) -> CmdResult {
     }
     let changes = parse_changes(&a.changes)?;
     let mut guard = OutputGuard::new(a.force);
-    if let Some(v) = a
-        .vehicle
-        .as_deref()
-        .filter(|v| super::described::is_file(v))
-    {
-        guard.input("--vehicle", v)?;
-    }
-    if let Some(p) = &a.plot {
-        guard.output("--plot", p, OutputKind::Svg)?;
-    }
+    super::described::declare(&mut guard, a.vehicle.as_deref())?;
+    guard.output_if("--plot", a.plot.as_deref(), OutputKind::Svg)?;
     let p = super::described::with_front_strut(a.vehicle.as_deref(), "study hps-sensitivity")?;
     let seeds: Vec<u64> = afsv_design::fan_out::seed_range(a.seed, a.seeds as u64);
     let scope = StudyScope {
@@ -267,34 +251,4 @@ fn hps(a: HpsArgs) -> CmdResult {
     emit(a.output.json, &s, || {
         afsv_design::report::hps_sensitivity::text(&s)
     })
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn changes_parse_and_bad_ones_are_named() {
-        assert_eq!(parse_changes("-30, 15").unwrap(), vec![-0.3, 0.15]);
-        assert!(parse_changes("-100").unwrap_err().contains("above -100"));
-        assert!(parse_changes("x").unwrap_err().contains("item 1"));
-        assert!(parse_changes("nan").is_err());
-        let many = vec!["1"; 21].join(",");
-        assert!(parse_changes(&many).unwrap_err().contains("at most 20"));
-    }
-
-    #[test]
-    fn lists_parse_and_bad_items_are_named() {
-        assert_eq!(
-            parse_list("--speeds", "10, 20", 5).unwrap(),
-            vec![10.0, 20.0]
-        );
-        assert!(parse_list("--speeds", "10,x", 5)
-            .unwrap_err()
-            .contains("item 2"));
-        assert!(parse_list("--speeds", "inf", 5).is_err());
-        assert!(parse_list("--design", "1,2,3,4", 3)
-            .unwrap_err()
-            .contains("at most 3"));
-    }
 }

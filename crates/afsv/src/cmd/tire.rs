@@ -203,12 +203,8 @@ fn load_params(args: &SweepArgs) -> Result<TireParams, Box<dyn std::error::Error
 
 fn sweep(args: SweepArgs) -> CmdResult {
     let mut guard = OutputGuard::new(args.force);
-    if let Some(p) = &args.params {
-        guard.input("--params", p)?;
-    }
-    if let Some(p) = &args.plot {
-        guard.output("--plot", p, OutputKind::Svg)?;
-    }
+    guard.input_if("--params", args.params.as_deref())?;
+    guard.output_if("--plot", args.plot.as_deref(), OutputKind::Svg)?;
     let out = &args.table;
     out.declare(&mut guard)?;
     let fzs = parse_range(&args.fz, "--fz")?;
@@ -324,27 +320,4 @@ fn envelope(args: EnvelopeArgs) -> CmdResult {
         }),
     )?;
     Ok(())
-}
-
-#[cfg(test)]
-mod tests {
-    use super::parse_range;
-
-    #[test]
-    fn ranges() {
-        assert_eq!(parse_range("5", "--x").unwrap(), vec![5.0]);
-        let r = parse_range("-20:20:0.5", "--x").unwrap();
-        assert_eq!(r.len(), 81);
-        assert_eq!(r[80], 20.0);
-        assert_eq!(parse_range("0:1:0.3", "--x").unwrap().len(), 4);
-        assert!(parse_range("1:0:0.1", "--x")
-            .unwrap_err()
-            .contains("below start"));
-        assert!(parse_range("0:1:0", "--x").unwrap_err().contains("step"));
-        assert!(parse_range("0:a:1", "--x")
-            .unwrap_err()
-            .contains("stop `a`"));
-        assert!(parse_range("0:1", "--x").is_err());
-        assert!(parse_range("nan", "--x").is_err());
-    }
 }

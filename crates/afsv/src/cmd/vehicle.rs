@@ -281,19 +281,9 @@ pub fn run(cmd: Command) -> CmdResult {
 
 /// Declare the input files of `case` to `guard`.
 fn declare_inputs(case: &CaseArgs, guard: &mut OutputGuard) -> Result<(), String> {
-    if let Some(p) = &case.params {
-        guard.input("--params", p)?;
-    }
-    if let Some(v) = case
-        .vehicle
-        .as_deref()
-        .filter(|v| super::described::is_file(v))
-    {
-        guard.input("--vehicle", v)?;
-    }
-    if let Some(file) = options::hps_file(case.hps.as_deref()) {
-        guard.input("--hps", file)?;
-    }
+    guard.input_if("--params", case.params.as_deref())?;
+    super::described::declare(guard, case.vehicle.as_deref())?;
+    guard.input_if("--hps", options::hps_file(case.hps.as_deref()))?;
     Ok(())
 }
 
@@ -454,9 +444,7 @@ fn print_result(json_out: bool, value: &Value, text: &str) -> CmdResult {
 fn prepare(case: &CaseArgs, study: &StudyArgs) -> Result<(VehicleParams, FrontAxle), String> {
     let mut guard = OutputGuard::new(study.force);
     declare_inputs(case, &mut guard)?;
-    if let Some(plot) = &study.plot {
-        guard.output("--plot", plot, OutputKind::Svg)?;
-    }
+    guard.output_if("--plot", study.plot.as_deref(), OutputKind::Svg)?;
     vehicle_params(case)
 }
 
@@ -529,6 +517,3 @@ fn yaw_cmd(case: &CaseArgs, study: &StudyArgs, pulse_deg: f64) -> CmdResult {
     }
     print_linked(study.json, v, &text, link.as_ref())
 }
-
-#[cfg(test)]
-mod tests;

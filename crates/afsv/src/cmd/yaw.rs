@@ -290,38 +290,6 @@ fn parse_input(
     Ok(m)
 }
 
-/// The record's columns named in `--columns` (all when it is empty), `time_s` first; an
-/// unknown or repeated name is an error listing the known ones.
-fn selected_columns<'a>(
-    all: Vec<(String, &'a [f64])>,
-    wanted: &[String],
-) -> Result<Vec<(String, &'a [f64])>, String> {
-    if wanted.is_empty() {
-        return Ok(all);
-    }
-    let mut names: Vec<&str> = vec!["time_s"];
-    for w in wanted.iter().map(|w| w.trim()) {
-        if w == "time_s" {
-            continue;
-        }
-        if names.contains(&w) {
-            return Err(format!("--columns: `{w}` is named twice"));
-        }
-        if !all.iter().any(|(n, _)| n == w) {
-            let known: Vec<&str> = all.iter().map(|(n, _)| n.as_str()).collect();
-            return Err(format!(
-                "--columns: no column `{w}` (known: {})",
-                known.join(", ")
-            ));
-        }
-        names.push(w);
-    }
-    Ok(names
-        .iter()
-        .filter_map(|n| all.iter().find(|(m, _)| m == n).cloned())
-        .collect())
-}
-
 /// The section 3.3 test definition in `form`, recording only the channels the measures
 /// read (the same numbers as a full record, without the per-sample cost of the others).
 fn measures_spec(form: FormChoice) -> MeasureSpec {
@@ -353,16 +321,8 @@ pub fn run(cmd: Command) -> CmdResult {
                 args::MAX_YAW_SAMPLES,
             )?;
             let mut guard = OutputGuard::new(force);
-            if let Some(p) = &vehicle.params {
-                guard.input("--params", p)?;
-            }
-            if let Some(v) = vehicle
-                .vehicle
-                .as_deref()
-                .filter(|v| super::described::is_file(v))
-            {
-                guard.input("--vehicle", v)?;
-            }
+            guard.input_if("--params", vehicle.params.as_deref())?;
+            super::described::declare(&mut guard, vehicle.vehicle.as_deref())?;
             if let Some(file) = csv_input_file(&input) {
                 guard.record_input("--input", Path::new(file))?;
             }
@@ -384,10 +344,7 @@ pub fn run(cmd: Command) -> CmdResult {
                 ..SimOptions::default()
             };
             let rec = simulate(&p.vehicle, &sys, &man, &opts)?;
-            let mut out = Record::new();
-            for (name, values) in selected_columns(rec.columns(), &columns)? {
-                out.push_column(&name, values.to_vec())?;
-            }
+            let mut out = Record::from_selected(rec.columns(), &columns)?;
             let form: EquationForm = vehicle.form.into();
             out.meta = serde_json::json!({
                 "written_by": "afsv yaw simulate",

@@ -1,14 +1,14 @@
 //! The ask/tell driver of `afsv optimize afs --state`: the state file, `--ask` (the next
 //! batch, or the report once the run is done) and `--tell` (the results of every shard).
 
-use super::{report, AfsArgs, RunOutcome};
+use super::{report, AfsArgs};
 use crate::cmd::CmdResult;
 use afsv_design::afs_batch::{BatchHeader, ProblemDesc};
 use afsv_design::afs_state::AskTellState;
+use afsv_design::report::afs::asked_text;
 use afsv_design::{AfsAskTell, AfsOptimisationSettings, AfsProblem, Objective};
 use afsv_records::jsonl::write_jsonl;
 use afsv_records::stored::write_json;
-use optimize::Evaluation;
 use serde_json::{json, Value};
 use std::path::Path;
 
@@ -70,21 +70,7 @@ impl AskTell<'_> {
         id.write_if_new(self.state_path)?;
         let Some(asked) = asked else {
             super::finished_notice("afs", state.batch, path);
-            let outcomes = drivers
-                .iter()
-                .zip(&state.runs)
-                .zip(&self.descs)
-                .map(|((d, run), desc)| {
-                    let t = std::time::Instant::now();
-                    let optimum = d.finish(run)?;
-                    Ok(RunOutcome {
-                        label: desc.label.clone(),
-                        min_arm_m: desc.min_steering_arm_m,
-                        optimum,
-                        seconds: t.elapsed().as_secs_f64(),
-                    })
-                })
-                .collect::<Result<Vec<_>, afsv_design::DesignError>>()?;
+            let outcomes = state.finish(drivers, &self.descs)?;
             return report(self.args, &self.objective, self.problems, &outcomes);
         };
         let status = json!({
@@ -94,23 +80,7 @@ impl AskTell<'_> {
         if super::machine(self.args.output.json) {
             afsv::output::print_json(&status)?;
         } else {
-            println!(
-                "batch {}: {} points written to {} ({})",
-                state.batch,
-                asked.points.len(),
-                path.display(),
-                asked
-                    .phases
-                    .iter()
-                    .map(|p| format!(
-                        "{} {}: {}",
-                        p["run"].as_str().unwrap_or(""),
-                        p["phase"].as_str().unwrap_or(""),
-                        p["points"]
-                    ))
-                    .collect::<Vec<_>>()
-                    .join("; ")
-            );
+            println!("{}", asked_text(state.batch, &asked, path));
         }
         Ok(())
     }
@@ -122,26 +92,14 @@ impl AskTell<'_> {
                 self.state_path.display()
             )
         })?;
-        let mut evals = state
-            .results(
-                &self.args.ask_tell.tell,
-                sha,
-                &asked,
-                &self.descs,
-                self.problems,
-            )?
-            .into_iter();
-        for ((d, run), n) in drivers
-            .iter()
-            .zip(state.runs.iter_mut())
-            .zip(&asked.per_run)
-        {
-            let mine: Vec<Evaluation> = evals.by_ref().take(*n).collect();
-            if *n > 0 {
-                d.tell(run, mine)?;
-            }
-        }
-        state.batch += 1;
+        let evals = state.results(
+            &self.args.ask_tell.tell,
+            sha,
+            &asked,
+            &self.descs,
+            self.problems,
+        )?;
+        state.tell(drivers, &asked, evals)?;
         write_json(self.state_path, &state)?;
         let finished = state.asked(drivers, &self.descs)?.is_none();
         super::print_told(

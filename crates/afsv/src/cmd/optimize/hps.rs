@@ -17,8 +17,8 @@ use afsv_design::hps_speed_sweep::speed_sweep_runs;
 use afsv_design::report::{hps_optimum::text, num};
 use afsv_design::{HpsAsk, HpsAskTell, HpsAskTellState, HpsProblemDesc};
 use afsv_records::jsonl::write_jsonl;
-use afsv_records::lock::RunLock;
-use afsv_records::stored::{read_stored, write_json};
+use afsv_records::lock::take_and_read;
+use afsv_records::stored::write_json;
 use std::io::IsTerminal;
 use std::path::Path;
 
@@ -96,25 +96,15 @@ pub fn run(a: &HpsArgs) -> CmdResult {
         reevaluate_roll: !a.no_roll,
         ..HpsGaSettings::default()
     };
-    let (_lock, stored) = match &a.ask_tell.state {
-        Some(p) => (
-            Some(RunLock::take("--state", p)?),
-            read_stored("--state", p)?,
-        ),
-        None => (None, None),
-    };
+    let (_lock, stored) = take_and_read("--state", a.ask_tell.state.as_deref())?;
     let mut guard = OutputGuard::new(a.force);
-    if let Some(v) = a
-        .vehicle
-        .as_deref()
-        .filter(|v| crate::cmd::described::is_file(v))
-    {
-        guard.input("--vehicle", v)?;
-    }
+    crate::cmd::described::declare(&mut guard, a.vehicle.as_deref())?;
     a.ask_tell.declare_inputs(&mut guard)?;
-    if let Some(path) = &a.strut_out {
-        guard.output("--strut-out", path, afsv::output::OutputKind::Other)?;
-    }
+    guard.output_if(
+        "--strut-out",
+        a.strut_out.as_deref(),
+        afsv::output::OutputKind::Other,
+    )?;
     a.ask_tell.declare_outputs(&mut guard)?;
     let base = crate::cmd::described::with_front_strut(a.vehicle.as_deref(), "optimize hps")?;
     if let Some(state) = &a.ask_tell.state {

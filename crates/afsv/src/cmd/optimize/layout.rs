@@ -16,8 +16,8 @@ use afsv_design::{
     LayoutGaSettings, LayoutOptimum, LayoutProblem, LayoutProblemDesc, LayoutVariable,
 };
 use afsv_records::jsonl::write_jsonl;
-use afsv_records::lock::RunLock;
-use afsv_records::stored::{read_stored, write_json};
+use afsv_records::lock::take_and_read;
+use afsv_records::stored::write_json;
 use std::io::IsTerminal;
 use std::path::{Path, PathBuf};
 use vehicle_3d::Load;
@@ -164,21 +164,9 @@ pub fn run(a: &LayoutArgs) -> CmdResult {
         seed: a.seed,
     };
     ga.options()?;
-    let (_lock, stored) = match &a.ask_tell.state {
-        Some(p) => (
-            Some(RunLock::take("--state", p)?),
-            read_stored("--state", p)?,
-        ),
-        None => (None, None),
-    };
+    let (_lock, stored) = take_and_read("--state", a.ask_tell.state.as_deref())?;
     let mut guard = OutputGuard::new(a.force);
-    if let Some(v) = a
-        .vehicle
-        .as_deref()
-        .filter(|v| crate::cmd::described::is_file(v))
-    {
-        guard.input("--vehicle", v)?;
-    }
+    crate::cmd::described::declare(&mut guard, a.vehicle.as_deref())?;
     a.ask_tell.declare_inputs(&mut guard)?;
     a.ask_tell.declare_outputs(&mut guard)?;
     let desc = problem_desc(a)?;

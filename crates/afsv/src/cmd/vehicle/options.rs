@@ -238,77 +238,13 @@ pub(super) fn steer_label(input: &SteerInput) -> &'static str {
 mod tests {
     use super::*;
 
+    /// The largest accepted values (a run at each would take minutes; the refusals just
+    /// above them are checked through the binary, tests/cli_vehicle.rs).
     #[test]
-    fn terrain_option_parses_keys_in_any_order() {
-        let t = terrain_arg("mc:0.2,class:c").unwrap();
-        let s = t.spec.unwrap();
-        assert_eq!((s.class, s.m_c, t.seed), (IsoClass::C, 0.2, None));
-        let t = terrain_arg("class:H,seed:7").unwrap();
-        assert_eq!((t.spec.unwrap().m_c, t.seed), (0.3, Some(7)));
-        assert_eq!(terrain_arg("flat").unwrap().spec, None);
-        for (bad, needle) in [
-            ("class:Z", "class `Z`"),
-            ("class:E,class:C", "twice"),
-            ("mc:nan", "mc `nan`"),
-            ("mc:-1", "mc `-1`"),
-            ("slope:3", "unknown key `slope`"),
-            ("E", "KEY:VALUE"),
-            ("seed:-1", "seed `-1`"),
-        ] {
-            let e = terrain_arg(bad).unwrap_err();
-            assert!(e.contains(needle), "{bad}: {e}");
-        }
-    }
-
-    #[test]
-    fn steer_option_parses_pulse_ramp_and_none() {
-        assert_eq!(steer_input("none").unwrap(), SteerInput::None);
-        assert_eq!(
-            steer_input("pulse:30,0.2,1").unwrap(),
-            SteerInput::pulse_deg(30.0, 0.2, 1.0)
-        );
-        match steer_input("ramp:5,1").unwrap() {
-            SteerInput::Ramp {
-                rate_rad_s,
-                start_s,
-                limit_rad,
-            } => {
-                assert!((rate_rad_s - 5f64.to_radians()).abs() < 1e-15);
-                assert_eq!(start_s, 1.0);
-                assert!((limit_rad - MAX_STEER_DEG.to_radians()).abs() < 1e-12);
-            }
-            other => panic!("{other:?}"),
-        }
-        for bad in [
-            "pulse:30,0.2",
-            "pulse:30,nan,1",
-            "pulse:30,-0.2,1",
-            "ramp:5",
-            "sine:1",
-            "step:3,1",
-            "pulse:1001,0.2,1",
-            "ramp:1e-320,1",
-            "ramp:-2000,1",
-            "ramp:5,1,1e6",
-        ] {
-            assert!(steer_input(bad).unwrap_err().contains("--steer"), "{bad}");
-        }
-    }
-
-    #[test]
-    fn bounded_options_refuse_out_of_range_values() {
-        assert!(speed_kmh("80").is_ok());
-        assert!(speed_kmh("80.01").is_err());
-        assert!(speed_kmh("0").is_err());
+    fn bounded_options_accept_their_limits() {
         assert_eq!(seed_count("1000").unwrap(), 1000);
-        assert!(seed_count("1001").is_err());
-        assert!(seed_count("0").is_err());
-        assert!(seed_count("1e3").is_err());
         assert!(duration_s("600").is_ok());
-        assert!(duration_s("600.5").is_err());
         assert!(ramp_rate("0.01").is_ok() && ramp_rate("1000").is_ok());
-        assert!(ramp_rate("0.009").is_err() && ramp_rate("1000.1").is_err());
-        assert!(steer_peak("1000").is_ok() && steer_peak("1000.1").is_err());
-        assert!(steer_input("ramp:-5,1").is_ok(), "a left-hand ramp");
+        assert!(steer_peak("1000").is_ok());
     }
 }
