@@ -21,7 +21,7 @@ use afsv_discovery::vehicle3d::{Vehicle3dModel, CHANNELS};
 use afsv_discovery::{discover, Discovery, DiscoveryModel, DiscoveryOptions, Outcome};
 use afsv_records::Record;
 use common::summary;
-use vehicle3d::{records, runs, variant, Hidden};
+use vehicle3d::{discover_printed, records, runs, variant, Elapsed, Hidden};
 use vehicle_3d::{FrontAxle, VehicleParams};
 
 #[test]
@@ -116,55 +116,7 @@ fn run(
         hidden,
         seed + 50,
     );
-    let t0 = std::time::Instant::now();
-    let d = discover(
-        &model,
-        &train,
-        &hold,
-        &[],
-        &[],
-        &DiscoveryOptions::default(),
-        &Elapsed(t0),
-    )
-    .unwrap();
-    let secs = t0.elapsed().as_secs_f64();
-    println!(
-        "{hidden:?}: {:?} named {:?} shrink {:.3} in {secs:.1} s\n{}",
-        d.outcome,
-        d.named,
-        d.gap_shrink,
-        summary(&d)
-    );
-    for t in d.steps.iter().filter_map(|s| s.naming_tests.as_ref()) {
-        println!(
-            "naming tests of {}: placebo {:?} against {:.3e}; failed {:?}",
-            t.effect, t.best_placebo, t.effect_gain, t.failed
-        );
-        for g in &t.groups {
-            println!(
-                "  {} ({} records): {:?} +- {:?}{}",
-                g.group,
-                g.records,
-                g.values,
-                g.std_errors,
-                if g.at_bound { " (on a bound)" } else { "" }
-            );
-        }
-    }
-    println!(
-        "calibrated baseline {:?}\nfinal baseline {:?} (converged {})\nexcess over noise {:.2}; calibration problems {:?}",
-        d.calibrated.baseline, d.final_model.baseline, d.final_model.converged, d.excess_over_noise, d.calibration_problems
-    );
-    (d, secs)
-}
-
-/// Prints each finished fit with the time since the start.
-struct Elapsed(std::time::Instant);
-
-impl afsv_discovery::Progress for Elapsed {
-    fn fit_done(&self, what: &str) {
-        eprintln!("{:7.1} s  {what}", self.0.elapsed().as_secs_f64());
-    }
+    discover_printed(&model, &train, &hold, hidden)
 }
 
 fn first_named(d: &Discovery, effect: &str) {

@@ -22,13 +22,13 @@ mod vehicle3d;
 
 use afsv_discovery::vehicle3d::{value, Vehicle3dModel, CHANNELS};
 use afsv_discovery::Outcome;
-use afsv_discovery::{discover, evaluate_errors, Discovery, DiscoveryModel, DiscoveryOptions};
+use afsv_discovery::{evaluate_errors, Discovery, DiscoveryModel};
 use afsv_records::Record;
 use common::summary;
 use vehicle3d::realistic::{
     hps_params, params, Readings, READINGS, STRUT_READINGS, VEHICLE_READINGS,
 };
-use vehicle3d::{record_read, records_read, runs, Hidden, RunSpec};
+use vehicle3d::{discover_printed, record_read, records_read, runs, Hidden, RunSpec};
 use vehicle_3d::{FrontAxle, Load, VehicleParams};
 
 /// Ride records and V3 path changes in each of the training and held-out sets (as the
@@ -337,64 +337,16 @@ fn run_sets(hidden: Hidden, rides: usize, changes: usize, seed: u64) -> Discover
         hidden,
         hold_seed,
     );
-    let t0 = std::time::Instant::now();
-    let d = discover(
-        &model,
-        &train,
-        &hold,
-        &[],
-        &[],
-        &DiscoveryOptions::default(),
-        &Elapsed(t0),
-    )
-    .unwrap();
+    let (d, _) = discover_printed(&model, &train, &hold, hidden);
     println!(
-        "{hidden:?}: {:?} named {:?} shrink {:.3} in {:.1} s\n{}",
-        d.outcome,
-        d.named,
-        d.gap_shrink,
-        t0.elapsed().as_secs_f64(),
-        summary(&d)
-    );
-    for t in d.steps.iter().filter_map(|s| s.naming_tests.as_ref()) {
-        println!(
-            "naming tests of {}: placebo {:?} against {:.3e}; failed {:?}",
-            t.effect, t.best_placebo, t.effect_gain, t.failed
-        );
-        for g in &t.groups {
-            println!(
-                "  {} ({} records): {:?} +- {:?}{}",
-                g.group,
-                g.records,
-                g.values,
-                g.std_errors,
-                if g.at_bound { " (on a bound)" } else { "" }
-            );
-        }
-    }
-    println!(
-        "truth of the calibrated set {:?}\ncalibrated baseline {:?}\nfinal baseline {:?} (converged {})\nexcess over noise {:.2}; calibration problems {:?}",
-        truth_baseline(&model, &p),
-        d.calibrated.baseline,
-        d.final_model.baseline,
-        d.final_model.converged,
-        d.excess_over_noise,
-        d.calibration_problems
+        "truth of the calibrated set {:?}",
+        truth_baseline(&model, &p)
     );
     print_channels(
         "held-out records at the calibrated baseline",
         &channel_nrmse(&model, &hold, &d.calibrated.baseline),
     );
     d
-}
-
-/// Prints each finished fit with the time since the start.
-struct Elapsed(std::time::Instant);
-
-impl afsv_discovery::Progress for Elapsed {
-    fn fit_done(&self, what: &str) {
-        eprintln!("{:7.1} s  {what}", self.0.elapsed().as_secs_f64());
-    }
 }
 
 /// The criterion on an effect set: no wrong effect named, and `effect` named first

@@ -282,3 +282,67 @@ pub fn records_read(
         })
         .collect()
 }
+
+/// Prints each finished fit with the time since the start.
+pub struct Elapsed(pub std::time::Instant);
+
+impl afsv_discovery::Progress for Elapsed {
+    fn fit_done(&self, what: &str) {
+        eprintln!("{:7.1} s  {what}", self.0.elapsed().as_secs_f64());
+    }
+}
+
+/// One discovery of `model` on `train`, scored on `hold`, with the default options and its
+/// progress on stderr. Prints the outcome, each naming test's placebo and condition groups,
+/// and the calibrated and final baselines; returns the discovery and its wall time (s).
+pub fn discover_printed(
+    model: &Vehicle3dModel,
+    train: &[Record],
+    hold: &[Record],
+    hidden: Hidden,
+) -> (afsv_discovery::Discovery, f64) {
+    let t0 = std::time::Instant::now();
+    let d = afsv_discovery::discover(
+        model,
+        train,
+        hold,
+        &[],
+        &[],
+        &afsv_discovery::DiscoveryOptions::default(),
+        &Elapsed(t0),
+    )
+    .unwrap();
+    let secs = t0.elapsed().as_secs_f64();
+    println!(
+        "{hidden:?}: {:?} named {:?} shrink {:.3} in {secs:.1} s\n{}",
+        d.outcome,
+        d.named,
+        d.gap_shrink,
+        crate::common::summary(&d)
+    );
+    for t in d.steps.iter().filter_map(|s| s.naming_tests.as_ref()) {
+        println!(
+            "naming tests of {}: placebo {:?} against {:.3e}; failed {:?}",
+            t.effect, t.best_placebo, t.effect_gain, t.failed
+        );
+        for g in &t.groups {
+            println!(
+                "  {} ({} records): {:?} +- {:?}{}",
+                g.group,
+                g.records,
+                g.values,
+                g.std_errors,
+                if g.at_bound { " (on a bound)" } else { "" }
+            );
+        }
+    }
+    println!(
+        "calibrated baseline {:?}\nfinal baseline {:?} (converged {})\nexcess over noise {:.2}; calibration problems {:?}",
+        d.calibrated.baseline,
+        d.final_model.baseline,
+        d.final_model.converged,
+        d.excess_over_noise,
+        d.calibration_problems
+    );
+    (d, secs)
+}
