@@ -201,6 +201,22 @@ impl<M: DiscoveryModel + ?Sized> Context<'_, M> {
         self.fit_until(config, None, Stop::Statistical)
     }
 
+    /// A fit ended early: on the scouting records, by the statistical stop
+    /// ([`Stop::Statistical`]), then scored on all records without a polish. `None` without a
+    /// scouting subset, where every fit runs on all training records ([`Self::fit`]).
+    pub fn fit_scouted(
+        &self,
+        config: Config,
+        n_eff: Option<f64>,
+    ) -> Result<Option<Fitted>, DiscoveryError> {
+        let Some(scout) = &self.scout else {
+            return Ok(None);
+        };
+        let (fitted, _, converged, _) =
+            self.fit_on(&config, scout, self.opts.max_iter, Stop::Statistical)?;
+        self.score(fitted, &[], converged, n_eff).map(Some)
+    }
+
     /// [`Self::fit`] with `subset_stop` ending the fit on the scouting subset.
     fn fit_until(
         &self,
