@@ -15,15 +15,13 @@ pub fn csv_files(inputs: &[PathBuf]) -> Result<Vec<PathBuf>, String> {
     let mut out = Vec::new();
     for p in inputs {
         if p.is_dir() {
-            let mut v: Vec<PathBuf> = std::fs::read_dir(p)
-                .map_err(|e| format!("{}: {e}", p.display()))?
-                .filter_map(|e| e.ok().map(|e| e.path()))
+            let v: Vec<PathBuf> = list_dir(p)?
+                .into_iter()
                 .filter(|f| f.extension().is_some_and(|x| x == "csv"))
                 .collect();
             if v.is_empty() {
                 return Err(format!("{}: no .csv records in this folder", p.display()));
             }
-            v.sort();
             out.extend(v);
         } else if p.is_file() {
             out.push(p.clone());
