@@ -36,6 +36,23 @@ pub(crate) fn problems(f: &FitOutcome, specs: &[ParamSpec]) -> Vec<String> {
     out
 }
 
+/// What a reader of the outcome should know about the calibration `f` that does not make
+/// the result unearned ([`crate::Discovery::calibration_notes`]): when nothing was named
+/// and the calibrated baseline's fit met no convergence test. A baseline short of its
+/// optimum can only leave more error than the converged one, so the excess over noise
+/// (`excess`, held-out MSE over the noise floor) is an upper bound and "nothing missing" stays
+/// true; but a "model-form discrepancy" may then be a calibration the records did not
+/// finish, and a rerun with more iterations (`DiscoveryOptions::max_iter`) can tell.
+pub(crate) fn notes(f: &FitOutcome, excess: f64) -> Vec<String> {
+    if f.effects.is_empty() && !f.converged {
+        vec![format!(
+            "the calibrated baseline's fit met no convergence test within its iterations: its {excess:.2}x the noise floor is an upper bound of what it leaves (a converged baseline leaves no more)"
+        )]
+    } else {
+        Vec::new()
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -74,5 +91,22 @@ mod tests {
         let p = problems(&named, &specs);
         assert_eq!(p.len(), 1);
         assert!(p[0].contains("convergence"));
+    }
+
+    #[test]
+    fn an_unconverged_calibration_is_noted_only_when_nothing_was_named() {
+        let plain = outcome(&[1e-5, 1e-12], &[false, false], false);
+        let n = notes(&plain, 3.5);
+        assert_eq!(n.len(), 1);
+        assert!(
+            n[0].contains("3.50x") && n[0].contains("upper bound"),
+            "{}",
+            n[0]
+        );
+        assert!(notes(&outcome(&[1e-5, 1e-12], &[false, false], true), 3.5).is_empty());
+        // with effects named the same fit is a problem, not a note
+        let mut named = plain;
+        named.effects = vec!["gas-heat-transfer".into()];
+        assert!(notes(&named, 3.5).is_empty());
     }
 }

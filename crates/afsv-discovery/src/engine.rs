@@ -322,6 +322,7 @@ pub fn discover<M: DiscoveryModel + ?Sized>(
         .map(|((a, b), (c, d))| (a, b, c, d))
         .collect();
     let calibration_problems = super::calibration::problems(&current.0, &ctx.base_specs);
+    let calibration_notes = super::calibration::notes(&current.0, excess_over_noise);
     Ok(Discovery {
         model: model.name().to_string(),
         channels: ctx.train.channels.clone(),
@@ -341,6 +342,7 @@ pub fn discover<M: DiscoveryModel + ?Sized>(
         excess_over_noise,
         outcome,
         calibration_problems,
+        calibration_notes,
     })
 }
 

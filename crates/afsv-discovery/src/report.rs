@@ -129,6 +129,9 @@ fn summary(s: &mut String, d: &Discovery) {
         }
         let _ = writeln!(s);
     }
+    for n in &d.calibration_notes {
+        let _ = writeln!(s, "**Note on the calibration:** {n}.\n");
+    }
     if d.named.is_empty() {
         let _ = writeln!(s, "**No missing effect named.** The calibrated baseline explains the records as well as any candidate of the catalogue does, within the significance rule.");
         if let Some((name, shrink)) = &d.best_unnamed_shrink {

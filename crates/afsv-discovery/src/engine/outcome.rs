@@ -144,4 +144,8 @@ pub struct Discovery {
     /// earned its values): a parameter still on its bound, a full final fit that did not
     /// converge (`calibration::problems`).
     pub calibration_problems: Vec<String>,
+    /// What the reader should know about the calibration that does not make the result
+    /// unearned, one sentence each: a calibrated baseline whose fit met no convergence test
+    /// when nothing was named (`calibration::notes`).
+    pub calibration_notes: Vec<String>,
 }
