@@ -15,6 +15,7 @@
 //! | `realistic_null_set_names_nothing`, `realistic_second_null_set_names_nothing`, `realistic_ride_null_set_names_nothing` (ignored) | three null sets (3 + 1 records, seeds 21 and 31; 5 ride records, seed 32): nothing named | `cargo test --release --workspace --test discover_vehicle3d_realistic -- --ignored --nocapture`, about 100 s of CPU each |
 //! | `realistic_<effect>_is_named_first_or_a_discrepancy` (ignored) | each rigid-axle catalogue effect: no wrong name, the hidden one first or a discrepancy | same |
 //! | `strut_readings_one_at_a_time` (ignored) | prints each channel's NRMSE of a ride and a V3 record of the HPS vehicle for each strut reading alone | seconds |
+//! | `realistic_hps_gas_temperature_is_named_first_or_a_discrepancy` (ignored) | the front-axle HPS with every strut reading (records written at rtol 3e-7, `READINGS_HPS`), gas heat transfer at tau 1 s hidden: no wrong name, the gas temperature first or a discrepancy | about 30 min of CPU (the HPS replays run at 1e-7) |
 //! | `strut_readings_gas_path_change_probe` (ignored) | prints whether the HPS gas set's V3 record can be written with each strut reading alone, all but one, and all (with all, the integrator stops: too many steps at 9.7 s) | about 150 s of CPU |
 
 mod common;
@@ -26,7 +27,7 @@ use afsv_discovery::{evaluate_errors, Discovery, DiscoveryModel};
 use afsv_records::Record;
 use common::summary;
 use vehicle3d::realistic::{
-    hps_params, params, Readings, READINGS, STRUT_READINGS, VEHICLE_READINGS,
+    hps_params, params, Readings, READINGS, READINGS_HPS, STRUT_READINGS, VEHICLE_READINGS,
 };
 use vehicle3d::{discover_printed, record_read, records_read, runs, Hidden, RunSpec};
 use vehicle_3d::{FrontAxle, Load, VehicleParams};
@@ -317,22 +318,34 @@ fn run(hidden: Hidden, seed: u64) -> Discovery {
 
 /// [`run`] on `rides` ride records and `changes` V3 path changes per set.
 fn run_sets(hidden: Hidden, rides: usize, changes: usize, seed: u64) -> Discovery {
-    let axle = FrontAxle::Rigid;
-    let model = Vehicle3dModel::nominal(axle);
-    let p = params();
-    let train = records_read(
-        axle,
-        &p,
+    run_axle(
+        FrontAxle::Rigid,
+        &params(),
         READINGS,
-        &runs(rides, changes, seed),
         hidden,
+        rides,
+        changes,
         seed,
-    );
+    )
+}
+
+/// [`run_sets`] on the front axle `axle` with the truth `p` written with `readings`.
+fn run_axle(
+    axle: FrontAxle,
+    p: &VehicleParams,
+    readings: Readings,
+    hidden: Hidden,
+    rides: usize,
+    changes: usize,
+    seed: u64,
+) -> Discovery {
+    let model = Vehicle3dModel::nominal(axle);
+    let train = records_read(axle, p, readings, &runs(rides, changes, seed), hidden, seed);
     let hold_seed = seed + 50;
     let hold = records_read(
         axle,
-        &p,
-        READINGS,
+        p,
+        readings,
         &runs(rides, changes, hold_seed),
         hidden,
         hold_seed,
@@ -340,7 +353,7 @@ fn run_sets(hidden: Hidden, rides: usize, changes: usize, seed: u64) -> Discover
     let (d, _) = discover_printed(&model, &train, &hold, hidden);
     println!(
         "truth of the calibrated set {:?}",
-        truth_baseline(&model, &p)
+        truth_baseline(&model, p)
     );
     print_channels(
         "held-out records at the calibrated baseline",
@@ -420,4 +433,19 @@ fn realistic_driver_throttle_is_named_first_or_a_discrepancy() {
         24,
     );
     right_first_or_discrepancy(&d, "driver-throttle");
+}
+
+#[test]
+#[ignore]
+fn realistic_hps_gas_temperature_is_named_first_or_a_discrepancy() {
+    let d = run_axle(
+        FrontAxle::Suspended,
+        &hps_params(),
+        READINGS_HPS,
+        Hidden::GasHeat(1.0),
+        RIDES,
+        CHANGES,
+        27,
+    );
+    right_first_or_discrepancy(&d, "hps-gas-temperature");
 }

@@ -163,7 +163,7 @@ pub fn record_read(
         &RunOptions {
             t_end_s: run.duration_s,
             output_dt_s: 0.005,
-            rtol: 1e-7,
+            rtol: readings.rtol,
             ..RunOptions::default()
         },
     )
