@@ -133,3 +133,35 @@ fn independent_tire_lateral_compliance_is_named_first() {
     let d = run(Hidden3d::TireCompliance(2.0), 25);
     named_first_and_alone(&d, "tire-lateral-compliance");
 }
+
+/// Prints each compared channel's NRMSE on the null set's training and held-out records
+/// (3 % noise included) at the adapter's nominal parameters, which are the records' own
+/// values of the calibrated set: where the model-form difference sits
+/// (`cargo test --release --workspace --test discover_independent_vehicle3d -- --ignored
+/// --nocapture independent_null_set_channel_errors`, seconds).
+#[test]
+#[ignore]
+fn independent_null_set_channel_errors() {
+    let model = Vehicle3dModel::nominal(FrontAxle::Rigid);
+    let baseline: Vec<f64> = model.baseline_params().iter().map(|s| s.initial).collect();
+    for seed in [21, 71] {
+        let set = runs(RIDES, CHANGES, seed);
+        let recs = records(&set, Hidden3d::None, seed);
+        for (r, rec) in set.iter().zip(&recs) {
+            let errors =
+                evaluate_errors(&model, std::slice::from_ref(rec), &baseline, &[]).unwrap();
+            let mut line = format!(
+                "seed {seed}, {:?} {} km/h {}:",
+                r.ride.map(|(c, _)| c),
+                r.speed_kmh,
+                if r.loaded { "loaded" } else { "unloaded" }
+            );
+            for (name, e) in CHANNELS.iter().zip(&errors) {
+                if let Some(x) = e.nrmse {
+                    line += &format!(" {name} {:.1} %", 100.0 * x);
+                }
+            }
+            println!("{line}");
+        }
+    }
+}

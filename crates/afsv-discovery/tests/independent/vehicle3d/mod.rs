@@ -30,14 +30,14 @@
 //! | choice | the crate (vehicle-3d) | this implementation |
 //! |---|---|---|
 //! | formulation | tree multibody in minimal coordinates (quaternion base), CRBA + sparse LDL | Euler angles, Kane's equations with finite-difference Jacobians, dense solve |
-//! | wheel ends | 2 000 kg bodies on revolutes, spin 600 kg m², tilt 350 kg m², gyroscopic coupling | lumped into the units (Table 6.1 masses and inertias as printed); spin DOF with 600 kg m² decoupled from the body rotation (no gyroscopic moment), spin = absolute rate about the axle |
+//! | wheel ends | 2 000 kg bodies on revolutes, spin 600 kg m², tilt 350 kg m² | lumped into the units (Table 6.1 masses and inertias as printed); a spin DOF of 600 kg m² per wheel (its state the absolute rate about the axle), whose angular momentum's gyroscopic reaction acts on its unit |
 //! | joint height, revolute order | 1.0 m; yaw then roll at one point | the same (the note's recommendation) |
 //! | steering mount points | Table 3.1 planar layout at the joint height | the same |
 //! | tire load-deflection (Fig 6.4 absent) | `1.2e6 d + 4.306e6 d²` N | `1.25e6 d + 4.0e6 d²` N (1.4 % stiffer at the loaded front tire's deflection) |
 //! | Eq 6.1 deflection | normal distance to the cams' line, `delta_ref + (z_ref - z_c) cos theta` | as printed, `(z_oi - z_u) / cos theta` with `z_u = z_c - R` |
 //! | cam spacing | fixed-point iterated contact length | half-length `sqrt(R² - (R - delta_0)²)` from one central cam's deflection |
 //! | cam base | profile sampled at 0.05 m, cache grid 0.05 m | the terrain's 0.05 m samples, a circle of the free radius resting on them, linear between |
-//! | cornering stiffness vs load | Table 6.2 points, interpolated | piecewise linear through the four Table 6.2 points, held constant beyond |
+//! | cornering stiffness vs load | piecewise linear through the four Table 6.2 points, extrapolated beyond (floored at 0) | piecewise linear through them, held constant beyond |
 //! | Fiala U_max / U_min, C_slip | 0.8 / 0.6, 1e6 N | the same (docs) |
 //! | rolling resistance moment | `f_r (R - delta) F_z` | `f_r R F_z` (free radius), f_r 0.03 |
 //! | effective rolling radius | loaded radius `R - delta` | the same |

@@ -708,7 +708,13 @@ impl Model {
             dy[SPIN + i] = (about_axle + torque) / d.spin_inertia;
             // the body: the force at the centre, the moments but the one about the axle,
             // the drive's reaction
-            let m_body = add(&m_ext, &scale(&e_a, -about_axle - torque));
+            // and the gyroscopic reaction of the spinning wheel turned with its unit
+            let w_unit = if i < 2 { &wf } else { &wr };
+            let gyro = cross(w_unit, &scale(&e_a, d.spin_inertia * y[SPIN + i]));
+            let m_body = add(
+                &add(&m_ext, &scale(&e_a, -about_axle - torque)),
+                &scale(&gyro, -1.0),
+            );
             force_at(&mut q, Some(1 + i), &f);
             moment_on(&mut q, if i < 2 { &wf_cols } else { &wr_cols }, &m_body);
         }
