@@ -35,18 +35,18 @@
 //! | steering mount points | Table 3.1 planar layout at the joint height | the same |
 //! | tire load-deflection (Fig 6.4 absent) | `1.2e6 d + 4.306e6 d²` N | `1.25e6 d + 4.0e6 d²` N (1.4 % stiffer at the loaded front tire's deflection) |
 //! | Eq 6.1 deflection | normal distance to the cams' line, `delta_ref + (z_ref - z_c) cos theta` | as printed, `(z_oi - z_u) / cos theta` with `z_u = z_c - R` |
-//! | cam spacing | fixed-point iterated contact length | half-length `sqrt(R² - (R - delta_0)²)` from one central cam's deflection |
-//! | cam base | profile sampled at 0.05 m, cache grid 0.05 m | the terrain's 0.05 m samples, a circle of the free radius resting on them, linear between |
+//! | cam spacing | three fixed-point steps of the half contact length, once per grid point at the static deflection (a cache along the track) | half-length `sqrt(R² - (R - delta_0)²)` from the central cam's instantaneous deflection, at every evaluation |
+//! | cam base | a cam of the free radius on the profile's 0.05 m vertices and segments | a circle of the free radius on the terrain's 0.05 m samples (vertices only), linear between |
 //! | cornering stiffness vs load | piecewise linear through the four Table 6.2 points, extrapolated beyond (floored at 0) | piecewise linear through them, held constant beyond |
 //! | Fiala U_max / U_min, C_slip | 0.8 / 0.6, 1e6 N | the same (docs) |
-//! | rolling resistance moment | `f_r (R - delta) F_z` | `f_r R F_z` (free radius), f_r 0.03 |
+//! | rolling resistance moment | `f_r R F_z` (free radius), f_r 0.03 | the same |
 //! | effective rolling radius | loaded radius `R - delta` | the same |
 //! | slip definitions at low speed | `sqrt(v_x² + u_0²)` | `|V_x|` floored at 0.5 m/s |
 //! | the drive's speed signal | mean horizontal forward speed of the wheel centres | mean forward speed of the wheel centres in their contact planes (the cams' lines) |
 //! | Eq 6.1 deflection rate | `v_s sin theta - v_z cos theta` (the cams' line held fixed) | the same reading |
 //! | relaxation | lateral 1.2 m (Table 6.2), longitudinal equal | the same |
-//! | PI drive | 9 kN m/(m/s), 2 kN m/m, ±60 kN m, feed-forward `f_r (R - delta)` times the mean static tire load | the same gains and limit; the same feed-forward (the rolling-resistance force times the contact force's lever arm about the axle, the loaded radius). Note: the rolling-resistance moment uses the free radius in both, so the feed-forward starts 9 % short and the PI's integral lets the vehicle fall about 0.2 m behind in the first seconds; with the feed-forward at the free radius (`Data::feed_forward_free_radius`) the independent rides run 0.2 m ahead of the crate's after 6 s and the sensor axes' NRMSE against the crate grows from 4.5-8.5 % to 26-66 % |
-//! | steering valve, leakage, cavitation | docs/afs-hydraulics.md | the independent yaw-plane model's laws (`super::yaw`): floor 20 kPa with a 30 kPa taper, sqrt regularised over 0.02 bar, standby 1 MPa |
+//! | PI drive | 9 kN m/(m/s), 2 kN m/m, ±60 kN m, feed-forward `f_r (R - delta)` times the mean static tire load | the same gains and limit; the same feed-forward (the rolling-resistance force times the contact force's lever arm about the axle, the loaded radius). Note: the rolling-resistance moment uses the free radius in both, so the feed-forward starts 9 % short and the PI's integral lets the vehicle fall about 0.2 m behind in the first seconds; with the feed-forward at the free radius (`Data::feed_forward_free_radius`) the independent rides run 0.2 m ahead of the crate's after 6 s and the sensor axes' NRMSE against the crate grows from 4.5-8.4 % to 26-66 % at 20 km/h (`ride_channels_by_speed_and_feed_forward`) |
+//! | steering valve, leakage, cavitation | Tables 3.1, 4.1; standby 1 MPa, cavitation floor 10 kPa with a 40 kPa band, orifice regularised over 10 kPa | the independent yaw-plane model's laws (`super::yaw`): standby 1 MPa, floor 20 kPa with a 30 kPa taper, sqrt regularised over 0.02 bar (2 kPa) |
 //! | driver | pure pursuit, look-ahead `max(4 m, 1.2 s u)` along the course's arc, K = 40 1/s, 2 turns/s | the same gains; look-ahead point taken at `x + l_d` along the course axis |
 //! | sensor (cab) point | `[1.68, 0, 2.0]` m (from the joint, height) | the same |
 //! | start | static pose at speed, cg at 1.36 m | the same; front cg at path coordinate 10 m |
