@@ -153,9 +153,8 @@ pub struct Model {
     mount_f: [V3; 2],
     mount_h: [V3; 2],
     l0: f64,
-    /// Static tire deflections front, rear (m), and the mean static load (N).
-    pub defl: [f64; 2],
-    pub loads: [f64; 2],
+    /// Static tire deflections front, rear (m).
+    defl: [f64; 2],
     rolling_ff: f64,
     pub run: RunInput,
 }
@@ -258,10 +257,8 @@ pub struct Outputs {
     pub cab_acc_body: V3,
     /// Horizontal lateral acceleration of the front cg (left positive).
     pub front_lat: f64,
+    /// Tire normal forces FL, FR, RL, RR (N).
     pub fz: [f64; 4],
-    /// Front-axle centre (x, y) and front heading (world).
-    pub axle_xy: [f64; 2],
-    pub heading: f64,
 }
 
 impl Model {
@@ -325,7 +322,6 @@ impl Model {
             mount_h,
             l0,
             defl,
-            loads,
             rolling_ff,
             run,
         }
@@ -775,8 +771,6 @@ impl Model {
                 cab_acc_body: mtv(&rf, &a_cab),
                 front_lat: (-hx[1] * acc[0] + hx[0] * acc[1]) / hn,
                 fz: fzs,
-                axle_xy: axle,
-                heading,
             };
         }
     }
@@ -789,7 +783,7 @@ impl Model {
         let ua = &y[U + 3..U + NQ];
         let p0 = self.pose(a);
         let h = 1e-6;
-        let mut vel = [[0.0f64; NPOSE]; 1];
+        let mut v = [0.0f64; NPOSE];
         for j in 0..NA {
             let mut ap = [0.0; NA];
             let mut am = [0.0; NA];
@@ -799,18 +793,17 @@ impl Model {
             am[j] -= h;
             let (pp, pm) = (self.pose(&ap), self.pose(&am));
             for k in 0..NPOSE {
-                vel[0][k] += (pp[k] - pm[k]) / (2.0 * h) * ua[j];
+                v[k] += (pp[k] - pm[k]) / (2.0 * h) * ua[j];
             }
         }
-        let v = &vel[0];
         let rf = rot_of(&p0, 0);
         let rr = rot_of(&p0, 9);
-        let wf = vee(&mul_bt(&rot_of(v, 0), &rf));
-        let wr = vee(&mul_bt(&rot_of(v, 9), &rr));
+        let wf = vee(&mul_bt(&rot_of(&v, 0), &rf));
+        let wr = vee(&mul_bt(&rot_of(&v, 9), &rr));
         let i_fw = mul(&mul(&rf, &self.i_f), &transpose(&rf));
         let i_rw = mul(&mul(&rr, &self.i_r), &transpose(&rr));
         let vf = [y[U], y[U + 1], y[U + 2]];
-        let vr = add(&vf, &point_of(v, 0));
+        let vr = add(&vf, &point_of(&v, 0));
         let kin = 0.5 * d.front_mass * dot(&vf, &vf)
             + 0.5 * dot(&wf, &mv(&i_fw, &wf))
             + 0.5 * self.m_r * dot(&vr, &vr)
