@@ -35,7 +35,7 @@
 //! | steering mount points | Table 3.1 planar layout at the joint height | the same |
 //! | tire load-deflection (Fig 6.4 absent) | `1.2e6 d + 4.306e6 d²` N | `1.25e6 d + 4.0e6 d²` N (1.4 % stiffer at the loaded front tire's deflection) |
 //! | Eq 6.1 deflection | normal distance to the cams' line, `delta_ref + (z_ref - z_c) cos theta` | as printed, `(z_oi - z_u) / cos theta` with `z_u = z_c - R` |
-//! | cam spacing | three fixed-point steps of the half contact length, once per grid point at the static deflection (a cache along the track) | half-length `sqrt(R² - (R - delta_0)²)` from the central cam's instantaneous deflection, at every evaluation |
+//! | cam spacing | three fixed-point steps of the half contact length, once per grid point at the static deflection (a cache along the track) | half-length `sqrt(R² - (R - delta_0)²)` from the central cam's instantaneous deflection, at every evaluation (section 6.2.2: P1P2 depends on the deflection). On class E ground this is the largest difference from the crate (docs/discovery.md) |
 //! | cam base | a cam of the free radius on the profile's 0.05 m vertices and segments | a circle of the free radius on the terrain's 0.05 m samples (vertices only), linear between |
 //! | cornering stiffness vs load | piecewise linear through the four Table 6.2 points, extrapolated beyond (floored at 0) | piecewise linear through them, held constant beyond |
 //! | Fiala U_max / U_min, C_slip | 0.8 / 0.6, 1e6 N | the same (docs) |
