@@ -14,6 +14,7 @@ pub mod realistic;
 pub mod records;
 pub mod rng;
 pub mod strut;
+pub mod vehicle3d;
 pub mod yaw;
 
 #[allow(unused_imports)]
