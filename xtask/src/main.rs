@@ -35,7 +35,7 @@ fn main() -> ExitCode {
     let result = match args.first().map(String::as_str) {
         Some("bench") => bench(&args[1..]),
         Some("validate") => validate(&args[1..]),
-        Some("discover-matrix") => discover_matrix(),
+        Some("discover-matrix") => discover_matrix(&args[1..]),
         Some("fuzz") => fuzz::fuzz(&args[1..], &workspace_root()),
         Some("slurm-test") => slurm::slurm_test(&args[1..], &workspace_root()),
         Some("-h") | Some("--help") | None => {
@@ -53,26 +53,26 @@ fn main() -> ExitCode {
     }
 }
 
-const HELP: &str = "usage: cargo xtask <task>\n\ntasks:\n  bench [--summary] [--commands] [--runs N] [--profile release|dist] [ARGS...]  run the criterion benches (ARGS go to the bench harness) and print mean times and real-time factors, then time whole afsv commands (median of N runs, default 20); --commands: only those; --profile dist: built with fat LTO and one codegen unit (Cargo.toml)\n  validate [--fixtures DIR] [--out DIR] [--quick]  compare the models with fixtures/reported/ and write target/validation/report.md; --quick skips the chapter-6 design studies (Table 6.4, the GA of Table 6.5, the D4 sweep: about two minutes)\n  fuzz [--cases N] [--seed S] [--jobs J] [--timeout SECS] [--mem-mib MIB] [--bin PATH] [--only GROUPS] [--skip GROUPS] [--keep]  run afsv on N generated bad inputs (default 10000); fail on panics, hangs, aborts, non-finite output or modified inputs\n  discover-matrix  run the discovery workflow on every catalogue effect of both models and print the detection table (minutes)\n  slurm-test [--bin PATH]  as root: install slurm-wlm and munge, start a single-node Slurm, run scripts/slurm/optimize.sh end to end for `optimize afs` and a tiny `optimize layout` and compare each with the in-process optimum (skipped without root, apt-get or network); --bin: run that afsv binary instead of building one";
+const HELP: &str = "usage: cargo xtask <task>\n\ntasks:\n  bench [--summary] [--commands] [--runs N] [--profile release|dist] [ARGS...]  run the criterion benches (ARGS go to the bench harness) and print mean times and real-time factors, then time whole afsv commands (median of N runs, default 20); --commands: only those; --profile dist: built with fat LTO and one codegen unit (Cargo.toml)\n  validate [--fixtures DIR] [--out DIR] [--quick]  compare the models with fixtures/reported/ and write target/validation/report.md; --quick skips the chapter-6 design studies (Table 6.4, the GA of Table 6.5, the D4 sweep: about two minutes)\n  fuzz [--cases N] [--seed S] [--jobs J] [--timeout SECS] [--mem-mib MIB] [--bin PATH] [--only GROUPS] [--skip GROUPS] [--keep]  run afsv on N generated bad inputs (default 10000); fail on panics, hangs, aborts, non-finite output or modified inputs\n  discover-matrix [--vehicle3d]  run the discovery workflow on every catalogue effect of the strut and the yaw-plane vehicle and print the detection table (minutes); --vehicle3d: the 3-D adapter's rows instead (null and effect sets of the mild and realistic variants and of the independent 3-D implementation; about two hours of CPU, the two HPS rows most of it)\n  slurm-test [--bin PATH]  as root: install slurm-wlm and munge, start a single-node Slurm, run scripts/slurm/optimize.sh end to end for `optimize afs` and a tiny `optimize layout` and compare each with the in-process optimum (skipped without root, apt-get or network); --bin: run that afsv binary instead of building one";
 
 /// The full detection matrix of the discovery workflow (the slow tests of
-/// `crates/afsv-discovery/tests/discover_matrix.rs`).
-fn discover_matrix() -> Result<(), String> {
-    let status = Command::new(std::env::var("CARGO").unwrap_or_else(|_| "cargo".into()))
-        .current_dir(workspace_root())
-        .args([
-            "test",
-            "--release",
-            "-p",
-            "afsv-discovery",
-            "--test",
-            "discover_matrix",
-            "--",
-            "--ignored",
-            "--nocapture",
-            "--test-threads",
-            "1",
-        ])
+/// `crates/afsv-discovery/tests/discover_matrix.rs`); with `--vehicle3d`, the 3-D adapter's
+/// rows instead ([`VEHICLE3D_MATRIX`]).
+fn discover_matrix(args: &[String]) -> Result<(), String> {
+    let (tests, filters): (Vec<&str>, Vec<&str>) = match args {
+        [] => (vec!["discover_matrix"], Vec::new()),
+        [a] if a == "--vehicle3d" => (VEHICLE3D_MATRIX.to_vec(), VEHICLE3D_ROWS.to_vec()),
+        _ => return Err(format!("discover-matrix takes only --vehicle3d\n{HELP}")),
+    };
+    let mut cmd = Command::new(std::env::var("CARGO").unwrap_or_else(|_| "cargo".into()));
+    cmd.current_dir(workspace_root())
+        .args(["test", "--release", "--workspace"]);
+    for t in &tests {
+        cmd.args(["--test", t]);
+    }
+    cmd.args(["--", "--ignored", "--nocapture", "--test-threads", "1"])
+        .args(&filters);
+    let status = cmd
         .status()
         .map_err(|e| format!("cannot run cargo test: {e}"))?;
     if status.success() {
@@ -81,6 +81,18 @@ fn discover_matrix() -> Result<(), String> {
         Err(format!("the detection matrix has failures ({status})"))
     }
 }
+
+/// The 3-D adapter's matrix: its records from the crate with the mild variant of unstated
+/// choices, from the realistic variant, and from the independent 3-D implementation.
+const VEHICLE3D_MATRIX: [&str; 3] = [
+    "discover_vehicle3d",
+    "discover_vehicle3d_realistic",
+    "discover_independent_vehicle3d",
+];
+
+/// Name parts of the matrix rows among those binaries' ignored tests (the diagnostics and
+/// the timing case are left out): a null set names nothing, an effect set names its effect.
+const VEHICLE3D_ROWS: [&str; 3] = ["names_nothing", "name_nothing", "is_named_first"];
 
 fn workspace_root() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR"))
