@@ -6,6 +6,9 @@
 //! - `d3_yaw_pulse_rigid_sim5s`: D3, the 0.2 s pulse at 50 km/h on smooth ground;
 //! - `d1_ride_hps_loaded_ros34pw2_sim21p6s`: the same HPS run with the Rosenbrock-W method
 //!   on the struts' stiff blocks instead of Dormand-Prince (docs/numerics.md);
+//! - `d1_ride_{rigid,hps}_loaded_tsit5_sim21p6s`: the loaded runs with Tsitouras 5(4) in
+//!   place of `Auto` (Dormand-Prince, switching on the HPS; docs/numerics.md, "Tsitouras
+//!   5(4)");
 //! - `rhs_{rigid,hps}`: one right-hand-side evaluation;
 //! - `d1_terrain_and_cache`: synthesis of the terrain and the four tandem-cam caches, paid
 //!   once per seed;
@@ -52,6 +55,13 @@ fn bench(c: &mut Criterion) {
             });
         }
         let v = ride(Load::Loaded, axle);
+        let t = RunOptions {
+            solver: odeint::Solver::Tsit5,
+            ..run
+        };
+        group.bench_function(format!("d1_ride_{a}_loaded_tsit5_sim21p6s"), |b| {
+            b.iter(|| simulate(&v, &t).unwrap().len())
+        });
         if axle == FrontAxle::Suspended {
             let w = RunOptions {
                 solver: odeint::Solver::Ros34pw2,

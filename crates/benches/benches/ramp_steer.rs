@@ -4,6 +4,8 @@
 //!   terrain (667 m driven), with a gentler ramp (1.5 deg/s at the steering wheel instead
 //!   of 5) so that the truck does not roll over before 60 s; `cargo xtask bench` prints its
 //!   real-time factor;
+//! - `class_e_ramp_steer_tsit5_sim60s`: the same run with Tsitouras 5(4) in place of
+//!   Dormand-Prince (`RunOptions::solver`, docs/numerics.md, "Tsitouras 5(4)");
 //! - `class_e_ramp_steer_kinks_sim60s`: the same run with the kinks of the force laws
 //!   located as events (`RunOptions::locate_kinks`, docs/numerics.md, "Kinks");
 //! - `class_e_ramp_to_rollover`: the nominal ramp until absolute rollover (about 29 s for
@@ -33,6 +35,13 @@ fn bench(c: &mut Criterion) {
     assert_eq!(*run.t_s.last().unwrap(), options.t_end_s);
     group.bench_function("class_e_ramp_steer_sim60s", |b| {
         b.iter(|| simulate(&vehicle, &options).unwrap().t_s.len())
+    });
+    let tsit5 = RunOptions {
+        solver: odeint::Solver::Tsit5,
+        ..options
+    };
+    group.bench_function("class_e_ramp_steer_tsit5_sim60s", |b| {
+        b.iter(|| simulate(&vehicle, &tsit5).unwrap().t_s.len())
     });
     let kinks = RunOptions {
         locate_kinks: true,

@@ -5,13 +5,10 @@
 //! `aux[0]` the error estimate, `aux[1..4]` the dense-output coefficients, `y_stage` the
 //! sixth stage's argument (kept to the end of the step for the stiffness test).
 //!
-//! Stiffness detection (HNW I, section IV.2 and the code DOPRI5): after each accepted step
-//! `h λ ≈ h ‖k7 − k6‖ / ‖y_new − y6‖`, both stages taken at `t + h`, estimates the step
-//! times the dominant eigenvalue (at 3.25 the step sits on the method's stability
-//! boundary). Fifteen steps above [`STIFF_H_LAMBDA`] with no six ordinary ones between make
-//! the problem stiff.
+//! Stiffness detection: [`crate::stiffness`] on the stages k6 and k7, both at `t + h`.
 
 use crate::kernel::Kernel;
+use crate::stiffness::StiffnessWatch;
 use crate::tolerance::error_norm;
 use crate::{OdeSystem, Workspace};
 
@@ -52,33 +49,20 @@ const D5: f64 = 701980252875.0 / 199316789632.0;
 const D6: f64 = -1453857185.0 / 822651844.0;
 const D7: f64 = 69997945.0 / 29380423.0;
 
-/// `h λ` above which a step counts as held by the stiff eigenvalue. DOPRI5 uses 3.25, the
-/// stability boundary; on the suspended vehicle the error estimate already holds the steps
-/// at `h λ` ≈ 0.5-1.8 (a rod-side pressure at 2.5·10⁴ s⁻¹, steps of 70 µs), so the test
-/// here is looser. A false alarm costs one trial of the implicit method (`switching`).
-const STIFF_H_LAMBDA: f64 = 1.0;
-/// Steps on the boundary that make the problem stiff.
-const STIFF_STEPS: usize = 15;
-/// Ordinary steps that clear the count.
-const NON_STIFF_STEPS: usize = 6;
-
 /// The Dormand-Prince 5(4) kernel with its stiffness test.
 #[derive(Debug, Clone, Copy, Default)]
 pub(crate) struct Dopri5Kernel {
     /// Step of the last attempt.
     h: f64,
-    /// Steps on the stability boundary in a row.
-    on_boundary: usize,
-    /// Ordinary steps since the last one on it.
-    ordinary: usize,
+    /// Stiffness test.
+    watch: StiffnessWatch,
 }
 
 impl Kernel for Dopri5Kernel {
     const ORDER: i32 = 5;
 
     fn start<S: OdeSystem + ?Sized>(&mut self, sys: &S, t: f64, ws: &mut Workspace) -> usize {
-        self.on_boundary = 0;
-        self.ordinary = 0;
+        self.watch.reset();
         sys.rhs(t, &ws.y, &mut ws.k[0]);
         1
     }
@@ -206,26 +190,13 @@ impl Kernel for Dopri5Kernel {
         ws: &mut Workspace,
     ) -> usize {
         let [k1, .., k6, k7] = &mut ws.k;
-        let (mut num, mut den) = (0.0, 0.0);
-        for i in 0..ws.y.len() {
-            num += (k7[i] - k6[i]).powi(2);
-            den += (ws.y_new[i] - ws.y_stage[i]).powi(2);
-        }
-        if den > 0.0 && self.h * (num / den).sqrt() > STIFF_H_LAMBDA {
-            self.ordinary = 0;
-            self.on_boundary += 1;
-        } else {
-            self.ordinary += 1;
-            if self.ordinary == NON_STIFF_STEPS {
-                self.on_boundary = 0;
-            }
-        }
+        self.watch.observe(self.h, k6, k7, &ws.y_stage, &ws.y_new);
         k1.copy_from_slice(k7);
         ws.y.copy_from_slice(&ws.y_new);
         0
     }
 
     fn stiff(&self) -> bool {
-        self.on_boundary >= STIFF_STEPS
+        self.watch.stiff()
     }
 }

@@ -8,6 +8,7 @@ use crate::rk4::Rk4Kernel;
 use crate::rosenbrock::Rosenbrock23Kernel;
 use crate::rosenbrock_w::RosenbrockWKernel;
 use crate::switching::{Flow, SwitchRule};
+use crate::tsit5::Tsit5Kernel;
 use crate::{
     Atol, Control, OdeError, OdeSystem, Solver, Stats, Workspace, COLLAPSE_FACTOR,
     COLLAPSE_MIN_STEPS,
@@ -198,6 +199,9 @@ impl Integrator {
                 ws,
                 &mut observe,
             ),
+            Solver::Tsit5 => {
+                Drive::new(self, sys, problem, Tsit5Kernel::default()).run(None, ws, &mut observe)
+            }
             Solver::Dopri5 | Solver::Auto => {
                 Drive::new(self, sys, problem, Dopri5Kernel::default()).run(None, ws, &mut observe)
             }

@@ -48,7 +48,7 @@ pub(crate) trait Kernel {
     fn accept<S: OdeSystem + ?Sized>(&mut self, sys: &S, t_new: f64, ws: &mut Workspace) -> usize;
 
     /// Has the method found the problem stiff (its steps held by stability, not accuracy)?
-    /// Only Dormand-Prince tells; the others answer `false`.
+    /// Only the explicit 5(4) pairs tell (Dormand-Prince, Tsitouras); the others answer `false`.
     fn stiff(&self) -> bool {
         false
     }

@@ -4,8 +4,8 @@
 //! One [`Integrator`] value (a [`Solver`] plus tolerances and step limits) advances it: a
 //! single driver loop ([`Integrator::run`]) owns the output grid, the observer, breakpoints,
 //! event location, the step limit and the divergence error, and calls one of three
-//! single-step kernels (Dormand-Prince 5(4), Rosenbrock 2(3), the Rosenbrock-W 3(2)
-//! ROS34PW2 on a model's stiff blocks, fixed-step RK4).
+//! single-step kernels (Dormand-Prince 5(4), Tsitouras 5(4), Rosenbrock 2(3), the
+//! Rosenbrock-W 3(2) ROS34PW2 on a model's stiff blocks, fixed-step RK4).
 //!
 //! Work buffers live in a caller-supplied [`Workspace`]: a caller that runs thousands of
 //! short simulations creates one and passes it to every run, and the runs allocate nothing.
@@ -22,8 +22,10 @@ mod rk4;
 mod rosenbrock;
 mod rosenbrock_w;
 mod solver;
+mod stiffness;
 mod switching;
 mod tolerance;
+mod tsit5;
 mod workspace;
 
 pub use driver::{Integrator, Problem, Sample, SampleKind};

@@ -397,6 +397,7 @@ fn auto_asks_the_model() {
 fn solver_serialises_in_snake_case() {
     let cases = [
         (Solver::Dopri5, "\"dopri5\""),
+        (Solver::Tsit5, "\"tsit5\""),
         (Solver::Rosenbrock23, "\"rosenbrock23\""),
         (Solver::Auto, "\"auto\""),
         (Solver::Rk4 { step: 0.5 }, "{\"rk4\":{\"step\":0.5}}"),

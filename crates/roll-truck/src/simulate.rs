@@ -28,7 +28,7 @@ pub struct RunOptions {
     pub t_end_s: f64,
     /// Output interval (s).
     pub output_dt_s: f64,
-    /// Relative tolerance of the Dormand-Prince integrator.
+    /// Relative tolerance of the integrator.
     pub rtol: f64,
     /// Record the sprung-cg channels ([`RunRecord::sprung_lateral_accel_m_s2`] and the
     /// sensor channel): one forward-dynamics solve per output sample, about a quarter
@@ -43,6 +43,9 @@ pub struct RunOptions {
     /// ramp steer it takes 8 % more right-hand sides at the same accuracy, since few of
     /// the rejected steps come from the kinks (docs/roll-truck.md, "Speed").
     pub locate_kinks: bool,
+    /// Integration method. Default [`Solver::Dopri5`] (docs/numerics.md, "Tsitouras 5(4)",
+    /// for the comparison with [`Solver::Tsit5`]).
+    pub solver: Solver,
 }
 
 impl Default for RunOptions {
@@ -54,6 +57,7 @@ impl Default for RunOptions {
             acceleration_channels: false,
             max_step_s: 0.02,
             locate_kinks: false,
+            solver: Solver::Dopri5,
         }
     }
 }
@@ -300,7 +304,7 @@ pub fn simulate_with_stats(
     let n_events = if options.locate_kinks { 2 } else { 1 };
     let breakpoints = [vehicle.params.ramp_start_s];
     let typical = vehicle.state_layout().typicals().iter().copied();
-    let mut integrator = vehicle_run::integrator(Solver::Dopri5, &span, typical);
+    let mut integrator = vehicle_run::integrator(options.solver, &span, typical);
     let mut ws = odeint::Workspace::with_events(state::DIM, 2);
     let mut rec = RunRecord::default();
     let mut stats = RunStats::default();
