@@ -35,6 +35,8 @@
 //! - [`layout_optimum`]: `afsv optimize layout`, a GA over registry-named parameters of
 //!   one layout with constraints on its measures; [`layout_ask_tell`]: the same run split
 //!   into ask and tell, with its batch, results and state files;
+//! - [`ga_ask_tell`]: one `--ask` or `--tell` of either GA run (HPS, layout) against its
+//!   state file, written once over the drivers' [`ga_ask_tell::GaAskTell`];
 //! - [`strut_shift`]: `afsv hps thermal`, a vehicle's struts over a working shift (gas and
 //!   body temperatures, ride height and stiffness, with and without a levelling valve);
 //! - [`report`]: the reports of those results (JSON objects and text tables), shared by
@@ -62,6 +64,7 @@ pub mod evaluate;
 pub mod fan_out;
 #[cfg(feature = "plots")]
 pub mod figures;
+pub mod ga_ask_tell;
 pub mod hps_ask_tell;
 pub mod hps_design;
 pub mod hps_optimum;

@@ -17,8 +17,8 @@ use afsv::output::{OutputGuard, OutputKind};
 use afsv::progress::Progress;
 use afsv_design::figures;
 use afsv_design::report::vehicle::{
-    axle_name, link_note, per_seed, rear_axle, ride_report, roll_report, terrain_json, yaw_report,
-    Ground, NO_STRUT,
+    axle_name, link_note, per_seed, ride_report, roll_report, terrain_json, yaw_report, Ground,
+    NO_STRUT,
 };
 use afsv_design::report::vehicle::{ride_psd, RidePsd};
 use hps_emulsion::StrutParams;
