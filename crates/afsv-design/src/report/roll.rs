@@ -60,6 +60,27 @@ impl Ground<'_> {
     }
 }
 
+/// The sidecar of `afsv roll simulate`'s record: the model, the ramp steer in its
+/// `direction`, the `ground`, the truck `p`, the sample rate (1 / `output_dt_s`) and the
+/// rollover time (`None`: no rollover).
+pub fn simulate_sidecar(
+    p: &roll_truck::TruckParams,
+    direction: impl std::fmt::Display,
+    ground: &Ground,
+    output_dt_s: f64,
+    rollover_s: Option<f64>,
+) -> Value {
+    json!({
+        "written_by": "afsv roll simulate",
+        "sample_rate_hz": 1.0 / output_dt_s,
+        "model": "roll-truck rigid mining truck (chapter 2)",
+        "manoeuvre": format!("ramp steer ({direction})"),
+        "terrain": ground.to_json(),
+        "params": p,
+        "rollover_s": rollover_s,
+    })
+}
+
 /// The roll measures of one run as JSON: the measures, the `ground`, the `truck` by name,
 /// whether its bump stops are in reach, the sustained-period `rule` (`None` when it is
 /// invalid) and the g the accelerations are reported in; each `null` measure explained.
