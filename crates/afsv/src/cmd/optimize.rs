@@ -26,7 +26,7 @@ mod hps;
 mod layout;
 mod report;
 
-use afsv_design::report::afs::{to_json, to_text, violations, AfsRun as RunOutcome};
+use afsv_design::report::afs::{earned, to_json, to_text, AfsRun as RunOutcome};
 use ask_tell::AskTell;
 use report::{write_plots, Bar};
 
@@ -456,18 +456,10 @@ fn report(
     } else {
         print!("{}", to_text(a.relaxed, &current, outcomes));
     }
-    let infeasible: Vec<String> = outcomes
-        .iter()
-        .filter(|r| !r.optimum.feasible())
-        .map(|r| format!("run {}: {}", r.label, violations(&r.optimum)))
-        .collect();
-    if infeasible.is_empty() {
-        Ok(())
-    } else {
-        Err(NotEarned(format!(
-            "optimize afs: no feasible design found ({}); the least infeasible point is printed, not an optimum (check the Eq 4.9 points and --min-arm-m)",
-            infeasible.join("; ")
+    earned(outcomes).map_err(|why| {
+        NotEarned(format!(
+            "optimize afs: no feasible design found ({why}); the least infeasible point is printed, not an optimum (check the Eq 4.9 points and --min-arm-m)"
         ))
-        .into())
-    }
+        .into()
+    })
 }

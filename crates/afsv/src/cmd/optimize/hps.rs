@@ -13,7 +13,7 @@ use afsv_design::hps_optimum::{
     optimise_hps, optimum_speed_sweep, optimum_vehicle, HpsGaSettings, HpsOptimum, D4_SPEEDS_KMH,
 };
 use afsv_design::hps_speed_sweep::speed_sweep_runs;
-use afsv_design::report::{hps_optimum::text, num};
+use afsv_design::report::hps_optimum;
 use afsv_design::{HpsAskTell, HpsAskTellState, HpsProblemDesc};
 use afsv_records::lock::take_and_read;
 use std::io::IsTerminal;
@@ -141,26 +141,15 @@ fn report(a: &HpsArgs, base: &vehicle_3d::VehicleParams, r: &HpsOptimum) -> CmdR
         None
     };
     if a.output.json || !std::io::stdout().is_terminal() {
-        let mut v = serde_json::to_value(r)?;
-        if let Some(s) = &sweep {
-            v["speed_sweep"] = serde_json::to_value(s)?;
-        }
-        afsv::output::print_json(&v)?;
+        afsv::output::print_json(&hps_optimum::to_json(r, sweep.as_ref())?)?;
     } else {
-        print!("{}", text(r));
+        print!("{}", hps_optimum::text(r));
         if let Some(s) = &sweep {
             print!("\n{}", afsv_design::report::speed_sweep::text(s));
         }
     }
-    if r.feasible {
-        Ok(())
-    } else {
-        Err(afsv::output::NotEarned(format!(
-            "optimize hps: no design met the a_wz limit of Eq 6.20 on the search seed (best a_wz {} m/s²); the best found is printed, not an optimum (more generations or another vehicle)",
-            num(r.optimum_ride.a_wz_m_s2, 1.0, 3)
-        ))
-        .into())
-    }
+    hps_optimum::earned(r)
+        .map_err(|why| afsv::output::NotEarned(format!("optimize hps: {why}")).into())
 }
 
 /// One `--ask` or `--tell` against the state file `path` (its text `stored`, read under
