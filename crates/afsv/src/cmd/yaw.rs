@@ -349,7 +349,7 @@ pub fn run(cmd: Command) -> CmdResult {
             out.meta = yaw::simulate_sidecar(&p, &man, &input, &opts, &rec);
             afsv::provenance::stamp_record(&mut out);
             out.write(&output)?;
-            afsv::output::print_json(&yaw::simulate_summary(&output, &out.names(), &rec))?;
+            afsv::output::print_json(&yaw::simulate_summary(&output, out.names(), &rec))?;
         }
         Command::Measures { vehicle } => {
             let p = load_params(&vehicle)?;

@@ -118,6 +118,6 @@ pub(super) fn simulate_cmd(
     out.meta = simulate_sidecar(&run, components.as_ref());
     afsv::provenance::stamp_record(&mut out);
     out.write(output)?;
-    afsv::output::print_json(&simulate_summary(output, &out.names(), &rec))?;
+    afsv::output::print_json(&simulate_summary(output, out.names(), &rec))?;
     Ok(())
 }
