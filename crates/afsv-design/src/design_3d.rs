@@ -10,12 +10,15 @@
 use perf_measures::iso2631::{health_guidance_zone, HgczRelation, HgczZone};
 use serde::Serialize;
 use std::sync::Arc;
-use vehicle_3d::interconnect::{ride_linked_on, roll_linked_on, yaw_linked, Link};
+use vehicle_3d::interconnect::{
+    ride_linked, ride_linked_on, roll_linked, roll_linked_on, yaw_linked, Link,
+};
+use vehicle_3d::scenarios::{self, RideMeasures, RollMeasures};
 use vehicle_3d::scenarios::{
     ride_on, ride_tracks, roll_on, roll_tracks, yaw, RideSpec, RollSpec, Spread, YawMeasures,
     YawSpec,
 };
-use vehicle_3d::{FrontAxle, Load, TireTracks, VehicleParams};
+use vehicle_3d::{FrontAxle, Load, RunRecord, TireTracks, VehicleError, VehicleParams};
 
 /// Largest number of terrain seeds per measure.
 pub const MAX_SEEDS: u64 = 100;
@@ -166,6 +169,49 @@ fn run_job(
             })
         }
     })
+}
+
+/// One D1 ride of `p` on terrain `seed`, the struts interconnected by `link` when given
+/// (`vehicle_3d::interconnect::ride_linked`, else `vehicle_3d::scenarios::ride`): its
+/// record and measures.
+pub fn ride_run(
+    p: &VehicleParams,
+    spec: &RideSpec,
+    seed: u64,
+    link: Option<&Link>,
+) -> Result<(RunRecord, RideMeasures), VehicleError> {
+    match link {
+        Some(l) => ride_linked(p, spec, seed, l).map(|(r, m)| (r.record, m)),
+        None => scenarios::ride(p, spec, seed),
+    }
+}
+
+/// One D2 roll run of `p` on terrain `seed`, linked as in [`ride_run`]: its record and
+/// measures.
+pub fn roll_run(
+    p: &VehicleParams,
+    spec: &RollSpec,
+    seed: u64,
+    link: Option<&Link>,
+) -> Result<(RunRecord, RollMeasures), VehicleError> {
+    match link {
+        Some(l) => roll_linked(p, spec, seed, l).map(|(r, m)| (r.record, m)),
+        None => scenarios::roll(p, spec, seed),
+    }
+}
+
+/// One D3 yaw run of `p` (on terrain `seed` when the spec has one), linked as in
+/// [`ride_run`] (a linked run is on smooth ground): its record and measures.
+pub fn yaw_run(
+    p: &VehicleParams,
+    spec: &YawSpec,
+    seed: u64,
+    link: Option<&Link>,
+) -> Result<(RunRecord, YawMeasures), VehicleError> {
+    match link {
+        Some(l) => yaw_linked(p, spec, l).map(|(r, m)| (r.record, m)),
+        None => yaw(p, spec, seed),
+    }
 }
 
 /// The design measures D1 (a_wz and d_s for each of `ride_loads`), D2 (SP-DRT) and D3

@@ -452,6 +452,47 @@ impl<'a> HpsAskTell<'a> {
     }
 }
 
+impl crate::ga_ask_tell::GaAskTell for HpsAskTell<'_> {
+    type State = HpsAskTellState;
+    type Header = HpsBatchHeader;
+    type Point = HpsBatchPoint;
+
+    fn batch(state: &HpsAskTellState) -> usize {
+        state.batch
+    }
+
+    fn batch_file(
+        &self,
+        state: &HpsAskTellState,
+        sha: &str,
+    ) -> Result<(HpsBatchHeader, Vec<HpsBatchPoint>, Option<String>), DesignError> {
+        let asked = self.ask(&state.run)?;
+        let (header, points) = batch_file(self.desc, state.batch, sha, &asked);
+        let phase = (asked != HpsAsk::Finished).then(|| header.phase.clone());
+        Ok((header, points, phase))
+    }
+
+    fn tell_results(
+        &self,
+        state: &mut HpsAskTellState,
+        tell: &[PathBuf],
+        sha: &str,
+    ) -> Result<Option<usize>, crate::ga_ask_tell::AskTellError> {
+        let HpsAsk::Evaluate(b) = self.ask(&state.run)? else {
+            return Ok(None);
+        };
+        let points = batch_points(state.batch, &b);
+        let results = state.results(tell, sha, &points)?;
+        self.tell(&mut state.run, results)?;
+        state.batch += 1;
+        Ok(Some(points.len()))
+    }
+
+    fn finished(&self, state: &HpsAskTellState) -> Result<bool, DesignError> {
+        Ok(self.ask(&state.run)? == HpsAsk::Finished)
+    }
+}
+
 /// The HPS ask/tell state file.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]

@@ -534,6 +534,47 @@ pub fn evaluate_layout_shard(
         .collect())
 }
 
+impl crate::ga_ask_tell::GaAskTell for LayoutAskTell<'_> {
+    type State = LayoutAskTellState;
+    type Header = LayoutBatchHeader;
+    type Point = LayoutBatchPoint;
+
+    fn batch(state: &LayoutAskTellState) -> usize {
+        state.batch
+    }
+
+    fn batch_file(
+        &self,
+        state: &LayoutAskTellState,
+        sha: &str,
+    ) -> Result<(LayoutBatchHeader, Vec<LayoutBatchPoint>, Option<String>), DesignError> {
+        let asked = self.ask(&state.run)?;
+        let (header, points) = batch_file(self.problem.desc(), state.batch, sha, &asked);
+        let phase = (asked != LayoutAsk::Finished).then(|| header.phase.clone());
+        Ok((header, points, phase))
+    }
+
+    fn tell_results(
+        &self,
+        state: &mut LayoutAskTellState,
+        tell: &[PathBuf],
+        sha: &str,
+    ) -> Result<Option<usize>, crate::ga_ask_tell::AskTellError> {
+        let LayoutAsk::Evaluate(b) = self.ask(&state.run)? else {
+            return Ok(None);
+        };
+        let points = batch_points(self.problem.desc(), state.batch, &b);
+        let results = state.results(tell, sha, &points)?;
+        self.tell(&mut state.run, results)?;
+        state.batch += 1;
+        Ok(Some(points.len()))
+    }
+
+    fn finished(&self, state: &LayoutAskTellState) -> Result<bool, DesignError> {
+        Ok(self.ask(&state.run)? == LayoutAsk::Finished)
+    }
+}
+
 /// The layout ask/tell state file.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]

@@ -20,7 +20,8 @@
 //!   6.19-6.20) and the re-evaluation over terrain seeds; [`hps_ask_tell`]: the same run
 //!   split into ask and tell, with its batch, results and state files;
 //! - [`batch_files`]: the checks shared by the batch and results files of every ask/tell
-//!   optimisation (afs, layout, HPS);
+//!   optimisation (afs, layout, HPS); [`batch_shard`]: one shard of any of their batch
+//!   files evaluated and its results file written (`afsv batch evaluate`);
 //! - [`hps_design`]: the chapter-6 design vector [A_hc, A_v, A_b] (Table 6.5) applied to
 //!   a strut parameter set;
 //! - [`sweep`]: the optimum of a one-variable design sweep (parabolic peak);
@@ -35,6 +36,8 @@
 //! - [`layout_optimum`]: `afsv optimize layout`, a GA over registry-named parameters of
 //!   one layout with constraints on its measures; [`layout_ask_tell`]: the same run split
 //!   into ask and tell, with its batch, results and state files;
+//! - [`ga_ask_tell`]: one `--ask` or `--tell` of either GA run (HPS, layout) against its
+//!   state file, written once over the drivers' [`ga_ask_tell::GaAskTell`];
 //! - [`strut_shift`]: `afsv hps thermal`, a vehicle's struts over a working shift (gas and
 //!   body temperatures, ride height and stiffness, with and without a levelling valve);
 //! - [`report`]: the reports of those results (JSON objects and text tables), shared by
@@ -56,12 +59,14 @@ pub mod afs_resume;
 pub mod afs_state;
 pub mod ahp;
 pub mod batch_files;
+pub mod batch_shard;
 pub mod design_3d;
 pub mod error;
 pub mod evaluate;
 pub mod fan_out;
 #[cfg(feature = "plots")]
 pub mod figures;
+pub mod ga_ask_tell;
 pub mod hps_ask_tell;
 pub mod hps_design;
 pub mod hps_optimum;

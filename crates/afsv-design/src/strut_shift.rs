@@ -81,6 +81,23 @@ pub struct AxleShift {
     pub levelled: ThermalRecord,
 }
 
+impl AxleShift {
+    /// The strut's parameter set at the end of the shift, without levelling or (`levelled`)
+    /// with the valve: [`ThermalStrut::strut_at`] at the last gas and body temperatures and
+    /// levelled oil volume of that run (the strut file of `afsv hps thermal --strut-out`
+    /// and `--strut-out-levelled`).
+    pub fn end_strut(&self, levelled: bool) -> Result<StrutParams, HpsError> {
+        let rec = if levelled {
+            &self.levelled
+        } else {
+            &self.drift
+        };
+        let n = rec.time_s.len() - 1;
+        self.strut
+            .strut_at(rec.gas_k[n], rec.body_k[n], rec.levelled_m3[n])
+    }
+}
+
 /// A strut that cannot carry its axle's static load within its travel: it rests on an end
 /// stop, where the ride height does not drift.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -255,4 +272,47 @@ fn stroke_power(strut: &StrutParams, hz: f64, amplitude_m: f64) -> Result<f64, D
     )
     .map_err(|e| DesignError::Simulation(format!("the harmonic stroke: {e}")))?;
     Ok(m.dissipated_energy_j * hz)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// With no heat, the struts at the charge temperature throughout and nothing to level,
+    /// the front strut ends the shift as it began (to round-off).
+    #[test]
+    fn a_shift_without_heat_ends_with_the_strut_it_began_with() {
+        let mut params = VehicleParams::nominal();
+        params.hps = StrutParams::front_axle();
+        let t = 300.0;
+        let spec = ShiftSpec {
+            load: Load::Loaded,
+            with_rear: false,
+            ambient_k: t,
+            charge_k: t,
+            start_k: t,
+            duration_s: 3600.0,
+            step_s: 60.0,
+            valve: LevellingValve {
+                deadband_m: 5e-3,
+                time_constant_s: 30.0,
+                max_flow_m3_s: 1e-4,
+            },
+            heat: HeatInput::Given(0.0),
+        };
+        let shift = strut_shift(&params, &spec).unwrap();
+        let front = &shift.axles[0];
+        assert_eq!(front.axle, "front");
+        for levelled in [false, true] {
+            let end = front.end_strut(levelled).unwrap();
+            assert!(
+                (end.p_h0 / params.hps.p_h0 - 1.0).abs() < 1e-9,
+                "{levelled}"
+            );
+            assert!(
+                (end.v_g0 / params.hps.v_g0 - 1.0).abs() < 1e-9,
+                "{levelled}"
+            );
+        }
+    }
 }

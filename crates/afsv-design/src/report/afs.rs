@@ -108,6 +108,21 @@ pub fn violations(o: &AfsOptimum) -> String {
         .join(", ")
 }
 
+/// Whether every run found a feasible design: else an error naming, per infeasible run,
+/// the constraints its least infeasible point violates ([`violations`]).
+pub fn earned(runs: &[AfsRun]) -> Result<(), String> {
+    let infeasible: Vec<String> = runs
+        .iter()
+        .filter(|r| !r.optimum.feasible())
+        .map(|r| format!("run {}: {}", r.label, violations(&r.optimum)))
+        .collect();
+    if infeasible.is_empty() {
+        Ok(())
+    } else {
+        Err(infeasible.join("; "))
+    }
+}
+
 /// The full-lock geometry of a design in one line (Eq 4.10, the smallest arm, l_2/l_1).
 fn geometry_line(g: &FullLockGeometry) -> String {
     format!(

@@ -1,9 +1,35 @@
 //! The report of `afsv optimize hps` (Chapter 6, [`crate::HpsOptimum`]) as text: the
 //! nominal and the optimum design with their rides and re-evaluation; its JSON is the type's
-//! own serialisation.
+//! own serialisation (with the D4 sweep of the optimum when it was run), and whether the
+//! optimum earned its name.
 
 use super::num;
 use crate::HpsOptimum;
+
+/// The report as JSON: the result's own serialisation, with the D4 `sweep` of the optimum
+/// under `speed_sweep` when it was run.
+pub fn to_json(
+    r: &HpsOptimum,
+    sweep: Option<&crate::SpeedSweep>,
+) -> Result<serde_json::Value, serde_json::Error> {
+    let mut v = serde_json::to_value(r)?;
+    if let Some(s) = sweep {
+        v["speed_sweep"] = serde_json::to_value(s)?;
+    }
+    Ok(v)
+}
+
+/// Whether the optimum is one: an error naming the best a_wz when no design met the a_wz
+/// limit of Eq 6.20 on the search seed (the best found is then not an optimum).
+pub fn earned(r: &HpsOptimum) -> Result<(), String> {
+    if r.feasible {
+        return Ok(());
+    }
+    Err(format!(
+        "no design met the a_wz limit of Eq 6.20 on the search seed (best a_wz {} m/s²); the best found is printed, not an optimum (more generations or another vehicle)",
+        num(r.optimum_ride.a_wz_m_s2, 1.0, 3)
+    ))
+}
 
 /// The optimum against the nominal design: the Eq 6.19 areas, a_wz and d_s on the search
 /// seed, F, and the measures over the re-evaluation seeds.

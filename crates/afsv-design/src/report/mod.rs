@@ -17,6 +17,10 @@
 //! - [`terrain`]: `afsv terrain` (crate `terrain-psd`), the spectral analysis of a profile;
 //! - [`tire`]: the rows of `afsv tire sweep` and `afsv tire envelope` (crate `tire-fiala`);
 //! - [`vehicle`]: `afsv vehicle ride|roll|yaw` (D1-D3 of the 3-D vehicle over seeds);
+//! - [`vehicle_record`]: the records of `afsv vehicle simulate|path-change`, their
+//!   sidecars and the summary printed after them;
+//! - [`yaw`]: the record of `afsv yaw simulate` (the yaw-plane model), its sidecar and
+//!   summary;
 //! - [`strut`]: `afsv hps harmonic|characterize|identify`: a harmonic record's sidecar,
 //!   the laboratory programme's table, a strut record read for a fit;
 //! - [`strut_shift`]: `afsv hps thermal`, the struts over a working shift;
@@ -44,7 +48,9 @@ pub mod table;
 pub mod terrain;
 pub mod tire;
 pub mod vehicle;
+pub mod vehicle_record;
 pub mod weighting;
+pub mod yaw;
 
 /// `v` for a message: plain for ordinary magnitudes, in exponent form for huge or tiny
 /// ones (so 1e308 does not print 309 digits).
@@ -55,6 +61,14 @@ pub fn show(v: f64) -> String {
     } else {
         format!("{v}")
     }
+}
+
+/// The value of largest magnitude in `v`, with its sign: the signed peak of a channel
+/// such as the articulation angle (the first of equal magnitudes; 0 for no value, and NaN
+/// values are passed over).
+pub fn signed_peak(v: &[f64]) -> f64 {
+    v.iter()
+        .fold(0.0f64, |m, x| if x.abs() > m.abs() { *x } else { m })
 }
 
 /// `v` scaled by `scale` with `digits` decimals, or `n/a` when it cannot be computed.
@@ -95,6 +109,18 @@ mod tests {
         assert!(text.lines().all(|l| l.len() <= 92), "{text}");
         assert_eq!(text.split_whitespace().count(), 60);
         assert!(text.starts_with("  word") && text.lines().nth(1).unwrap().starts_with("    word"));
+    }
+
+    #[test]
+    fn the_signed_peak_keeps_the_sign_of_the_largest_magnitude() {
+        assert_eq!(signed_peak(&[1.0, -3.0, 2.0]), -3.0);
+        assert_eq!(
+            signed_peak(&[2.0, -2.0]),
+            2.0,
+            "the first of equal magnitudes"
+        );
+        assert_eq!(signed_peak(&[f64::NAN, -0.5]), -0.5);
+        assert_eq!(signed_peak(&[]), 0.0);
     }
 
     #[test]

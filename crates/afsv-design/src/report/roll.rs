@@ -1,7 +1,6 @@
 //! The reports of `afsv roll` (the rigid truck of Chapter 2, crate `roll-truck`): the roll
 //! measures of one run as JSON (with the ground, the truck and the detection rule) and as
-//! text, the section 2.4 studies and the sensitivity of ΔT as text (their JSON is the
-//! types' own serialisation).
+//! text, the section 2.4 studies and the sensitivity of ΔT as text and JSON.
 
 use super::table::number;
 use perf_measures::roll::SustainedPeriodParams;
@@ -58,6 +57,43 @@ impl Ground<'_> {
             }),
         }
     }
+}
+
+/// The sidecar of `afsv roll simulate`'s record: the model, the ramp steer in its
+/// `direction`, the `ground`, the truck `p`, the sample rate (1 / `output_dt_s`) and the
+/// rollover time (`None`: no rollover).
+pub fn simulate_sidecar(
+    p: &roll_truck::TruckParams,
+    direction: impl std::fmt::Display,
+    ground: &Ground,
+    output_dt_s: f64,
+    rollover_s: Option<f64>,
+) -> Value {
+    json!({
+        "written_by": "afsv roll simulate",
+        "sample_rate_hz": 1.0 / output_dt_s,
+        "model": "roll-truck rigid mining truck (chapter 2)",
+        "manoeuvre": format!("ramp steer ({direction})"),
+        "terrain": ground.to_json(),
+        "params": p,
+        "rollover_s": rollover_s,
+    })
+}
+
+/// A section 2.4 study as JSON: the result's own serialisation with its `findings`.
+pub fn study_json(r: &StudyResult) -> Result<Value, serde_json::Error> {
+    let mut v = serde_json::to_value(r)?;
+    v["findings"] = serde_json::to_value(r.findings())?;
+    Ok(v)
+}
+
+/// The sensitivity study as JSON: its terrain `seeds` and its `cells`.
+pub fn sensitivity_json(cells: &[SensitivityCell], seeds: &[u64]) -> Value {
+    json!({
+        "study": "sensitivity",
+        "seeds": seeds,
+        "cells": cells,
+    })
 }
 
 /// The roll measures of one run as JSON: the measures, the `ground`, the `truck` by name,

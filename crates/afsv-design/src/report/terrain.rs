@@ -1,10 +1,14 @@
-//! The reports of `afsv terrain` (crate `terrain-psd`): the x column and RMS of a
-//! synthesised profile, and the spectral analysis of a two-track profile (`terrain psd`:
+//! The reports of `afsv terrain` (crate `terrain-psd`): the record, sidecar and summary
+//! of a synthesised profile (`terrain generate`), and the spectral analysis of a two-track profile (`terrain psd`:
 //! Welch PSDs, cross-spectrum, coherence, cross-slope PSD, and the errors against the
 //! model its sidecar records) with its summary lines.
 
+use afsv_records::{Record, RecordError};
 use serde_json::{json, Value};
-use terrain_psd::{cross_slope_psd, cross_spectrum, welch_psd, Band, TwoTrackSpec, WelchConfig};
+use std::path::Path;
+use terrain_psd::{
+    cross_slope_psd, cross_spectrum, welch_psd, Band, TwoTrackProfile, TwoTrackSpec, WelchConfig,
+};
 
 /// `x_i = i dx`, rounded to 1 nm when dx >= 1 um so that the CSV shows 0.15, not
 /// 0.15000000000000002.
@@ -25,6 +29,72 @@ pub fn x_column(n: usize, dx: f64) -> Vec<f64> {
 pub fn rms(v: &[f64]) -> f64 {
     let m = v.iter().sum::<f64>() / v.len() as f64;
     (v.iter().map(|x| (x - m) * (x - m)).sum::<f64>() / v.len() as f64).sqrt()
+}
+
+/// A profile `afsv terrain generate` synthesised, with what made it.
+#[derive(Debug, Clone, Copy)]
+pub struct Generated<'a> {
+    /// The displacement PSD in words (e.g. the ISO 8608 class with its G_d(n0)).
+    pub model: &'a str,
+    /// The two-track model (PSD, band, coherence).
+    pub spec: &'a TwoTrackSpec,
+    /// The synthesis seed.
+    pub seed: u64,
+    /// Sample spacing (m).
+    pub dx_m: f64,
+    /// The two tracks.
+    pub profile: &'a TwoTrackProfile,
+}
+
+/// The sidecar of a synthesised profile: the model (in words and whole, so that `terrain
+/// psd` can compare an estimate with it), the seed, the length and spacing, and the RMS the
+/// model's variance gives.
+pub fn generated_sidecar(g: &Generated) -> Value {
+    let band = g.spec.band;
+    json!({
+        "written_by": "afsv terrain generate",
+        "generator": "afsv terrain generate",
+        "description": format!("{}; band {}-{} cycles/m; coherence {}", g.model, band.n_min, band.n_max, g.spec.coherence),
+        "terrain": g.spec,
+        "seed": g.seed,
+        "length_m": g.profile.length_m(),
+        "dx_m": g.dx_m,
+        "samples": g.profile.len(),
+        "rms_target_m": g.spec.variance().sqrt(),
+    })
+}
+
+/// The record of a synthesised profile: columns `x_m` ([`x_column`]), `left_m` and
+/// `right_m`, with the sidecar `meta`.
+pub fn generated_record(g: &Generated, meta: Value) -> Result<Record, RecordError> {
+    let p = g.profile;
+    let mut rec = Record::new();
+    rec.push_column("x_m", x_column(p.len(), g.dx_m))?;
+    rec.push_column("left_m", p.left_m.clone())?;
+    rec.push_column("right_m", p.right_m.clone())?;
+    rec.meta = meta;
+    Ok(rec)
+}
+
+/// What `terrain generate` prints: the sidecar `meta` with each track's [`rms`], then the
+/// files when the profile was written to `output`, else the profile itself.
+pub fn generated_summary(g: &Generated, meta: Value, output: Option<&Path>) -> Value {
+    let p = g.profile;
+    let mut out = meta;
+    out["rms_left_m"] = json!(rms(&p.left_m));
+    out["rms_right_m"] = json!(rms(&p.right_m));
+    match output {
+        Some(path) => {
+            out["output"] = json!(path.display().to_string());
+            out["sidecar"] = json!(path.with_extension("json").display().to_string());
+        }
+        None => {
+            out["x_m"] = json!(x_column(p.len(), g.dx_m));
+            out["left_m"] = json!(p.left_m);
+            out["right_m"] = json!(p.right_m);
+        }
+    }
+    out
 }
 
 /// The values of `v` at the indices `keep`.
@@ -169,4 +239,49 @@ fn target_report(
             .map(|&n| spec.target_cross_slope_psd(n, track_width))
             .collect::<Vec<_>>(),
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use terrain_psd::{synthesize, CoherenceModel, PowerLawPsd};
+
+    /// The record, sidecar and summary of a short synthesised profile agree with it: the
+    /// record's columns are the tracks, the sidecar names the seed and spacing, and the
+    /// summary carries either the files or the profile.
+    #[test]
+    fn a_generated_profile_is_recorded_and_summarised_whole() {
+        let spec = TwoTrackSpec::new(
+            PowerLawPsd::iso(terrain_psd::IsoClass::C),
+            Band::default(),
+            CoherenceModel::Independent,
+        )
+        .unwrap();
+        let profile = synthesize(&spec, 20.0, 0.1, 3).unwrap();
+        let g = Generated {
+            model: "class C",
+            spec: &spec,
+            seed: 3,
+            dx_m: 0.1,
+            profile: &profile,
+        };
+        let meta = generated_sidecar(&g);
+        assert_eq!(meta["seed"], 3);
+        assert_eq!(meta["samples"], profile.len());
+        assert!(meta["description"]
+            .as_str()
+            .unwrap()
+            .starts_with("class C; band "));
+        let rec = generated_record(&g, meta.clone()).unwrap();
+        assert_eq!(rec.names(), ["x_m", "left_m", "right_m"]);
+        assert_eq!(rec.column("right_m").unwrap(), &profile.right_m[..]);
+        assert_eq!(rec.meta, meta);
+        let written = generated_summary(&g, meta.clone(), Some(Path::new("t.csv")));
+        assert_eq!(written["sidecar"], "t.json");
+        assert!(written.get("left_m").is_none());
+        let printed = generated_summary(&g, meta, None);
+        assert_eq!(printed["rms_left_m"], rms(&profile.left_m));
+        assert_eq!(printed["x_m"][10], 1.0);
+        assert!(printed.get("output").is_none());
+    }
 }

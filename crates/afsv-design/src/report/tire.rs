@@ -3,6 +3,27 @@
 
 use tire_fiala::{Envelope, Fiala, HandlingModel, PolylineProfile};
 
+/// The columns of `afsv tire sweep`'s table, in [`SweepRow`]'s order.
+pub const SWEEP_COLUMNS: [&str; 7] = [
+    "fz_n",
+    "kappa",
+    "alpha_deg",
+    "fx_n",
+    "fy_n",
+    "mz_nm",
+    "my_nm",
+];
+
+/// The columns of `afsv tire envelope`'s table, in [`EnvelopeRow`]'s order.
+pub const ENVELOPE_COLUMNS: [&str; 6] = [
+    "x_m",
+    "z_profile_m",
+    "z_eff_m",
+    "slope_rad",
+    "contact_length_m",
+    "wheel_z_m",
+];
+
 #[derive(serde::Serialize)]
 /// One row of `afsv tire sweep`: the Fiala forces at one load and slip.
 pub struct SweepRow {
@@ -85,4 +106,38 @@ pub fn envelope_rows(
         });
     }
     Ok(rows)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The names of the serialised fields, sorted.
+    fn fields<T: serde::Serialize>(row: &T) -> Vec<String> {
+        let v = serde_json::to_value(row).unwrap();
+        v.as_object().unwrap().keys().cloned().collect()
+    }
+
+    fn sorted(columns: &[&str]) -> Vec<String> {
+        let mut c: Vec<String> = columns.iter().map(|s| s.to_string()).collect();
+        c.sort();
+        c
+    }
+
+    /// Each table names every field of its rows once, so no column is left out or empty.
+    #[test]
+    fn the_table_columns_are_the_fields_of_the_rows() {
+        let tire = Fiala::new(&tire_fiala::TireParams::nominal()).unwrap();
+        let rows = sweep_rows(&tire, &[1e5], &[0.0], &[2.0]);
+        assert_eq!(fields(&rows[0]), sorted(&SWEEP_COLUMNS));
+        let env = EnvelopeRow {
+            x_m: 0.0,
+            z_profile_m: 0.0,
+            z_eff_m: 0.0,
+            slope_rad: 0.0,
+            contact_length_m: 0.0,
+            wheel_z_m: 0.0,
+        };
+        assert_eq!(fields(&env), sorted(&ENVELOPE_COLUMNS));
+    }
 }

@@ -1,21 +1,15 @@
 //! `afsv batch evaluate`: evaluates one shard of a batch of design points that
 //! `afsv optimize afs --ask`, `afsv optimize hps --ask` or `afsv optimize layout --ask`
 //! wrote (docs/optimisation.md, "Running on a cluster"); the batch header's `format` tells
-//! which. The formats and the shard's evaluation are `afsv_design::afs_batch`,
-//! `afsv_design::hps_ask_tell` and `afsv_design::layout_ask_tell`.
+//! which (`afsv_design::batch_shard`; the formats are `afsv_design::afs_batch`,
+//! `afsv_design::hps_ask_tell` and `afsv_design::layout_ask_tell`).
 
 use super::CmdResult;
 use afsv::output::{OutputGuard, OutputKind};
-use afsv_design::afs_batch::{evaluate_shard, in_shard, read_batch, ResultsHeader, MAX_SHARDS};
-use afsv_design::hps_ask_tell::{
-    evaluate_hps_shard, read_hps_batch, HpsResultsHeader, HPS_BATCH_FORMAT,
-};
-use afsv_design::layout_ask_tell::{
-    evaluate_layout_shard, read_layout_batch, LayoutResultsHeader, LAYOUT_BATCH_FORMAT,
-};
-use afsv_records::jsonl::write_jsonl;
-use std::io::{BufRead, IsTerminal, Read};
-use std::path::{Path, PathBuf};
+use afsv_design::afs_batch::MAX_SHARDS;
+use afsv_design::batch_shard::{evaluate_batch_shard, ShardOutcome, ShardProgress};
+use std::io::IsTerminal;
+use std::path::PathBuf;
 
 /// `afsv batch` subcommands.
 #[derive(clap::Subcommand)]
@@ -64,17 +58,19 @@ pub fn run(cmd: Command) -> CmdResult {
     }
 }
 
-/// The `format` the batch file's header (its first line) names; `None` for anything
-/// else, unreadable files included, which goes to the chapter-4 reader and its errors.
-fn batch_format(path: &Path) -> Option<String> {
-    let file = std::fs::File::open(path).ok()?;
-    let mut line = String::new();
-    std::io::BufReader::new(file)
-        .take(afsv_records::jsonl::MAX_LINE_BYTES as u64)
-        .read_line(&mut line)
-        .ok()?;
-    let v = serde_json::from_str::<serde_json::Value>(&line).ok()?;
-    v["format"].as_str().map(str::to_string)
+/// Progress of `afsv batch evaluate`, started once the batch is read.
+struct ShardBar(std::sync::OnceLock<afsv::progress::Progress>);
+
+impl ShardProgress for ShardBar {
+    fn start(&self, unit: &'static str, points: usize) {
+        let p = afsv::progress::Progress::new("afsv batch evaluate", unit, Some(points));
+        let _ = self.0.set(p);
+    }
+    fn step(&self) {
+        if let Some(p) = self.0.get() {
+            p.step("");
+        }
+    }
 }
 
 fn evaluate(a: &EvaluateArgs) -> CmdResult {
@@ -82,69 +78,21 @@ fn evaluate(a: &EvaluateArgs) -> CmdResult {
     guard.input("BATCH", &a.batch)?;
     guard.output("-o", &a.output, OutputKind::JsonLines)?;
     let t = std::time::Instant::now();
-    match batch_format(&a.batch).as_deref() {
-        Some(LAYOUT_BATCH_FORMAT) => return evaluate_layout(a, t),
-        Some(HPS_BATCH_FORMAT) => return evaluate_hps(a, t),
-        _ => {}
+    let bar = ShardBar(std::sync::OnceLock::new());
+    let outcome = evaluate_batch_shard("BATCH", &a.batch, a.shard, &a.output, &bar);
+    if let Some(p) = bar.0.get() {
+        p.finish();
     }
-    let (header, points) = read_batch("BATCH", &a.batch)?;
-    let mine = (0..points.len()).filter(|&i| in_shard(i, a.shard)).count();
-    let progress = afsv::progress::Progress::new("afsv batch evaluate", "points", Some(mine));
-    let label = format!("BATCH {}", a.batch.display());
-    let lines = evaluate_shard(&label, &header, &points, a.shard, &|| progress.step(""))?;
-    progress.finish();
-    let shard_text = format!("{}/{}", a.shard.0, a.shard.1);
-    let out = ResultsHeader::of_shard(&header, a.shard, lines.len());
-    write_jsonl(&a.output, &out, &lines)?;
-    summary(a, header.batch, &shard_text, t, &|s| {
-        lines.iter().filter(|l| l.status == s).count()
-    })
+    summary(a, &outcome?, t)
 }
 
-/// One shard of a layout batch (`afsv optimize layout --ask`).
-fn evaluate_layout(a: &EvaluateArgs, t: std::time::Instant) -> CmdResult {
-    let (header, points) = read_layout_batch("BATCH", &a.batch)?;
-    let mine = (0..points.len()).filter(|&i| in_shard(i, a.shard)).count();
-    let progress = afsv::progress::Progress::new("afsv batch evaluate", "designs", Some(mine));
-    let label = format!("BATCH {}", a.batch.display());
-    let lines = evaluate_layout_shard(&label, &header, &points, a.shard, &|| progress.step(""))?;
-    progress.finish();
+/// The shard's summary on stdout: JSON, or a line on a terminal.
+fn summary(a: &EvaluateArgs, o: &ShardOutcome, t: std::time::Instant) -> CmdResult {
+    let (batch, points) = (o.batch, o.points());
     let shard_text = format!("{}/{}", a.shard.0, a.shard.1);
-    let out = LayoutResultsHeader::of_shard(&header, a.shard, lines.len());
-    write_jsonl(&a.output, &out, &lines)?;
-    summary(a, header.batch, &shard_text, t, &|s| {
-        lines.iter().filter(|l| l.status == s).count()
-    })
-}
-
-/// One shard of an HPS batch (`afsv optimize hps --ask`).
-fn evaluate_hps(a: &EvaluateArgs, t: std::time::Instant) -> CmdResult {
-    let (header, points) = read_hps_batch("BATCH", &a.batch)?;
-    let mine = (0..points.len()).filter(|&i| in_shard(i, a.shard)).count();
-    let progress = afsv::progress::Progress::new("afsv batch evaluate", "runs", Some(mine));
-    let lines = evaluate_hps_shard(&header, &points, a.shard, &|| progress.step(""));
-    progress.finish();
-    let shard_text = format!("{}/{}", a.shard.0, a.shard.1);
-    let out = HpsResultsHeader::of_shard(&header, a.shard, lines.len());
-    write_jsonl(&a.output, &out, &lines)?;
-    summary(a, header.batch, &shard_text, t, &|s| {
-        lines.iter().filter(|l| l.status == s).count()
-    })
-}
-
-/// The shard's summary on stdout: JSON, or a line on a terminal; `count` gives the points
-/// of a status.
-fn summary(
-    a: &EvaluateArgs,
-    batch: usize,
-    shard_text: &str,
-    t: std::time::Instant,
-    count: &dyn Fn(&str) -> usize,
-) -> CmdResult {
-    let points = count("evaluated") + count("screened") + count("failed");
     let summary = serde_json::json!({
         "batch": batch, "shard": shard_text, "points": points,
-        "evaluated": count("evaluated"), "screened": count("screened"), "failed": count("failed"),
+        "evaluated": o.evaluated, "screened": o.screened, "failed": o.failed,
         "results": a.output.display().to_string(), "seconds": t.elapsed().as_secs_f64(),
     });
     if a.json || !std::io::stdout().is_terminal() {
@@ -152,9 +100,9 @@ fn summary(
     } else {
         println!(
             "batch {batch} shard {shard_text}: {points} points ({} evaluated, {} screened, {} failed) written to {} in {:.1} s",
-            count("evaluated"),
-            count("screened"),
-            count("failed"),
+            o.evaluated,
+            o.screened,
+            o.failed,
             a.output.display(),
             t.elapsed().as_secs_f64()
         );

@@ -272,10 +272,7 @@ fn harmonic(a: HarmonicArgs) -> CmdResult {
         format!("{e}: raise --rate or --cycles (need >= 1 cycle, 16 samples per cycle)")
     })?;
     if let Some(path) = &a.output {
-        let mut r = Record::new();
-        for (name, v) in rec.columns() {
-            r.push_column(name, v)?;
-        }
+        let mut r = Record::from_columns(rec.columns())?;
         r.meta = strut::harmonic_sidecar(&strut::HarmonicRun {
             strut: a.strut.name(),
             gamma0: params.gamma0,

@@ -180,7 +180,7 @@ pub fn run(a: ThermalArgs) -> CmdResult {
 
 /// `--strut-out` and `--strut-out-levelled`: the front strut's parameter set at the end of
 /// the shift, without and with the levelling valve
-/// ([`hps_emulsion::ThermalStrut::strut_at`]).
+/// ([`afsv_design::strut_shift::AxleShift::end_strut`]).
 fn write_end_struts(a: &ThermalArgs, shift: &Shift) -> CmdResult {
     let Some(front) = shift.axles.iter().find(|x| x.axle == "front") else {
         if a.strut_out.is_some() || a.strut_out_levelled.is_some() {
@@ -188,19 +188,13 @@ fn write_end_struts(a: &ThermalArgs, shift: &Shift) -> CmdResult {
         }
         return Ok(());
     };
-    for (flag, path, rec) in [
-        ("--strut-out", &a.strut_out, &front.drift),
-        (
-            "--strut-out-levelled",
-            &a.strut_out_levelled,
-            &front.levelled,
-        ),
+    for (flag, path, levelled) in [
+        ("--strut-out", &a.strut_out, false),
+        ("--strut-out-levelled", &a.strut_out_levelled, true),
     ] {
         let Some(path) = path else { continue };
-        let n = rec.time_s.len() - 1;
         let strut = front
-            .strut
-            .strut_at(rec.gas_k[n], rec.body_k[n], rec.levelled_m3[n])
+            .end_strut(levelled)
             .map_err(|e| format!("{flag}: the strut at the end of the shift: {e}"))?;
         let text = serde_json::to_string_pretty(&strut)? + "\n";
         afsv_records::atomic::write(path, text).map_err(|e| format!("{}: {e}", path.display()))?;

@@ -2,10 +2,11 @@
 //! (yaw-mode) fit, step-response metrics and the weighting check (crate `perf-measures`).
 
 use super::{args, CmdResult};
+use afsv_design::report::weighting::{wbv_inputs, wbv_report};
 use afsv_records::Record;
 use perf_measures::decay::decay_window;
 use perf_measures::iso2631::{
-    assess_whole_body, Axis, AxisInput, FilterMethod, IirWeighting, KFactors, Weighting,
+    assess_whole_body, Axis, FilterMethod, IirWeighting, KFactors, Weighting,
 };
 use perf_measures::signal::sample_rate;
 use perf_measures::{
@@ -244,39 +245,10 @@ fn wbv(a: WbvArgs) -> CmdResult {
         FilterMethod::Fft
     };
     let columns = axis_columns(&a.channel)?;
-    let mut inputs = Vec::new();
-    let mut used = serde_json::Map::new();
-    for (i, axis) in [Axis::X, Axis::Y, Axis::Z].into_iter().enumerate() {
-        let (name, chosen) = &columns[i];
-        let col = if *chosen {
-            Some(rec.require(name, &a.input)?)
-        } else {
-            rec.column(name)
-        };
-        if let Some(col) = col {
-            used.insert(["x", "y", "z"][i].into(), json!(name));
-            inputs.push(AxisInput {
-                axis,
-                weighting: w[i],
-                accel: col,
-            });
-        }
-    }
-    if inputs.is_empty() {
-        return Err(format!(
-            "{}: no acceleration column (expected any of ax_m_s2, ay_m_s2, az_m_s2, or name one with --channel AXIS=COLUMN)",
-            a.input.display()
-        )
-        .into());
-    }
+    let (inputs, used) = wbv_inputs(&rec, &a.input, &columns, w)?;
     let r = assess_whole_body(&inputs, fs, a.hours, k, method)
         .map_err(|e| format!("{}: {e}", a.input.display()))?;
-    let mut out = serde_json::to_value(&r)?;
-    out["channels"] = serde_json::Value::Object(used);
-    if !rec.unit_conversions.is_empty() {
-        out["unit_conversions"] = afsv::output::unit_conversions(&rec);
-    }
-    afsv::output::print_json(&out)?;
+    afsv::output::print_json(&wbv_report(&r, used, &rec)?)?;
     Ok(())
 }
 

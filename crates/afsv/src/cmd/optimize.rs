@@ -13,6 +13,7 @@ use afsv_design::afs_batch::{
     chapter4_objective, Eq49Desc, ProblemDesc, VehicleDesc, AFS_KIND, MAX_SHARDS,
 };
 use afsv_design::afs_resume::AfsCheckpoint;
+use afsv_design::ga_ask_tell::{self, GaAskTell, GaStep};
 use afsv_design::{optimise, AfsOptimisationSettings, AfsProblem, Objective};
 use afsv_records::lock::take_and_read;
 use afsv_records::stored::write_json;
@@ -25,7 +26,7 @@ mod hps;
 mod layout;
 mod report;
 
-use afsv_design::report::afs::{to_json, to_text, violations, AfsRun as RunOutcome};
+use afsv_design::report::afs::{earned, to_json, to_text, AfsRun as RunOutcome};
 use ask_tell::AskTell;
 use report::{write_plots, Bar};
 
@@ -107,6 +108,36 @@ fn finished_notice(command: &str, batches: usize, batch_path: &std::path::Path) 
             batch_path.display()
         );
     }
+}
+
+/// One `--ask` or `--tell` of a GA run (`command` `hps` or `layout`, its points counted
+/// in `unit`) through `afsv_design::ga_ask_tell`, its status printed; `true` when the
+/// run has finished and the caller prints the report.
+fn ask_or_tell<D: GaAskTell>(
+    (driver, state, stored, path): (&D, &mut D::State, Option<String>, &std::path::Path),
+    args: &AskTellArgs,
+    json: bool,
+    command: &str,
+    unit: &str,
+) -> Result<bool, Box<dyn std::error::Error>> {
+    let ask = args.ask.as_deref();
+    match ga_ask_tell::ask_or_tell(driver, state, stored, path, ask, &args.tell)? {
+        GaStep::Finished { batches } => {
+            finished_notice(command, batches, ask.unwrap_or(path));
+            return Ok(true);
+        }
+        GaStep::Asked {
+            batch,
+            phase,
+            points,
+        } => print_asked(json, batch, &phase, points, unit, ask.unwrap_or(path))?,
+        GaStep::Told {
+            batch,
+            points,
+            finished,
+        } => print_told(json, batch, points, unit, finished)?,
+    }
+    Ok(false)
 }
 
 /// The status of an `--ask` that wrote batch `batch` (`points` of `unit`, `phase`) to
@@ -425,18 +456,10 @@ fn report(
     } else {
         print!("{}", to_text(a.relaxed, &current, outcomes));
     }
-    let infeasible: Vec<String> = outcomes
-        .iter()
-        .filter(|r| !r.optimum.feasible())
-        .map(|r| format!("run {}: {}", r.label, violations(&r.optimum)))
-        .collect();
-    if infeasible.is_empty() {
-        Ok(())
-    } else {
-        Err(NotEarned(format!(
-            "optimize afs: no feasible design found ({}); the least infeasible point is printed, not an optimum (check the Eq 4.9 points and --min-arm-m)",
-            infeasible.join("; ")
+    earned(outcomes).map_err(|why| {
+        NotEarned(format!(
+            "optimize afs: no feasible design found ({why}); the least infeasible point is printed, not an optimum (check the Eq 4.9 points and --min-arm-m)"
         ))
-        .into())
-    }
+        .into()
+    })
 }

@@ -312,17 +312,9 @@ fn simulate(case: &CaseArgs, dt: f64, output: &Path, force: bool) -> CmdResult {
         roll_truck::simulate::MAX_SAMPLES as f64,
     )?;
     let run = one_run(case, &p, dt)?;
-    let out = Record::from_columns(run.record.afsv_v1_columns())?;
-    let mut out = out;
-    out.meta = json!({
-        "written_by": "afsv roll simulate",
-        "sample_rate_hz": 1.0 / dt,
-        "model": "roll-truck rigid mining truck (chapter 2)",
-        "manoeuvre": format!("ramp steer ({})", case.direction),
-        "terrain": ground(case).to_json(),
-        "params": p,
-        "rollover_s": run.record.rollover_s,
-    });
+    let mut out = Record::from_columns(run.record.afsv_v1_columns())?;
+    let rollover_s = run.record.rollover_s;
+    out.meta = roll::simulate_sidecar(&p, case.direction, &ground(case), dt, rollover_s);
     afsv::provenance::stamp_record(&mut out);
     out.write(output)?;
     let mut summary = measures_json(&run.measures, case);

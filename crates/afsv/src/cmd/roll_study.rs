@@ -4,7 +4,7 @@
 
 use super::{truck, CmdResult, RuleArgs, TruckArgs};
 use afsv::output::{OutputGuard, OutputKind};
-use afsv_design::report::roll::{sensitivity_text, study_text};
+use afsv_design::report::roll::{self, sensitivity_text, study_text};
 use roll_truck::sensitivity::run_sensitivity;
 use roll_truck::studies::{run_study, Study, MAX_SEEDS};
 use roll_truck::{BuiltinTruck, RunOptions, TruckParams};
@@ -111,11 +111,7 @@ pub(super) fn run_study_cmd(a: &StudyArgs) -> CmdResult {
             if pretty {
                 print!("{}", sensitivity_text(&cells, seeds));
             } else {
-                afsv::output::print_json(&serde_json::json!({
-                    "study": "sensitivity",
-                    "seeds": seed_list,
-                    "cells": cells,
-                }))?;
+                afsv::output::print_json(&roll::sensitivity_json(&cells, &seed_list))?;
             }
             return Ok(());
         }
@@ -137,9 +133,7 @@ pub(super) fn run_study_cmd(a: &StudyArgs) -> CmdResult {
     if pretty {
         print!("{}", study_text(&result));
     } else {
-        let mut v = serde_json::to_value(&result)?;
-        v["findings"] = serde_json::to_value(result.findings())?;
-        afsv::output::print_json(&v)?;
+        afsv::output::print_json(&roll::study_json(&result)?)?;
     }
     Ok(())
 }

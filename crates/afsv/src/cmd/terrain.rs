@@ -3,7 +3,9 @@
 use super::{args, CmdResult};
 use afsv::output::{OutputGuard, OutputKind};
 use afsv::progress::Progress;
-use afsv_design::report::terrain::{psd_analysis, psd_summary, rms, x_column};
+use afsv_design::report::terrain::{
+    generated_record, generated_sidecar, generated_summary, psd_analysis, psd_summary, Generated,
+};
 use afsv_records::Record;
 use serde_json::json;
 use std::path::{Path, PathBuf};
@@ -225,50 +227,27 @@ fn generate(a: GenerateArgs) -> CmdResult {
     if let Some(p) = &progress {
         p.step("synthesised");
     }
-    let meta = json!({
-        "written_by": "afsv terrain generate",
-        "generator": "afsv terrain generate",
-        "description": format!("{model}; band {}-{} cycles/m; coherence {}", band.n_min, band.n_max, coherence),
-        "terrain": spec,
-        "seed": a.seed,
-        "length_m": prof.length_m(),
-        "dx_m": a.dx,
-        "samples": prof.len(),
-        "rms_target_m": spec.variance().sqrt(),
-    });
-    match &a.output {
-        Some(path) => {
-            let mut rec = Record::new();
-            rec.push_column("x_m", x_column(prof.len(), a.dx))?;
-            rec.push_column("left_m", prof.left_m.clone())?;
-            rec.push_column("right_m", prof.right_m.clone())?;
-            rec.meta = meta.clone();
-            afsv::provenance::stamp_record(&mut rec);
-            rec.write(path)?;
-            if let Some(p) = &progress {
-                p.step("written");
-                p.finish();
-            }
-            let mut out = meta;
-            out["output"] = json!(path.display().to_string());
-            out["sidecar"] = json!(path.with_extension("json").display().to_string());
-            out["rms_left_m"] = json!(rms(&prof.left_m));
-            out["rms_right_m"] = json!(rms(&prof.right_m));
-            afsv::output::print_json(&out)?;
+    let g = Generated {
+        model: &model,
+        spec: &spec,
+        seed: a.seed,
+        dx_m: a.dx,
+        profile: &prof,
+    };
+    let meta = generated_sidecar(&g);
+    if let Some(path) = &a.output {
+        let mut rec = generated_record(&g, meta.clone())?;
+        afsv::provenance::stamp_record(&mut rec);
+        rec.write(path)?;
+        if let Some(p) = &progress {
+            p.step("written");
+            p.finish();
         }
-        None => {
-            let mut out = meta;
-            out["rms_left_m"] = json!(rms(&prof.left_m));
-            out["rms_right_m"] = json!(rms(&prof.right_m));
-            out["x_m"] = json!(x_column(prof.len(), a.dx));
-            out["left_m"] = json!(prof.left_m);
-            out["right_m"] = json!(prof.right_m);
-            afsv::output::print_json(&out)?;
-            if let Some(p) = &progress {
-                p.step("printed");
-                p.finish();
-            }
-        }
+    }
+    afsv::output::print_json(&generated_summary(&g, meta, a.output.as_deref()))?;
+    if let (None, Some(p)) = (&a.output, &progress) {
+        p.step("printed");
+        p.finish();
     }
     Ok(())
 }

@@ -2,7 +2,7 @@
 
 use super::{args, CmdResult};
 use afsv::output::{OutputGuard, OutputKind};
-use afsv_design::report::tire::{envelope_rows, sweep_rows};
+use afsv_design::report::tire::{envelope_rows, sweep_rows, ENVELOPE_COLUMNS, SWEEP_COLUMNS};
 use std::path::PathBuf;
 use tire_fiala::{Envelope, EnvelopeMethod, Fiala, PolylineProfile, TireParams};
 
@@ -243,18 +243,7 @@ fn sweep(args: SweepArgs) -> CmdResult {
         super::write_chart(path, &chart)?;
     }
     let full = serde_json::to_value(&rows)?;
-    let table = afsv::table::from_rows(
-        full.as_array().map_or(&[], Vec::as_slice),
-        &[
-            "fz_n",
-            "kappa",
-            "alpha_deg",
-            "fx_n",
-            "fy_n",
-            "mz_nm",
-            "my_nm",
-        ],
-    )?;
+    let table = afsv::table::from_rows(full.as_array().map_or(&[], Vec::as_slice), &SWEEP_COLUMNS)?;
     let tire = match &args.params {
         Some(f) => f.display().to_string(),
         None => "nominal 29.5R29 (Table 6.2)".into(),
@@ -292,14 +281,7 @@ fn envelope(args: EnvelopeArgs) -> CmdResult {
     let full = serde_json::to_value(&rows)?;
     let table = afsv::table::from_rows(
         full.as_array().map_or(&[], Vec::as_slice),
-        &[
-            "x_m",
-            "z_profile_m",
-            "z_eff_m",
-            "slope_rad",
-            "contact_length_m",
-            "wheel_z_m",
-        ],
+        &ENVELOPE_COLUMNS,
     )?;
     out.emit(
         &table,

@@ -15,10 +15,11 @@ mod simulate;
 use super::{args, CmdResult};
 use afsv::output::{OutputGuard, OutputKind};
 use afsv::progress::Progress;
+use afsv_design::design_3d::{roll_run, yaw_run};
 use afsv_design::figures;
 use afsv_design::report::vehicle::{
-    axle_name, link_note, per_seed, rear_axle, ride_report, roll_report, terrain_json, yaw_report,
-    Ground, NO_STRUT,
+    axle_name, link_note, per_seed, ride_report, roll_report, terrain_json, yaw_report, Ground,
+    NO_STRUT,
 };
 use afsv_design::report::vehicle::{ride_psd, RidePsd};
 use hps_emulsion::StrutParams;
@@ -34,10 +35,9 @@ use simulate::simulate_cmd;
 use std::io::IsTerminal;
 use std::path::{Path, PathBuf};
 use vehicle_3d::cab_ride::SeatRideMeasures;
-use vehicle_3d::interconnect::{roll_linked, yaw_linked, Link};
+use vehicle_3d::interconnect::Link;
 use vehicle_3d::scenarios::{
-    self, RideMeasures, RideSpec, RollMeasures, RollSpec, TerrainSpec, YawMeasures, YawSpec,
-    RUN_IN_M,
+    RideMeasures, RideSpec, RollMeasures, RollSpec, TerrainSpec, YawMeasures, YawSpec, RUN_IN_M,
 };
 use vehicle_3d::{FrontAxle, Load, RunRecord, VehicleParams};
 
@@ -465,11 +465,7 @@ fn roll_cmd(case: &CaseArgs, study: &StudyArgs, ramp_deg_s: f64, duration: f64) 
     let want_record = study.plot.is_some();
     let runs: Vec<(RollMeasures, Option<RunRecord>)> =
         over_seeds("afsv vehicle roll", &terrain, &seeds, |i, s| {
-            let (rec, m) = match &link {
-                Some(l) => roll_linked(&p, &spec, s, l).map(|(r, m)| (r.record, m)),
-                None => scenarios::roll(&p, &spec, s),
-            }
-            .map_err(|e| e.to_string())?;
+            let (rec, m) = roll_run(&p, &spec, s, link.as_ref()).map_err(|e| e.to_string())?;
             Ok((m, (want_record && i == 0).then_some(rec)))
         })?;
     let measures: Vec<RollMeasures> = runs.iter().map(|r| r.0).collect();
@@ -499,11 +495,7 @@ fn yaw_cmd(case: &CaseArgs, study: &StudyArgs, pulse_deg: f64) -> CmdResult {
     let want_record = study.plot.is_some();
     let runs: Vec<(YawMeasures, Option<RunRecord>)> =
         over_seeds("afsv vehicle yaw", &terrain, &seeds, |i, s| {
-            let (rec, m) = match &link {
-                Some(l) => yaw_linked(&p, &spec, l).map(|(r, m)| (r.record, m)),
-                None => scenarios::yaw(&p, &spec, s),
-            }
-            .map_err(|e| e.to_string())?;
+            let (rec, m) = yaw_run(&p, &spec, s, link.as_ref()).map_err(|e| e.to_string())?;
             Ok((m, (want_record && i == 0).then_some(rec)))
         })?;
     let measures: Vec<YawMeasures> = runs.iter().map(|r| r.0).collect();

@@ -5,6 +5,7 @@
 use super::{args, CmdResult};
 use afsv::output::{OutputGuard, OutputKind};
 use afsv::progress::Progress;
+use afsv_design::report::yaw;
 use afsv_dynamics::yaw_plane::analysis::{measures_for, sensitivity_of, MeasureSpec};
 use afsv_dynamics::yaw_plane::simulate::Recording;
 use afsv_dynamics::{
@@ -345,32 +346,10 @@ pub fn run(cmd: Command) -> CmdResult {
             };
             let rec = simulate(&p.vehicle, &sys, &man, &opts)?;
             let mut out = Record::from_selected(rec.columns(), &columns)?;
-            let form: EquationForm = vehicle.form.into();
-            out.meta = serde_json::json!({
-                "written_by": "afsv yaw simulate",
-                "sample_rate_hz": 1.0 / dt,
-                "model": "afsv-dynamics yaw-plane (chapter 3)",
-                "equation_form": form,
-                "manoeuvre": man.label,
-                "input": input,
-                "speed_m_s": speed,
-                "load": p.load,
-                "excitation": input,
-                "params": p,
-                "solver": opts.solver,
-                "rtol": opts.rtol,
-                "solver_stats": rec.stats,
-            });
+            out.meta = yaw::simulate_sidecar(&p, &man, &input, &opts, &rec);
             afsv::provenance::stamp_record(&mut out);
             out.write(&output)?;
-            afsv::output::print_json(&serde_json::json!({
-                "output": output,
-                "sidecar": output.with_extension("json"),
-                "samples": rec.time_s.len(),
-                "columns": out.names(),
-                "peak_articulation_deg": rec.articulation_deg.iter().fold(0.0f64, |m, v| if v.abs() > m.abs() { *v } else { m }),
-                "solver_stats": rec.stats,
-            }))?;
+            afsv::output::print_json(&yaw::simulate_summary(&output, out.names(), &rec))?;
         }
         Command::Measures { vehicle } => {
             let p = load_params(&vehicle)?;

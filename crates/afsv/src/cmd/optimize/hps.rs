@@ -9,16 +9,13 @@
 use super::AskTellArgs;
 use crate::cmd::CmdResult;
 use afsv::output::OutputGuard;
-use afsv_design::hps_ask_tell::{batch_file, batch_points};
 use afsv_design::hps_optimum::{
     optimise_hps, optimum_speed_sweep, optimum_vehicle, HpsGaSettings, HpsOptimum, D4_SPEEDS_KMH,
 };
 use afsv_design::hps_speed_sweep::speed_sweep_runs;
-use afsv_design::report::{hps_optimum::text, num};
-use afsv_design::{HpsAsk, HpsAskTell, HpsAskTellState, HpsProblemDesc};
-use afsv_records::jsonl::write_jsonl;
+use afsv_design::report::hps_optimum;
+use afsv_design::{HpsAskTell, HpsAskTellState, HpsProblemDesc};
 use afsv_records::lock::take_and_read;
-use afsv_records::stored::write_json;
 use std::io::IsTerminal;
 use std::path::Path;
 
@@ -144,26 +141,15 @@ fn report(a: &HpsArgs, base: &vehicle_3d::VehicleParams, r: &HpsOptimum) -> CmdR
         None
     };
     if a.output.json || !std::io::stdout().is_terminal() {
-        let mut v = serde_json::to_value(r)?;
-        if let Some(s) = &sweep {
-            v["speed_sweep"] = serde_json::to_value(s)?;
-        }
-        afsv::output::print_json(&v)?;
+        afsv::output::print_json(&hps_optimum::to_json(r, sweep.as_ref())?)?;
     } else {
-        print!("{}", text(r));
+        print!("{}", hps_optimum::text(r));
         if let Some(s) = &sweep {
             print!("\n{}", afsv_design::report::speed_sweep::text(s));
         }
     }
-    if r.feasible {
-        Ok(())
-    } else {
-        Err(afsv::output::NotEarned(format!(
-            "optimize hps: no design met the a_wz limit of Eq 6.20 on the search seed (best a_wz {} m/s²); the best found is printed, not an optimum (more generations or another vehicle)",
-            num(r.optimum_ride.a_wz_m_s2, 1.0, 3)
-        ))
-        .into())
-    }
+    hps_optimum::earned(r)
+        .map_err(|why| afsv::output::NotEarned(format!("optimize hps: {why}")).into())
 }
 
 /// One `--ask` or `--tell` against the state file `path` (its text `stored`, read under
@@ -177,43 +163,9 @@ fn ask_tell(a: &HpsArgs, desc: &HpsProblemDesc, path: &Path, stored: Option<Stri
         a.ask_tell.ask.is_some(),
         desc,
     )?;
-    let id = afsv_records::stored::StateIdentity::of(stored, &state)?;
-    let asked = driver.ask(&state.run)?;
-    if let Some(batch_path) = &a.ask_tell.ask {
-        let (header, points) = batch_file(desc, state.batch, &id.sha, &asked);
-        write_jsonl(batch_path, &header, &points)?;
-        id.write_if_new(path)?;
-        if asked == HpsAsk::Finished {
-            super::finished_notice("hps", state.batch, batch_path);
-            return report(a, &desc.params, &driver.finish(&state.run)?);
-        }
-        return super::print_asked(
-            a.output.json,
-            state.batch,
-            &header.phase,
-            points.len(),
-            "runs",
-            batch_path,
-        );
+    let step = (&driver, &mut state, stored, path);
+    if super::ask_or_tell(step, &a.ask_tell, a.output.json, "hps", "runs")? {
+        return report(a, &desc.params, &driver.finish(&state.run)?);
     }
-    let HpsAsk::Evaluate(b) = asked else {
-        return Err(format!(
-            "--state {}: the run has finished; --ask prints its report",
-            path.display()
-        )
-        .into());
-    };
-    let points = batch_points(state.batch, &b);
-    let results = state.results(&a.ask_tell.tell, &id.sha, &points)?;
-    driver.tell(&mut state.run, results)?;
-    state.batch += 1;
-    write_json(path, &state)?;
-    let finished = driver.ask(&state.run)? == HpsAsk::Finished;
-    super::print_told(
-        a.output.json,
-        state.batch - 1,
-        points.len(),
-        "runs",
-        finished,
-    )
+    Ok(())
 }

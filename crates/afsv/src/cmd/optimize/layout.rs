@@ -8,16 +8,13 @@
 use super::AskTellArgs;
 use crate::cmd::CmdResult;
 use afsv::output::{NotEarned, OutputGuard};
-use afsv_design::layout_ask_tell::{batch_file, batch_points};
 use afsv_design::layout_optimum::LayoutMeasure;
 use afsv_design::report::layout_optimum::text;
 use afsv_design::{
-    optimise_layout, LayoutAsk, LayoutAskTell, LayoutAskTellState, LayoutConstraint,
-    LayoutGaSettings, LayoutOptimum, LayoutProblem, LayoutProblemDesc, LayoutVariable,
+    optimise_layout, LayoutAskTell, LayoutAskTellState, LayoutConstraint, LayoutGaSettings,
+    LayoutOptimum, LayoutProblem, LayoutProblemDesc, LayoutVariable,
 };
-use afsv_records::jsonl::write_jsonl;
 use afsv_records::lock::take_and_read;
-use afsv_records::stored::write_json;
 use std::io::IsTerminal;
 use std::path::{Path, PathBuf};
 use vehicle_3d::Load;
@@ -218,43 +215,9 @@ fn ask_tell(
         problem.desc(),
         ga,
     )?;
-    let id = afsv_records::stored::StateIdentity::of(stored, &state)?;
-    let asked = driver.ask(&state.run)?;
-    if let Some(batch_path) = &a.ask_tell.ask {
-        let (header, points) = batch_file(problem.desc(), state.batch, &id.sha, &asked);
-        write_jsonl(batch_path, &header, &points)?;
-        id.write_if_new(path)?;
-        if asked == LayoutAsk::Finished {
-            super::finished_notice("layout", state.batch, batch_path);
-            return report(a, &driver.finish(&state.run)?);
-        }
-        return super::print_asked(
-            a.output.json,
-            state.batch,
-            &header.phase,
-            points.len(),
-            "points",
-            batch_path,
-        );
+    let step = (&driver, &mut state, stored, path);
+    if super::ask_or_tell(step, &a.ask_tell, a.output.json, "layout", "points")? {
+        return report(a, &driver.finish(&state.run)?);
     }
-    let LayoutAsk::Evaluate(b) = asked else {
-        return Err(format!(
-            "--state {}: the run has finished; --ask prints its report",
-            path.display()
-        )
-        .into());
-    };
-    let points = batch_points(problem.desc(), state.batch, &b);
-    let results = state.results(&a.ask_tell.tell, &id.sha, &points)?;
-    driver.tell(&mut state.run, results)?;
-    state.batch += 1;
-    write_json(path, &state)?;
-    let finished = driver.ask(&state.run)? == LayoutAsk::Finished;
-    super::print_told(
-        a.output.json,
-        state.batch - 1,
-        points.len(),
-        "points",
-        finished,
-    )
+    Ok(())
 }

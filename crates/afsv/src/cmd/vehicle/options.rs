@@ -224,16 +224,6 @@ pub(super) fn steer_input(spec: &str) -> Result<SteerInput, String> {
     Ok(input)
 }
 
-pub(super) fn steer_label(input: &SteerInput) -> &'static str {
-    match input {
-        SteerInput::None => "straight",
-        SteerInput::Pulse { .. } => "pulse",
-        SteerInput::Ramp { .. } => "ramp",
-        SteerInput::Step { .. } => "step",
-        SteerInput::Table { .. } => "table",
-    }
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -4,13 +4,13 @@
 //! JSON sidecar, afsv-v1) and a four-panel SVG of the channels.
 
 use super::super::args;
-use super::simulate::AXES;
+use super::terrain_and_seeds;
 use super::{axle_name, declare_inputs, described_link, print_linked};
-use super::{terrain_and_seeds, terrain_json};
 use super::{vehicle_params, CaseArgs, CmdResult};
 use afsv::output::{OutputGuard, OutputKind};
 use afsv_design::figures;
 use afsv_design::report::vehicle::path_change_report;
+use afsv_design::report::vehicle_record::path_change_sidecar;
 use serde_json::json;
 use std::path::PathBuf;
 use vehicle_3d::path_change::path_change_linked;
@@ -62,20 +62,7 @@ pub(super) fn path_change_cmd(
     };
     if let Some(path) = out.output.as_deref() {
         let mut r = afsv_records::Record::from_columns(rec.afsv_v1_columns())?;
-        r.meta = json!({
-            "written_by": "afsv vehicle path-change",
-            "sample_rate_hz": 1.0 / (rec.t_s[1] - rec.t_s[0]),
-            "model": "vehicle-3d integrated 3-D articulated dump truck (chapter 6)",
-            "manoeuvre": "path_change",
-            "spec": spec,
-            "terrain": terrain_json(&terrain, seeds),
-            "measures": m,
-            "axes": AXES,
-            "params": p,
-        });
-        if let Some(l) = &link {
-            r.meta["link"] = json!(l);
-        }
+        r.meta = path_change_sidecar(&rec, &spec, seeds, &m, &p, link.as_ref());
         afsv::provenance::stamp_record(&mut r);
         r.write(path)?;
     }

@@ -2,7 +2,7 @@
 //! vehicle has one.
 
 use super::*;
-use vehicle_3d::interconnect::ride_linked;
+use afsv_design::design_3d::ride_run;
 
 pub(super) fn ride_cmd(
     case: &CaseArgs,
@@ -67,11 +67,7 @@ pub(super) fn ride_cmd(
     let want_psd = study.plot.is_some();
     type RideRun = (RideMeasures, Option<RidePsd>, Option<SeatRideMeasures>);
     let runs: Vec<RideRun> = over_seeds("afsv vehicle ride", &Some(terrain), &seeds, |_, s| {
-        let (rec, m) = match &link {
-            Some(l) => ride_linked(&p, &spec, s, l).map(|(r, m)| (r.record, m)),
-            None => scenarios::ride(&p, &spec, s),
-        }
-        .map_err(|e| e.to_string())?;
+        let (rec, m) = ride_run(&p, &spec, s, link.as_ref()).map_err(|e| e.to_string())?;
         let psd = if want_psd {
             Some(ride_psd(&rec, t_window)?)
         } else {

@@ -2,22 +2,18 @@
 //! docs/records.md) in the afsv-v1 sign convention, through the output guard.
 
 use super::super::args;
-use super::options::{steer_input, steer_label};
+use super::options::steer_input;
 use super::CmdResult;
-use super::{
-    declare_inputs, described_link, terrain_and_seeds, terrain_json, vehicle_params, CaseArgs,
-};
+use super::{declare_inputs, described_link, terrain_and_seeds, vehicle_params, CaseArgs};
 use afsv::output::{OutputGuard, OutputKind};
-use afsv_records::Record;
-use serde_json::json;
+use afsv_design::report::vehicle_record::{
+    simulate_record, simulate_sidecar, simulate_summary, SimulateRun,
+};
 use std::path::PathBuf;
 use vehicle_3d::component_record::simulate_components;
 use vehicle_3d::interconnect::LinkedVehicle;
 use vehicle_3d::{RunOptions, Vehicle, VehicleOptions};
 use vehicle_components::FlatTerrain;
-
-/// The axes and signs of the record's ride channels (the sidecar's `axes`).
-pub(super) const AXES: &str = "cab_accel_*, front_pitch_accel: the front unit's body axes (x forward, y left, z up), kinematic acceleration without gravity at the a_wz point; front_pitch_accel right-handed about y (nose down positive); front_lateral_accel and rear_lateral_accel left positive; rear_ltr = (F_zL - F_zR)/(F_zL + F_zR) of the rear axle; hps_travel compression positive";
 
 /// Where `afsv vehicle simulate` writes its record, and what goes in it.
 #[derive(clap::Args, Debug)]
@@ -107,47 +103,21 @@ pub(super) fn simulate_cmd(
             )
         }
     };
-    let mut out = Record::from_columns(rec.afsv_v1_columns())?;
-    if let Some(c) = &components {
-        // the first column is the time, which the record has
-        for (i, name) in c.channels().names().iter().enumerate().skip(1) {
-            let column = c.column_at(i).unwrap_or_default().to_vec();
-            out.push_column(name, column)?;
-        }
-    }
-    out.meta = json!({
-        "written_by": "afsv vehicle simulate",
-        "sample_rate_hz": 1.0 / dt,
-        "model": "vehicle-3d integrated 3-D articulated dump truck (chapter 6)",
-        "load": case.load,
-        "front_axle": axle,
-        "rear_axle": super::rear_axle(&p),
-        "speed_kmh": speed_kmh,
-        "speed_m_s": speed,
-        "manoeuvre": steer_label(&input),
-        "steer": input,
-        "terrain": terrain_json(&terrain, seeds),
-        "axes": AXES,
-        "params": p,
-    });
-    if let Some(l) = &link {
-        out.meta["link"] = json!(l);
-    }
-    if let Some(c) = &components {
-        let ch = c.channels();
-        out.meta["component_channels"] = json!({
-            "signs": "each component's own (model signs, SI): strut forces of the steering positive extending, axle strut forces and travel compression positive",
-            "units": ch.names().iter().zip(ch.units()).skip(1).map(|(n, u)| (n.clone(), json!(u))).collect::<serde_json::Map<_, _>>(),
-        });
-    }
+    let run = SimulateRun {
+        params: &p,
+        load: case.load,
+        front_axle: axle,
+        speed_kmh,
+        steer: &input,
+        terrain: &terrain,
+        seeds,
+        output_dt_s: dt,
+        link: link.as_ref(),
+    };
+    let mut out = simulate_record(&rec, components.as_ref())?;
+    out.meta = simulate_sidecar(&run, components.as_ref());
     afsv::provenance::stamp_record(&mut out);
     out.write(output)?;
-    afsv::output::print_json(&json!({
-        "output": output,
-        "sidecar": output.with_extension("json"),
-        "samples": rec.len(),
-        "columns": out.names(),
-        "peak_articulation_deg": rec.articulation_rad.iter().fold(0.0f64, |m, v| if v.abs() > m.abs() { *v } else { m }).to_degrees(),
-    }))?;
+    afsv::output::print_json(&simulate_summary(output, out.names(), &rec))?;
     Ok(())
 }
