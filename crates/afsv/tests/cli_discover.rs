@@ -71,6 +71,8 @@ fn synth_then_discover_names_the_hidden_effect() {
     // The final model earned its baseline (the calibration's friction went to its bound,
     // pushed by the missing heat transfer, and came back once it was named).
     assert_eq!(v["calibration_problems"], serde_json::json!([]), "{v}");
+    // Notes on the calibration are only for a run that named nothing.
+    assert_eq!(v["calibration_notes"], serde_json::json!([]), "{v}");
     // The report says what made it: every record read, with its SHA-256.
     assert!(md.contains("## Provenance"));
     let rj: serde_json::Value =

@@ -268,6 +268,7 @@ fn run_discover<M: DiscoveryModel>(model: &M, args: &DiscoverArgs) -> DiscoverRe
         "report": output.join("report.md"),
         "files_written": written.len(),
         "calibration_problems": d.calibration_problems,
+        "calibration_notes": d.calibration_notes,
         "accepted_despite_problems": args.accept_poor_fit && !d.calibration_problems.is_empty(),
     }))?;
     if !earned {
