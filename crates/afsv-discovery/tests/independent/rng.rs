@@ -61,4 +61,12 @@ impl Noise {
             *v += sd * self.gauss();
         }
     }
+
+    /// Add white Gaussian noise of `share` times the signal's own (population) standard
+    /// deviation to every sample.
+    pub fn add_share(&mut self, x: &mut [f64], share: f64) {
+        let m = x.iter().sum::<f64>() / x.len() as f64;
+        let sd = (x.iter().map(|v| (v - m).powi(2)).sum::<f64>() / x.len() as f64).sqrt();
+        self.add(x, share * sd);
+    }
 }

@@ -191,9 +191,7 @@ pub fn record_read(
         } else {
             thin(&out.afsv_v1_channel(name).unwrap())
         };
-        let m = x.iter().sum::<f64>() / x.len() as f64;
-        let sd = (x.iter().map(|v| (v - m).powi(2)).sum::<f64>() / x.len() as f64).sqrt();
-        rng.add(&mut x, noise * sd);
+        rng.add_share(&mut x, noise);
         rec.push_column(name, x).unwrap();
     }
     let terrain = match run.ride {

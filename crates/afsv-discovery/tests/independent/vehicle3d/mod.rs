@@ -563,9 +563,7 @@ pub fn record(run: &Run3d, hidden: Hidden3d, noise: f64, seed: u64) -> Record {
     for (k, (name, mut x)) in ch.into_iter().enumerate() {
         if k > 0 {
             let mut rng = Noise::new(seed, 11 + k as u64);
-            let m = x.iter().sum::<f64>() / x.len() as f64;
-            let sd = (x.iter().map(|v| (v - m).powi(2)).sum::<f64>() / x.len() as f64).sqrt();
-            rng.add(&mut x, noise * sd);
+            rng.add_share(&mut x, noise);
         }
         rec.push_column(name, x).unwrap();
     }

@@ -403,20 +403,7 @@ impl Model {
         let origin = [y[0], y[1], y[2]];
         let p0 = self.pose(a);
         // Jacobians of the pose with respect to the five angles
-        let h = 1e-6;
-        let mut jac = [[0.0; NPOSE]; NA];
-        for j in 0..NA {
-            let mut ap = [0.0; NA];
-            let mut am = [0.0; NA];
-            ap.copy_from_slice(a);
-            am.copy_from_slice(a);
-            ap[j] += h;
-            am[j] -= h;
-            let (pp, pm) = (self.pose(&ap), self.pose(&am));
-            for k in 0..NPOSE {
-                jac[j][k] = (pp[k] - pm[k]) / (2.0 * h);
-            }
-        }
+        let jac = self.pose_jacobian(a);
         // velocity-product terms: second directional differences along the angle rates
         let eps = 1e-3;
         let mut ap = [0.0; NA];
@@ -775,15 +762,11 @@ impl Model {
         }
     }
 
-    /// Kinetic, gravitational, tire-spring and hydraulic energy (J) at `y` (the energy
-    /// check; tires on smooth ground).
-    pub fn energy(&self, y: &[f64; N]) -> f64 {
-        let d = &self.d;
-        let a = &y[3..NQ];
-        let ua = &y[U + 3..U + NQ];
-        let p0 = self.pose(a);
+    /// The pose's Jacobian with respect to the five angles `a`, by central differences
+    /// (step 1e-6 rad): row `j` is the derivative of every pose entry along angle `j`.
+    fn pose_jacobian(&self, a: &[f64]) -> [[f64; NPOSE]; NA] {
         let h = 1e-6;
-        let mut v = [0.0f64; NPOSE];
+        let mut jac = [[0.0; NPOSE]; NA];
         for j in 0..NA {
             let mut ap = [0.0; NA];
             let mut am = [0.0; NA];
@@ -793,7 +776,24 @@ impl Model {
             am[j] -= h;
             let (pp, pm) = (self.pose(&ap), self.pose(&am));
             for k in 0..NPOSE {
-                v[k] += (pp[k] - pm[k]) / (2.0 * h) * ua[j];
+                jac[j][k] = (pp[k] - pm[k]) / (2.0 * h);
+            }
+        }
+        jac
+    }
+
+    /// Kinetic, gravitational, tire-spring and hydraulic energy (J) at `y` (the energy
+    /// check; tires on smooth ground).
+    pub fn energy(&self, y: &[f64; N]) -> f64 {
+        let d = &self.d;
+        let a = &y[3..NQ];
+        let ua = &y[U + 3..U + NQ];
+        let p0 = self.pose(a);
+        let jac = self.pose_jacobian(a);
+        let mut v = [0.0f64; NPOSE];
+        for j in 0..NA {
+            for k in 0..NPOSE {
+                v[k] += jac[j][k] * ua[j];
             }
         }
         let rf = rot_of(&p0, 0);
