@@ -59,6 +59,7 @@
 pub mod model;
 
 use super::rng::Noise;
+use super::yaw::{YawLoad, YawParams};
 use afsv_records::Record;
 use model::{simulate, CamTrack, Model, Outputs, RunInput, Steering};
 use serde_json::json;
@@ -95,6 +96,37 @@ pub struct SteeringData {
     pub am: f64,
     pub av: f64,
     pub standby: f64,
+}
+
+impl SteeringData {
+    /// Table 3.1's steering columns in SI units: the independent yaw-plane model's table
+    /// (`independent::yaw`, in the table's units; the same for both loads), converted.
+    pub fn table_3_1() -> Self {
+        let t = YawParams::table_3_1(YawLoad::Loaded).steering;
+        Self {
+            a0_deg: t.a0_deg,
+            x0_deg: t.x0_deg,
+            xlim_deg: t.xlim_deg,
+            l1: t.l1_m,
+            l2: t.l2_m,
+            ac: t.ac_cm2 / 1e4,
+            ar: t.ar_cm2 / 1e4,
+            v0: t.v0_l / 1e3,
+            ps: t.ps_mpa * 1e6,
+            p0: t.p0_mpa * 1e6,
+            bulk: t.b_gpa * 1e9,
+            mu_v: t.mu_v_kn_s_mm * 1e6,
+            kl0: t.kl0,
+            kl: t.kl,
+            ktheta_ml_deg: t.ktheta_ml_deg,
+            kv: t.kv,
+            eta_g: t.eta_g,
+            a0_per_bar: t.a0_per_bar,
+            am: t.am,
+            av: t.av,
+            standby: t.standby_mpa * 1e6,
+        }
+    }
 }
 
 /// The vehicle's data (Tables 6.1, 6.2, 3.1 and the assumptions of the module table).
@@ -187,29 +219,7 @@ impl Data {
             kp: 9_000.0,
             ki: 2_000.0,
             max_torque: 60_000.0,
-            steering: SteeringData {
-                a0_deg: 76.5,
-                x0_deg: 2.1,
-                xlim_deg: 8.1,
-                l1: 1.96,
-                l2: 0.64,
-                ac: 95.0e-4,
-                ar: 57.0e-4,
-                v0: 7.6e-3,
-                ps: 13.5e6,
-                p0: 0.1e6,
-                bulk: 1.6e9,
-                mu_v: 0.06e6,
-                kl0: 1.3e-13,
-                kl: 1.8e-10,
-                ktheta_ml_deg: 8.34,
-                kv: 0.7,
-                eta_g: 0.9,
-                a0_per_bar: -0.0074,
-                am: 0.94,
-                av: 4.8,
-                standby: 1.0e6,
-            },
+            steering: SteeringData::table_3_1(),
             preview_time: 1.2,
             min_preview: 4.0,
             driver_gain: 40.0,
