@@ -170,8 +170,10 @@ pub trait ConstrainedProblem: Sync {
     fn bounds(&self) -> &Bounds;
     /// Number of inequality constraints.
     fn n_constraints(&self) -> usize;
-    /// Objective and constraints at `x` (inside the bounds). A point that cannot be
-    /// evaluated returns [`Evaluation::failed`].
+    /// Objective and constraints at `x` (inside the bounds), a function of `x`: the same
+    /// point gives the same evaluation, and the genetic algorithm reuses a known design's
+    /// ([`crate::ga::GeneticAlgorithm::step`]). A point that cannot be evaluated returns
+    /// [`Evaluation::failed`].
     fn evaluate(&self, x: &[f64]) -> Evaluation;
 }
 
