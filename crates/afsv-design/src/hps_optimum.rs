@@ -178,13 +178,20 @@ pub struct HpsOptimum {
 
 fn assess(p: &VehicleParams, seeds: &[u64], roll: bool) -> Result<HpsAssessment, DesignError> {
     let sim = |e: vehicle_3d::VehicleError| DesignError::Simulation(e.to_string());
-    let ride = vehicle_3d::scenarios::ride_over_seeds(p, &search_spec(), seeds).map_err(sim)?;
-    let roll = if roll {
-        roll_over_seeds(p, &RollSpec::d2(FrontAxle::Suspended), seeds).map_err(sim)?
-    } else {
-        Vec::new()
-    };
-    let (_, y) = yaw(p, &YawSpec::d3(FrontAxle::Suspended), 0).map_err(sim)?;
+    // the three measures side by side: no core waits for the slowest seed of one of them
+    let (ride, (roll, yaw)) = rayon::join(
+        || vehicle_3d::scenarios::ride_over_seeds(p, &search_spec(), seeds),
+        || {
+            rayon::join(
+                || match roll {
+                    true => roll_over_seeds(p, &RollSpec::d2(FrontAxle::Suspended), seeds),
+                    false => Ok(Vec::new()),
+                },
+                || yaw(p, &YawSpec::d3(FrontAxle::Suspended), 0),
+            )
+        },
+    );
+    let (ride, roll, (_, y)) = (ride.map_err(sim)?, roll.map_err(sim)?, yaw.map_err(sim)?);
     assessment(
         &ride.iter().map(|m| m.a_wz_m_s2).collect::<Vec<_>>(),
         &roll.iter().map(|m| m.sp_drt_m_s2).collect::<Vec<_>>(),
@@ -338,9 +345,18 @@ pub fn optimise_hps(
     let start = ga.start(&[nominal_x(base)]).map_err(opt)?;
     let end = ga.run(start, progress, &mut |_| Ok(())).map_err(opt)?;
     let best = end.best();
-    let optimum_ride = problem.ride(&best.x)?;
     let seeds = reevaluation_seeds(settings);
     let optimum_params = with_design(base, &best.x)?;
+    // the optimum's ride and both re-evaluations side by side
+    let (optimum_ride, (nominal_over_seeds, optimum_over_seeds)) = rayon::join(
+        || problem.ride(&best.x),
+        || {
+            rayon::join(
+                || assess(base, &seeds, settings.reevaluate_roll),
+                || assess(&optimum_params, &seeds, settings.reevaluate_roll),
+            )
+        },
+    );
     result(
         base,
         settings,
@@ -348,9 +364,9 @@ pub fn optimise_hps(
             best,
             evaluations: end.evaluations,
             nominal_ride: problem.nominal,
-            optimum_ride,
-            nominal_over_seeds: assess(base, &seeds, settings.reevaluate_roll)?,
-            optimum_over_seeds: assess(&optimum_params, &seeds, settings.reevaluate_roll)?,
+            optimum_ride: optimum_ride?,
+            nominal_over_seeds: nominal_over_seeds?,
+            optimum_over_seeds: optimum_over_seeds?,
         },
     )
 }
