@@ -46,7 +46,11 @@ fn run(hidden: Hidden3d, seed: u64) -> Discovery {
     let train = records(&runs(RIDES, CHANGES, seed), hidden, seed);
     let hold = records(&runs(RIDES, CHANGES, seed + 50), hidden, seed + 50);
     println!("records written in {:.1} s", t0.elapsed().as_secs_f64());
-    discover_printed(&model, &train, &hold, label(hidden)).0
+    let d = discover_printed(&model, &train, &hold, label(hidden)).0;
+    for r in &d.readings {
+        println!("switch {}: {} ({:?})", r.switch, r.chosen, r.tried);
+    }
+    d
 }
 
 fn named_first_and_alone(d: &Discovery, effect: &str) {
