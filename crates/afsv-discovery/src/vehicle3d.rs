@@ -10,9 +10,12 @@
 //! change its recorded steering-wheel angle (open loop: the replay does not re-drive the
 //! course). Calibrated: parameters the paper leaves unstated for the 3-D vehicle
 //! ([`CALIBRATED`], named by the vehicle-3d registry and the tire and strut registries).
-//! The catalogue ([`crate::vehicle3d_effects`]) holds section 6.3's suspects.
+//! One calibration switch ([`SWITCHES`]): where the tandem cams stand (section 6.2.2). The
+//! catalogue ([`crate::vehicle3d_effects`]) holds section 6.3's suspects.
 
-use super::{ActiveEffect, DiscoveryError, DiscoveryModel, EffectSpec, ParamSpec, Phase};
+use super::{
+    ActiveEffect, DiscoveryError, DiscoveryModel, EffectSpec, LawSwitch, ParamSpec, Phase,
+};
 use crate::vehicle3d_effects::{catalogue, SensorEffects, ANGULAR_AXES, EFFECTS, LINEAR_AXES};
 use afsv_dynamics::SteerInput;
 use afsv_records::Record;
@@ -23,8 +26,8 @@ use std::sync::{Arc, Mutex};
 use terrain_psd::IsoClass;
 use vehicle_3d::scenarios::TerrainSpec;
 use vehicle_3d::{
-    FieldEffects, FrontAxle, Load, RunOptions, SpeedSetpoint, TireTracks, Vehicle, VehicleOptions,
-    VehicleParams,
+    CamSpacing, FieldEffects, FrontAxle, Load, RunOptions, SpeedSetpoint, TireTracks, Vehicle,
+    VehicleOptions, VehicleParams,
 };
 use vehicle_components::{FlatTerrain, ParamSet};
 
@@ -66,6 +69,26 @@ pub const CALIBRATED: [(&str, f64, f64, &str); 8] = [
     ("wheel_spin_inertia_kg_m2", 300.0, 1_200.0, "wheel ends are not in Table 6.1; 600 kg m² assumed (tire, rim and in-wheel drive)"),
     ("hps.friction.f_c", 0.0, 5_000.0, "Table 5.1's friction constants are missing (HPS only)"),
 ];
+
+/// The 3-D vehicle's calibration switches ([`DiscoveryModel::switches`]): name, readings
+/// (the crate's default first) and where the paper is ambiguous.
+pub const SWITCHES: [(&str, [&str; 2], &str); 1] = [(
+    "cam-spacing",
+    ["static", "instantaneous"],
+    "section 6.2.2, Eqs 6.1-6.3: the tandem cams stand at the half contact length of the deflected tire, which depends on the deflection; the paper does not say whether at the static or the instantaneous one (vehicle_3d::CamSpacing)",
+)];
+
+/// The cam spacing of reading `index` of `cam-spacing` ([`SWITCHES`]).
+pub fn cam_spacing(index: usize) -> Result<CamSpacing, DiscoveryError> {
+    match index {
+        0 => Ok(CamSpacing::Static),
+        1 => Ok(CamSpacing::Instantaneous),
+        _ => Err(DiscoveryError::NoSuchReading {
+            switch: SWITCHES[0].0,
+            index,
+        }),
+    }
+}
 
 /// Entries of [`CALIBRATED`] a rigid front axle calibrates (all but the HPS friction).
 const RIGID_CALIBRATED: usize = 7;
@@ -135,8 +158,15 @@ pub struct Replay3d {
     pub steer: SteerInput,
     /// Path length of the run (m), as the commands lay it out.
     pub path_length_m: f64,
-    /// The enveloping cache of the record's ground.
+    /// The enveloping cache of the record's ground, the cams at the static deflection.
     pub tracks: Arc<TireTracks>,
+    /// The record's ground (class and seed; `None` for smooth ground), for the caches of
+    /// the other cam spacing.
+    pub ground: Option<(TerrainSpec, u64)>,
+    /// The enveloping cache with the cams at the instantaneous deflection (reading
+    /// `instantaneous` of `cam-spacing`), built on first use and shared with the scouting
+    /// copy.
+    pub instantaneous: Arc<Mutex<Option<Arc<TireTracks>>>>,
     /// Samples (from 0) and spacing (s).
     pub time_s: Vec<f64>,
     /// Sample spacing (s).
@@ -172,6 +202,8 @@ pub const CACHE_ENTRIES: usize = 24;
 const FOLLOW_KEY: u64 = u64::MAX;
 /// See [`FOLLOW_KEY`].
 const GAIN_KEY: u64 = u64::MAX - 1;
+/// Cache-key mark of a replay under another reading of `cam-spacing` (followed by it).
+const READING_KEY: u64 = u64::MAX - 2;
 
 impl Clone for ReplayCache {
     fn clone(&self) -> Self {
@@ -270,20 +302,75 @@ impl Vehicle3dModel {
         self.layout(rec.speed_m_s, rec.steer.clone(), rec.path_length_m, field)
     }
 
-    /// Simulate a prepared record with full parameters and field mechanisms: one series per
-    /// entry of [`CHANNELS`] (`None` where the kind is not compared), before the sensor
-    /// effects ([`Self::apply_sensor`]).
+    /// The enveloping cache of `load` on `ground` (`None`: smooth ground) for a run with
+    /// `options`.
+    fn build_tracks(
+        &self,
+        load: Load,
+        options: &VehicleOptions,
+        ground: Option<&(TerrainSpec, u64)>,
+    ) -> Result<TireTracks, DiscoveryError> {
+        let half = 0.5 * self.params.front_track_m;
+        Ok(match ground {
+            None => {
+                let flat =
+                    FlatTerrain::new(0.0, vehicle_components::DEFAULT_FRICTION).map_err(|e| {
+                        DiscoveryError::Sidecar {
+                            field: "terrain",
+                            reason: e.to_string(),
+                        }
+                    })?;
+                TireTracks::build(&self.params, load, options, &flat, half)?
+            }
+            Some((spec, seed)) => {
+                let length = options.start_s_m + options.path_length_m + 50.0;
+                let terrain = spec.build(&self.params, length, *seed)?;
+                TireTracks::build(&self.params, load, options, &terrain, half)?
+            }
+        })
+    }
+
+    /// The enveloping cache of a prepared record with the cams at `spacing`: the static one
+    /// prepared with the record, the instantaneous one built on first use.
+    pub fn tracks(
+        &self,
+        rec: &Replay3d,
+        spacing: CamSpacing,
+    ) -> Result<Arc<TireTracks>, DiscoveryError> {
+        if spacing == CamSpacing::Static {
+            return Ok(rec.tracks.clone());
+        }
+        let mut slot = rec.instantaneous.lock().unwrap_or_else(|e| e.into_inner());
+        if let Some(t) = slot.as_ref() {
+            return Ok(t.clone());
+        }
+        let options = VehicleOptions {
+            cam_spacing: spacing,
+            ..self.options(rec, FieldEffects::default())
+        };
+        let t = Arc::new(self.build_tracks(rec.load, &options, rec.ground.as_ref())?);
+        *slot = Some(t.clone());
+        Ok(t)
+    }
+
+    /// Simulate a prepared record with full parameters, field mechanisms and the cams at
+    /// `spacing`: one series per entry of [`CHANNELS`] (`None` where the kind is not
+    /// compared), before the sensor effects ([`Self::apply_sensor`]).
     pub fn replay(
         &self,
         rec: &Replay3d,
         params: &VehicleParams,
         field: FieldEffects,
+        spacing: CamSpacing,
     ) -> Result<Channels, DiscoveryError> {
         let v = Vehicle::on_tracks(
             params,
             rec.load,
-            self.options(rec, field),
-            rec.tracks.clone(),
+            VehicleOptions {
+                cam_spacing: spacing,
+                ..self.options(rec, field)
+            },
+            self.tracks(rec, spacing)?,
         )?;
         let n = rec.time_s.len();
         let run = RunOptions {
@@ -316,17 +403,20 @@ impl Vehicle3dModel {
     /// record's is), the setpoint becomes `set + d + e(d)` (`e` of [`drive_error`] for `d`'s
     /// rate). The correction takes out what the inversion does not know: the tires' slip
     /// lag, and the terrain's own speed fluctuations, which are in the record and in the
-    /// replay alike.
+    /// replay alike. The replay's cams stand at `spacing`.
     pub fn following_setpoint(
         &self,
         rec: &Replay3d,
         params: &VehicleParams,
         mut field: FieldEffects,
+        spacing: CamSpacing,
         key: Vec<u64>,
     ) -> Result<Vec<f64>, DiscoveryError> {
         let set = throttle_setpoint(params, rec);
         field.speed_setpoint = Some(SpeedSetpoint::new(rec.time_s.clone(), set.clone())?);
-        let first = rec.cache.get_or(key, || self.replay(rec, params, field))?;
+        let first = rec
+            .cache
+            .get_or(key, || self.replay(rec, params, field, spacing))?;
         let Some(Some(speed)) = first.first() else {
             return Ok(set);
         };
@@ -499,6 +589,17 @@ impl DiscoveryModel for Vehicle3dModel {
         catalogue(self.front_axle == FrontAxle::Suspended)
     }
 
+    fn switches(&self) -> Vec<LawSwitch> {
+        SWITCHES
+            .iter()
+            .map(|(name, readings, citation)| LawSwitch {
+                name: name.to_string(),
+                readings: readings.iter().map(|r| r.to_string()).collect(),
+                citation: citation.to_string(),
+            })
+            .collect()
+    }
+
     fn prepare(&self, record: &Record) -> Result<Replay3d, DiscoveryError> {
         let t = record
             .column("time_s")
@@ -572,24 +673,8 @@ impl DiscoveryModel for Vehicle3dModel {
             path_length_m,
             FieldEffects::default(),
         );
-        let half = 0.5 * self.params.front_track_m;
         let ground = terrain_of(record)?;
-        let tracks =
-            Arc::new(match &ground {
-                None => {
-                    let flat = FlatTerrain::new(0.0, vehicle_components::DEFAULT_FRICTION)
-                        .map_err(|e| DiscoveryError::Sidecar {
-                            field: "terrain",
-                            reason: e.to_string(),
-                        })?;
-                    TireTracks::build(&self.params, load, &options, &flat, half)?
-                }
-                Some((spec, seed)) => {
-                    let length = options.start_s_m + options.path_length_m + 50.0;
-                    let terrain = spec.build(&self.params, length, *seed)?;
-                    TireTracks::build(&self.params, load, &options, &terrain, half)?
-                }
-            });
+        let tracks = Arc::new(self.build_tracks(load, &options, ground.as_ref())?);
         let ground_name = ground.map_or("smooth ground".to_string(), |(s, seed)| {
             format!("class {} seed {seed}", s.class)
         });
@@ -608,6 +693,8 @@ impl DiscoveryModel for Vehicle3dModel {
             steer,
             path_length_m,
             tracks,
+            ground,
+            instantaneous: Arc::default(),
             dt_s,
             speed_smooth: local_quadratic(
                 speed_col,
@@ -647,6 +734,18 @@ impl DiscoveryModel for Vehicle3dModel {
         baseline: &[f64],
         effects: &[ActiveEffect<'_>],
     ) -> Result<Vec<Option<Vec<f64>>>, DiscoveryError> {
+        self.simulate_with_readings(prepared, baseline, effects, &[])
+    }
+
+    fn simulate_with_readings(
+        &self,
+        prepared: &Replay3d,
+        baseline: &[f64],
+        effects: &[ActiveEffect<'_>],
+        readings: &[usize],
+    ) -> Result<Vec<Option<Vec<f64>>>, DiscoveryError> {
+        let reading = readings.first().copied().unwrap_or(0);
+        let spacing = cam_spacing(reading)?;
         let mut p = self.apply_baseline(baseline)?;
         let (mut field, sensor, compliance) = self.apply_effects(effects)?;
         p.tire.lateral_relaxation_length_m +=
@@ -654,6 +753,9 @@ impl DiscoveryModel for Vehicle3dModel {
         // the vehicle-side inputs: the baseline and every model-side effect's values but
         // the throttle's gain
         let mut key: Vec<u64> = baseline.iter().map(|x| x.to_bits()).collect();
+        if reading != 0 {
+            key.extend([READING_KEY, reading as u64]);
+        }
         let mut throttle = None;
         for e in effects {
             match EFFECTS.get(e.index) {
@@ -668,13 +770,14 @@ impl DiscoveryModel for Vehicle3dModel {
         let ch = match throttle {
             None => prepared
                 .cache
-                .get_or(key, || self.replay(prepared, &p, field))?,
+                .get_or(key, || self.replay(prepared, &p, field, spacing))?,
             Some(gain) => {
                 // the setpoint that follows the record (one replay, shared by every gain),
                 // its swing about the drive's setpoint scaled by the gain
                 let mut follow_key = key.clone();
                 follow_key.push(FOLLOW_KEY);
-                let set = self.following_setpoint(prepared, &p, field.clone(), follow_key)?;
+                let set =
+                    self.following_setpoint(prepared, &p, field.clone(), spacing, follow_key)?;
                 let v0 = prepared.speed_m_s;
                 let scaled = set.iter().map(|s| v0 + gain * (s - v0)).collect();
                 field.speed_setpoint = Some(SpeedSetpoint::new(prepared.time_s.clone(), scaled)?);
@@ -682,7 +785,7 @@ impl DiscoveryModel for Vehicle3dModel {
                 key.push(gain.to_bits());
                 prepared
                     .cache
-                    .get_or(key, || self.replay(prepared, &p, field))?
+                    .get_or(key, || self.replay(prepared, &p, field, spacing))?
             }
         };
         Ok(self.apply_sensor(prepared, p.gravity_m_s2, sensor, ch))
@@ -749,6 +852,46 @@ mod tests {
         assign(&mut p, "hps.friction.f_c", 800.0).unwrap();
         assert_eq!(value(&p, "hps.friction.f_c").unwrap(), 800.0);
         assert!(assign(&mut p, "tire.no_such", 1.0).is_err());
+    }
+
+    #[test]
+    fn the_cam_spacing_switch_replays_both_readings() {
+        let m = Vehicle3dModel::nominal(FrontAxle::Rigid);
+        let sw = m.switches();
+        assert_eq!(sw.len(), 1);
+        assert_eq!(sw[0].name, "cam-spacing");
+        assert_eq!(sw[0].readings, ["static", "instantaneous"]);
+        // a 1.5 s loaded ride on class E ground
+        let n = 151;
+        let mut r = Record::new();
+        r.push_column("time_s", (0..n).map(|i| 0.01 * i as f64).collect())
+            .unwrap();
+        r.push_column("speed_m_s", vec![5.5; n]).unwrap();
+        r.meta = serde_json::json!({"load": "loaded", "terrain": {"class": "E", "seeds": [3]}});
+        let rec = m.prepare(&r).unwrap();
+        let base: Vec<f64> = m.baseline_params().iter().map(|s| s.initial).collect();
+        let plain = m.simulate(&rec, &base, &[]).unwrap();
+        let fixed = m.simulate_with_readings(&rec, &base, &[], &[0]).unwrap();
+        let inst = m.simulate_with_readings(&rec, &base, &[], &[1]).unwrap();
+        assert_eq!(plain, fixed);
+        // the cams follow the deflection: the ride's vertical acceleration moves, by less
+        // than its own size
+        let z = CHANNELS.iter().position(|c| *c == LINEAR_AXES[2]).unwrap();
+        let (a, b) = (fixed[z].as_ref().unwrap(), inst[z].as_ref().unwrap());
+        let rel = (a.iter().zip(b).map(|(x, y)| (x - y).powi(2)).sum::<f64>()
+            / a.iter().map(|x| x * x).sum::<f64>())
+        .sqrt();
+        assert!(rel > 0.01 && rel < 0.5, "{rel}");
+        assert_eq!(
+            m.tracks(&rec, CamSpacing::Instantaneous)
+                .unwrap()
+                .cam_spacing(),
+            CamSpacing::Instantaneous
+        );
+        let e = m
+            .simulate_with_readings(&rec, &base, &[], &[2])
+            .unwrap_err();
+        assert!(e.to_string().contains("cam-spacing"), "{e}");
     }
 
     #[test]

@@ -46,7 +46,11 @@ fn run(hidden: Hidden3d, seed: u64) -> Discovery {
     let train = records(&runs(RIDES, CHANGES, seed), hidden, seed);
     let hold = records(&runs(RIDES, CHANGES, seed + 50), hidden, seed + 50);
     println!("records written in {:.1} s", t0.elapsed().as_secs_f64());
-    discover_printed(&model, &train, &hold, label(hidden)).0
+    let d = discover_printed(&model, &train, &hold, label(hidden)).0;
+    for r in &d.readings {
+        println!("switch {}: {} ({:?})", r.switch, r.chosen, r.tried);
+    }
+    d
 }
 
 fn named_first_and_alone(d: &Discovery, effect: &str) {
@@ -147,7 +151,8 @@ fn independent_tire_lateral_compliance_is_named_first() {
 
 /// Prints each compared channel's NRMSE on the null set's training and held-out records
 /// (3 % noise included) at the adapter's nominal parameters, which are the records' own
-/// values of the calibrated set: where the model-form difference sits
+/// values of the calibrated set, and under each reading of `cam-spacing`: where the
+/// model-form difference sits
 /// (`cargo test --release --workspace --test discover_independent_vehicle3d -- --ignored
 /// --nocapture independent_null_set_channel_errors`, seconds).
 #[test]
@@ -173,6 +178,32 @@ fn independent_null_set_channel_errors() {
                 }
             }
             println!("{line}");
+            // both readings of `cam-spacing`, the same normalisation (the record's own
+            // standard deviation, the skipped start left out)
+            let prep = model.prepare(rec).unwrap();
+            let skip = model.skip_samples(rec);
+            for (k, reading) in ["static", "instantaneous"].iter().enumerate() {
+                let ch = model
+                    .simulate_with_readings(&prep, &baseline, &[], &[k])
+                    .unwrap();
+                let mut line = format!("  cams {reading}:");
+                for (name, y) in CHANNELS.iter().zip(&ch) {
+                    let (Some(y), Some(x)) = (y, rec.column(name)) else {
+                        continue;
+                    };
+                    line += &format!(" {name} {:.1} %", 100.0 * nrmse(&y[skip..], &x[skip..]));
+                }
+                println!("{line}");
+            }
         }
     }
+}
+
+/// RMS of `y - x` over the standard deviation of `x`.
+fn nrmse(y: &[f64], x: &[f64]) -> f64 {
+    let n = x.len().min(y.len()) as f64;
+    let mean = x.iter().sum::<f64>() / n;
+    let sd = (x.iter().map(|v| (v - mean).powi(2)).sum::<f64>() / n).sqrt();
+    let rms = (y.iter().zip(x).map(|(a, b)| (a - b).powi(2)).sum::<f64>() / n).sqrt();
+    rms / sd
 }

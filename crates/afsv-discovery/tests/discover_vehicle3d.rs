@@ -116,7 +116,11 @@ fn run(
         hidden,
         seed + 50,
     );
-    discover_printed(&model, &train, &hold, hidden)
+    let (d, secs) = discover_printed(&model, &train, &hold, hidden);
+    for r in &d.readings {
+        println!("switch {}: {} ({:?})", r.switch, r.chosen, r.tried);
+    }
+    (d, secs)
 }
 
 fn first_named(d: &Discovery, effect: &str) {

@@ -163,6 +163,39 @@ impl Envelope {
         self.spacing
     }
 
+    /// Cam radius (m): the free radius unless [`Envelope::with_cam_radius`] set another.
+    pub fn cam_radius(&self) -> f64 {
+        self.cam_radius
+    }
+
+    /// Height of the base of a cam of [`EnvelopeMethod::TandemCams`] centred at `x`, resting
+    /// on `profile` sampled on the global grid (section 6.2.2: the profile as the cam
+    /// envelopes it); minus infinity where no sample lies under the cam. The base the
+    /// tandem cams of [`Envelope::contact`] rest on.
+    pub fn cam_base<P: Profile + ?Sized>(&self, profile: &P, x: f64) -> f64 {
+        let mut buf = ArrayVec::<f64, MAX_SAMPLES>::new();
+        // one sample beyond the cam each side: the segment the cam's rim ends on
+        let i0 = ((x - self.cam_radius) / self.spacing).ceil() - 1.0;
+        let i1 = ((x + self.cam_radius) / self.spacing).floor() + 1.0;
+        let n = ((i1 - i0) as usize + 1).min(MAX_SAMPLES);
+        let x0 = i0 * self.spacing;
+        buf.extend((0..n).map(|i| profile.height_at(x0 + i as f64 * self.spacing)));
+        let samples = Samples {
+            x0,
+            h: self.spacing,
+            z: &buf,
+        };
+        let mut cams = Cams {
+            s: &samples,
+            rc: self.cam_radius,
+            slope: ArrayVec::new(),
+            offset: ArrayVec::new(),
+            lift: ArrayVec::new(),
+        };
+        cams.fill_segments();
+        cams.base(x)
+    }
+
     /// Effective contact of a wheel with centre at `(x_c, z_c)` on `profile`.
     pub fn contact<P: Profile + ?Sized>(
         &self,

@@ -44,7 +44,7 @@ pub use assembly::{TireAssembly, TireOutput, WheelInput};
 pub use cornering::{
     CorneringStiffnessTable, ExponentialCornering, LinearCornering, TractionDependentCornering,
 };
-pub use effective_track::{EffectiveTrack, TrackContact};
+pub use effective_track::{EffectiveTrack, InstantaneousTrack, TrackContact};
 pub use envelope::{EffectiveContact, Envelope, EnvelopeMethod, EnvelopedPoint};
 pub use error::TireError;
 pub use fiala::Fiala;

@@ -54,5 +54,5 @@ pub use model::FrontAxle;
 pub use params::{DriveParams, Load, RigidPart, VehicleParams, YawInertiaForm};
 pub use simulate::{simulate, RunOptions, RunRecord};
 pub use statics::Statics;
-pub use tires::TireTracks;
+pub use tires::{CamSpacing, TireTracks};
 pub use vehicle::{Vehicle, VehicleOptions};

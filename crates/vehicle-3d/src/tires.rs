@@ -6,7 +6,10 @@
 //! front unit's heading `h` (the road is laid along the path the vehicle drives, as in
 //! the Chapter 2 truck). The contact comes from a [`tire_fiala::EffectiveTrack`] built once
 //! per run at the tire's static deflection: penetration `delta` and slope `theta` of the
-//! effective line P1P2 (Eqs 6.1-6.3).
+//! effective line P1P2 (Eqs 6.1-6.3). Section 6.2.2 makes the cams' spacing (the contact
+//! length P1P2) depend on the deflection, and does not say whether the static or the
+//! instantaneous one: [`CamSpacing`] offers both, the static one by default (then a
+//! [`tire_fiala::InstantaneousTrack`] per tire).
 //!
 //! Per tire, with the carrier's heading `psi` (its x axis projected on the ground),
 //! `e_x = (cos psi, sin psi, 0)`, `e_y = (-sin psi, cos psi, 0)`, the axle direction `a` (the
@@ -27,8 +30,8 @@
 
 use nalgebra::{Matrix3, Vector3};
 use tire_fiala::{
-    regularised_speed, EffectiveTrack, Envelope, EnvelopeMethod, Fiala, HandlingModel, Track,
-    TrackContact, VerticalContact,
+    regularised_speed, EffectiveTrack, Envelope, EnvelopeMethod, Fiala, HandlingModel,
+    InstantaneousTrack, Track, TrackContact, VerticalContact,
 };
 use vehicle_components::Terrain;
 
@@ -37,16 +40,58 @@ use crate::params::{Load, VehicleParams};
 use crate::statics::Statics;
 use crate::vehicle::VehicleOptions;
 
+/// Where the tandem cams of a tire stand (section 6.2.2, Eqs 6.1-6.3): at `x_c -+ a`, `a`
+/// the half contact length of the deflected tire, `sqrt(2 R delta - delta^2)`. The paper
+/// ties the contact length P1P2 to the deflection without saying which: a calibration
+/// switch of the discovery workflow (docs/discovery.md, "Calibration switches").
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum CamSpacing {
+    /// At the tire's static deflection, cached along each track
+    /// ([`tire_fiala::EffectiveTrack`]; the penetration linearised about it). The default.
+    #[default]
+    Static,
+    /// At the tire's instantaneous deflection, found on line from the cams' base cached
+    /// along each track ([`tire_fiala::InstantaneousTrack`], on a grid
+    /// [`CAM_BASE_GRID_DIVISOR`] times finer than the static cache's). Tandem cams only.
+    Instantaneous,
+}
+
+impl std::str::FromStr for CamSpacing {
+    type Err = String;
+    fn from_str(s: &str) -> Result<Self, String> {
+        match s {
+            "static" => Ok(Self::Static),
+            "instantaneous" => Ok(Self::Instantaneous),
+            _ => Err(format!(
+                "unknown cam spacing `{s}` (use `static` or `instantaneous`)"
+            )),
+        }
+    }
+}
+
+/// Grid of the cams' base with [`CamSpacing::Instantaneous`], in steps per grid step of
+/// the static cache (`VehicleOptions::track_grid_m`): 0.0125 m at the default. The base has
+/// cusps in the profile's valleys, where the spacing's fixed point is unstable and the
+/// cams' three steps amplify an interpolation error (`tire_fiala::InstantaneousTrack`).
+pub const CAM_BASE_GRID_DIVISOR: f64 = 4.0;
+
+/// One tire's contact cache.
+#[derive(Debug, Clone, PartialEq)]
+enum TireTrack {
+    Static(EffectiveTrack),
+    Instantaneous(InstantaneousTrack),
+}
+
 /// The four tires' effective tracks (in [`crate::model::TIRE_NAMES`] order), each at its
-/// static deflection, covering the path of a run: the enveloping cache, built once per
-/// terrain, load case and tire and shared by every vehicle built on it
-/// ([`crate::Vehicle::on_tracks`]).
+/// static deflection or following the instantaneous one ([`CamSpacing`]), covering the
+/// path of a run: the enveloping cache, built once per terrain, load case and tire and
+/// shared by every vehicle built on it ([`crate::Vehicle::on_tracks`]).
 #[derive(Debug, Clone, PartialEq)]
 pub struct TireTracks {
-    tracks: [EffectiveTrack; 4],
+    tracks: [TireTrack; 4],
     reference: [f64; 2],
     range: (f64, f64),
-    settings: (EnvelopeMethod, f64, f64, f64),
+    settings: (EnvelopeMethod, f64, f64, f64, CamSpacing),
 }
 
 impl TireTracks {
@@ -72,15 +117,34 @@ impl TireTracks {
             statics.front_tire_deflection_m,
             statics.rear_tire_deflection_m,
         ];
-        let track = |left: bool, front: bool| {
+        if options.cam_spacing == CamSpacing::Instantaneous
+            && options.envelope != EnvelopeMethod::TandemCams
+        {
+            return Err(rejected(
+                "cam_spacing",
+                f64::NAN,
+                "instantaneous needs the tandem cams (envelope = TandemCams)",
+            ));
+        }
+        let track = |left: bool, front: bool| -> Result<TireTrack, VehicleError> {
             let y = if left { half_width } else { -half_width };
-            EffectiveTrack::build(
-                &Track { terrain, y },
-                range,
-                options.track_grid_m,
-                &envelope,
-                reference[usize::from(!front)],
-            )
+            let profile = Track { terrain, y };
+            let d = reference[usize::from(!front)];
+            Ok(match options.cam_spacing {
+                CamSpacing::Static => TireTrack::Static(EffectiveTrack::build(
+                    &profile,
+                    range,
+                    options.track_grid_m,
+                    &envelope,
+                    d,
+                )?),
+                CamSpacing::Instantaneous => TireTrack::Instantaneous(InstantaneousTrack::build(
+                    &profile,
+                    range,
+                    options.track_grid_m / CAM_BASE_GRID_DIVISOR,
+                    &envelope,
+                )?),
+            })
         };
         Ok(Self {
             tracks: [
@@ -96,6 +160,7 @@ impl TireTracks {
                 options.envelope_sample_m,
                 options.track_grid_m,
                 radius,
+                options.cam_spacing,
             ),
         })
     }
@@ -126,6 +191,7 @@ impl TireTracks {
             options.envelope_sample_m,
             options.track_grid_m,
             params.tire.unloaded_radius_m,
+            options.cam_spacing,
         );
         if !(same(self.reference[0], statics.front_tire_deflection_m)
             && same(self.reference[1], statics.rear_tire_deflection_m))
@@ -140,7 +206,7 @@ impl TireTracks {
             return Err(rejected(
                 "tracks",
                 options.track_grid_m,
-                "built with other enveloping settings or tire radius",
+                "built with other enveloping settings, tire radius or cam spacing",
             ));
         }
         let need = Self::range_of(params, options);
@@ -157,7 +223,15 @@ impl TireTracks {
     /// Contact of tire `i` with centre height `z_c` at path coordinate `s`.
     #[inline]
     pub fn contact(&self, i: usize, s: f64, z_c: f64) -> TrackContact {
-        self.tracks[i].contact(s, z_c)
+        match &self.tracks[i] {
+            TireTrack::Static(t) => t.contact(s, z_c),
+            TireTrack::Instantaneous(t) => t.contact(s, z_c),
+        }
+    }
+
+    /// The cam spacing these tracks were built with.
+    pub fn cam_spacing(&self) -> CamSpacing {
+        self.settings.4
     }
 }
 
@@ -339,6 +413,52 @@ mod tests {
         assert!((a.contact.slip_steady[1] + b.contact.slip_steady[1]).abs() < 1e-15);
         // a wheel sliding left gets a force to the right
         assert!(a.contact.slip_steady[1] < 0.0);
+    }
+
+    #[test]
+    fn the_cam_spacing_is_built_checked_and_exact_on_a_plane() {
+        use vehicle_components::FlatTerrain;
+        let p = VehicleParams::nominal();
+        let flat = FlatTerrain::new(0.2, 0.8).unwrap();
+        let options = |cam_spacing| VehicleOptions {
+            path_length_m: 20.0,
+            cam_spacing,
+            ..VehicleOptions::default()
+        };
+        let fixed = options(CamSpacing::Static);
+        let inst = options(CamSpacing::Instantaneous);
+        let a = TireTracks::build(&p, Load::Loaded, &fixed, &flat, 1.3).unwrap();
+        let b = TireTracks::build(&p, Load::Loaded, &inst, &flat, 1.3).unwrap();
+        assert_eq!(
+            (a.cam_spacing(), b.cam_spacing()),
+            (fixed.cam_spacing, inst.cam_spacing)
+        );
+        // on a plane both readings give the exact penetration, lift-off included
+        for i in 0..4 {
+            for z in [1.25, 1.15, 1.12, 1.05, 0.98] {
+                let (ca, cb) = (a.contact(i, 17.3, z), b.contact(i, 17.3, z));
+                assert!((ca.deflection - (1.2 - z)).abs() < 1e-9, "{ca:?}");
+                assert!((cb.deflection - ca.deflection).abs() < 1e-9, "{cb:?}");
+                assert!(ca.slope == 0.0 && cb.slope == 0.0);
+            }
+        }
+        // a vehicle refuses the tracks of the other spacing
+        let st = Statics::of(&p, Load::Loaded).unwrap();
+        assert!(b.check(&p, &st, &inst).is_ok());
+        let e = a.check(&p, &st, &inst).unwrap_err().to_string();
+        assert!(e.contains("cam spacing"), "{e}");
+        // the circle-line enveloping has no cams to space
+        let circle = VehicleOptions {
+            envelope: EnvelopeMethod::CircleLine,
+            ..inst
+        };
+        let e = TireTracks::build(&p, Load::Loaded, &circle, &flat, 1.3)
+            .unwrap_err()
+            .to_string();
+        assert!(e.contains("cam_spacing"), "{e}");
+        assert_eq!("instantaneous".parse(), Ok(CamSpacing::Instantaneous));
+        assert_eq!("static".parse(), Ok(CamSpacing::Static));
+        assert!("dynamic".parse::<CamSpacing>().is_err());
     }
 
     #[test]

@@ -50,7 +50,7 @@ use crate::state_layout::{add_drive_states, add_tire_states, add_tree_states, ST
 use crate::statics::Statics;
 use crate::steering::{apply_strut_forces, strut_geometry, StrutGeometry};
 use crate::suspension::AxleStruts;
-use crate::tires::{tire_forces, TireContact, TireInput, TireTracks};
+use crate::tires::{tire_forces, CamSpacing, TireContact, TireInput, TireTracks};
 
 mod energy;
 
@@ -121,6 +121,9 @@ pub struct VehicleOptions {
     pub envelope_sample_m: f64,
     /// Enveloping method: tandem cams (section 6.2.2) by default.
     pub envelope: EnvelopeMethod,
+    /// Where the tandem cams stand (section 6.2.2, Eqs 6.1-6.3): spaced at the static
+    /// deflection (the default) or at the instantaneous one ([`crate::tires::CamSpacing`]).
+    pub cam_spacing: CamSpacing,
     /// Lock the rear-unit roll joint (for the yaw-mode analysis): its roll follows the
     /// front unit's.
     pub lock_rear_roll: bool,
@@ -147,6 +150,7 @@ impl Default for VehicleOptions {
             track_grid_m: 0.05,
             envelope_sample_m: 0.05,
             envelope: EnvelopeMethod::TandemCams,
+            cam_spacing: CamSpacing::Static,
             lock_rear_roll: false,
             driver: None,
             field: crate::field::FieldEffects::default(),
