@@ -59,6 +59,7 @@
 pub mod model;
 
 use super::rng::Noise;
+use super::strut::StrutData;
 use super::yaw::{YawLoad, YawParams};
 use afsv_records::Record;
 use model::{simulate, CamTrack, Model, Outputs, RunInput, Steering};
@@ -179,6 +180,55 @@ pub struct Data {
     /// The drive's feed-forward with the free radius (the rolling-resistance moment's
     /// lever) instead of the loaded radius (module table).
     pub feed_forward_free_radius: bool,
+    /// The front axle's HPS (two Chapter 5 struts on wheel carriers), `None` for the rigid
+    /// front axle of the paper's base model.
+    pub hps: Option<HpsAxle>,
+}
+
+/// The front-axle HPS: the strut of Table 6.3 (`independent::strut`, Chapter 5) at each
+/// front wheel, between the front unit and a wheel carrier sliding along the unit's z at
+/// the wheel centre (ratio 1); the wheel end's mass rides on the carrier.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct HpsAxle {
+    /// The strut (both sides alike).
+    pub strut: StrutData,
+    /// Mass moving with each carrier (kg): the wheel end, taken out of the Table 6.1 front
+    /// unit at its static place.
+    pub wheel_end_mass: f64,
+    /// The hidden gas heat transfer's thermal time constant (s), `None` for Eq 5.4's
+    /// polytropic gas.
+    pub gas_tau_s: Option<f64>,
+    /// End stops beyond the strut's travel: stiffness (N/m) and damping (N s/m), pushing
+    /// only.
+    pub stop_stiffness: f64,
+    pub stop_damping: f64,
+}
+
+impl HpsAxle {
+    /// Table 6.3's strut with the strut file's completions; 1 950 kg per wheel end (the
+    /// front axle's unsprung mass of Table 2.1, 3 900 kg, shared by the two sides: Table
+    /// 6.1 gives none); end stops of 1e8 N/m and 2e4 N s/m.
+    pub fn nominal(gas_tau_s: Option<f64>) -> Self {
+        Self {
+            strut: StrutData::table_6_3(),
+            wheel_end_mass: 1_950.0,
+            gas_tau_s,
+            stop_stiffness: 1.0e8,
+            stop_damping: 2.0e4,
+        }
+    }
+
+    /// The end stop's force (N, compressive positive) at travel `z` and rate `zd` of a
+    /// strut of half travel `travel`.
+    pub fn end_stop(&self, z: f64, zd: f64, travel: f64) -> f64 {
+        if z > travel {
+            (self.stop_stiffness * (z - travel) + self.stop_damping * zd).max(0.0)
+        } else if z < -travel {
+            (self.stop_stiffness * (z + travel) + self.stop_damping * zd).min(0.0)
+        } else {
+            0.0
+        }
+    }
 }
 
 impl Data {
@@ -227,6 +277,15 @@ impl Data {
             cavitation: true,
             horizontal_forces: true,
             feed_forward_free_radius: false,
+            hps: None,
+        }
+    }
+
+    /// [`Data::nominal`] with the front-axle HPS ([`HpsAxle::nominal`]).
+    pub fn nominal_hps(loaded: bool, gas_tau_s: Option<f64>) -> Self {
+        Self {
+            hps: Some(HpsAxle::nominal(gas_tau_s)),
+            ..Self::nominal(loaded)
         }
     }
 
@@ -550,7 +609,20 @@ pub fn misalign(lin: &mut [Vec<f64>; 3], ang: &mut [Vec<f64>; 3], deg: [f64; 3],
 
 /// The record of `run` with `hidden` and noise `noise` (share of each channel's SD).
 pub fn record(run: &Run3d, hidden: Hidden3d, noise: f64, seed: u64) -> Record {
-    let data = Data::nominal(run.loaded);
+    record_of(Data::nominal(run.loaded), run, hidden, noise, seed)
+}
+
+/// The record of `run` on the vehicle with the front-axle HPS, its gas with the heat
+/// transfer of time constant `gas_tau_s` (s) or polytropic (`None`), noise `noise`.
+pub fn record_hps(run: &Run3d, gas_tau_s: Option<f64>, noise: f64, seed: u64) -> Record {
+    let data = Data::nominal_hps(run.loaded, gas_tau_s);
+    record_of(data, run, Hidden3d::None, noise, seed)
+}
+
+/// The record of `run` on `data` (its load must be the run's) with `hidden` and noise
+/// `noise`.
+pub fn record_of(data: Data, run: &Run3d, hidden: Hidden3d, noise: f64, seed: u64) -> Record {
+    assert_eq!(data.loaded, run.loaded, "the data's load is the run's");
     let (t, outs) = simulate_run(data, run, hidden, None);
     let mut ch = channels(&outs);
     // sensor-side effects on the six sensor channels (indices 8..14)
@@ -591,7 +663,7 @@ pub fn record(run: &Run3d, hidden: Hidden3d, noise: f64, seed: u64) -> Record {
     rec.meta = json!({
         "written_by": WRITTEN_BY,
         "load": if run.loaded { "loaded" } else { "unloaded" },
-        "front_axle": "rigid",
+        "front_axle": if data.hps.is_some() { "suspended" } else { "rigid" },
         "speed_kmh": run.speed_kmh,
         "speed_m_s": speed,
         "manoeuvre": if run.ride.is_some() { "ride" } else { "path_change" },
@@ -607,5 +679,15 @@ pub fn records(runs: &[Run3d], hidden: Hidden3d, seed: u64) -> Vec<Record> {
     runs.par_iter()
         .enumerate()
         .map(|(i, r)| record(r, hidden, 0.03, seed * 1000 + i as u64))
+        .collect()
+}
+
+/// Records of `runs` on the vehicle with the front-axle HPS ([`record_hps`]), noise 3 %
+/// of each channel's SD, in parallel.
+pub fn records_hps(runs: &[Run3d], gas_tau_s: Option<f64>, seed: u64) -> Vec<Record> {
+    use rayon::prelude::*;
+    runs.par_iter()
+        .enumerate()
+        .map(|(i, r)| record_hps(r, gas_tau_s, 0.03, seed * 1000 + i as u64))
         .collect()
 }
