@@ -733,4 +733,43 @@ impl VehicleStrut {
     pub fn clamp(&self, y: &mut [f64]) {
         y[1] = y[1].max(self.s.d.floor_mpa);
     }
+
+    /// The work done on a lossless strut (orifices, leakage and friction off: each chamber
+    /// closed, the strut a spring) from travel `z0` at states `y0` to travel `z` (J): its
+    /// stored energy. The chamber pressures follow `dy/dz` = the state rates at unit rate
+    /// (no flow), the work `integral F dz` (`n` RK4 steps in z). Polytropic gas only.
+    pub fn lossless_work(&self, z0: f64, y0: &[f64], z: f64, n: usize) -> f64 {
+        let d = &self.s.d;
+        assert!(
+            d.c_b == 0.0 && d.c_v == 0.0 && d.k_l == 0.0 && self.s.heat_tau.is_none(),
+            "the strut's stored energy is the lossless polytropic strut's"
+        );
+        let mut y: [f64; NS] = y0.try_into().expect("strut states");
+        let h = (z - z0) / n as f64;
+        let slope = |zz: f64, y: &[f64; NS]| -> ([f64; NS], f64) {
+            let mut dy = [0.0; NS];
+            self.s.rhs(zz, 1.0, y, &mut dy);
+            (dy, self.s.force(zz, 0.0, y))
+        };
+        let mut work = 0.0;
+        let step = |y: &[f64; NS], k: &[f64; NS], f: f64| -> [f64; NS] {
+            let mut t = *y;
+            for i in 0..NS {
+                t[i] += f * k[i];
+            }
+            t
+        };
+        for j in 0..n {
+            let zj = z0 + j as f64 * h;
+            let (k1, f1) = slope(zj, &y);
+            let (k2, f2) = slope(zj + 0.5 * h, &step(&y, &k1, 0.5 * h));
+            let (k3, f3) = slope(zj + 0.5 * h, &step(&y, &k2, 0.5 * h));
+            let (k4, f4) = slope(zj + h, &step(&y, &k3, h));
+            for i in 0..NS {
+                y[i] += h / 6.0 * (k1[i] + 2.0 * k2[i] + 2.0 * k3[i] + k4[i]);
+            }
+            work += h / 6.0 * (f1 + 2.0 * f2 + 2.0 * f3 + f4);
+        }
+        work
+    }
 }

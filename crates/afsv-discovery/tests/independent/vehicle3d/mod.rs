@@ -1,5 +1,6 @@
 //! Independent implementation of the integrated 3-D articulated vehicle of Chapter 6 (rigid
-//! front axle), written from the dissertation (sections 6.2-6.3, Tables 6.1-6.2; the frame
+//! front axle, or the front-axle HPS of section 6.2.3 with the Chapter 5 strut of
+//! `super::strut`, Table 6.3: [`Data::nominal_hps`]), written from the dissertation (sections 6.2-6.3, Tables 6.1-6.2; the frame
 //! steering of Chapter 3, Eqs 3.5-3.12 and Table 3.1, in the strut form of Eqs 6.6-6.8;
 //! the driver of section 3.4.1), the close reading of the chapters and, for values the paper
 //! does not give, the project's list of assumptions (docs/vehicle-3d.md). It calls no model
@@ -18,6 +19,22 @@
 //! velocity-product accelerations by second differences along the angle rates; the 8 x 8
 //! system solved by Gaussian elimination at each evaluation. Integrator: classic RK4, fixed
 //! 0.5 ms steps.
+//!
+//! The HPS front axle ([`HpsAxle`]): two more coordinates, the front wheel carriers' travels
+//! along the front unit's z at the wheel centres (ratio 1; held at zero by the rigid axle),
+//! each carrying a wheel end of 1 950 kg as a point mass; the Table 6.1 front unit keeps its
+//! mass and inertia with the wheel ends at their static places, so each wheel end's mass is
+//! taken out there and put in on its carrier (Kane's sums exact for the combination). Each
+//! strut is `super::strut::VehicleStrut` (Eqs 5.1-5.12, its own chamber states) at travel
+//! `z_static + c`; its force (plus a 1e8 N/m end stop beyond the 120 mm travel) acts on the
+//! carrier's coordinate only. The struts carry the front tire load less the wheel end's
+//! weight at rest (`VehicleStrut::static_state`), so the static pose and tire loads are the
+//! rigid axle's. RK4 at the strut's own step bound, 0.1 ms (`model::STEP_HPS_S`; a 6 s ride
+//! in 0.8 s; at 0.5 ms the class C ride of the cross-check also ran, its sensor axes within
+//! 0.02 % NRMSE of the 0.1 ms run, but the strut file's bound was kept). The hidden gas
+//! effect is the strut's own heat transfer (`StrutHidden::GasHeatTransfer`: the gas
+//! temperature ratio relaxing to the wall's with time constant tau, kappa 1.4 between); the
+//! struts then rest at the isothermal static travel.
 //!
 //! Channels written (afsv-v1, docs/records.md): the steering-wheel angle, the speed (mean
 //! forward speed of the four wheel centres), the articulation, the left strut's extension,
@@ -52,6 +69,12 @@
 //! | start | static pose at speed, cg at 1.36 m | the same; front cg at path coordinate 10 m |
 //! | hidden tire lateral compliance | relaxation length + c x C_alpha (6.8 kN/deg, constant) | relaxation length + c x C_alpha(F_z) at the tire's current load |
 //! | hidden mount | Tustin-discretised filter on the 100 Hz channels | a sprung sensor integrated by RK4 in 1 ms steps on the linearly interpolated 100 Hz acceleration |
+//! | HPS: unsprung mass per front wheel | 2 000 kg wheel-end body on a massless carrier, the unit's cg and inertia corrected | 1 950 kg point mass on the carrier (Table 2.1's front unsprung mass, 3 900 kg, halved; Table 6.1 gives none), taken out of the Table 6.1 unit at its static place |
+//! | HPS: strut model | `hps_emulsion::HpsStrut` (Eqs 5.1-5.12, Eq 6.9) | `tests/independent/strut.rs` (written from Chapter 5; gas pressure integrated instead of the gas volume, its own square-root regularisation (2 kPa) and rod-side cavitation taper) |
+//! | HPS: strut friction | the laboratory friction scaled by the piston perimeter | the same scaling (mu_v 119 N s/m, F_c 357 N, F_s 238 N), Eq 5.3 band at v_h = 1 mm/s |
+//! | HPS: static travel | bisection on the strut's static force | quasi-static compliance of both chambers integrated from the charge position (loaded -13.96 mm, the crate -14.49 mm; unloaded -49.55 / -50.34 mm) |
+//! | HPS: end stops | 2e8 N/m, 2e4 N s/m beyond ±120 mm | 1e8 N/m, 2e4 N s/m, pushing only |
+//! | HPS: hidden gas temperature | `hps_emulsion::HeatTransfer { tau, kappa: 1.4 }` | the strut file's gas energy balance with wall exchange (temperature-ratio state), kappa 1.4 |
 //!
 //! Used by `tests/independent_vehicle3d.rs` (cross-checks against the crate) and
 //! `tests/discover_independent_vehicle3d.rs` (the discovery matrix on these records).

@@ -910,10 +910,10 @@ impl Model {
     }
 
     /// Kinetic, gravitational, tire-spring and hydraulic energy (J) at `y` (the energy
-    /// check; tires on smooth ground; rigid front axle only: the strut's stored energy is
-    /// not written).
+    /// check; tires on smooth ground); with the HPS also the wheel ends' motion on their
+    /// carriers and the struts' stored energy, which is written for the lossless strut
+    /// only ([`VehicleStrut::lossless_work`], from the static travel; within the travel).
     pub fn energy(&self, y: &[f64; N]) -> f64 {
-        assert!(self.hps.is_none(), "the energy is the rigid front axle's");
         let d = &self.d;
         let a = &y[3..CARRIER];
         let ua = &y[U + 3..U + CARRIER];
@@ -966,7 +966,24 @@ impl Model {
         };
         let v1 = s.v0 + s.ac * ext[0] - s.ar * ext[1];
         let v2 = s.v0 - s.ar * ext[0] + s.ac * ext[1];
-        kin + grav + tire + hyd(v1, y[PC]) + hyd(v2, y[PR])
+        let mut suspension = 0.0;
+        if let (Some((strut, z_static, states)), Some(h)) = (&self.hps, &d.hps) {
+            let mw = h.wheel_end_mass;
+            let ez = [rf[0][2], rf[1][2], rf[2][2]];
+            for side in 0..2 {
+                // the wheel end out of the unit at its static place, in on its carrier
+                let v0 = add(&vf, &point_of(&v, 10 + side));
+                let vw = add(
+                    &add(&vf, &point_of(&v, 1 + side)),
+                    &scale(&ez, y[U + CARRIER + side]),
+                );
+                suspension += 0.5 * mw * (dot(&vw, &vw) - dot(&v0, &v0))
+                    + mw * d.gravity * (point_of(&p0, 1 + side)[2] - point_of(&p0, 10 + side)[2]);
+                let c = y[CARRIER + side];
+                suspension += strut.lossless_work(*z_static, states, z_static + c, 50);
+            }
+        }
+        kin + grav + tire + hyd(v1, y[PC]) + hyd(v2, y[PR]) + suspension
     }
 }
 
