@@ -83,11 +83,13 @@ fn discover_matrix(args: &[String]) -> Result<(), String> {
 }
 
 /// The 3-D adapter's matrix: its records from the crate with the mild variant of unstated
-/// choices, from the realistic variant, and from the independent 3-D implementation.
-const VEHICLE3D_MATRIX: [&str; 3] = [
+/// choices, from the realistic variant, and from the independent 3-D implementation (rigid
+/// front axle, and with the front-axle HPS).
+const VEHICLE3D_MATRIX: [&str; 4] = [
     "discover_vehicle3d",
     "discover_vehicle3d_realistic",
     "discover_independent_vehicle3d",
+    "discover_independent_vehicle3d_hps",
 ];
 
 /// Name parts of the matrix rows among those binaries' ignored tests (the diagnostics and

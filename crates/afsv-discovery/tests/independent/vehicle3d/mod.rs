@@ -10,14 +10,16 @@
 //! same generator (`vehicle_3d::scenarios::TerrainSpec::build`, the road as an input, like a
 //! measured profile); everything the tires do with it (the cams) is ours.
 //!
-//! Formulation ([`model`]): eight coordinates, the front cg position, the front unit's yaw,
+//! Formulation ([`model`]): ten coordinates, the front cg position, the front unit's yaw,
 //! pitch and roll (Z-Y-X Euler angles), the articulation theta (rear unit about the front
-//! unit's z, positive in a right-hand turn) and the rear unit's roll about its own x axis
-//! at the joint, plus four wheel spins. Equations of motion in Kane's form, `M(q) q'' =
+//! unit's z, positive in a right-hand turn), the rear unit's roll about its own x axis
+//! at the joint and the two front wheel carriers' travels (HPS only; held at zero by the
+//! rigid axle), plus four wheel spins. Equations of motion in Kane's form, `M(q) q'' =
 //! sum J^T (F - m a_bias) + J_w^T (tau - I alpha_bias - w x I w)`, with the Jacobians of every
 //! point and rotation by central differences of the pose in the five angles and the
-//! velocity-product accelerations by second differences along the angle rates; the 8 x 8
-//! system solved by Gaussian elimination at each evaluation. Integrator: classic RK4, fixed
+//! velocity-product accelerations by second differences along the angle rates; the 10 x 10
+//! system (the rigid axle's carrier rows the identity, which leaves the other eight rows'
+//! elimination as it was) solved by Gaussian elimination at each evaluation. Integrator: classic RK4, fixed
 //! 0.5 ms steps.
 //!
 //! The HPS front axle ([`HpsAxle`]): two more coordinates, the front wheel carriers' travels
