@@ -53,7 +53,7 @@ fn main() -> ExitCode {
     }
 }
 
-const HELP: &str = "usage: cargo xtask <task>\n\ntasks:\n  bench [--summary] [--commands] [--runs N] [--profile release|dist] [ARGS...]  run the criterion benches (ARGS go to the bench harness) and print mean times and real-time factors, then time whole afsv commands (median of N runs, default 20); --commands: only those; --profile dist: built with fat LTO and one codegen unit (Cargo.toml)\n  validate [--fixtures DIR] [--out DIR] [--quick]  compare the models with fixtures/reported/ and write target/validation/report.md; --quick skips the chapter-6 design studies (Table 6.4, the GA of Table 6.5, the D4 sweep: about two minutes)\n  fuzz [--cases N] [--seed S] [--jobs J] [--timeout SECS] [--mem-mib MIB] [--bin PATH] [--only GROUPS] [--skip GROUPS] [--keep]  run afsv on N generated bad inputs (default 10000); fail on panics, hangs, aborts, non-finite output or modified inputs\n  discover-matrix [--vehicle3d]  run the discovery workflow on every catalogue effect of the strut and the yaw-plane vehicle and print the detection table (minutes); --vehicle3d: the 3-D adapter's rows instead (null and effect sets of the mild and realistic variants and of the independent 3-D implementation; about two hours of CPU, the two HPS rows most of it)\n  slurm-test [--bin PATH]  as root: install slurm-wlm and munge, start a single-node Slurm, run scripts/slurm/optimize.sh end to end for `optimize afs` and a tiny `optimize layout` and compare each with the in-process optimum (skipped without root, apt-get or network); --bin: run that afsv binary instead of building one";
+const HELP: &str = "usage: cargo xtask <task>\n\ntasks:\n  bench [--summary] [--commands] [--runs N] [--profile release|dist] [ARGS...]  run the criterion benches (ARGS go to the bench harness) and print mean times and real-time factors, then time whole afsv commands (median of N runs, default 20); --commands: only those; --profile dist: built with fat LTO and one codegen unit (Cargo.toml)\n  validate [--fixtures DIR] [--out DIR] [--quick]  compare the models with fixtures/reported/ and write target/validation/report.md; --quick skips the chapter-6 design studies (Table 6.4, the GA of Table 6.5, the D4 sweep: about two minutes)\n  fuzz [--cases N] [--seed S] [--jobs J] [--timeout SECS] [--mem-mib MIB] [--bin PATH] [--only GROUPS] [--skip GROUPS] [--keep]  run afsv on N generated bad inputs (default 10000); fail on panics, hangs, aborts, non-finite output or modified inputs\n  discover-matrix [--vehicle3d]  run the discovery workflow on every catalogue effect of the strut and the yaw-plane vehicle and print the detection table (minutes); --vehicle3d: the 3-D adapter's rows instead (null and effect sets of the mild and realistic variants and of the independent 3-D implementation, rigid and with the front-axle HPS; about two hours of CPU, the crate-made HPS rows most of it)\n  slurm-test [--bin PATH]  as root: install slurm-wlm and munge, start a single-node Slurm, run scripts/slurm/optimize.sh end to end for `optimize afs` and a tiny `optimize layout` and compare each with the in-process optimum (skipped without root, apt-get or network); --bin: run that afsv binary instead of building one";
 
 /// The full detection matrix of the discovery workflow (the slow tests of
 /// `crates/afsv-discovery/tests/discover_matrix.rs`); with `--vehicle3d`, the 3-D adapter's
@@ -83,11 +83,13 @@ fn discover_matrix(args: &[String]) -> Result<(), String> {
 }
 
 /// The 3-D adapter's matrix: its records from the crate with the mild variant of unstated
-/// choices, from the realistic variant, and from the independent 3-D implementation.
-const VEHICLE3D_MATRIX: [&str; 3] = [
+/// choices, from the realistic variant, and from the independent 3-D implementation (rigid
+/// front axle, and with the front-axle HPS).
+const VEHICLE3D_MATRIX: [&str; 4] = [
     "discover_vehicle3d",
     "discover_vehicle3d_realistic",
     "discover_independent_vehicle3d",
+    "discover_independent_vehicle3d_hps",
 ];
 
 /// Name parts of the matrix rows among those binaries' ignored tests (the diagnostics and

@@ -647,3 +647,129 @@ pub fn strut_record_set_of(dir: &Path, d: &StrutData, hidden: Option<(&str, f64)
     });
     write_json(&dir.join("truth.json"), &truth);
 }
+
+/// States of one strut in a vehicle's state vector ([`VehicleStrut`]): the table at the
+/// top of this file.
+pub const STRUT_STATES: usize = NS;
+
+/// The strut of this file as a vehicle drives it (the HPS front axle of
+/// `tests/independent/vehicle3d`): the same Eqs 5.1-5.12, its travel `z` (m, compression
+/// positive, from the charge position where `P = P_h0`) and rate from the vehicle, its
+/// states a slice of the vehicle's. No bench peak velocity: the Eq 5.3 band at its
+/// smallest width `v_h = vh_min`. The optional hidden gas heat transfer is the strut's own
+/// (state 2, the gas temperature ratio relaxing to the wall's with time constant `tau`,
+/// adiabatic with kappa = 1.4 between).
+pub struct VehicleStrut {
+    s: Strut,
+}
+
+impl VehicleStrut {
+    /// The strut of `d`, with the gas heat transfer of time constant `gas_heat_tau_s` (s) or
+    /// the polytropic gas law of Eq 5.4 (`None`).
+    pub fn new(d: &StrutData, gas_heat_tau_s: Option<f64>) -> Self {
+        let hidden = match gas_heat_tau_s {
+            Some(tau) => StrutHidden::GasHeatTransfer(tau),
+            None => StrutHidden::None,
+        };
+        Self {
+            s: Strut::new(d, hidden, 0.0),
+        }
+    }
+
+    /// The strut's data.
+    pub fn data(&self) -> &StrutData {
+        &self.s.d
+    }
+
+    /// The static travel (m) and states under the compressive force `force_n` (N): both
+    /// chambers at `P = F / A_hr + p_atm` (no flow, Eq 5.1 at rest), the travel from the
+    /// charge position by integrating the quasi-static compliance of both chambers,
+    /// `dz/dP = (V_g / (n P) + V_c / beta_c + V_r / beta_r) / A_hr` (the sum of Eqs 5.5
+    /// and 5.6 at equal pressures, 400 RK4 steps in P), with `n` the gas law's slow
+    /// exponent: Eq 5.4's `n`, or 1 with the heat transfer (the gas at the wall's
+    /// temperature at rest).
+    pub fn static_state(&self, force_n: f64) -> (f64, [f64; NS]) {
+        let s = &self.s;
+        let d = &s.d;
+        let p_s = force_n / (d.a_hr * 1e6) + P_ATM_MPA;
+        let n_slow = if s.heat_tau.is_some() { 1.0 } else { d.n };
+        let slope = |p: f64, z: f64| -> f64 {
+            let vg = s.v_g0 * (d.p_h0_mpa / p).powf(1.0 / n_slow);
+            let vc = s.v_c0 + s.v_g0 - d.a_hc * z * 1e3 - vg;
+            let vr = s.v_r0 + s.a_ann * z * 1e3;
+            let b = s.emulsion(p).beta;
+            (vg / (n_slow * p) + vc / b + vr / b) / (d.a_hr * 1e3)
+        };
+        let steps = 400;
+        let h = (p_s - d.p_h0_mpa) / steps as f64;
+        let mut z = 0.0;
+        for k in 0..steps {
+            let p = d.p_h0_mpa + k as f64 * h;
+            let k1 = slope(p, z);
+            let k2 = slope(p + 0.5 * h, z + 0.5 * h * k1);
+            let k3 = slope(p + 0.5 * h, z + 0.5 * h * k2);
+            let k4 = slope(p + h, z + h * k3);
+            z += h / 6.0 * (k1 + 2.0 * k2 + 2.0 * k3 + k4);
+        }
+        (z, [p_s, p_s, 1.0, 0.0])
+    }
+
+    /// State rates at travel `z` (m) and rate `zd` (m/s); `y` and `dy` this strut's
+    /// [`STRUT_STATES`] entries (pressures in MPa).
+    pub fn rhs(&self, z: f64, zd: f64, y: &[f64], dy: &mut [f64]) {
+        let y: &[f64; NS] = y.try_into().expect("strut states");
+        let dy: &mut [f64; NS] = dy.try_into().expect("strut state rates");
+        self.s.rhs(z, zd, y, dy);
+    }
+
+    /// The strut force (N, compressive positive; Eq 5.1 with the friction of Eqs 5.2-5.3).
+    pub fn force(&self, z: f64, zd: f64, y: &[f64]) -> f64 {
+        let y: &[f64; NS] = y.try_into().expect("strut states");
+        self.s.force(z, zd, y)
+    }
+
+    /// The rod-side pressure clamped at the cavitation floor after a step, as
+    /// [`simulate_strut`] does.
+    pub fn clamp(&self, y: &mut [f64]) {
+        y[1] = y[1].max(self.s.d.floor_mpa);
+    }
+
+    /// The work done on a lossless strut (orifices, leakage and friction off: each chamber
+    /// closed, the strut a spring) from travel `z0` at states `y0` to travel `z` (J): its
+    /// stored energy. The chamber pressures follow `dy/dz` = the state rates at unit rate
+    /// (no flow), the work `integral F dz` (`n` RK4 steps in z). Polytropic gas only.
+    pub fn lossless_work(&self, z0: f64, y0: &[f64], z: f64, n: usize) -> f64 {
+        let d = &self.s.d;
+        assert!(
+            d.c_b == 0.0 && d.c_v == 0.0 && d.k_l == 0.0 && self.s.heat_tau.is_none(),
+            "the strut's stored energy is the lossless polytropic strut's"
+        );
+        let mut y: [f64; NS] = y0.try_into().expect("strut states");
+        let h = (z - z0) / n as f64;
+        let slope = |zz: f64, y: &[f64; NS]| -> ([f64; NS], f64) {
+            let mut dy = [0.0; NS];
+            self.s.rhs(zz, 1.0, y, &mut dy);
+            (dy, self.s.force(zz, 0.0, y))
+        };
+        let mut work = 0.0;
+        let step = |y: &[f64; NS], k: &[f64; NS], f: f64| -> [f64; NS] {
+            let mut t = *y;
+            for i in 0..NS {
+                t[i] += f * k[i];
+            }
+            t
+        };
+        for j in 0..n {
+            let zj = z0 + j as f64 * h;
+            let (k1, f1) = slope(zj, &y);
+            let (k2, f2) = slope(zj + 0.5 * h, &step(&y, &k1, 0.5 * h));
+            let (k3, f3) = slope(zj + 0.5 * h, &step(&y, &k2, 0.5 * h));
+            let (k4, f4) = slope(zj + h, &step(&y, &k3, h));
+            for i in 0..NS {
+                y[i] += h / 6.0 * (k1[i] + 2.0 * k2[i] + 2.0 * k3[i] + k4[i]);
+            }
+            work += h / 6.0 * (f1 + 2.0 * f2 + 2.0 * f3 + f4);
+        }
+        work
+    }
+}

@@ -1,5 +1,6 @@
 //! Independent implementation of the integrated 3-D articulated vehicle of Chapter 6 (rigid
-//! front axle), written from the dissertation (sections 6.2-6.3, Tables 6.1-6.2; the frame
+//! front axle, or the front-axle HPS of section 6.2.3 with the Chapter 5 strut of
+//! `super::strut`, Table 6.3: [`Data::nominal_hps`]), written from the dissertation (sections 6.2-6.3, Tables 6.1-6.2; the frame
 //! steering of Chapter 3, Eqs 3.5-3.12 and Table 3.1, in the strut form of Eqs 6.6-6.8;
 //! the driver of section 3.4.1), the close reading of the chapters and, for values the paper
 //! does not give, the project's list of assumptions (docs/vehicle-3d.md). It calls no model
@@ -9,15 +10,33 @@
 //! same generator (`vehicle_3d::scenarios::TerrainSpec::build`, the road as an input, like a
 //! measured profile); everything the tires do with it (the cams) is ours.
 //!
-//! Formulation ([`model`]): eight coordinates, the front cg position, the front unit's yaw,
+//! Formulation ([`model`]): ten coordinates, the front cg position, the front unit's yaw,
 //! pitch and roll (Z-Y-X Euler angles), the articulation theta (rear unit about the front
-//! unit's z, positive in a right-hand turn) and the rear unit's roll about its own x axis
-//! at the joint, plus four wheel spins. Equations of motion in Kane's form, `M(q) q'' =
+//! unit's z, positive in a right-hand turn), the rear unit's roll about its own x axis
+//! at the joint and the two front wheel carriers' travels (HPS only; held at zero by the
+//! rigid axle), plus four wheel spins. Equations of motion in Kane's form, `M(q) q'' =
 //! sum J^T (F - m a_bias) + J_w^T (tau - I alpha_bias - w x I w)`, with the Jacobians of every
 //! point and rotation by central differences of the pose in the five angles and the
-//! velocity-product accelerations by second differences along the angle rates; the 8 x 8
-//! system solved by Gaussian elimination at each evaluation. Integrator: classic RK4, fixed
+//! velocity-product accelerations by second differences along the angle rates; the 10 x 10
+//! system (the rigid axle's carrier rows the identity, which leaves the other eight rows'
+//! elimination as it was) solved by Gaussian elimination at each evaluation. Integrator: classic RK4, fixed
 //! 0.5 ms steps.
+//!
+//! The HPS front axle ([`HpsAxle`]): two more coordinates, the front wheel carriers' travels
+//! along the front unit's z at the wheel centres (ratio 1; held at zero by the rigid axle),
+//! each carrying a wheel end of 1 950 kg as a point mass; the Table 6.1 front unit keeps its
+//! mass and inertia with the wheel ends at their static places, so each wheel end's mass is
+//! taken out there and put in on its carrier (Kane's sums exact for the combination). Each
+//! strut is `super::strut::VehicleStrut` (Eqs 5.1-5.12, its own chamber states) at travel
+//! `z_static + c`; its force (plus a 1e8 N/m end stop beyond the 120 mm travel) acts on the
+//! carrier's coordinate only. The struts carry the front tire load less the wheel end's
+//! weight at rest (`VehicleStrut::static_state`), so the static pose and tire loads are the
+//! rigid axle's. RK4 at the strut's own step bound, 0.1 ms (`model::STEP_HPS_S`; a 6 s ride
+//! in 0.8 s; at 0.5 ms the class C ride of the cross-check also ran, its sensor axes within
+//! 0.02 % NRMSE of the 0.1 ms run, but the strut file's bound was kept). The hidden gas
+//! effect is the strut's own heat transfer (`StrutHidden::GasHeatTransfer`: the gas
+//! temperature ratio relaxing to the wall's with time constant tau, kappa 1.4 between); the
+//! struts then rest at the isothermal static travel.
 //!
 //! Channels written (afsv-v1, docs/records.md): the steering-wheel angle, the speed (mean
 //! forward speed of the four wheel centres), the articulation, the left strut's extension,
@@ -52,6 +71,12 @@
 //! | start | static pose at speed, cg at 1.36 m | the same; front cg at path coordinate 10 m |
 //! | hidden tire lateral compliance | relaxation length + c x C_alpha (6.8 kN/deg, constant) | relaxation length + c x C_alpha(F_z) at the tire's current load |
 //! | hidden mount | Tustin-discretised filter on the 100 Hz channels | a sprung sensor integrated by RK4 in 1 ms steps on the linearly interpolated 100 Hz acceleration |
+//! | HPS: unsprung mass per front wheel | 2 000 kg wheel-end body on a massless carrier, the unit's cg and inertia corrected | 1 950 kg point mass on the carrier (Table 2.1's front unsprung mass, 3 900 kg, halved; Table 6.1 gives none), taken out of the Table 6.1 unit at its static place |
+//! | HPS: strut model | `hps_emulsion::HpsStrut` (Eqs 5.1-5.12, Eq 6.9) | `tests/independent/strut.rs` (written from Chapter 5; gas pressure integrated instead of the gas volume, its own square-root regularisation (2 kPa) and rod-side cavitation taper) |
+//! | HPS: strut friction | the laboratory friction scaled by the piston perimeter | the same scaling (mu_v 119 N s/m, F_c 357 N, F_s 238 N), Eq 5.3 band at v_h = 1 mm/s |
+//! | HPS: static travel | bisection on the strut's static force | quasi-static compliance of both chambers integrated from the charge position (loaded -13.96 mm, the crate -14.49 mm; unloaded -49.55 / -50.34 mm) |
+//! | HPS: end stops | 2e8 N/m, 2e4 N s/m beyond ±120 mm | 1e8 N/m, 2e4 N s/m, pushing only |
+//! | HPS: hidden gas temperature | `hps_emulsion::HeatTransfer { tau, kappa: 1.4 }` | the strut file's gas energy balance with wall exchange (temperature-ratio state), kappa 1.4 |
 //!
 //! Used by `tests/independent_vehicle3d.rs` (cross-checks against the crate) and
 //! `tests/discover_independent_vehicle3d.rs` (the discovery matrix on these records).
@@ -59,6 +84,7 @@
 pub mod model;
 
 use super::rng::Noise;
+use super::strut::StrutData;
 use super::yaw::{YawLoad, YawParams};
 use afsv_records::Record;
 use model::{simulate, CamTrack, Model, Outputs, RunInput, Steering};
@@ -179,6 +205,55 @@ pub struct Data {
     /// The drive's feed-forward with the free radius (the rolling-resistance moment's
     /// lever) instead of the loaded radius (module table).
     pub feed_forward_free_radius: bool,
+    /// The front axle's HPS (two Chapter 5 struts on wheel carriers), `None` for the rigid
+    /// front axle of the paper's base model.
+    pub hps: Option<HpsAxle>,
+}
+
+/// The front-axle HPS: the strut of Table 6.3 (`independent::strut`, Chapter 5) at each
+/// front wheel, between the front unit and a wheel carrier sliding along the unit's z at
+/// the wheel centre (ratio 1); the wheel end's mass rides on the carrier.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct HpsAxle {
+    /// The strut (both sides alike).
+    pub strut: StrutData,
+    /// Mass moving with each carrier (kg): the wheel end, taken out of the Table 6.1 front
+    /// unit at its static place.
+    pub wheel_end_mass: f64,
+    /// The hidden gas heat transfer's thermal time constant (s), `None` for Eq 5.4's
+    /// polytropic gas.
+    pub gas_tau_s: Option<f64>,
+    /// End stops beyond the strut's travel: stiffness (N/m) and damping (N s/m), pushing
+    /// only.
+    pub stop_stiffness: f64,
+    pub stop_damping: f64,
+}
+
+impl HpsAxle {
+    /// Table 6.3's strut with the strut file's completions; 1 950 kg per wheel end (the
+    /// front axle's unsprung mass of Table 2.1, 3 900 kg, shared by the two sides: Table
+    /// 6.1 gives none); end stops of 1e8 N/m and 2e4 N s/m.
+    pub fn nominal(gas_tau_s: Option<f64>) -> Self {
+        Self {
+            strut: StrutData::table_6_3(),
+            wheel_end_mass: 1_950.0,
+            gas_tau_s,
+            stop_stiffness: 1.0e8,
+            stop_damping: 2.0e4,
+        }
+    }
+
+    /// The end stop's force (N, compressive positive) at travel `z` and rate `zd` of a
+    /// strut of half travel `travel`.
+    pub fn end_stop(&self, z: f64, zd: f64, travel: f64) -> f64 {
+        if z > travel {
+            (self.stop_stiffness * (z - travel) + self.stop_damping * zd).max(0.0)
+        } else if z < -travel {
+            (self.stop_stiffness * (z + travel) + self.stop_damping * zd).min(0.0)
+        } else {
+            0.0
+        }
+    }
 }
 
 impl Data {
@@ -227,6 +302,15 @@ impl Data {
             cavitation: true,
             horizontal_forces: true,
             feed_forward_free_radius: false,
+            hps: None,
+        }
+    }
+
+    /// [`Data::nominal`] with the front-axle HPS ([`HpsAxle::nominal`]).
+    pub fn nominal_hps(loaded: bool, gas_tau_s: Option<f64>) -> Self {
+        Self {
+            hps: Some(HpsAxle::nominal(gas_tau_s)),
+            ..Self::nominal(loaded)
         }
     }
 
@@ -550,7 +634,20 @@ pub fn misalign(lin: &mut [Vec<f64>; 3], ang: &mut [Vec<f64>; 3], deg: [f64; 3],
 
 /// The record of `run` with `hidden` and noise `noise` (share of each channel's SD).
 pub fn record(run: &Run3d, hidden: Hidden3d, noise: f64, seed: u64) -> Record {
-    let data = Data::nominal(run.loaded);
+    record_of(Data::nominal(run.loaded), run, hidden, noise, seed)
+}
+
+/// The record of `run` on the vehicle with the front-axle HPS, its gas with the heat
+/// transfer of time constant `gas_tau_s` (s) or polytropic (`None`), noise `noise`.
+pub fn record_hps(run: &Run3d, gas_tau_s: Option<f64>, noise: f64, seed: u64) -> Record {
+    let data = Data::nominal_hps(run.loaded, gas_tau_s);
+    record_of(data, run, Hidden3d::None, noise, seed)
+}
+
+/// The record of `run` on `data` (its load must be the run's) with `hidden` and noise
+/// `noise`.
+pub fn record_of(data: Data, run: &Run3d, hidden: Hidden3d, noise: f64, seed: u64) -> Record {
+    assert_eq!(data.loaded, run.loaded, "the data's load is the run's");
     let (t, outs) = simulate_run(data, run, hidden, None);
     let mut ch = channels(&outs);
     // sensor-side effects on the six sensor channels (indices 8..14)
@@ -591,7 +688,7 @@ pub fn record(run: &Run3d, hidden: Hidden3d, noise: f64, seed: u64) -> Record {
     rec.meta = json!({
         "written_by": WRITTEN_BY,
         "load": if run.loaded { "loaded" } else { "unloaded" },
-        "front_axle": "rigid",
+        "front_axle": if data.hps.is_some() { "suspended" } else { "rigid" },
         "speed_kmh": run.speed_kmh,
         "speed_m_s": speed,
         "manoeuvre": if run.ride.is_some() { "ride" } else { "path_change" },
@@ -607,5 +704,15 @@ pub fn records(runs: &[Run3d], hidden: Hidden3d, seed: u64) -> Vec<Record> {
     runs.par_iter()
         .enumerate()
         .map(|(i, r)| record(r, hidden, 0.03, seed * 1000 + i as u64))
+        .collect()
+}
+
+/// Records of `runs` on the vehicle with the front-axle HPS ([`record_hps`]), noise 3 %
+/// of each channel's SD, in parallel.
+pub fn records_hps(runs: &[Run3d], gas_tau_s: Option<f64>, seed: u64) -> Vec<Record> {
+    use rayon::prelude::*;
+    runs.par_iter()
+        .enumerate()
+        .map(|(i, r)| record_hps(r, gas_tau_s, 0.03, seed * 1000 + i as u64))
         .collect()
 }

@@ -4,18 +4,28 @@
 //! [`super`] for the formulation and the choices.
 
 use super::*;
+use crate::independent::strut::{VehicleStrut, STRUT_MAX_STEP_S, STRUT_STATES};
 
 /// Integration step (s).
 pub const STEP_S: f64 = 0.0005;
 
+/// Integration step with the HPS front axle (s): the strut's own bound
+/// ([`STRUT_MAX_STEP_S`], the rod-side chamber near zero pressure drop).
+pub const STEP_HPS_S: f64 = STRUT_MAX_STEP_S;
+
 /// Coordinates of the two units: x, y, z of the front cg, yaw, pitch, roll of the front
-/// unit (Z-Y-X), articulation theta, rear-unit roll.
-const NQ: usize = 8;
-/// Angle coordinates (the last five of the eight).
+/// unit (Z-Y-X), articulation theta, rear-unit roll; then the travels of the front-left and
+/// front-right wheel carriers along the front unit's z (up positive, from the static
+/// position; held at zero with a rigid front axle).
+const NQ: usize = 10;
+/// Angle coordinates (the five after the position).
 const NA: usize = 5;
-/// Points of the pose: rear cg, four wheel centres, cab point, two front strut mounts, two
-/// hitch strut mounts (positions relative to the front cg, world axes).
-const NP: usize = 10;
+/// The first carrier coordinate.
+pub const CARRIER: usize = 8;
+/// Points of the pose: rear cg, four wheel centres (the front ones on their carriers), cab
+/// point, two front strut mounts, two hitch strut mounts, the two front wheel centres at
+/// their static places in the unit (positions relative to the front cg, world axes).
+const NP: usize = 12;
 /// Pose: front rotation (9), rear rotation (9), the points (3 NP).
 const NPOSE: usize = 18 + 3 * NP;
 
@@ -29,8 +39,9 @@ pub const PR: usize = PC + 1; // P_r (Pa)
 pub const THETA_H: usize = PR + 1; // valve housing angle (deg)
 pub const PI_INT: usize = THETA_H + 1; // integral of the speed error (m)
 pub const STEER: usize = PI_INT + 1; // steering-wheel angle (rad), the driver's state
+pub const HPS: usize = STEER + 1; // the left then the right front strut's states
 /// Number of states.
-pub const N: usize = STEER + 1;
+pub const N: usize = HPS + 2 * STRUT_STATES;
 
 const P_CAV: f64 = 2.0e4;
 const CAV_TAPER: f64 = 3.0e4;
@@ -156,6 +167,8 @@ pub struct Model {
     /// Static tire deflections front, rear (m).
     defl: [f64; 2],
     rolling_ff: f64,
+    /// The front struts with the HPS: the strut, the static travel (m), its static states.
+    hps: Option<(VehicleStrut, f64, [f64; STRUT_STATES])>,
     pub run: RunInput,
 }
 
@@ -259,6 +272,12 @@ pub struct Outputs {
     pub front_lat: f64,
     /// Tire normal forces FL, FR, RL, RR (N).
     pub fz: [f64; 4],
+    /// With the HPS: the front struts' travels (m, compression positive from the charge
+    /// position), forces (N, with the end stop's) and piston-side pressures (Pa), left then
+    /// right; zero with a rigid front axle.
+    pub strut_travel: [f64; 2],
+    pub strut_force: [f64; 2],
+    pub strut_pc: [f64; 2],
 }
 
 impl Model {
@@ -309,6 +328,12 @@ impl Model {
             r - 0.5 * (defl[0] + defl[1])
         };
         let rolling_ff = d.rolling_resistance * lever * mean_load;
+        // the struts carry the front tire load less the wheel end's weight at rest
+        let hps = d.hps.map(|h| {
+            let strut = VehicleStrut::new(&h.strut, h.gas_tau_s);
+            let (z, states) = strut.static_state(loads[0] - h.wheel_end_mass * d.gravity);
+            (strut, z, states)
+        });
         Self {
             d,
             joint_f,
@@ -323,12 +348,14 @@ impl Model {
             l0,
             defl,
             rolling_ff,
+            hps,
             run,
         }
     }
 
-    /// The pose at angles `a` = (yaw, pitch, roll, theta, rear roll).
-    fn pose(&self, a: &[f64]) -> [f64; NPOSE] {
+    /// The pose at angles `a` = (yaw, pitch, roll, theta, rear roll) and carrier travels
+    /// `c` (left, right).
+    fn pose(&self, a: &[f64], c: &[f64]) -> [f64; NPOSE] {
         let rf = mul(&mul(&rz(a[0]), &ry(a[1])), &rx(a[2]));
         let rh = mul(&rf, &rz(a[3]));
         let rr = mul(&rh, &rx(a[4]));
@@ -344,8 +371,8 @@ impl Model {
             p[18 + 3 * k..21 + 3 * k].copy_from_slice(&v);
         };
         put(0, add(&joint, &mv(&rr, &self.rear_cg)));
-        put(1, mv(&rf, &self.wheel[0]));
-        put(2, mv(&rf, &self.wheel[1]));
+        put(1, mv(&rf, &add(&self.wheel[0], &[0.0, 0.0, c[0]])));
+        put(2, mv(&rf, &add(&self.wheel[1], &[0.0, 0.0, c[1]])));
         put(3, add(&joint, &mv(&rr, &self.wheel[2])));
         put(4, add(&joint, &mv(&rr, &self.wheel[3])));
         put(5, mv(&rf, &self.cab));
@@ -353,6 +380,8 @@ impl Model {
         put(7, mv(&rf, &self.mount_f[1]));
         put(8, add(&joint, &mv(&rh, &self.mount_h[0])));
         put(9, add(&joint, &mv(&rh, &self.mount_h[1])));
+        put(10, mv(&rf, &self.wheel[0]));
+        put(11, mv(&rf, &self.wheel[1]));
         p
     }
 
@@ -367,7 +396,28 @@ impl Model {
         }
         y[PC] = self.d.steering.standby;
         y[PR] = self.d.steering.standby;
+        if let Some((_, _, states)) = &self.hps {
+            for side in 0..2 {
+                let at = HPS + side * STRUT_STATES;
+                y[at..at + STRUT_STATES].copy_from_slice(states);
+            }
+        }
         y
+    }
+
+    /// The integration step: [`STEP_S`], or [`STEP_HPS_S`] with the HPS.
+    pub fn step(&self) -> f64 {
+        if self.hps.is_some() {
+            STEP_HPS_S
+        } else {
+            STEP_S
+        }
+    }
+
+    /// The static travel of the front struts (m, compression positive from the charge
+    /// position) and their static states, with the HPS.
+    pub fn strut_static(&self) -> Option<(f64, [f64; STRUT_STATES])> {
+        self.hps.as_ref().map(|(_, z, s)| (*z, *s))
     }
 
     fn steer_at(&self, t: f64, y: &[f64; N]) -> f64 {
@@ -398,12 +448,14 @@ impl Model {
     /// Derivatives at (t, y); with `out`, the recorded quantities too.
     pub fn rhs(&self, t: f64, y: &[f64; N], dy: &mut [f64; N], out: Option<&mut Outputs>) {
         let d = &self.d;
-        let a = &y[3..NQ];
-        let ua = &y[U + 3..U + NQ];
+        let a = &y[3..CARRIER];
+        let ua = &y[U + 3..U + CARRIER];
+        let c = &y[CARRIER..NQ];
+        let cd = &y[U + CARRIER..U + NQ];
         let origin = [y[0], y[1], y[2]];
-        let p0 = self.pose(a);
+        let p0 = self.pose(a, c);
         // Jacobians of the pose with respect to the five angles
-        let jac = self.pose_jacobian(a);
+        let jac = self.pose_jacobian(a, c);
         // velocity-product terms: second directional differences along the angle rates
         let eps = 1e-3;
         let mut ap = [0.0; NA];
@@ -412,7 +464,7 @@ impl Model {
             ap[j] = a[j] + eps * ua[j];
             am[j] = a[j] - eps * ua[j];
         }
-        let (pp, pm) = (self.pose(&ap), self.pose(&am));
+        let (pp, pm) = (self.pose(&ap, c), self.pose(&am, c));
         let mut first = [0.0; NPOSE];
         let mut second = [0.0; NPOSE];
         for k in 0..NPOSE {
@@ -449,10 +501,15 @@ impl Model {
             let a = 18 + 3 * k;
             [jac[j][a], jac[j][a + 1], jac[j][a + 2]]
         };
+        // the front unit's z axis (world), the carriers' direction
+        let ez = [p0[2], p0[5], p0[8]];
         let point_vel = |k: usize| -> V3 {
             let mut v = [y[U], y[U + 1], y[U + 2]];
             for j in 0..NA {
                 v = add(&v, &scale(&point_col(k, j), ua[j]));
+            }
+            if self.hps.is_some() && (k == 1 || k == 2) {
+                v = add(&v, &scale(&ez, cd[k - 1]));
             }
             v
         };
@@ -539,6 +596,70 @@ impl Model {
                 &scale(&point_bias(0), -self.m_r),
             );
             force_at(&mut q, Some(0), &f);
+        }
+
+        // ---- front wheel ends on their carriers and the HPS struts (Chapter 5, Table 6.3)
+        // between the unit and each carrier
+        let mut struts = [[0.0; 2]; 3];
+        match (&self.hps, &d.hps) {
+            (Some((strut, z_static, _)), Some(h)) => {
+                let mw = h.wheel_end_mass;
+                let ez_dot = [first[2], first[5], first[8]];
+                for side in 0..2 {
+                    // the wheel end is part of the Table 6.1 unit at its static place (point
+                    // 10 + side): taken out there, put in on its carrier (point 1 + side)
+                    for (k, sign, on_carrier) in [(10 + side, -1.0, false), (1 + side, 1.0, true)] {
+                        let mut jv = [[0.0; NQ]; 3];
+                        for i in 0..3 {
+                            jv[i][i] = 1.0;
+                            for j in 0..NA {
+                                jv[i][3 + j] = point_col(k, j)[i];
+                            }
+                            if on_carrier {
+                                jv[i][CARRIER + side] = ez[i];
+                            }
+                        }
+                        for i in 0..NQ {
+                            for j in 0..NQ {
+                                mm[i][j] += sign
+                                    * mw
+                                    * (jv[0][i] * jv[0][j]
+                                        + jv[1][i] * jv[1][j]
+                                        + jv[2][i] * jv[2][j]);
+                            }
+                        }
+                        // velocity-product acceleration: the angle rates' (second
+                        // differences) and the carrier's Coriolis term 2 (d e_z/dt) c'
+                        let mut bias = point_bias(k);
+                        if on_carrier {
+                            bias = add(&bias, &scale(&ez_dot, 2.0 * cd[side]));
+                        }
+                        let f = scale(&add(&[0.0, 0.0, -g], &scale(&bias, -1.0)), sign * mw);
+                        for i in 0..NQ {
+                            q[i] += jv[0][i] * f[0] + jv[1][i] * f[1] + jv[2][i] * f[2];
+                        }
+                    }
+                    let z = z_static + c[side];
+                    let at = HPS + side * STRUT_STATES;
+                    let ys = &y[at..at + STRUT_STATES];
+                    strut.rhs(z, cd[side], ys, &mut dy[at..at + STRUT_STATES]);
+                    let f =
+                        strut.force(z, cd[side], ys) + h.end_stop(z, cd[side], strut.data().travel);
+                    // compressive positive: it pushes the unit up and the carrier down, an
+                    // internal force of the carrier's slide (its generalized force only)
+                    q[CARRIER + side] -= f;
+                    struts[0][side] = z;
+                    struts[1][side] = f;
+                    struts[2][side] = ys[0] * 1e6;
+                }
+            }
+            _ => {
+                // rigid front axle: the carriers held at zero, no strut states
+                for k in CARRIER..NQ {
+                    mm[k][k] = 1.0;
+                }
+                dy[HPS..].fill(0.0);
+            }
         }
 
         // ---- steering struts (Eqs 6.6-6.8) and hydraulics (Eqs 3.5-3.12)
@@ -699,6 +820,9 @@ impl Model {
                 &scale(&gyro, -1.0),
             );
             force_at(&mut q, Some(1 + i), &f);
+            if i < 2 && self.hps.is_some() {
+                q[CARRIER + i] += dot(&f, &ez);
+            }
             moment_on(&mut q, if i < 2 { &wf_cols } else { &wr_cols }, &m_body);
         }
 
@@ -758,13 +882,16 @@ impl Model {
                 cab_acc_body: mtv(&rf, &a_cab),
                 front_lat: (-hx[1] * acc[0] + hx[0] * acc[1]) / hn,
                 fz: fzs,
+                strut_travel: struts[0],
+                strut_force: struts[1],
+                strut_pc: struts[2],
             };
         }
     }
 
     /// The pose's Jacobian with respect to the five angles `a`, by central differences
     /// (step 1e-6 rad): row `j` is the derivative of every pose entry along angle `j`.
-    fn pose_jacobian(&self, a: &[f64]) -> [[f64; NPOSE]; NA] {
+    fn pose_jacobian(&self, a: &[f64], c: &[f64]) -> [[f64; NPOSE]; NA] {
         let h = 1e-6;
         let mut jac = [[0.0; NPOSE]; NA];
         for j in 0..NA {
@@ -774,7 +901,7 @@ impl Model {
             am.copy_from_slice(a);
             ap[j] += h;
             am[j] -= h;
-            let (pp, pm) = (self.pose(&ap), self.pose(&am));
+            let (pp, pm) = (self.pose(&ap, c), self.pose(&am, c));
             for k in 0..NPOSE {
                 jac[j][k] = (pp[k] - pm[k]) / (2.0 * h);
             }
@@ -783,13 +910,15 @@ impl Model {
     }
 
     /// Kinetic, gravitational, tire-spring and hydraulic energy (J) at `y` (the energy
-    /// check; tires on smooth ground).
+    /// check; tires on smooth ground); with the HPS also the wheel ends' motion on their
+    /// carriers and the struts' stored energy, which is written for the lossless strut
+    /// only ([`VehicleStrut::lossless_work`], from the static travel; within the travel).
     pub fn energy(&self, y: &[f64; N]) -> f64 {
         let d = &self.d;
-        let a = &y[3..NQ];
-        let ua = &y[U + 3..U + NQ];
-        let p0 = self.pose(a);
-        let jac = self.pose_jacobian(a);
+        let a = &y[3..CARRIER];
+        let ua = &y[U + 3..U + CARRIER];
+        let p0 = self.pose(a, &y[CARRIER..NQ]);
+        let jac = self.pose_jacobian(a, &y[CARRIER..NQ]);
         let mut v = [0.0f64; NPOSE];
         for j in 0..NA {
             for k in 0..NPOSE {
@@ -837,7 +966,24 @@ impl Model {
         };
         let v1 = s.v0 + s.ac * ext[0] - s.ar * ext[1];
         let v2 = s.v0 - s.ar * ext[0] + s.ac * ext[1];
-        kin + grav + tire + hyd(v1, y[PC]) + hyd(v2, y[PR])
+        let mut suspension = 0.0;
+        if let (Some((strut, z_static, states)), Some(h)) = (&self.hps, &d.hps) {
+            let mw = h.wheel_end_mass;
+            let ez = [rf[0][2], rf[1][2], rf[2][2]];
+            for side in 0..2 {
+                // the wheel end out of the unit at its static place, in on its carrier
+                let v0 = add(&vf, &point_of(&v, 10 + side));
+                let vw = add(
+                    &add(&vf, &point_of(&v, 1 + side)),
+                    &scale(&ez, y[U + CARRIER + side]),
+                );
+                suspension += 0.5 * mw * (dot(&vw, &vw) - dot(&v0, &v0))
+                    + mw * d.gravity * (point_of(&p0, 1 + side)[2] - point_of(&p0, 10 + side)[2]);
+                let c = y[CARRIER + side];
+                suspension += strut.lossless_work(*z_static, states, z_static + c, 50);
+            }
+        }
+        kin + grav + tire + hyd(v1, y[PC]) + hyd(v2, y[PR]) + suspension
     }
 }
 
@@ -916,6 +1062,12 @@ pub fn rk4(m: &Model, t: f64, y: &mut [f64; N], h: f64) {
         y[PC] = y[PC].max(P_CAV);
         y[PR] = y[PR].max(P_CAV);
     }
+    if let Some((strut, _, _)) = &m.hps {
+        for side in 0..2 {
+            let at = HPS + side * STRUT_STATES;
+            strut.clamp(&mut y[at..at + STRUT_STATES]);
+        }
+    }
 }
 
 /// Simulate from `y0` for `duration` s, recording at `hz`: the outputs at each sample and
@@ -926,7 +1078,7 @@ pub fn simulate(
     duration: f64,
     hz: f64,
 ) -> (Vec<f64>, Vec<Outputs>, [f64; N]) {
-    let sub = ((1.0 / hz) / STEP_S).round().max(1.0) as usize;
+    let sub = ((1.0 / hz) / m.step()).round().max(1.0) as usize;
     let h = 1.0 / hz / sub as f64;
     let n_out = (duration * hz).round() as usize + 1;
     let mut y = y0;
