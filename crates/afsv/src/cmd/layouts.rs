@@ -83,7 +83,9 @@ pub fn run(a: LayoutArgs) -> CmdResult {
     if let Some(path) = &a.plot {
         plot(path, &s)?;
     }
-    super::study::emit(a.output.json, &s, || text(&s))
+    Ok(afsv::output::print_json_or_text(a.output.json, &s, || {
+        text(&s)
+    })?)
 }
 
 /// The operator's a_wz of every row against the D4 speeds, with the zone's upper bound.

@@ -18,7 +18,6 @@ use afsv_design::{optimise, AfsOptimisationSettings, AfsProblem, Objective};
 use afsv_records::lock::take_and_read;
 use afsv_records::stored::write_json;
 use serde_json::json;
-use std::io::IsTerminal;
 use std::path::PathBuf;
 
 mod ask_tell;
@@ -94,11 +93,6 @@ impl AskTellArgs {
     }
 }
 
-/// Whether the status goes out as JSON (`--json`, or stdout not a terminal).
-fn machine(json: bool) -> bool {
-    json || !std::io::stdout().is_terminal()
-}
-
 /// On stderr (unless quiet): `command`'s run has finished after `batches`, the report
 /// follows.
 fn finished_notice(command: &str, batches: usize, batch_path: &std::path::Path) {
@@ -152,14 +146,12 @@ fn print_asked(
 ) -> CmdResult {
     let status = json!({"batch": batch, "finished": false, "phase": phase,
         "points": points, "batch_file": batch_path.display().to_string()});
-    if machine(json) {
-        afsv::output::print_json(&status)?;
-    } else {
-        println!(
-            "batch {batch} ({phase}): {points} {unit} written to {}",
+    afsv::output::print_json_or_text(json, &status, || {
+        format!(
+            "batch {batch} ({phase}): {points} {unit} written to {}\n",
             batch_path.display()
-        );
-    }
+        )
+    })?;
     Ok(())
 }
 
@@ -167,18 +159,16 @@ fn print_asked(
 fn print_told(json: bool, told: usize, points: usize, unit: &str, finished: bool) -> CmdResult {
     let status =
         json!({"told": told, "points": points, "next_batch": told + 1, "finished": finished});
-    if machine(json) {
-        afsv::output::print_json(&status)?;
-    } else {
-        println!(
-            "batch {told} told ({points} {unit}); {}",
+    afsv::output::print_json_or_text(json, &status, || {
+        format!(
+            "batch {told} told ({points} {unit}); {}\n",
             if finished {
                 "the run has finished: --ask prints the report"
             } else {
                 "next: --ask"
             }
-        );
-    }
+        )
+    })?;
     Ok(())
 }
 
@@ -451,11 +441,8 @@ fn report(
 ) -> CmdResult {
     write_plots(a, &problems[0], &outcomes[0].optimum.ps_sqp.design)?;
     let current = problems[0].evaluate_design(&problems[0].current_design())?;
-    if a.output.json || !std::io::stdout().is_terminal() {
-        afsv::output::print_json(&to_json(a.relaxed, a.rtol, objective, &current, outcomes))?;
-    } else {
-        print!("{}", to_text(a.relaxed, &current, outcomes));
-    }
+    let v = to_json(a.relaxed, a.rtol, objective, &current, outcomes);
+    afsv::output::print_json_or_text(a.output.json, &v, || to_text(a.relaxed, &current, outcomes))?;
     earned(outcomes).map_err(|why| {
         NotEarned(format!(
             "optimize afs: no feasible design found ({why}); the least infeasible point is printed, not an optimum (check the Eq 4.9 points and --min-arm-m)"

@@ -10,7 +10,6 @@ use afsv_dynamics::YawPlaneParams;
 use hps_emulsion::StrutParams;
 use roll_truck::TruckParams;
 use serde_json::{json, Value};
-use std::io::IsTerminal;
 use std::path::{Path, PathBuf};
 use terrain_psd::{SurfaceParams, TwoTrackSpec};
 use tire_fiala::TireParams;
@@ -182,11 +181,7 @@ pub fn run(cmd: Command) -> CmdResult {
                     json!({ "set": "vehicle", "builtin": rows })
                 }
             };
-            if json || !std::io::stdout().is_terminal() {
-                afsv::output::print_json(&list)?;
-            } else {
-                print!("{}", list_text(&list));
-            }
+            afsv::output::print_json_or_text(json, &list, || list_text(&list))?;
         }
     }
     Ok(())

@@ -14,7 +14,6 @@ use roll_truck::measures::RollMeasures;
 use roll_truck::studies::{run_case, run_case_on_road};
 use roll_truck::{BuiltinTruck, RunOptions, SteerDirection, TruckParams};
 use serde_json::json;
-use std::io::IsTerminal;
 use std::path::{Path, PathBuf};
 
 #[path = "roll_study.rs"]
@@ -180,11 +179,8 @@ pub fn run(cmd: Command) -> CmdResult {
         Command::Measures { case, output } => {
             let p = truck(&case.truck, case.cg_height_m)?;
             let run = one_run(&case, &p, 0.01)?;
-            if output.json || !std::io::stdout().is_terminal() {
-                afsv::output::print_json(&measures_json(&run.measures, &case))?;
-            } else {
-                print!("{}", measures_text(&run.measures));
-            }
+            let v = measures_json(&run.measures, &case);
+            afsv::output::print_json_or_text(output.json, &v, || measures_text(&run.measures))?;
             Ok(())
         }
         Command::Study(a) => roll_study::run_study_cmd(&a),

@@ -9,7 +9,6 @@
 use super::CmdResult;
 use afsv::output::{OutputGuard, OutputKind};
 use afsv_design::hps_sensitivity::{StudyScope, MAX_SEEDS};
-use std::io::IsTerminal;
 use std::path::PathBuf;
 
 /// `afsv study` subcommands.
@@ -191,23 +190,8 @@ fn speed_sweep(a: SweepArgs) -> CmdResult {
     if let Some(path) = &a.plot {
         super::write_chart(path, &afsv_design::figures::studies::speed_sweep(&s))?;
     }
-    emit(a.output.json, &s, || {
-        afsv_design::report::speed_sweep::text(&s)
-    })
-}
-
-/// JSON of `value` with `--json` or when piped, else `text()` on the terminal.
-pub(super) fn emit<T: serde::Serialize>(
-    json: bool,
-    value: &T,
-    text: impl Fn() -> String,
-) -> CmdResult {
-    if json || !std::io::stdout().is_terminal() {
-        afsv::output::print_json(&serde_json::to_value(value)?)?;
-    } else {
-        print!("{}", text());
-    }
-    Ok(())
+    let text = || afsv_design::report::speed_sweep::text(&s);
+    Ok(afsv::output::print_json_or_text(a.output.json, &s, text)?)
 }
 
 /// An SVG line plot of `columns` (label, x, y) at `path`, marked as afsv's.
@@ -248,7 +232,6 @@ fn hps(a: HpsArgs) -> CmdResult {
     if let Some(path) = &a.plot {
         super::write_chart(path, &afsv_design::figures::studies::hps_sensitivity(&s))?;
     }
-    emit(a.output.json, &s, || {
-        afsv_design::report::hps_sensitivity::text(&s)
-    })
+    let text = || afsv_design::report::hps_sensitivity::text(&s);
+    Ok(afsv::output::print_json_or_text(a.output.json, &s, text)?)
 }

@@ -32,7 +32,6 @@ use options::{
 use path_change::{offset_m, path_change_cmd, PathChangeFiles};
 use serde_json::{json, Value};
 use simulate::simulate_cmd;
-use std::io::IsTerminal;
 use std::path::{Path, PathBuf};
 use vehicle_3d::cab_ride::SeatRideMeasures;
 use vehicle_3d::interconnect::Link;
@@ -91,6 +90,13 @@ pub struct StudyArgs {
     /// Replace an existing plot afsv did not write.
     #[arg(long)]
     pub force: bool,
+}
+
+impl StudyArgs {
+    /// `--json` and `--plot`, for [`print_linked`].
+    fn shown(&self) -> (bool, Option<&Path>) {
+        (self.json, self.plot.as_deref())
+    }
 }
 
 /// `afsv vehicle` subcommands.
@@ -346,17 +352,24 @@ fn described_link(case: &CaseArgs, axle: FrontAxle) -> Result<Option<Link>, Stri
     Ok(Some(link))
 }
 
-/// [`print_result`] of a run of a vehicle whose struts `link` interconnects (the report of
-/// a vehicle without one unchanged).
-fn print_linked(json_out: bool, mut value: Value, text: &str, link: Option<&Link>) -> CmdResult {
-    match link {
-        None => print_result(json_out, &value, text),
-        Some(l) => {
-            let (v, line) = link_note(l);
-            value["link"] = v;
-            print_result(json_out, &value, &(line + text))
-        }
+/// The report `(value, text)` of a run of a vehicle whose struts `link` interconnects (the
+/// report of a vehicle without one unchanged), with its `--plot` file: JSON with `--json`
+/// (`json`) or on a pipe, else the text.
+fn print_linked(
+    (json, plot): (bool, Option<&Path>),
+    report: (Value, String),
+    link: Option<&Link>,
+) -> CmdResult {
+    let (mut value, mut text) = report;
+    if let Some(plot) = plot {
+        value["plot"] = json!(plot);
     }
+    if let Some(l) = link {
+        let (v, line) = link_note(l);
+        value["link"] = v;
+        text = line + &text;
+    }
+    Ok(afsv::output::print_json_or_text(json, &value, || text)?)
 }
 
 /// The strut parameter file of `--hps`, validated; `expected` names the accepted values in
@@ -431,15 +444,6 @@ fn over_seeds<T: Send>(
     out
 }
 
-fn print_result(json_out: bool, value: &Value, text: &str) -> CmdResult {
-    if json_out || !std::io::stdout().is_terminal() {
-        afsv::output::print_json(value)?;
-    } else {
-        print!("{text}");
-    }
-    Ok(())
-}
-
 /// Common start of the scenario commands: guard the inputs and the plot, read the vehicle.
 fn prepare(case: &CaseArgs, study: &StudyArgs) -> Result<(VehicleParams, FrontAxle), String> {
     let mut guard = OutputGuard::new(study.force);
@@ -453,59 +457,66 @@ fn roll_cmd(case: &CaseArgs, study: &StudyArgs, ramp_deg_s: f64, duration: f64) 
     let link = described_link(case, axle)?;
     let (terrain, seeds) =
         terrain_and_seeds(case, study.seeds, study.seed, Some(TerrainSpec::default()))?;
-    let speed = case.speed_kmh.unwrap_or(50.0);
     let spec = RollSpec {
         load: case.load,
-        speed_kmh: speed,
+        speed_kmh: case.speed_kmh.unwrap_or(50.0),
         ramp_deg_s,
         t_end_s: duration,
         terrain,
         ..RollSpec::d2(axle)
     };
-    let want_record = study.plot.is_some();
-    let runs: Vec<(RollMeasures, Option<RunRecord>)> =
-        over_seeds("afsv vehicle roll", &terrain, &seeds, |i, s| {
-            let (rec, m) = roll_run(&p, &spec, s, link.as_ref()).map_err(|e| e.to_string())?;
-            Ok((m, (want_record && i == 0).then_some(rec)))
-        })?;
-    let measures: Vec<RollMeasures> = runs.iter().map(|r| r.0).collect();
-    if let (Some(path), Some((m, Some(rec)))) = (&study.plot, runs.first()) {
-        let chart = figures::vehicle::roll(rec, m, &spec, axle_name(axle, &p), seeds[0]);
-        super::write_chart(path, &chart)?;
-    }
-    let (mut v, text) = roll_report(&p, &spec, case.paper_form, &seeds, &measures)?;
-    if let Some(plot) = &study.plot {
-        v["plot"] = json!(plot);
-    }
-    print_linked(study.json, v, &text, link.as_ref())
+    let axles = axle_name(axle, &p);
+    scenario_cmd(
+        study,
+        ("afsv vehicle roll", &terrain, &seeds),
+        link.as_ref(),
+        |s| roll_run(&p, &spec, s, link.as_ref()).map_err(|e| e.to_string()),
+        |rec, m: &RollMeasures| Ok(figures::vehicle::roll(rec, m, &spec, axles, seeds[0])),
+        |m| roll_report(&p, &spec, case.paper_form, &seeds, m),
+    )
 }
 
 fn yaw_cmd(case: &CaseArgs, study: &StudyArgs, pulse_deg: f64) -> CmdResult {
     let (p, axle) = prepare(case, study)?;
     let link = described_link(case, axle)?;
     let (terrain, seeds) = terrain_and_seeds(case, study.seeds, study.seed, None)?;
-    let speed = case.speed_kmh.unwrap_or(50.0);
     let spec = YawSpec {
         load: case.load,
-        speed_kmh: speed,
+        speed_kmh: case.speed_kmh.unwrap_or(50.0),
         pulse_deg,
         terrain,
         ..YawSpec::d3(axle)
     };
+    let axles = axle_name(axle, &p);
+    scenario_cmd(
+        study,
+        ("afsv vehicle yaw", &terrain, &seeds),
+        link.as_ref(),
+        |s| yaw_run(&p, &spec, s, link.as_ref()).map_err(|e| e.to_string()),
+        |rec, _: &YawMeasures| figures::vehicle::yaw(rec, &spec, axles, seeds[0]),
+        |m| yaw_report(&p, &spec, case.paper_form, &seeds, m),
+    )
+}
+
+/// What `vehicle roll` and `vehicle yaw` share once their scenario is set: `run` every seed
+/// (the first seed's record kept for the plot), draw the `chart` of the first seed, print
+/// the `report` of every seed's measures.
+fn scenario_cmd<M: Send>(
+    study: &StudyArgs,
+    (what, terrain, seeds): (&str, &Option<TerrainSpec>, &[u64]),
+    link: Option<&Link>,
+    run: impl Fn(u64) -> Result<(RunRecord, M), String> + Sync,
+    chart: impl Fn(&RunRecord, &M) -> Result<afsv_plot::Chart, String>,
+    report: impl Fn(&[M]) -> Result<(Value, String), String>,
+) -> CmdResult {
     let want_record = study.plot.is_some();
-    let runs: Vec<(YawMeasures, Option<RunRecord>)> =
-        over_seeds("afsv vehicle yaw", &terrain, &seeds, |i, s| {
-            let (rec, m) = yaw_run(&p, &spec, s, link.as_ref()).map_err(|e| e.to_string())?;
-            Ok((m, (want_record && i == 0).then_some(rec)))
-        })?;
-    let measures: Vec<YawMeasures> = runs.iter().map(|r| r.0).collect();
-    if let (Some(path), Some((_, Some(rec)))) = (&study.plot, runs.first()) {
-        let chart = figures::vehicle::yaw(rec, &spec, axle_name(axle, &p), seeds[0])?;
-        super::write_chart(path, &chart)?;
+    let runs: Vec<(M, Option<RunRecord>)> = over_seeds(what, terrain, seeds, |i, s| {
+        let (rec, m) = run(s)?;
+        Ok((m, (want_record && i == 0).then_some(rec)))
+    })?;
+    if let (Some(path), Some((m, Some(rec)))) = (&study.plot, runs.first()) {
+        super::write_chart(path, &chart(rec, m)?)?;
     }
-    let (mut v, text) = yaw_report(&p, &spec, case.paper_form, &seeds, &measures)?;
-    if let Some(plot) = &study.plot {
-        v["plot"] = json!(plot);
-    }
-    print_linked(study.json, v, &text, link.as_ref())
+    let measures: Vec<M> = runs.into_iter().map(|r| r.0).collect();
+    print_linked(study.shown(), report(&measures)?, link)
 }

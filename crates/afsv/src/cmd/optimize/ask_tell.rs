@@ -77,11 +77,9 @@ impl AskTell<'_> {
             "batch": state.batch, "finished": false, "points": asked.points.len(),
             "batch_file": path.display().to_string(), "phases": asked.phases,
         });
-        if super::machine(self.args.output.json) {
-            afsv::output::print_json(&status)?;
-        } else {
-            println!("{}", asked_text(state.batch, &asked, path));
-        }
+        afsv::output::print_json_or_text(self.args.output.json, &status, || {
+            asked_text(state.batch, &asked, path) + "\n"
+        })?;
         Ok(())
     }
 

@@ -16,7 +16,6 @@ use afsv_design::hps_speed_sweep::speed_sweep_runs;
 use afsv_design::report::hps_optimum;
 use afsv_design::{HpsAskTell, HpsAskTellState, HpsProblemDesc};
 use afsv_records::lock::take_and_read;
-use std::io::IsTerminal;
 use std::path::Path;
 
 /// Options of `afsv optimize hps`.
@@ -140,14 +139,15 @@ fn report(a: &HpsArgs, base: &vehicle_3d::VehicleParams, r: &HpsOptimum) -> CmdR
     } else {
         None
     };
-    if a.output.json || !std::io::stdout().is_terminal() {
-        afsv::output::print_json(&hps_optimum::to_json(r, sweep.as_ref())?)?;
-    } else {
-        print!("{}", hps_optimum::text(r));
-        if let Some(s) = &sweep {
-            print!("\n{}", afsv_design::report::speed_sweep::text(s));
-        }
-    }
+    let v = hps_optimum::to_json(r, sweep.as_ref())?;
+    afsv::output::print_json_or_text(a.output.json, &v, || match &sweep {
+        None => hps_optimum::text(r),
+        Some(s) => format!(
+            "{}\n{}",
+            hps_optimum::text(r),
+            afsv_design::report::speed_sweep::text(s)
+        ),
+    })?;
     hps_optimum::earned(r)
         .map_err(|why| afsv::output::NotEarned(format!("optimize hps: {why}")).into())
 }

@@ -15,7 +15,6 @@ use afsv_design::{
     LayoutOptimum, LayoutProblem, LayoutProblemDesc, LayoutVariable,
 };
 use afsv_records::lock::take_and_read;
-use std::io::IsTerminal;
 use std::path::{Path, PathBuf};
 use vehicle_3d::Load;
 
@@ -184,11 +183,7 @@ pub fn run(a: &LayoutArgs) -> CmdResult {
 /// The report on stdout (JSON, or text on a terminal); [`NotEarned`] when the optimum is
 /// infeasible or a variable lies on a bound.
 fn report(a: &LayoutArgs, r: &LayoutOptimum) -> CmdResult {
-    if a.output.json || !std::io::stdout().is_terminal() {
-        afsv::output::print_json(r)?;
-    } else {
-        print!("{}", text(r));
-    }
+    afsv::output::print_json_or_text(a.output.json, r, || text(r))?;
     r.earned().map_err(|why| {
         NotEarned(format!(
             "optimize layout: the best design found is printed, not an optimum: {why}"

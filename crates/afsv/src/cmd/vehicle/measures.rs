@@ -43,8 +43,8 @@ pub(super) fn measures_cmd(
     });
     progress.finish();
     let c = result?.pop().ok_or("no configuration was measured")?;
-    let (v, text) = measures_report(&p, axle, case.load, case.paper_form, &seeds, &c)?;
-    super::print_linked(json_out, v, &text, link.as_ref())
+    let report = measures_report(&p, axle, case.load, case.paper_form, &seeds, &c)?;
+    super::print_linked((json_out, None), report, link.as_ref())
 }
 
 #[cfg(test)]

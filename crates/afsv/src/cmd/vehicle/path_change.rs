@@ -75,10 +75,7 @@ pub(super) fn path_change_cmd(
         v["output"] = json!(o);
         v["sidecar"] = json!(o.with_extension("json"));
     }
-    if let Some(plot) = out.plot.as_deref() {
-        v["plot"] = json!(plot);
-    }
-    print_linked(out.json, v, &text, link.as_ref())
+    print_linked((out.json, out.plot.as_deref()), (v, text), link.as_ref())
 }
 
 /// Output options of `afsv vehicle path-change`.

@@ -109,9 +109,6 @@ fn print_ride(
     seats: &[SeatRideMeasures],
     ground: Ground,
 ) -> CmdResult {
-    let (mut v, text) = ride_report(p, spec, case.paper_form, measures, seats, ground)?;
-    if let Some(plot) = &study.plot {
-        v["plot"] = json!(plot);
-    }
-    print_linked(study.json, v, &text, link)
+    let report = ride_report(p, spec, case.paper_form, measures, seats, ground)?;
+    print_linked(study.shown(), report, link)
 }
