@@ -151,7 +151,8 @@ fn vehicle3d_model(
         let p: vehicle_3d::VehicleParams = read_json(path)?;
         p.validate()
             .map_err(|e| format!("{}: {e}", path.display()))?;
-        super::params::vehicle_3d_in_ranges(&p).map_err(|e| format!("{}: {e}", path.display()))?;
+        afsv_design::report::params::vehicle_3d_in_ranges(&p)
+            .map_err(|e| format!("{}: {e}", path.display()))?;
         m.params = p;
     }
     m.default_load = load

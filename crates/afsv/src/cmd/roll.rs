@@ -271,7 +271,8 @@ fn one_run(
     };
     let sp = case.rule.params()?;
     if let Some(file) = &case.road {
-        let (profile, _) = super::road::read(file, roll_truck::studies::half_track_m(p))?;
+        let (profile, _) =
+            afsv_design::measured_road::read(file, roll_truck::studies::half_track_m(p))?;
         let run = run_case_on_road(p, profile, case.direction, &options, &sp)
             .map_err(|e| format!("{}: {e}", file.display()))?;
         return Ok(run);

@@ -154,7 +154,7 @@ fn sweep_vehicle(
         let v = super::described::articulated(a.vehicle.as_deref())?;
         super::described::refuse_link(&v, "--hps FILE")?;
         let mut p = v.params;
-        p.hps = super::vehicle::read_strut(file, "nominal or a strut file")?;
+        p.hps = afsv_design::param_files::read_hps_strut(file, "nominal or a strut file")?;
         p
     };
     if let Some(text) = &a.design {

@@ -175,7 +175,7 @@ fn kmh(v: f64) -> Result<f64, String> {
 /// prototype's Table 3.1 columns by default).
 fn load_params(v: &VehicleArgs) -> Result<YawPlaneParams, Box<dyn std::error::Error>> {
     if let Some(path) = &v.params {
-        return read_params(path);
+        return Ok(afsv_design::param_files::read_yaw_plane(path)?);
     }
     let d = super::described::articulated(v.vehicle.as_deref())?;
     let load = match v.load {
@@ -184,18 +184,6 @@ fn load_params(v: &VehicleArgs) -> Result<YawPlaneParams, Box<dyn std::error::Er
     };
     let p = d.yaw_plane_params(load);
     p.validate()?;
-    Ok(p)
-}
-
-/// Read and validate a yaw-plane parameter file.
-pub fn read_params(path: &Path) -> Result<YawPlaneParams, Box<dyn std::error::Error>> {
-    let text = afsv_records::provenance::read_input(path)
-        .map_err(|e| format!("{}: {e}", path.display()))?;
-    let p: YawPlaneParams =
-        serde_json::from_str(&text).map_err(|e| format!("{}: {e}", path.display()))?;
-    p.validate()
-        .map_err(|e| format!("{}: {e}", path.display()))?;
-    vehicle_components::within_ranges(&p).map_err(|e| format!("{}: {e}", path.display()))?;
     Ok(p)
 }
 

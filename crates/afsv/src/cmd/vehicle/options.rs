@@ -3,30 +3,13 @@
 //! a bad one is a one-line error naming the option.
 
 use super::super::args;
+use afsv_design::vehicle_case::TerrainChoice;
 use afsv_dynamics::SteerInput;
 use terrain_psd::IsoClass;
 use vehicle_3d::scenarios::TerrainSpec;
-use vehicle_3d::YawInertiaForm;
 
 /// Help of `--paper-form` (the vehicle commands and `afsv evaluate`).
 pub(crate) const PAPER_FORM_HELP: &str = "Use the printed Eq 3.13 yaw inertias (m L² counted twice) instead of the energy-consistent equations, to reproduce the dissertation's lower yaw frequency; for comparison with the paper, never for design (docs/vehicle-3d.md)";
-
-/// The yaw-inertia form of `--paper-form`.
-pub(super) fn yaw_inertia_form(paper_form: bool) -> YawInertiaForm {
-    if paper_form {
-        YawInertiaForm::PaperEq313
-    } else {
-        YawInertiaForm::EnergyConsistent
-    }
-}
-
-/// The strut file `--hps` names, if it names one (not `off` or `nominal`).
-pub(super) fn hps_file(hps: Option<&str>) -> Option<&std::path::Path> {
-    match hps {
-        None | Some("off" | "nominal") => None,
-        Some(file) => Some(std::path::Path::new(file)),
-    }
-}
 
 /// Largest number of terrain seeds of one command.
 pub(super) const MAX_SEEDS: usize = 1000;
@@ -99,21 +82,12 @@ pub(super) fn duration_s(s: &str) -> Result<f64, String> {
     }
 }
 
-/// The `--terrain` option: smooth ground or a two-track terrain, with an optional seed.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct TerrainArg {
-    /// None: smooth (flat) ground.
-    pub spec: Option<TerrainSpec>,
-    /// A seed given as `seed:N`.
-    pub seed: Option<u64>,
-}
-
 /// Parse `smooth`, `flat` or `class:E,mc:0.3[,seed:N]` (keys in any order; a missing class
 /// is E, a missing m_c 0.3, the section 6.4 terrain).
-pub(super) fn terrain_arg(s: &str) -> Result<TerrainArg, String> {
+pub(super) fn terrain_arg(s: &str) -> Result<TerrainChoice, String> {
     let s = s.trim();
     if s == "smooth" || s == "flat" {
-        return Ok(TerrainArg {
+        return Ok(TerrainChoice {
             spec: None,
             seed: None,
         });
@@ -161,7 +135,7 @@ pub(super) fn terrain_arg(s: &str) -> Result<TerrainArg, String> {
     if let Some(m) = mc {
         spec.m_c = m;
     }
-    Ok(TerrainArg {
+    Ok(TerrainChoice {
         spec: Some(spec),
         seed,
     })

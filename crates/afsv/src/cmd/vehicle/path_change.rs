@@ -4,9 +4,7 @@
 //! JSON sidecar, afsv-v1) and a four-panel SVG of the channels.
 
 use super::super::args;
-use super::terrain_and_seeds;
-use super::{axle_name, declare_inputs, described_link, print_linked};
-use super::{vehicle_params, CaseArgs, CmdResult};
+use super::{axle_name, declare_inputs, print_linked, vehicle_of, CaseArgs, CmdResult};
 use afsv::output::{OutputGuard, OutputKind};
 use afsv_design::figures;
 use afsv_design::report::vehicle::path_change_report;
@@ -44,9 +42,8 @@ pub(super) fn path_change_cmd(
     if let Some(p) = out.plot.as_deref() {
         guard.output("--plot", p, OutputKind::Svg)?;
     }
-    let (p, axle) = vehicle_params(case)?;
-    let link = described_link(case, axle)?;
-    let (terrain, seeds) = terrain_and_seeds(case, None, seed, None)?;
+    let (p, axle, link) = vehicle_of(case)?;
+    let (terrain, seeds) = case.terrain_and_seeds(None, seed, None)?;
     let seeds = &seeds[..1];
     let v3 = PathChangeSpec::v3(case.load, axle);
     let spec = PathChangeSpec {
