@@ -87,6 +87,7 @@ pub mod strut_shift;
 pub mod sweep;
 pub mod vehicle_case;
 pub mod yaw_leakage;
+pub mod yaw_manoeuvre;
 
 pub use afs_ask_tell::{AfsAsk, AfsAskTell, AfsBatch, AfsPhase};
 pub use afs_design::{a0_of_longest_initial_arm, AfsDesign, AfsDesignBounds, AfsVariable};
