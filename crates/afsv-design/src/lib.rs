@@ -56,6 +56,7 @@ pub mod afs_design;
 pub mod afs_optimum;
 pub mod afs_problem;
 pub mod afs_resume;
+pub mod afs_run;
 pub mod afs_state;
 pub mod ahp;
 pub mod batch_files;
