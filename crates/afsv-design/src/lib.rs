@@ -86,6 +86,7 @@ pub mod report;
 pub mod strut_lab;
 pub mod strut_shift;
 pub mod sweep;
+pub mod truck_case;
 pub mod vehicle_case;
 pub mod yaw_leakage;
 pub mod yaw_manoeuvre;

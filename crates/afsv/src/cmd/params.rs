@@ -5,7 +5,6 @@
 use super::hps::StrutChoice;
 use super::CmdResult;
 use afsv_design::param_files;
-pub(super) use afsv_design::param_files::read;
 use afsv_design::report::params::list_text;
 use serde_json::json;
 use std::path::{Path, PathBuf};
