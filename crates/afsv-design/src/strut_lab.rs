@@ -1,4 +1,5 @@
-//! The strut on the test bench, as `afsv hps` runs it: the laboratory programme of section
+//! The strut on the test bench, as `afsv hps` runs it: a harmonic test and its last
+//! cycle's loop ([`harmonic`]), the laboratory programme of section
 //! 5.3 run test by test with its table ([`characterize_each`], [`characterize_report`]),
 //! and the strut a measured record is identified against ([`identify_strut`]: the one the
 //! command names, else the one its sidecar names).
@@ -6,10 +7,28 @@
 use crate::param_files::StrutSource;
 use crate::report::strut::CHARACTERIZE_COLUMNS;
 use afsv_records::Record;
-use hps_emulsion::{characterize, HarmonicTest, HpsError, HpsExtensions, LoopMetrics};
-use hps_emulsion::{SimOptions, StrutParams};
+use hps_emulsion::{characterize, loop_metrics, simulate_displacement, Excitation};
+use hps_emulsion::{HarmonicTest, HpsError, HpsExtensions, LoopMetrics};
+use hps_emulsion::{SimOptions, StrutParams, StrutRecord};
 use serde_json::{json, Value};
 use std::path::Path;
+
+/// `cycles` cycles of the harmonic `test` on `params` (no extensions), and the loop
+/// metrics of the last; too short a record for a loop says what to raise.
+pub fn harmonic(
+    params: &StrutParams,
+    test: &HarmonicTest,
+    cycles: f64,
+    opts: &SimOptions,
+) -> Result<(StrutRecord, LoopMetrics), String> {
+    let exc = Excitation::harmonic(test.frequency_hz, test.amplitude_m, cycles);
+    let rec = simulate_displacement(params, &HpsExtensions::none(), &exc, opts)
+        .map_err(|e| e.to_string())?;
+    let metrics = loop_metrics(&rec, test).map_err(|e| {
+        format!("{e}: raise --rate or --cycles (need >= 1 cycle, 16 samples per cycle)")
+    })?;
+    Ok((rec, metrics))
+}
 
 /// The last-cycle metrics of every test of `tests` on `params` (no extensions, default
 /// integration; `hps_emulsion::characterize`), one test at a time; `done` is called after
@@ -133,5 +152,24 @@ mod tests {
         assert_eq!(table.len(), 1);
         assert_eq!(full["tests"].as_array().unwrap().len(), 1);
         assert!(summary.starts_with("strut front-axle"));
+    }
+
+    #[test]
+    fn a_harmonic_test_has_its_loop_or_says_what_to_raise() {
+        let p = StrutParams::front_axle();
+        let test = HarmonicTest {
+            frequency_hz: 1.0,
+            amplitude_m: 0.0075,
+        };
+        let (rec, m) = harmonic(&p, &test, 2.0, &SimOptions::default()).unwrap();
+        assert!(!rec.time.is_empty());
+        assert_eq!(m, loop_metrics(&rec, &test).unwrap());
+        let coarse = SimOptions {
+            output_rate_hz: 5.0,
+            ..SimOptions::default()
+        };
+        assert!(harmonic(&p, &test, 2.0, &coarse)
+            .unwrap_err()
+            .contains("raise --rate"));
     }
 }

@@ -9,11 +9,12 @@ use afsv::progress::Progress;
 use afsv_design::param_files::StrutSource;
 use afsv_design::report::hps_identify::identify_report;
 use afsv_design::report::strut;
+use afsv_design::strut_lab::harmonic as harmonic_run;
 use afsv_design::strut_lab::{characterize_each, characterize_report, identify_strut};
 use afsv_records::Record;
 use hps_emulsion::{
-    identify, lab_programme, loop_metrics, simulate_displacement, Excitation, FitParam,
-    HarmonicTest, HpsExtensions, IdentifyOptions, SimOptions, Solver, StrutParams,
+    identify, lab_programme, FitParam, HarmonicTest, HpsExtensions, IdentifyOptions, SimOptions,
+    Solver, StrutParams,
 };
 use std::path::PathBuf;
 
@@ -204,11 +205,7 @@ fn harmonic(a: HarmonicArgs) -> CmdResult {
         solver: a.solver.solver(),
         ..SimOptions::default()
     };
-    let exc = Excitation::harmonic(a.freq, test.amplitude_m, a.cycles);
-    let rec = simulate_displacement(&params, &HpsExtensions::none(), &exc, &opts)?;
-    let metrics = loop_metrics(&rec, &test).map_err(|e| {
-        format!("{e}: raise --rate or --cycles (need >= 1 cycle, 16 samples per cycle)")
-    })?;
+    let (rec, metrics) = harmonic_run(&params, &test, a.cycles, &opts)?;
     if let Some(path) = &a.output {
         let mut r = Record::from_columns(rec.columns())?;
         r.meta = strut::harmonic_sidecar(&strut::HarmonicRun {

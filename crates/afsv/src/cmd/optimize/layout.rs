@@ -111,7 +111,7 @@ fn problem_desc(a: &LayoutArgs) -> Result<LayoutProblemDesc, String> {
     let d4 = [LayoutMeasure::D4Speed, LayoutMeasure::D4SpeedSeat];
     let d4_speeds_kmh =
         if d4.contains(&objective) || constraints.iter().any(|c| d4.contains(&c.measure)) {
-            crate::cmd::study::parse_list(
+            afsv_design::value_lists::list(
                 "--d4-speeds",
                 &a.d4_speeds,
                 afsv_design::layout_optimum::MAX_D4_SPEEDS,
