@@ -1,7 +1,66 @@
-//! The lists of numbers a study's options give: a value or an inclusive range
+//! The numbers and lists of numbers options give: a finite number, within a rule
+//! ([`finite_f64`], [`positive_f64`], [`nonneg_f64`], [`fraction_f64`],
+//! [`open_fraction_f64`]; errors naming the value and the rule); a value or an inclusive range
 //! `start:stop:step` ([`range`], tire sweeps), comma-separated numbers ([`list`], speeds,
 //! designs) and percent changes ([`changes`], Table 6.4). Errors name the option and the
 //! item.
+
+fn number(s: &str) -> Result<f64, String> {
+    let t = s.trim();
+    if t.is_empty() {
+        return Err("expected a number, got an empty value".into());
+    }
+    let v: f64 = t.parse().map_err(|_| format!("`{t}` is not a number"))?;
+    if !v.is_finite() {
+        return Err(format!("`{t}` is not a finite number"));
+    }
+    Ok(v)
+}
+
+/// Any finite number.
+pub fn finite_f64(s: &str) -> Result<f64, String> {
+    number(s)
+}
+
+/// A finite number > 0.
+pub fn positive_f64(s: &str) -> Result<f64, String> {
+    let v = number(s)?;
+    if v > 0.0 {
+        Ok(v)
+    } else {
+        Err("must be > 0".into())
+    }
+}
+
+/// A finite number >= 0.
+pub fn nonneg_f64(s: &str) -> Result<f64, String> {
+    let v = number(s)?;
+    if v >= 0.0 {
+        Ok(v)
+    } else {
+        Err("must be >= 0".into())
+    }
+}
+
+/// A finite fraction in [0, 1).
+pub fn fraction_f64(s: &str) -> Result<f64, String> {
+    let v = number(s)?;
+    if (0.0..1.0).contains(&v) {
+        Ok(v)
+    } else {
+        Err("must lie in [0, 1)".into())
+    }
+}
+
+/// A finite fraction in (0, 1).
+pub fn open_fraction_f64(s: &str) -> Result<f64, String> {
+    let v = number(s)?;
+    if v > 0.0 && v < 1.0 {
+        Ok(v)
+    } else {
+        Err("must lie in (0, 1)".into())
+    }
+}
 
 /// Largest number of values of a range.
 pub const MAX_RANGE_VALUES: f64 = 1e6;
@@ -91,6 +150,55 @@ pub fn changes(text: &str) -> Result<Vec<f64>, String> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use proptest::prelude::*;
+
+    #[test]
+    fn refuses_non_finite_and_empty() {
+        for bad in [
+            "nan", "NaN", "inf", "-inf", "infinity", "", " ", "1e309", "abc", "2^64",
+        ] {
+            assert!(finite_f64(bad).is_err(), "{bad}");
+            assert!(positive_f64(bad).is_err(), "{bad}");
+            assert!(nonneg_f64(bad).is_err(), "{bad}");
+        }
+        assert_eq!(positive_f64("1e-320").unwrap(), 1e-320);
+        assert!(positive_f64("0").is_err());
+        assert!(positive_f64("-1").is_err());
+        assert!(nonneg_f64("-1").is_err());
+        assert_eq!(nonneg_f64("0").unwrap(), 0.0);
+        assert!(fraction_f64("1").is_err());
+        assert!(open_fraction_f64("0").is_err());
+    }
+
+    proptest! {
+        #[test]
+        fn finite_numbers_round_trip(v in proptest::num::f64::ANY) {
+            let s = v.to_string();
+            let r = finite_f64(&s);
+            prop_assert_eq!(r.is_ok(), v.is_finite());
+            if let Ok(x) = r {
+                prop_assert_eq!(x, v);
+            }
+            prop_assert_eq!(positive_f64(&s).is_ok(), v.is_finite() && v > 0.0);
+            prop_assert_eq!(nonneg_f64(&s).is_ok(), v.is_finite() && v >= 0.0);
+            prop_assert_eq!(fraction_f64(&s).is_ok(), v.is_finite() && (0.0..1.0).contains(&v));
+        }
+
+        #[test]
+        fn never_panics_on_any_text(s in ".*") {
+            let _ = finite_f64(&s);
+            let _ = positive_f64(&s);
+            let _ = nonneg_f64(&s);
+            let _ = open_fraction_f64(&s);
+        }
+
+        #[test]
+        fn accepted_values_are_in_range(s in "[-+]?[0-9]{0,4}(\\.[0-9]{0,3})?(e[-+]?[0-9]{1,3})?") {
+            if let Ok(v) = positive_f64(&s) { prop_assert!(v.is_finite() && v > 0.0); }
+            if let Ok(v) = nonneg_f64(&s) { prop_assert!(v.is_finite() && v >= 0.0); }
+            if let Ok(v) = open_fraction_f64(&s) { prop_assert!(v > 0.0 && v < 1.0); }
+        }
+    }
 
     #[test]
     fn ranges_include_their_end() {

@@ -1,13 +1,17 @@
 //! The 3-D vehicle a command of `afsv vehicle` runs, and where: the described vehicle (the
 //! prototype by default) or a raw parameter set, with the front axle the command chose
 //! (`off`, `nominal`, a strut file), the struts' interconnection of the description, the
-//! terrain and its seeds, the cab and seat, and one recorded run of it
-//! ([`simulate_run`]).
+//! terrain and its seeds (`class:E,mc:0.3[,seed:N]`, [`parse_terrain`]), the
+//! steering-wheel input (`pulse:...`, `ramp:...`, [`parse_steer`]), the cab and seat, and
+//! one recorded run of it ([`simulate_run`]).
 
 use crate::report::vehicle::yaw_inertia_form;
 use crate::report::vehicle_record::SimulateRun;
+use crate::value_lists::{finite_f64, positive_f64};
+use afsv_dynamics::SteerInput;
 use afsv_records::guard::OutputGuard;
 use std::path::Path;
+use terrain_psd::IsoClass;
 use vehicle_3d::cab_ride::{seat_ride_measures, CabSeatLayout, SeatRideMeasures};
 use vehicle_3d::component_record::simulate_components;
 use vehicle_3d::interconnect::{Link, LinkedVehicle};
@@ -15,6 +19,17 @@ use vehicle_3d::scenarios::TerrainSpec;
 use vehicle_3d::{FrontAxle, RunOptions, RunRecord, Vehicle, VehicleOptions, VehicleParams};
 use vehicle_components::recorder::Recorder;
 use vehicle_components::FlatTerrain;
+
+/// Longest simulated time of one run (s).
+pub const MAX_DURATION_S: f64 = 600.0;
+
+/// Largest steering-wheel angle of the options (deg), also where a `--steer ramp` without
+/// a limit holds: the roll scenario's hold angle, far beyond the rear unit's rollover.
+pub const MAX_STEER_DEG: f64 = 1000.0;
+
+/// Range of steering-wheel ramp rates (deg/s): slower ramps do not reach rollover within
+/// the longest run, faster ones are steps.
+pub const RAMP_RATE_DEG_S: (f64, f64) = (0.01, 1000.0);
 
 /// Where a command's vehicle comes from: `--params` (a raw 3-D parameter set), else
 /// `--vehicle` (a description; the prototype when `None`); the front axle of `--hps`
@@ -40,6 +55,122 @@ pub struct TerrainChoice {
     pub spec: Option<TerrainSpec>,
     /// A seed given with the terrain.
     pub seed: Option<u64>,
+}
+
+/// Parse `smooth`, `flat` or `class:E,mc:0.3[,seed:N]` (keys in any order; a missing class
+/// is E, a missing m_c 0.3, the section 6.4 terrain).
+pub fn parse_terrain(s: &str) -> Result<TerrainChoice, String> {
+    let s = s.trim();
+    if s == "smooth" || s == "flat" {
+        return Ok(TerrainChoice {
+            spec: None,
+            seed: None,
+        });
+    }
+    let mut spec = TerrainSpec::default();
+    let (mut class, mut mc, mut seed) = (None, None, None);
+    for part in s.split(',') {
+        let (key, value) = part.split_once(':').ok_or_else(|| {
+            format!("`{part}` is not KEY:VALUE (expected smooth, flat or class:E,mc:0.3[,seed:N])")
+        })?;
+        let (key, value) = (key.trim(), value.trim());
+        let twice = |k: &str| format!("`{k}` is given twice");
+        match key {
+            "class" => {
+                if class.is_some() {
+                    return Err(twice(key));
+                }
+                class =
+                    Some(value.parse::<IsoClass>().map_err(|_| {
+                        format!("class `{value}`: expected an ISO 8608 class A to H")
+                    })?);
+            }
+            "mc" => {
+                if mc.is_some() {
+                    return Err(twice(key));
+                }
+                mc = Some(positive_f64(value).map_err(|e| format!("mc `{value}`: {e}"))?);
+            }
+            "seed" => {
+                if seed.is_some() {
+                    return Err(twice(key));
+                }
+                seed = Some(
+                    value
+                        .parse::<u64>()
+                        .map_err(|_| format!("seed `{value}`: expected a whole number"))?,
+                );
+            }
+            _ => return Err(format!("unknown key `{key}` (known: class, mc, seed)")),
+        }
+    }
+    if let Some(c) = class {
+        spec.class = c;
+    }
+    if let Some(m) = mc {
+        spec.m_c = m;
+    }
+    Ok(TerrainChoice {
+        spec: Some(spec),
+        seed,
+    })
+}
+
+/// Parse a `--steer` number whose magnitude is at most `max`.
+fn steer_number(what: &str, s: &str, max: f64) -> Result<f64, String> {
+    let v = finite_f64(s).map_err(|e| format!("--steer {what} `{}`: {e}", s.trim()))?;
+    if v.abs() <= max {
+        Ok(v)
+    } else {
+        Err(format!(
+            "--steer {what} `{}`: must be at most {max} in magnitude",
+            s.trim()
+        ))
+    }
+}
+
+/// Parse `--steer`: `pulse:DEG,DUR_S,START_S`, `ramp:DEG_PER_S,START_S[,LIMIT_DEG]`, `none`.
+pub fn parse_steer(spec: &str) -> Result<SteerInput, String> {
+    let spec = spec.trim();
+    let usage = || {
+        format!(
+            "--steer `{spec}` not understood (expected pulse:DEG,DUR_S,START_S, ramp:DEG_PER_S,START_S[,LIMIT_DEG] or none)"
+        )
+    };
+    if spec == "none" {
+        return Ok(SteerInput::None);
+    }
+    let (kind, rest) = spec.split_once(':').ok_or_else(usage)?;
+    let parts: Vec<&str> = rest.split(',').collect();
+    let input = match (kind, parts.as_slice()) {
+        ("pulse", [a, d, t0]) => SteerInput::pulse_deg(
+            steer_number("pulse peak", a, MAX_STEER_DEG)?,
+            steer_number("pulse duration", d, MAX_DURATION_S)?,
+            steer_number("pulse start", t0, MAX_DURATION_S)?,
+        ),
+        ("ramp", [r, t0, rest @ ..]) if rest.len() <= 1 => {
+            let rate = steer_number("ramp rate", r, RAMP_RATE_DEG_S.1)?;
+            if rate.abs() < RAMP_RATE_DEG_S.0 {
+                return Err(format!(
+                    "--steer ramp rate `{r}`: must be at least {} deg/s in magnitude",
+                    RAMP_RATE_DEG_S.0
+                ));
+            }
+            SteerInput::Ramp {
+                rate_rad_s: rate.to_radians(),
+                start_s: steer_number("ramp start", t0, MAX_DURATION_S)?,
+                limit_rad: match rest {
+                    [l] => steer_number("ramp limit", l, MAX_STEER_DEG)?
+                        .abs()
+                        .to_radians(),
+                    _ => MAX_STEER_DEG.to_radians(),
+                },
+            }
+        }
+        _ => return Err(usage()),
+    };
+    input.validate().map_err(|e| format!("--steer: {e}"))?;
+    Ok(input)
 }
 
 /// The strut file `--hps` names, if it names one (not `off` or `nominal`).
@@ -301,5 +432,33 @@ mod tests {
         assert!(vehicle_params(&case(Some("no-such-strut.json")))
             .unwrap_err()
             .starts_with("--hps: "));
+    }
+
+    #[test]
+    fn terrain_and_steer_texts() {
+        assert_eq!(parse_terrain("smooth").unwrap().spec, None);
+        let t = parse_terrain("mc:0.5, class:C, seed:4").unwrap();
+        let spec = t.spec.unwrap();
+        assert_eq!((spec.class, spec.m_c, t.seed), (IsoClass::C, 0.5, Some(4)));
+        assert!(parse_terrain("class:C,class:D")
+            .unwrap_err()
+            .contains("twice"));
+        assert!(parse_terrain("colour:red")
+            .unwrap_err()
+            .contains("unknown key"));
+        assert_eq!(parse_steer("none").unwrap(), SteerInput::None);
+        assert!(matches!(
+            parse_steer("ramp:5,1").unwrap(),
+            SteerInput::Ramp { .. }
+        ));
+        assert!(parse_steer("ramp:0.001,1")
+            .unwrap_err()
+            .contains("at least"));
+        assert!(parse_steer("pulse:30,0.2")
+            .unwrap_err()
+            .contains("not understood"));
+        assert!(parse_steer("pulse:2000,0.2,1")
+            .unwrap_err()
+            .contains("at most"));
     }
 }

@@ -24,7 +24,7 @@ use afsv_design::vehicle_case::{self, CaseSource, TerrainChoice as TerrainArg};
 use measures::measures_cmd;
 pub(crate) use options::PAPER_FORM_HELP;
 use options::{
-    duration_s, ramp_rate, seed_count, speed_kmh, steer_peak, terrain_arg, MAX_DURATION_S,
+    duration_s, parse_terrain, ramp_rate, seed_count, speed_kmh, steer_peak, MAX_DURATION_S,
 };
 use path_change::{offset_m, path_change_cmd, PathChangeFiles};
 use serde_json::{json, Value};
@@ -50,7 +50,7 @@ pub struct CaseArgs {
     /// Ground: `smooth` (or `flat`), or the two-track terrain `class:C,mc:0.3[,seed:N]`
     /// (ISO 8608 class A-H, coherence cut-off m_c in cycles/m, Eqs 6.4-6.5). Default:
     /// `class:E,mc:0.3` for ride and roll, smooth for yaw and simulate.
-    #[arg(long, allow_hyphen_values = true, value_parser = terrain_arg)]
+    #[arg(long, allow_hyphen_values = true, value_parser = parse_terrain)]
     pub terrain: Option<TerrainArg>,
     /// Front axle: `off` (rigid), `nominal` (the strut the vehicle description gives the
     /// front axle: Table 6.3 for the prototype) or a strut parameter file (JSON, as written

@@ -2,7 +2,7 @@
 //! docs/records.md) in the afsv-v1 sign convention, through the output guard.
 
 use super::super::args;
-use super::options::steer_input;
+use super::options::parse_steer;
 use super::CmdResult;
 use super::{declare_inputs, vehicle_of, CaseArgs};
 use afsv::output::{OutputGuard, OutputKind};
@@ -45,7 +45,7 @@ pub(super) fn simulate_cmd(
         duration / dt,
         vehicle_3d::simulate::MAX_SAMPLES as f64,
     )?;
-    let input = steer_input(steer)?;
+    let input = parse_steer(steer)?;
     let mut guard = OutputGuard::new(force);
     declare_inputs(case, &mut guard)?;
     guard.output("-o", output, OutputKind::Record)?;
