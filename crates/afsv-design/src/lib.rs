@@ -77,6 +77,7 @@ pub mod hps_speed_sweep;
 pub mod layout_ask_tell;
 pub mod layout_names;
 pub mod layout_optimum;
+pub mod layout_problem;
 pub mod layouts;
 pub mod measured_road;
 pub mod measures;

@@ -44,6 +44,26 @@ pub fn check_samples(option: &str, what: &str, count: f64, max: f64) -> Result<(
     }
 }
 
+/// `duration / dt` output samples of a run must not exceed `max` ([`check_samples`] of
+/// `--duration` with `--dt`).
+pub fn check_duration(duration: f64, dt: f64, max: f64) -> Result<(), String> {
+    check_samples(
+        &format!("--duration {}", show(duration)),
+        &format!("duration/dt with --dt {}", show(dt)),
+        duration / dt,
+        max,
+    )
+}
+
+/// `--seeds N` within 1..=`max`.
+pub fn check_seeds(n: usize, max: usize) -> Result<(), String> {
+    if (1..=max).contains(&n) {
+        Ok(())
+    } else {
+        Err(format!("--seeds {n}: must be 1 to {max}"))
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -60,9 +60,7 @@ pub struct LayoutArgs {
 /// Run `afsv study layouts`.
 pub fn run(a: LayoutArgs) -> CmdResult {
     use afsv_design::layouts::MAX_SEEDS;
-    if a.seeds == 0 || a.seeds > MAX_SEEDS {
-        return Err(format!("--seeds {}: must be 1 to {MAX_SEEDS}", a.seeds).into());
-    }
+    super::args::check_seeds(a.seeds, MAX_SEEDS)?;
     let speeds = afsv_design::value_lists::list("--speeds", &a.speeds, 50)?;
     let mut guard = OutputGuard::new(a.force);
     super::described::declare(&mut guard, a.vehicle.as_deref())?;

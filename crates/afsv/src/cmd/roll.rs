@@ -268,12 +268,7 @@ fn simulate(case: &CaseArgs, dt: f64, output: &Path, force: bool) -> CmdResult {
     guard.output("-o", output, OutputKind::Record)?;
     let p = truck(&case.truck, case.cg_height_m)?;
     let duration = duration(case, &p);
-    args::check_samples(
-        &format!("--duration {}", args::show(duration)),
-        &format!("duration/dt with --dt {}", args::show(dt)),
-        duration / dt,
-        roll_truck::simulate::MAX_SAMPLES as f64,
-    )?;
+    args::check_duration(duration, dt, roll_truck::simulate::MAX_SAMPLES as f64)?;
     let run = one_run(case, &p, dt)?;
     let mut out = Record::from_columns(run.record.afsv_v1_columns())?;
     let rollover_s = run.record.rollover_s;

@@ -58,9 +58,7 @@ pub struct StudyArgs {
 /// Run `afsv roll study`.
 pub(super) fn run_study_cmd(a: &StudyArgs) -> CmdResult {
     let seeds = a.seeds;
-    if seeds == 0 || seeds > MAX_SEEDS {
-        return Err(format!("--seeds {seeds}: must be 1 to {MAX_SEEDS}").into());
-    }
+    super::super::args::check_seeds(seeds, MAX_SEEDS)?;
     let t = &a.truck;
     let chosen = t.params.is_some() || t.truck.is_some() || t.vehicle.is_some();
     match a.study {

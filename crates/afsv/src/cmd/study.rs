@@ -115,9 +115,7 @@ fn sweep_vehicle(
 
 fn speed_sweep(a: SweepArgs) -> CmdResult {
     use afsv_design::hps_speed_sweep::{hps_speed_sweep, MAX_SEEDS, MAX_SPEEDS};
-    if a.seeds == 0 || a.seeds > MAX_SEEDS {
-        return Err(format!("--seeds {}: must be 1 to {MAX_SEEDS}", a.seeds).into());
-    }
+    super::args::check_seeds(a.seeds, MAX_SEEDS)?;
     let speeds = list("--speeds", &a.speeds, MAX_SPEEDS)?;
     let mut guard = OutputGuard::new(a.force);
     let p = sweep_vehicle(&a, &mut guard)?;
@@ -135,9 +133,7 @@ fn speed_sweep(a: SweepArgs) -> CmdResult {
 }
 
 fn hps(a: HpsArgs) -> CmdResult {
-    if a.seeds == 0 || a.seeds > MAX_SEEDS {
-        return Err(format!("--seeds {}: must be 1 to {MAX_SEEDS}", a.seeds).into());
-    }
+    super::args::check_seeds(a.seeds, MAX_SEEDS)?;
     let changes = afsv_design::value_lists::changes(&a.changes)?;
     let mut guard = OutputGuard::new(a.force);
     super::described::declare(&mut guard, a.vehicle.as_deref())?;

@@ -180,12 +180,7 @@ pub fn run(cmd: Command) -> CmdResult {
             columns,
             force,
         } => {
-            args::check_samples(
-                &format!("--duration {}", args::show(duration)),
-                &format!("duration/dt with --dt {}", args::show(dt)),
-                duration / dt,
-                args::MAX_YAW_SAMPLES,
-            )?;
+            args::check_duration(duration, dt, args::MAX_YAW_SAMPLES)?;
             let mut guard = OutputGuard::new(force);
             guard.input_if("--params", vehicle.params.as_deref())?;
             super::described::declare(&mut guard, vehicle.vehicle.as_deref())?;

@@ -8,11 +8,11 @@
 use super::AskTellArgs;
 use crate::cmd::CmdResult;
 use afsv::output::{NotEarned, OutputGuard};
-use afsv_design::layout_optimum::LayoutMeasure;
+use afsv_design::layout_problem::{self, LayoutOptions};
 use afsv_design::report::layout_optimum::text;
 use afsv_design::{
-    optimise_layout, LayoutAskTell, LayoutAskTellState, LayoutConstraint, LayoutGaSettings,
-    LayoutOptimum, LayoutProblem, LayoutProblemDesc, LayoutVariable,
+    optimise_layout, LayoutAskTell, LayoutAskTellState, LayoutGaSettings, LayoutOptimum,
+    LayoutProblem, LayoutProblemDesc,
 };
 use afsv_records::lock::take_and_read;
 use std::path::{Path, PathBuf};
@@ -88,57 +88,22 @@ pub struct LayoutArgs {
     pub output: crate::cmd::args::JsonOutput,
 }
 
-/// The problem the options define.
+/// The problem the options define (`afsv_design::layout_problem`).
 fn problem_desc(a: &LayoutArgs) -> Result<LayoutProblemDesc, String> {
-    if a.layout.contains(',') {
-        return Err(format!("--layout {}: one layout", a.layout));
-    }
-    let v = crate::cmd::described::articulated(a.vehicle.as_deref())?;
-    let layout = afsv_design::layout_names::build_layouts(&v, &a.layout)?
-        .pop()
-        .ok_or("--layout: no layout named")?;
-    if a.seeds == 0 || a.seeds > afsv_design::layout_optimum::MAX_SEEDS {
-        return Err(format!("--seeds {}: must be 1 to 100", a.seeds));
-    }
-    let flag = |f: &'static str| move |e: String| format!("--{f}: {e}");
-    let link = layout.link();
-    let objective = LayoutMeasure::parse(&a.objective).map_err(flag("objective"))?;
-    let constraints: Vec<LayoutConstraint> = a
-        .constraints
-        .iter()
-        .map(|t| LayoutConstraint::parse(t).map_err(flag("constraint")))
-        .collect::<Result<_, _>>()?;
-    let d4 = [LayoutMeasure::D4Speed, LayoutMeasure::D4SpeedSeat];
-    let d4_speeds_kmh =
-        if d4.contains(&objective) || constraints.iter().any(|c| d4.contains(&c.measure)) {
-            afsv_design::value_lists::list(
-                "--d4-speeds",
-                &a.d4_speeds,
-                afsv_design::layout_optimum::MAX_D4_SPEEDS,
-            )?
-        } else {
-            Vec::new()
-        };
-    Ok(LayoutProblemDesc {
-        vehicle: v.name.clone(),
-        layout: layout.name,
-        params: layout.params,
-        front_axle: layout.front_axle,
-        link,
-        seat: afsv_design::layout_names::seat_of(&v, a.seat.as_deref())?,
+    layout_problem::problem_desc(&LayoutOptions {
+        vehicle: a.vehicle.as_deref(),
+        layout: &a.layout,
+        seat: a.seat.as_deref(),
+        vary: &a.vary,
+        objective: &a.objective,
+        maximise: a.maximise,
+        constraints: &a.constraints,
         load: a.load,
         speed_kmh: a.speed_kmh,
         ride_length_m: a.ride_length_m,
-        seeds: afsv_design::fan_out::seed_range(a.terrain_seed, a.seeds as u64),
-        variables: a
-            .vary
-            .iter()
-            .map(|t| LayoutVariable::parse(t).map_err(flag("vary")))
-            .collect::<Result<_, _>>()?,
-        d4_speeds_kmh,
-        objective,
-        maximise: a.maximise,
-        constraints,
+        d4_speeds: &a.d4_speeds,
+        seeds: a.seeds,
+        terrain_seed: a.terrain_seed,
     })
 }
 

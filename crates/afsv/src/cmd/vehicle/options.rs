@@ -15,14 +15,19 @@ pub(super) const MAX_SEEDS: usize = 1000;
 /// Highest speed the options accept (km/h): above the truck's top speed.
 pub(super) const MAX_SPEED_KMH: f64 = 80.0;
 
-/// A speed in km/h within (0, [`MAX_SPEED_KMH`]].
-pub(super) fn speed_kmh(s: &str) -> Result<f64, String> {
+/// A number > 0 of `unit` at most `max`.
+fn at_most(s: &str, max: f64, unit: &str) -> Result<f64, String> {
     let v = args::positive_f64(s)?;
-    if v <= MAX_SPEED_KMH {
+    if v <= max {
         Ok(v)
     } else {
-        Err(format!("must be at most {MAX_SPEED_KMH} km/h"))
+        Err(format!("must be at most {max} {unit}"))
     }
+}
+
+/// A speed in km/h within (0, [`MAX_SPEED_KMH`]].
+pub(super) fn speed_kmh(s: &str) -> Result<f64, String> {
+    at_most(s, MAX_SPEED_KMH, "km/h")
 }
 
 /// A seed count within 1..=[`MAX_SEEDS`].
@@ -51,22 +56,12 @@ pub(super) fn ramp_rate(s: &str) -> Result<f64, String> {
 
 /// A steering-wheel angle within (0, [`MAX_STEER_DEG`]] (deg).
 pub(super) fn steer_peak(s: &str) -> Result<f64, String> {
-    let v = args::positive_f64(s)?;
-    if v <= MAX_STEER_DEG {
-        Ok(v)
-    } else {
-        Err(format!("must be at most {MAX_STEER_DEG} deg"))
-    }
+    at_most(s, MAX_STEER_DEG, "deg")
 }
 
 /// A duration within (0, [`MAX_DURATION_S`]] s.
 pub(super) fn duration_s(s: &str) -> Result<f64, String> {
-    let v = args::positive_f64(s)?;
-    if v <= MAX_DURATION_S {
-        Ok(v)
-    } else {
-        Err(format!("must be at most {MAX_DURATION_S} s"))
-    }
+    at_most(s, MAX_DURATION_S, "s")
 }
 
 #[cfg(test)]

@@ -39,12 +39,7 @@ pub(super) fn simulate_cmd(
     out_args: &RecordOutput,
 ) -> CmdResult {
     let (output, force) = (out_args.output.as_path(), out_args.force);
-    args::check_samples(
-        &format!("--duration {}", args::show(duration)),
-        &format!("duration/dt with --dt {}", args::show(dt)),
-        duration / dt,
-        vehicle_3d::simulate::MAX_SAMPLES as f64,
-    )?;
+    args::check_duration(duration, dt, vehicle_3d::simulate::MAX_SAMPLES as f64)?;
     let input = parse_steer(steer)?;
     let mut guard = OutputGuard::new(force);
     declare_inputs(case, &mut guard)?;
