@@ -93,7 +93,8 @@ mod tests {
 
     #[test]
     fn builtin_names_resolve_and_kinds_are_checked() {
-        assert_eq!(articulated(None).unwrap().name, "prototype");
+        let prototype = articulated(Some(Path::new("prototype"))).unwrap();
+        assert_eq!(articulated(None).unwrap().name, prototype.name);
         let truck_name = Path::new("chapter2-truck");
         assert!(!is_file(truck_name) && is_file(Path::new("no-such-vehicle.toml")));
         assert!(truck(truck_name).is_ok());

@@ -4,7 +4,10 @@
 
 use afsv_records::Record;
 use serde_json::Value;
-use terrain_psd::{CoherenceModel, IsoClass, OffRoadTerrain, PowerLawPsd};
+use std::path::Path;
+use terrain_psd::{
+    CoherenceModel, Detrend, IsoClass, OffRoadTerrain, PowerLawPsd, WelchConfig, Window,
+};
 
 /// The columns of the spectrum table of `afsv terrain psd`.
 pub const SPECTRUM_COLUMNS: [&str; 7] = [
@@ -83,6 +86,31 @@ pub fn coherence_model(
     Ok(c)
 }
 
+/// The Welch estimator of a record of `samples` samples at spacing `dx` (m) read from
+/// `file`: segments of `segment_m` (m; default `WelchConfig::auto`), `overlap`, the
+/// `window` and `detrend` named, checked against the record.
+pub fn welch_config(
+    (samples, dx, file): (usize, f64, &Path),
+    segment_m: Option<f64>,
+    overlap: f64,
+    (window, detrend): (&str, &str),
+) -> Result<WelchConfig, String> {
+    let mut cfg = match segment_m {
+        Some(s) => WelchConfig::with_segment_m(s, dx).map_err(|e| format!("--segment-m: {e}"))?,
+        None => WelchConfig::auto(samples).map_err(|e| e.to_string())?,
+    };
+    cfg.overlap = overlap;
+    cfg.window = window
+        .parse::<Window>()
+        .map_err(|e| format!("--window: {e}"))?;
+    cfg.detrend = detrend
+        .parse::<Detrend>()
+        .map_err(|e| format!("--detrend: {e}"))?;
+    cfg.validate(samples)
+        .map_err(|e| format!("{}: {e}", file.display()))?;
+    Ok(cfg)
+}
+
 /// The rows of a spectral analysis (`terrain_psd`'s, as `afsv_design::report::terrain`
 /// reports it): the `spectrum` columns ([`SPECTRUM_COLUMNS`]) and, when the analysis `out`
 /// has the model's `target`, its PSD and coherence.
@@ -121,6 +149,15 @@ mod tests {
         assert_eq!((m.alpha_r, m.waviness), (1e-4, 2.5));
         assert!(coherence_model("piecewise:0.3", Some(1.0), None).is_err());
         assert!(coherence_model("bogsjo:0.5", Some(1.0), None).is_ok());
+        let file = Path::new("t.csv");
+        let cfg = welch_config((4096, 0.05, file), Some(12.8), 0.25, ("hann", "linear")).unwrap();
+        assert_eq!((cfg.overlap, cfg.detrend), (0.25, Detrend::Linear));
+        assert!(welch_config((4096, 0.05, file), None, 0.5, ("box", "mean")).is_err());
+        assert!(
+            welch_config((10, 0.05, file), Some(12.8), 0.5, ("hann", "mean"))
+                .unwrap_err()
+                .starts_with("t.csv: ")
+        );
     }
 
     #[test]

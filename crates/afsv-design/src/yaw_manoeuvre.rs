@@ -169,6 +169,6 @@ mod tests {
         assert_eq!(s.options.form, EquationForm::PaperEq313);
         assert_eq!(form_text(EquationForm::PaperEq313), "Eq 3.13 as printed");
         let p = yaw_plane_params(None, None, Load::Unloaded).unwrap();
-        assert_eq!(p.load, Load::Unloaded);
+        assert_eq!(p.load, Some(Load::Unloaded));
     }
 }

@@ -6,11 +6,11 @@ use afsv::progress::Progress;
 use afsv_design::report::terrain::{
     generated_record, generated_sidecar, generated_summary, psd_analysis, psd_summary, Generated,
 };
-use afsv_design::terrain_choice::{coherence_model, psd_model, psd_table};
+use afsv_design::terrain_choice::{coherence_model, psd_model, psd_table, welch_config};
 use afsv_records::Record;
 use serde_json::json;
 use std::path::{Path, PathBuf};
-use terrain_psd::{synthesize, Band, Detrend, TwoTrackSpec, WelchConfig, Window};
+use terrain_psd::{synthesize, Band, TwoTrackSpec};
 
 /// Track width of the 35-t AFSV (Table 6.1), the default for the cross-slope PSD.
 const DEFAULT_TRACK_WIDTH_M: f64 = terrain_psd::summary::AFSV_TRACK_WIDTH_M;
@@ -212,21 +212,8 @@ fn psd(a: PsdArgs) -> CmdResult {
     let left = rec.require("left_m", &a.input)?;
     let right = rec.column("right_m");
     let dx = spacing(x, &a.input)?;
-    let mut cfg = match a.segment_m {
-        Some(s) => WelchConfig::with_segment_m(s, dx).map_err(|e| format!("--segment-m: {e}"))?,
-        None => WelchConfig::auto(left.len())?,
-    };
-    cfg.overlap = a.overlap;
-    cfg.window = a
-        .window
-        .parse::<Window>()
-        .map_err(|e| format!("--window: {e}"))?;
-    cfg.detrend = a
-        .detrend
-        .parse::<Detrend>()
-        .map_err(|e| format!("--detrend: {e}"))?;
-    cfg.validate(left.len())
-        .map_err(|e| format!("{}: {e}", a.input.display()))?;
+    let names = (&a.window[..], &a.detrend[..]);
+    let cfg = welch_config((left.len(), dx, &a.input), a.segment_m, a.overlap, names)?;
     if !(a.track_width.is_finite() && a.track_width > 0.0) {
         return Err(format!(
             "--track-width {}: must be a finite number > 0",
