@@ -207,8 +207,7 @@ fn harmonic(a: HarmonicArgs) -> CmdResult {
     };
     let (rec, metrics) = harmonic_run(&params, &test, a.cycles, &opts)?;
     if let Some(path) = &a.output {
-        let mut r = Record::from_columns(rec.columns())?;
-        r.meta = strut::harmonic_sidecar(&strut::HarmonicRun {
+        let meta = strut::harmonic_sidecar(&strut::HarmonicRun {
             strut: a.strut.name(),
             gamma0: params.gamma0,
             sample_rate_hz: a.rate,
@@ -216,8 +215,7 @@ fn harmonic(a: HarmonicArgs) -> CmdResult {
             amplitude_m: test.amplitude_m,
             cycles: a.cycles,
         });
-        afsv::provenance::stamp_record(&mut r);
-        r.write(path)?;
+        afsv::provenance::write_record(path, Record::from_columns(rec.columns())?, meta)?;
     }
     if let Some(path) = &a.plot {
         let record = match &a.output {

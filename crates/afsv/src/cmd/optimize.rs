@@ -90,6 +90,27 @@ impl AskTellArgs {
     }
 }
 
+/// Progress of a GA run (`afsv optimize hps|layout`): one step per generation, with the
+/// best objective as the run shows it.
+struct Generations(afsv::progress::Progress, fn(f64) -> String);
+
+impl Generations {
+    fn new(command: &str, generations: usize, best: fn(f64) -> String) -> Self {
+        let what = format!("afsv optimize {command}");
+        Self(
+            afsv::progress::Progress::new(&what, "generations", Some(generations)),
+            best,
+        )
+    }
+}
+
+impl optimize::Progress for Generations {
+    fn report(&self, _phase: &str, done: usize, _total: usize, best: f64) {
+        self.0
+            .step(&format!("generation {done}, best {}", (self.1)(best)));
+    }
+}
+
 /// On stderr (unless quiet): `command`'s run has finished after `batches`, the report
 /// follows.
 fn finished_notice(command: &str, batches: usize, batch_path: &std::path::Path) {

@@ -270,11 +270,10 @@ fn simulate(case: &CaseArgs, dt: f64, output: &Path, force: bool) -> CmdResult {
     let duration = duration(case, &p);
     args::check_duration(duration, dt, roll_truck::simulate::MAX_SAMPLES as f64)?;
     let run = one_run(case, &p, dt)?;
-    let mut out = Record::from_columns(run.record.afsv_v1_columns())?;
     let rollover_s = run.record.rollover_s;
-    out.meta = roll::simulate_sidecar(&p, case.direction, &ground(case), dt, rollover_s);
-    afsv::provenance::stamp_record(&mut out);
-    out.write(output)?;
+    let meta = roll::simulate_sidecar(&p, case.direction, &ground(case), dt, rollover_s);
+    let columns = Record::from_columns(run.record.afsv_v1_columns())?;
+    let out = afsv::provenance::write_record(output, columns, meta)?;
     let mut summary = measures_json(&run.measures, case);
     summary["output"] = json!(output);
     summary["sidecar"] = json!(output.with_extension("json"));

@@ -205,10 +205,9 @@ pub fn run(cmd: Command) -> CmdResult {
                 ..SimOptions::default()
             };
             let rec = simulate(&p.vehicle, &sys, &man, &opts)?;
-            let mut out = Record::from_selected(rec.columns(), &columns)?;
-            out.meta = yaw::simulate_sidecar(&p, &man, &input, &opts, &rec);
-            afsv::provenance::stamp_record(&mut out);
-            out.write(&output)?;
+            let meta = yaw::simulate_sidecar(&p, &man, &input, &opts, &rec);
+            let selected = Record::from_selected(rec.columns(), &columns)?;
+            let out = afsv::provenance::write_record(&output, selected, meta)?;
             afsv::output::print_json(&yaw::simulate_summary(&output, out.names(), &rec))?;
         }
         Command::Measures { vehicle } => {

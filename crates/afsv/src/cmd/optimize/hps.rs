@@ -58,15 +58,6 @@ pub struct HpsArgs {
     pub output: crate::cmd::args::JsonOutput,
 }
 
-/// GA progress: one step per generation.
-struct Generations(afsv::progress::Progress);
-
-impl optimize::Progress for Generations {
-    fn report(&self, _phase: &str, done: usize, _total: usize, best: f64) {
-        self.0.step(&format!("generation {done}, best F {best:.4}"));
-    }
-}
-
 /// Run the optimisation and print the result.
 pub fn run(a: &HpsArgs) -> CmdResult {
     if !(4..=1000).contains(&a.population) || a.population % 2 == 1 {
@@ -111,11 +102,7 @@ pub fn run(a: &HpsArgs) -> CmdResult {
         };
         return ask_tell(a, &desc, state, stored);
     }
-    let progress = Generations(afsv::progress::Progress::new(
-        "afsv optimize hps",
-        "generations",
-        Some(a.generations),
-    ));
+    let progress = super::Generations::new("hps", a.generations, |b| format!("F {b:.4}"));
     let r = optimise_hps(&base, &settings, &progress)?;
     progress.0.finish();
     report(a, &base, &r)

@@ -107,15 +107,6 @@ fn problem_desc(a: &LayoutArgs) -> Result<LayoutProblemDesc, String> {
     })
 }
 
-/// GA progress: one step per generation.
-struct Generations(afsv::progress::Progress);
-
-impl optimize::Progress for Generations {
-    fn report(&self, _phase: &str, done: usize, _total: usize, best: f64) {
-        self.0.step(&format!("generation {done}, best {best:.5}"));
-    }
-}
-
 /// Run `afsv optimize layout`.
 pub fn run(a: &LayoutArgs) -> CmdResult {
     a.ask_tell.check()?;
@@ -135,11 +126,7 @@ pub fn run(a: &LayoutArgs) -> CmdResult {
     if let Some(state) = &a.ask_tell.state {
         return ask_tell(a, &problem, &ga, state, stored);
     }
-    let progress = Generations(afsv::progress::Progress::new(
-        "afsv optimize layout",
-        "generations",
-        Some(a.generations),
-    ));
+    let progress = super::Generations::new("layout", a.generations, |b| format!("{b:.5}"));
     let r = optimise_layout(&problem, &ga, &progress)?;
     progress.0.finish();
     report(a, &r)

@@ -58,10 +58,9 @@ pub(super) fn path_change_cmd(
         Some(l) => path_change_linked(&p, &spec, seeds[0], l).map(|(r, m)| (r.record, m))?,
     };
     if let Some(path) = out.output.as_deref() {
-        let mut r = afsv_records::Record::from_columns(rec.afsv_v1_columns())?;
-        r.meta = path_change_sidecar(&rec, &spec, seeds, &m, &p, link.as_ref());
-        afsv::provenance::stamp_record(&mut r);
-        r.write(path)?;
+        let meta = path_change_sidecar(&rec, &spec, seeds, &m, &p, link.as_ref());
+        let columns = afsv_records::Record::from_columns(rec.afsv_v1_columns())?;
+        afsv::provenance::write_record(path, columns, meta)?;
     }
     if let Some(path) = out.plot.as_deref() {
         let chart = figures::vehicle::path_change(&rec, &spec, axle_name(axle, &p), &m);

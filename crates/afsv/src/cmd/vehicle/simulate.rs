@@ -59,10 +59,9 @@ pub(super) fn simulate_cmd(
         link: link.as_ref(),
     };
     let (rec, components) = simulate_run(&run, duration, out_args.components)?;
-    let mut out = simulate_record(&rec, components.as_ref())?;
-    out.meta = simulate_sidecar(&run, components.as_ref());
-    afsv::provenance::stamp_record(&mut out);
-    out.write(output)?;
+    let meta = simulate_sidecar(&run, components.as_ref());
+    let columns = simulate_record(&rec, components.as_ref())?;
+    let out = afsv::provenance::write_record(output, columns, meta)?;
     afsv::output::print_json(&simulate_summary(output, out.names(), &rec))?;
     Ok(())
 }
