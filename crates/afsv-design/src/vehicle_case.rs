@@ -5,6 +5,7 @@
 //! steering-wheel input (`pulse:...`, `ramp:...`, [`parse_steer`]), the cab and seat, and
 //! one recorded run of it ([`simulate_run`]).
 
+use crate::report::show;
 use crate::report::vehicle::yaw_inertia_form;
 use crate::report::vehicle_record::SimulateRun;
 use crate::value_lists::{finite_f64, positive_f64};
@@ -15,7 +16,7 @@ use terrain_psd::IsoClass;
 use vehicle_3d::cab_ride::{seat_ride_measures, CabSeatLayout, SeatRideMeasures};
 use vehicle_3d::component_record::simulate_components;
 use vehicle_3d::interconnect::{Link, LinkedVehicle};
-use vehicle_3d::scenarios::TerrainSpec;
+use vehicle_3d::scenarios::{TerrainSpec, RUN_IN_M};
 use vehicle_3d::{FrontAxle, RunOptions, RunRecord, Vehicle, VehicleOptions, VehicleParams};
 use vehicle_components::recorder::Recorder;
 use vehicle_components::FlatTerrain;
@@ -279,6 +280,22 @@ pub fn terrain_and_seeds(
     Ok((Some(spec), list))
 }
 
+/// When the measured window of a D1 ride at `speed_kmh` starts (s): after the
+/// [`RUN_IN_M`] run-in; the run-in and the `length_m` window together take at most
+/// [`MAX_DURATION_S`].
+pub fn ride_window_start(speed_kmh: f64, length_m: f64) -> Result<f64, String> {
+    let speed = speed_kmh / 3.6;
+    let sim_s = (RUN_IN_M + length_m) / speed;
+    if sim_s > MAX_DURATION_S {
+        return Err(format!(
+            "--length-m {}: the run-in and window take {} s at {speed_kmh} km/h, more than {MAX_DURATION_S} s",
+            show(length_m),
+            show(sim_s)
+        ));
+    }
+    Ok(RUN_IN_M / speed)
+}
+
 /// The seeds of `afsv vehicle measures`: 1..=`seeds` or `seed` (default 1..=10), at most
 /// [`crate::design_3d::MAX_SEEDS`].
 pub fn measure_seeds(seeds: Option<usize>, seed: Option<u64>) -> Result<Vec<u64>, String> {
@@ -432,6 +449,15 @@ mod tests {
         assert!(vehicle_params(&case(Some("no-such-strut.json")))
             .unwrap_err()
             .starts_with("--hps: "));
+    }
+
+    #[test]
+    fn the_ride_window_follows_the_run_in() {
+        let t = ride_window_start(36.0, 100.0).unwrap();
+        assert_eq!(t, RUN_IN_M / 10.0);
+        assert!(ride_window_start(1.0, 5000.0)
+            .unwrap_err()
+            .contains("more than 600 s"));
     }
 
     #[test]

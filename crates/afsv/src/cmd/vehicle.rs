@@ -23,9 +23,7 @@ use afsv_design::report::vehicle::{ride_psd, RidePsd};
 use afsv_design::vehicle_case::{self, CaseSource, TerrainChoice as TerrainArg};
 use measures::measures_cmd;
 pub(crate) use options::PAPER_FORM_HELP;
-use options::{
-    duration_s, parse_terrain, ramp_rate, seed_count, speed_kmh, steer_peak, MAX_DURATION_S,
-};
+use options::{duration_s, parse_terrain, ramp_rate, seed_count, speed_kmh, steer_peak};
 use path_change::{offset_m, path_change_cmd, PathChangeFiles};
 use serde_json::{json, Value};
 use simulate::simulate_cmd;
@@ -33,7 +31,7 @@ use std::path::{Path, PathBuf};
 use vehicle_3d::cab_ride::SeatRideMeasures;
 use vehicle_3d::interconnect::Link;
 use vehicle_3d::scenarios::{
-    RideMeasures, RideSpec, RollMeasures, RollSpec, TerrainSpec, YawMeasures, YawSpec, RUN_IN_M,
+    RideMeasures, RideSpec, RollMeasures, RollSpec, TerrainSpec, YawMeasures, YawSpec,
 };
 use vehicle_3d::{FrontAxle, Load, RunRecord, VehicleParams};
 

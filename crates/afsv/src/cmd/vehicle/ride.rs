@@ -24,16 +24,7 @@ pub(super) fn ride_cmd(
     let (p, axle, link) = prepare(case, study)?;
     let layout = vehicle_case::seat_layout(&case.source(), seat)?;
     let speed = case.speed_kmh.unwrap_or(20.0);
-    let t_window = RUN_IN_M / (speed / 3.6);
-    let sim_s = (RUN_IN_M + length_m) / (speed / 3.6);
-    if sim_s > MAX_DURATION_S {
-        return Err(format!(
-            "--length-m {}: the run-in and window take {} s at {speed} km/h, more than {MAX_DURATION_S} s",
-            args::show(length_m),
-            args::show(sim_s)
-        )
-        .into());
-    }
+    let t_window = vehicle_case::ride_window_start(speed, length_m)?;
     if let Some(road) = road {
         let spec = RideSpec {
             speed_kmh: speed,
