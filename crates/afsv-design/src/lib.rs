@@ -85,6 +85,7 @@ pub mod objective;
 pub mod param_files;
 pub mod record_measures;
 pub mod report;
+pub mod shift_case;
 pub mod strut_lab;
 pub mod strut_shift;
 pub mod study_strut;

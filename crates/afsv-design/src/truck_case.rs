@@ -61,6 +61,25 @@ pub fn truck(source: &TruckSource, cg_height_m: Option<f64>) -> Result<TruckPara
     Ok(p)
 }
 
+/// The detection rule of the sustained period (not given in chapter 2): the defaults
+/// (`perf_measures::roll`) with the LTR `threshold` and the longest `max_dip_s` below it
+/// replaced when given, validated.
+pub fn sustained_period(
+    threshold: Option<f64>,
+    max_dip_s: Option<f64>,
+) -> Result<SustainedPeriodParams, String> {
+    let mut sp = SustainedPeriodParams::default();
+    if let Some(t) = threshold {
+        sp.threshold = t;
+    }
+    if let Some(d) = max_dip_s {
+        sp.max_dip_s = d;
+    }
+    sp.validate()
+        .map_err(|e| format!("--sp-threshold/--sp-max-dip: {e}"))?;
+    Ok(sp)
+}
+
 /// One ramp-steer run of `p` to rollover in `direction` on `ground` (a measured road must
 /// cover the run; errors name its file), with the sustained-period rule `sp`.
 pub fn run_on(
@@ -99,6 +118,15 @@ pub fn run_on(
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn the_rule_takes_the_given_values() {
+        let d = SustainedPeriodParams::default();
+        assert_eq!(sustained_period(None, None).unwrap(), d);
+        let sp = sustained_period(Some(0.9), Some(0.2)).unwrap();
+        assert_eq!((sp.threshold, sp.max_dip_s), (0.9, 0.2));
+        assert!(sustained_period(None, Some(-1.0)).is_err());
+    }
 
     #[test]
     fn the_truck_is_chosen_and_adjusted() {

@@ -60,16 +60,7 @@ pub struct RuleArgs {
 impl RuleArgs {
     /// The rule: the defaults with the given options replaced, validated.
     pub fn params(&self) -> Result<SustainedPeriodParams, String> {
-        let mut sp = SustainedPeriodParams::default();
-        if let Some(t) = self.sp_threshold {
-            sp.threshold = t;
-        }
-        if let Some(d) = self.sp_max_dip {
-            sp.max_dip_s = d;
-        }
-        sp.validate()
-            .map_err(|e| format!("--sp-threshold/--sp-max-dip: {e}"))?;
-        Ok(sp)
+        truck_case::sustained_period(self.sp_threshold, self.sp_max_dip)
     }
 
     fn given(&self) -> bool {
