@@ -129,8 +129,9 @@ mod tests {
             valve: (5.0, -1.0, 6.0),
             ..o
         };
-        assert!(shift_case(&v, &bad_valve)
-            .unwrap_err()
-            .starts_with("--deadband-mm"));
+        let Err(e) = shift_case(&v, &bad_valve) else {
+            panic!("a valve with a negative time constant was accepted");
+        };
+        assert!(e.starts_with("--deadband-mm"), "{e}");
     }
 }
