@@ -515,9 +515,72 @@ pub fn headline(d: &Discovery) -> String {
     )
 }
 
+/// What `afsv discover --list-effects` prints: the model's name, its baseline parameters
+/// and its catalogue of effects.
+pub fn catalogue_json<M: DiscoveryModel + ?Sized>(model: &M) -> serde_json::Value {
+    serde_json::json!({
+        "model": model.name(),
+        "baseline_params": model.baseline_params(),
+        "catalogue": model.catalogue(),
+    })
+}
+
+/// What `afsv discover` prints of a finished discovery `d` whose report went to
+/// `report_dir` (`files_written` files): the [`headline`], the outcome and its `exit_code`,
+/// the named effects and the gap they close, the held-out errors per channel and the
+/// calibration's problems (`accepted`: printed despite them, `--accept-poor-fit`).
+pub fn summary_json(
+    d: &Discovery,
+    report_dir: &Path,
+    files_written: usize,
+    exit_code: u8,
+    accepted: bool,
+) -> serde_json::Value {
+    serde_json::json!({
+        "model": d.model,
+        "summary": headline(d),
+        "outcome": d.outcome,
+        "exit_code": exit_code,
+        "excess_over_noise": d.excess_over_noise,
+        "named": d.named,
+        "effect_params": d.final_model.effect_params,
+        "gap_shrink": d.gap_shrink,
+        "best_unnamed": d.best_unnamed_shrink,
+        "holdout_mse": {"calibrated": d.calibrated.holdout_mse, "final": d.final_model.holdout_mse, "noise": d.holdout_noise_mse},
+        "channel_errors": d.channel_errors.iter().map(|(tb, ta, hb, ha)| serde_json::json!({
+            "channel": tb.channel, "train_before": tb.nrmse, "train_after": ta.nrmse,
+            "holdout_before": hb.nrmse, "holdout_after": ha.nrmse})).collect::<Vec<_>>(),
+        "report": report_dir.join("report.md"),
+        "files_written": files_written,
+        "calibration_problems": d.calibration_problems,
+        "calibration_notes": d.calibration_notes,
+        "accepted_despite_problems": accepted && !d.calibration_problems.is_empty(),
+    })
+}
+
+/// What `afsv synth` prints after writing `records` to `output`: the training and held-out
+/// record names and the truth file.
+pub fn synth_summary(output: &Path, records: &[crate::synth::SynthRecord]) -> serde_json::Value {
+    let names = |holdout: bool| -> Vec<&String> {
+        records
+            .iter()
+            .filter(|r| r.holdout == holdout)
+            .map(|r| &r.name)
+            .collect()
+    };
+    serde_json::json!({
+        "output": output,
+        "train": names(false),
+        "holdout": names(true),
+        "truth": output.join("truth.json"),
+    })
+}
+
 #[cfg(test)]
 mod tests {
-    use super::{provenance_section, sig3};
+    use super::{catalogue_json, provenance_section, sig3, synth_summary};
+    use crate::synth::SynthRecord;
+    use crate::DiscoveryModel;
 
     #[test]
     fn the_provenance_names_the_tool_and_every_input() {
@@ -544,5 +607,32 @@ mod tests {
         assert_eq!(sig3(12.345), "12.3");
         assert_eq!(sig3(-0.5), "-0.500");
         assert_eq!(sig3(0.0), "0");
+    }
+
+    #[test]
+    fn synth_summary_splits_train_and_holdout() {
+        let rec = |name: &str, holdout| SynthRecord {
+            name: name.into(),
+            holdout,
+            record: afsv_records::Record::new(),
+        };
+        let v = synth_summary(
+            std::path::Path::new("out"),
+            &[rec("a", false), rec("b", true), rec("c", false)],
+        );
+        assert_eq!(v["train"], serde_json::json!(["a", "c"]));
+        assert_eq!(v["holdout"], serde_json::json!(["b"]));
+        assert_eq!(v["truth"], "out/truth.json");
+    }
+
+    #[test]
+    fn the_catalogue_lists_the_models_effects() {
+        let m = crate::hps::HpsStrutModel::nominal();
+        let v = catalogue_json(&m);
+        assert_eq!(v["model"], m.name());
+        assert_eq!(
+            v["catalogue"].as_array().unwrap().len(),
+            m.catalogue().len()
+        );
     }
 }

@@ -3,7 +3,7 @@
 //! are library code (`afsv_records::guard`, `afsv_records::json`), re-exported here.
 
 use serde::Serialize;
-use std::io::Write;
+use std::io::{IsTerminal, Write};
 
 pub use afsv_records::guard::*;
 pub use afsv_records::json::*;
@@ -27,6 +27,21 @@ pub fn print_json<T: Serialize + ?Sized>(value: &T) -> Result<(), std::io::Error
     match writeln!(out, "{text}").and_then(|()| out.flush()) {
         Err(e) if e.kind() == std::io::ErrorKind::BrokenPipe => Ok(()),
         other => other,
+    }
+}
+
+/// [`print_json`] of `value` with `--json` (`json`) or when stdout is not a terminal, else
+/// `text()` printed as it is (the readable form of the same result).
+pub fn print_json_or_text<T: Serialize + ?Sized>(
+    json: bool,
+    value: &T,
+    text: impl FnOnce() -> String,
+) -> Result<(), std::io::Error> {
+    if json || !std::io::stdout().is_terminal() {
+        print_json(value)
+    } else {
+        print!("{}", text());
+        Ok(())
     }
 }
 

@@ -22,6 +22,19 @@ pub fn stamp() -> Value {
     v
 }
 
+/// `rec` with the sidecar fields `meta` and the run's provenance ([`stamp_record`]),
+/// written to `path` (CSV and sidecar, whole or not at all); the record as written.
+pub fn write_record(
+    path: &std::path::Path,
+    mut rec: afsv_records::Record,
+    meta: Value,
+) -> Result<afsv_records::Record, afsv_records::RecordError> {
+    rec.meta = meta;
+    stamp_record(&mut rec);
+    rec.write(path)?;
+    Ok(rec)
+}
+
 /// Put the provenance into a record's sidecar metadata (making it an object if it was
 /// empty).
 pub fn stamp_record(rec: &mut afsv_records::Record) {

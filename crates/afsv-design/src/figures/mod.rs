@@ -5,11 +5,13 @@
 //! output guard).
 //!
 //! - [`vehicle`]: `afsv vehicle ride|roll|yaw|path-change`;
+//! - [`layouts`]: `afsv study layouts`;
 //! - [`strut`]: the loops of `afsv hps harmonic`;
 //! - [`tire`]: the force curves of `afsv tire sweep`;
 //! - [`studies`]: `afsv roll study`, `afsv study speed-sweep|hps-sensitivity` and the
 //!   Fig 4.9 responses of `afsv optimize afs`.
 
+pub mod layouts;
 pub mod strut;
 pub mod studies;
 pub mod tire;

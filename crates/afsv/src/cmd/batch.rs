@@ -8,7 +8,6 @@ use super::CmdResult;
 use afsv::output::{OutputGuard, OutputKind};
 use afsv_design::afs_batch::MAX_SHARDS;
 use afsv_design::batch_shard::{evaluate_batch_shard, ShardOutcome, ShardProgress};
-use std::io::IsTerminal;
 use std::path::PathBuf;
 
 /// `afsv batch` subcommands.
@@ -95,17 +94,15 @@ fn summary(a: &EvaluateArgs, o: &ShardOutcome, t: std::time::Instant) -> CmdResu
         "evaluated": o.evaluated, "screened": o.screened, "failed": o.failed,
         "results": a.output.display().to_string(), "seconds": t.elapsed().as_secs_f64(),
     });
-    if a.json || !std::io::stdout().is_terminal() {
-        afsv::output::print_json(&summary)?;
-    } else {
-        println!(
-            "batch {batch} shard {shard_text}: {points} points ({} evaluated, {} screened, {} failed) written to {} in {:.1} s",
+    afsv::output::print_json_or_text(a.json, &summary, || {
+        format!(
+            "batch {batch} shard {shard_text}: {points} points ({} evaluated, {} screened, {} failed) written to {} in {:.1} s\n",
             o.evaluated,
             o.screened,
             o.failed,
             a.output.display(),
             t.elapsed().as_secs_f64()
-        );
-    }
+        )
+    })?;
     Ok(())
 }

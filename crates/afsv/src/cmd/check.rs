@@ -10,7 +10,6 @@
 
 use super::CmdResult;
 use serde_json::json;
-use std::io::IsTerminal;
 
 /// Options of `afsv check`.
 #[derive(clap::Args)]
@@ -28,18 +27,14 @@ pub fn run(args: Args) -> CmdResult {
     let terrain = terrain_psd::default_terrain_summary(args.seed);
     let fidelity = terrain.fidelity();
     let pass = weighting.pass && fidelity.pass;
-    if args.output.json || !std::io::stdout().is_terminal() {
-        afsv::output::print_json(&json!({
-            "pass": pass,
-            "iso2631_weighting": weighting,
-            "terrain_synthesis": { "fidelity": fidelity, "summary": terrain },
-        }))?;
-    } else {
-        print!(
-            "{}",
-            afsv_design::report::check::to_text(&weighting, &fidelity, args.seed)
-        );
-    }
+    let v = json!({
+        "pass": pass,
+        "iso2631_weighting": weighting,
+        "terrain_synthesis": { "fidelity": fidelity, "summary": terrain },
+    });
+    afsv::output::print_json_or_text(args.output.json, &v, || {
+        afsv_design::report::check::to_text(&weighting, &fidelity, args.seed)
+    })?;
     if pass {
         Ok(())
     } else {

@@ -2,7 +2,7 @@
 
 use super::CmdResult;
 use afsv_discovery::hps::HpsStrutModel;
-use afsv_discovery::report::write_report;
+use afsv_discovery::report::{self, write_report};
 use afsv_discovery::synth;
 use afsv_discovery::vehicle3d::Vehicle3dModel;
 use afsv_discovery::yaw::YawPlaneModel;
@@ -151,7 +151,8 @@ fn vehicle3d_model(
         let p: vehicle_3d::VehicleParams = read_json(path)?;
         p.validate()
             .map_err(|e| format!("{}: {e}", path.display()))?;
-        super::params::vehicle_3d_in_ranges(&p).map_err(|e| format!("{}: {e}", path.display()))?;
+        afsv_design::report::params::vehicle_3d_in_ranges(&p)
+            .map_err(|e| format!("{}: {e}", path.display()))?;
         m.params = p;
     }
     m.default_load = load
@@ -210,11 +211,7 @@ pub type DiscoverResult = Result<u8, Box<dyn std::error::Error>>;
 
 fn run_discover<M: DiscoveryModel>(model: &M, args: &DiscoverArgs) -> DiscoverResult {
     if args.list_effects {
-        afsv::output::print_json(&serde_json::json!({
-            "model": model.name(),
-            "baseline_params": model.baseline_params(),
-            "catalogue": model.catalogue(),
-        }))?;
+        afsv::output::print_json(&report::catalogue_json(model))?;
         return Ok(0);
     }
     let output = args.output.as_deref().ok_or("-o/--output is required")?;
@@ -251,26 +248,9 @@ fn run_discover<M: DiscoveryModel>(model: &M, args: &DiscoverArgs) -> DiscoverRe
     } else {
         afsv::output::EXIT_NOT_EARNED
     };
-    afsv::output::print_json(&serde_json::json!({
-        "model": d.model,
-        "summary": afsv_discovery::report::headline(&d),
-        "outcome": d.outcome,
-        "exit_code": code,
-        "excess_over_noise": d.excess_over_noise,
-        "named": d.named,
-        "effect_params": d.final_model.effect_params,
-        "gap_shrink": d.gap_shrink,
-        "best_unnamed": d.best_unnamed_shrink,
-        "holdout_mse": {"calibrated": d.calibrated.holdout_mse, "final": d.final_model.holdout_mse, "noise": d.holdout_noise_mse},
-        "channel_errors": d.channel_errors.iter().map(|(tb, ta, hb, ha)| serde_json::json!({
-            "channel": tb.channel, "train_before": tb.nrmse, "train_after": ta.nrmse,
-            "holdout_before": hb.nrmse, "holdout_after": ha.nrmse})).collect::<Vec<_>>(),
-        "report": output.join("report.md"),
-        "files_written": written.len(),
-        "calibration_problems": d.calibration_problems,
-        "calibration_notes": d.calibration_notes,
-        "accepted_despite_problems": args.accept_poor_fit && !d.calibration_problems.is_empty(),
-    }))?;
+    let accepted = args.accept_poor_fit;
+    let summary = report::summary_json(&d, output, written.len(), code, accepted);
+    afsv::output::print_json(&summary)?;
     if !earned {
         eprintln!(
             "afsv: not earned: the final model's baseline: {} (the outcome stands in report.md; --accept-poor-fit keeps its exit code)",
@@ -373,12 +353,7 @@ pub fn run_synth(args: SynthArgs) -> CmdResult {
         std::fs::remove_file(f).map_err(|e| format!("{}: {e}", f.display()))?;
     }
     synth::write_records(&args.output, &records, &truth)?;
-    afsv::output::print_json(&serde_json::json!({
-        "output": args.output,
-        "train": records.iter().filter(|r| !r.holdout).map(|r| &r.name).collect::<Vec<_>>(),
-        "holdout": records.iter().filter(|r| r.holdout).map(|r| &r.name).collect::<Vec<_>>(),
-        "truth": args.output.join("truth.json"),
-    }))?;
+    afsv::output::print_json(&report::synth_summary(&args.output, &records))?;
     Ok(())
 }
 

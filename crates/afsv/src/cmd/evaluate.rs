@@ -19,7 +19,6 @@
 use super::CmdResult;
 use afsv_design::evaluate::{assess, MIN_SPEED_KMH};
 use afsv_design::report::evaluate::{to_json, to_text};
-use std::io::IsTerminal;
 use std::path::PathBuf;
 
 /// Options of `afsv evaluate`.
@@ -66,10 +65,6 @@ pub fn run(args: Args) -> CmdResult {
         &|detail| progress.step(detail),
     )?;
     progress.finish();
-    if args.json || !std::io::stdout().is_terminal() {
-        afsv::output::print_json(&to_json(&a))?;
-    } else {
-        print!("{}", to_text(&a));
-    }
+    afsv::output::print_json_or_text(args.json, &to_json(&a), || to_text(&a))?;
     Ok(())
 }

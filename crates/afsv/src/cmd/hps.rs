@@ -6,67 +6,17 @@
 use super::{args, CmdResult};
 use afsv::output::{OutputGuard, OutputKind};
 use afsv::progress::Progress;
+use afsv_design::param_files::StrutSource;
 use afsv_design::report::hps_identify::identify_report;
 use afsv_design::report::strut;
+use afsv_design::strut_lab::harmonic as harmonic_run;
+use afsv_design::strut_lab::{characterize_each, characterize_report, identify_strut};
 use afsv_records::Record;
 use hps_emulsion::{
-    characterize, identify, lab_programme, loop_metrics, simulate_displacement, Excitation,
-    FitParam, HarmonicTest, HpsExtensions, IdentifyOptions, LabConfig, SimOptions, Solver,
-    StrutParams,
+    identify, lab_programme, FitParam, HarmonicTest, HpsExtensions, IdentifyOptions, SimOptions,
+    Solver, StrutParams,
 };
-use std::path::{Path, PathBuf};
-
-/// A strut named on the command line: a built-in set (`front-axle`, `lab-1orifice`,
-/// `lab-2orifice`) or a strut parameter file (JSON, `afsv params dump strut`).
-#[derive(Clone, Debug)]
-pub struct StrutArg {
-    /// The built-in set, when the argument names one.
-    builtin: Option<StrutChoice>,
-    /// The argument as given.
-    given: String,
-}
-
-/// clap value parser of a [`StrutArg`]: any non-empty text (a file is read when used).
-fn strut_arg(s: &str) -> Result<StrutArg, String> {
-    if s.trim().is_empty() {
-        return Err(
-            "give a built-in strut (front-axle, lab-1orifice, lab-2orifice) or a strut file".into(),
-        );
-    }
-    Ok(StrutArg {
-        builtin: StrutChoice::from_name(s).filter(|_| !Path::new(s).exists()),
-        given: s.into(),
-    })
-}
-
-impl StrutArg {
-    /// The built-in `c`.
-    fn of(c: StrutChoice) -> Self {
-        Self {
-            builtin: Some(c),
-            given: c.name().into(),
-        }
-    }
-
-    /// The strut file, when the argument names one.
-    fn file(&self) -> Option<&Path> {
-        self.builtin.is_none().then(|| Path::new(&self.given))
-    }
-
-    /// The strut's parameters (a file is read and checked).
-    fn params(&self) -> Result<StrutParams, String> {
-        match self.builtin {
-            Some(c) => Ok(c.params()),
-            None => afsv_vehicle::read_strut_file(Path::new(&self.given))
-                .map_err(|e| format!("--strut: {e}")),
-        }
-    }
-
-    /// The name shown in outputs: the built-in name or the file as given.
-    fn name(&self) -> &str {
-        &self.given
-    }
-}
+use std::path::PathBuf;
 
 /// Built-in strut parameter sets.
 #[derive(Clone, Copy, Debug, clap::ValueEnum)]
@@ -82,24 +32,13 @@ pub enum StrutChoice {
 }
 
 impl StrutChoice {
-    pub(crate) fn params(self) -> StrutParams {
-        match self {
-            StrutChoice::FrontAxle => StrutParams::front_axle(),
-            StrutChoice::Lab1Orifice => StrutParams::lab(LabConfig::OneOrifice),
-            StrutChoice::Lab2Orifice => StrutParams::lab(LabConfig::TwoOrifices),
-        }
-    }
-    fn name(self) -> &'static str {
+    /// The built-in's name (`afsv_vehicle::builtin_strut`).
+    pub(crate) fn name(self) -> &'static str {
         match self {
             StrutChoice::FrontAxle => "front-axle",
             StrutChoice::Lab1Orifice => "lab-1orifice",
             StrutChoice::Lab2Orifice => "lab-2orifice",
         }
-    }
-    fn from_name(name: &str) -> Option<Self> {
-        [Self::FrontAxle, Self::Lab1Orifice, Self::Lab2Orifice]
-            .into_iter()
-            .find(|s| s.name() == name)
     }
 }
 
@@ -148,8 +87,8 @@ pub enum Command {
 pub struct HarmonicArgs {
     /// The strut: front-axle (Table 6.3), lab-1orifice, lab-2orifice, or a strut
     /// parameter file (JSON, `afsv params dump strut`).
-    #[arg(long, default_value = "front-axle", value_parser = strut_arg)]
-    pub strut: StrutArg,
+    #[arg(long, default_value = "front-axle", value_parser = StrutSource::parse)]
+    pub strut: StrutSource,
     /// Excitation frequency (Hz).
     #[arg(long, default_value_t = 2.0, allow_hyphen_values = true, value_parser = args::positive_f64)]
     pub freq: f64,
@@ -186,8 +125,8 @@ pub struct HarmonicArgs {
 pub struct CharacterizeArgs {
     /// The strut: lab-1orifice (chapter 5), lab-2orifice, front-axle (Table 6.3), or a
     /// strut parameter file (JSON, `afsv params dump strut`).
-    #[arg(long, default_value = "lab-1orifice", value_parser = strut_arg)]
-    pub strut: StrutArg,
+    #[arg(long, default_value = "lab-1orifice", value_parser = StrutSource::parse)]
+    pub strut: StrutSource,
     /// Gas volume fraction of the emulsion, e.g. 0.03.
     #[arg(long, allow_hyphen_values = true, value_parser = args::nonneg_f64)]
     pub gamma0: Option<f64>,
@@ -211,8 +150,8 @@ pub struct IdentifyArgs {
     /// (front-axle, lab-1orifice, lab-2orifice) or a strut parameter file. Default: the
     /// `"strut"` named in the record's sidecar; without either it is an error (a guessed
     /// strut fits nothing). A built-in --strut that differs from the sidecar's is an error.
-    #[arg(long, value_parser = strut_arg)]
-    pub strut: Option<StrutArg>,
+    #[arg(long, value_parser = StrutSource::parse)]
+    pub strut: Option<StrutSource>,
     /// Simulate but do not compare the first seconds (start-up transient), >= 0.
     #[arg(long, default_value_t = 0.0, allow_hyphen_values = true, value_parser = args::nonneg_f64)]
     pub warmup: f64,
@@ -266,14 +205,9 @@ fn harmonic(a: HarmonicArgs) -> CmdResult {
         solver: a.solver.solver(),
         ..SimOptions::default()
     };
-    let exc = Excitation::harmonic(a.freq, test.amplitude_m, a.cycles);
-    let rec = simulate_displacement(&params, &HpsExtensions::none(), &exc, &opts)?;
-    let metrics = loop_metrics(&rec, &test).map_err(|e| {
-        format!("{e}: raise --rate or --cycles (need >= 1 cycle, 16 samples per cycle)")
-    })?;
+    let (rec, metrics) = harmonic_run(&params, &test, a.cycles, &opts)?;
     if let Some(path) = &a.output {
-        let mut r = Record::from_columns(rec.columns())?;
-        r.meta = strut::harmonic_sidecar(&strut::HarmonicRun {
+        let meta = strut::harmonic_sidecar(&strut::HarmonicRun {
             strut: a.strut.name(),
             gamma0: params.gamma0,
             sample_rate_hz: a.rate,
@@ -281,8 +215,7 @@ fn harmonic(a: HarmonicArgs) -> CmdResult {
             amplitude_m: test.amplitude_m,
             cycles: a.cycles,
         });
-        afsv::provenance::stamp_record(&mut r);
-        r.write(path)?;
+        afsv::provenance::write_record(path, Record::from_columns(rec.columns())?, meta)?;
     }
     if let Some(path) = &a.plot {
         let record = match &a.output {
@@ -311,48 +244,18 @@ fn harmonic(a: HarmonicArgs) -> CmdResult {
 fn characterize_cmd(a: CharacterizeArgs) -> CmdResult {
     let mut guard = afsv::output::OutputGuard::new(a.force);
     guard.input_if("--strut", a.strut.file())?;
-    let out = &a.table;
-    out.declare(&mut guard)?;
+    a.table.declare(&mut guard)?;
     let params = with_gamma0(a.strut.params()?, a.gamma0)?;
     let tests = lab_programme(params.travel);
     let progress = Progress::new("afsv hps characterize", "tests", Some(tests.len()));
-    let mut rows = Vec::with_capacity(tests.len());
-    for t in &tests {
-        let row = characterize(
-            &params,
-            &HpsExtensions::none(),
-            std::slice::from_ref(t),
-            &SimOptions::default(),
-        )?;
-        rows.extend(row);
-        progress.step(&format!(
-            "{} Hz, {:.1} mm",
-            args::show(t.frequency_hz),
-            t.amplitude_m * 1e3
-        ));
-    }
+    let rows = characterize_each(&params, &tests, &|t| {
+        let (f, amp_mm) = (args::show(t.frequency_hz), t.amplitude_m * 1e3);
+        progress.step(&format!("{f} Hz, {amp_mm:.1} mm"));
+    })?;
     progress.finish();
-    let full = serde_json::json!({
-        "strut": a.strut.name(),
-        "gamma0": params.gamma0,
-        "tests": rows,
-    });
-    let table = afsv::table::from_rows(
-        full["tests"].as_array().map_or(&[], Vec::as_slice),
-        &strut::CHARACTERIZE_COLUMNS,
-    )?;
-    out.emit(
-        &table,
-        &full,
-        &format!(
-            "strut {} (gamma0 {}): the lab programme of section 5.3, last cycle of each test (SI units)\n",
-            a.strut.name(),
-            params.gamma0
-        ),
-        "afsv hps characterize",
-        serde_json::json!({ "strut": a.strut.name(), "gamma0": params.gamma0 }),
-    )?;
-    Ok(())
+    let (table, full, summary, meta) = characterize_report(a.strut.name(), params.gamma0, &rows)?;
+    let written_by = "afsv hps characterize";
+    a.table.emit(&table, &full, &summary, written_by, meta)
 }
 
 fn identify_cmd(a: IdentifyArgs) -> CmdResult {
@@ -364,7 +267,7 @@ fn identify_cmd(a: IdentifyArgs) -> CmdResult {
         warmup_s: a.warmup,
         ..IdentifyOptions::default()
     };
-    let (strut, strut_source) = identify_strut(&a, &rec.meta)?;
+    let (strut, strut_source) = identify_strut(a.strut.as_ref(), &a.input, &rec.meta)?;
     let start = strut.params()?;
     progress.step(&format!("read {} samples", meas.time.len()));
     let res = identify(&meas, &start, &HpsExtensions::none(), &which, &opts)
@@ -383,41 +286,5 @@ fn identify_cmd(a: IdentifyArgs) -> CmdResult {
         Ok(())
     } else {
         Err(afsv::output::NotEarned(format!("hps identify: {}", problems.join("; "))).into())
-    }
-}
-
-/// The strut of `hps identify`: --strut, else the sidecar's `"strut"`; neither is an error.
-fn identify_strut(
-    a: &IdentifyArgs,
-    meta: &serde_json::Value,
-) -> Result<(StrutArg, &'static str), String> {
-    let sidecar = a.input.with_extension("json");
-    let side = match meta.get("strut") {
-        None | Some(serde_json::Value::Null) => None,
-        Some(v) => {
-            let name = v.as_str().unwrap_or_default();
-            Some(StrutChoice::from_name(name).ok_or_else(|| {
-                format!(
-                    "{}: the sidecar names strut {v}, not one of front-axle, lab-1orifice, lab-2orifice (give the strut as a file with --strut FILE)",
-                    sidecar.display()
-                )
-            })?)
-        }
-    };
-    match (&a.strut, side) {
-        (Some(s), Some(t)) if s.builtin.is_some_and(|b| b.name() != t.name()) => Err(format!(
-            "--strut {}: the record's sidecar {} says the strut is {}; drop --strut or give --strut {}",
-            s.name(),
-            sidecar.display(),
-            t.name(),
-            t.name()
-        )),
-        (Some(s), _) => Ok((s.clone(), "--strut")),
-        (None, Some(t)) => Ok((StrutArg::of(t), "sidecar")),
-        (None, None) => Err(format!(
-            "{}: the record does not say which strut it is (no sidecar {} naming one); give --strut (a built-in or a strut file): the fit takes every parameter it does not vary from that strut",
-            a.input.display(),
-            sidecar.display()
-        )),
     }
 }

@@ -8,10 +8,9 @@
 
 use super::{args, CmdResult};
 use afsv::output::OutputGuard;
-use afsv_design::report::strut_shift::{shift_report, ShiftConditions};
-use afsv_design::strut_shift::{strut_shift, HeatInput, Shift, ShiftSpec};
-use hps_emulsion::thermal::KELVIN_AT_0C;
-use hps_emulsion::LevellingValve;
+use afsv_design::report::strut_shift::shift_report;
+use afsv_design::shift_case::{shift_case, ShiftOptions};
+use afsv_design::strut_shift::{strut_shift, Shift};
 use serde_json::json;
 use std::path::PathBuf;
 use vehicle_3d::Load;
@@ -120,51 +119,21 @@ pub fn run(a: ThermalArgs) -> CmdResult {
         other,
     )?;
     let v = super::described::articulated(a.vehicle.as_deref())?;
-    let mut params = v.params.clone();
-    params.hps = v.front_strut.ok_or_else(|| {
-        format!(
-            "--vehicle: `{}` gives the front axle no strut (add `strut = \"front-axle\"` or a strut file to its front [[axle]])",
-            v.name
-        )
-    })?;
-    let valve = LevellingValve {
-        deadband_m: a.deadband_mm * 1e-3,
-        time_constant_s: a.levelling_tau_s,
-        max_flow_m3_s: a.levelling_flow_l_min * 1e-3 / 60.0,
-    };
-    valve
-        .validate()
-        .map_err(|e| format!("--deadband-mm, --levelling-tau-s, --levelling-flow-l-min: {e}"))?;
-    let heat = match (a.power_w, a.ride) {
-        (Some(p), _) => HeatInput::Given(p),
-        (None, true) => HeatInput::Ride {
-            speed_kmh: a.speed_kmh,
-            seed: a.seed,
-        },
-        (None, false) => HeatInput::Stroke {
-            frequency_hz: a.stroke_hz,
-            amplitude_m: a.stroke_mm * 1e-3,
-        },
-    };
-    let spec = ShiftSpec {
+    let options = ShiftOptions {
         load: a.load,
         with_rear: a.with_rear,
-        ambient_k: KELVIN_AT_0C + a.ambient_c,
-        charge_k: KELVIN_AT_0C + a.charge_c,
-        start_k: KELVIN_AT_0C + a.start_c.unwrap_or(a.ambient_c),
-        duration_s: a.hours * 3600.0,
-        step_s,
-        valve,
-        heat,
-    };
-    let shift = strut_shift(&params, &spec).map_err(|e| format!("`{}`: {e}", v.name))?;
-    let conditions = ShiftConditions {
-        load: a.load,
         ambient_c: a.ambient_c,
         charge_c: a.charge_c,
-        start_c: a.start_c.unwrap_or(a.ambient_c),
+        start_c: a.start_c,
+        power_w: a.power_w,
+        ride: a.ride.then_some((a.speed_kmh, a.seed)),
+        stroke: (a.stroke_hz, a.stroke_mm),
         hours: a.hours,
+        step_min: a.step_min,
+        valve: (a.deadband_mm, a.levelling_tau_s, a.levelling_flow_l_min),
     };
+    let (params, spec, conditions) = shift_case(&v, &options)?;
+    let shift = strut_shift(&params, &spec).map_err(|e| format!("`{}`: {e}", v.name))?;
     write_end_struts(&a, &shift)?;
     let (table, mut full, summary) = shift_report(&v.name, &conditions, &spec, &shift)?;
     full["provenance"] = afsv::provenance::stamp();

@@ -5,7 +5,7 @@
 use super::CmdResult;
 use afsv::output::{OutputGuard, OutputKind};
 use afsv_design::layout_names::{build_layouts, seat_of};
-use afsv_design::layouts::{layout_runs, layouts, LayoutOptions, LayoutStudy};
+use afsv_design::layouts::{layout_runs, layouts, LayoutOptions};
 use afsv_design::report::layouts::text;
 use std::path::PathBuf;
 use vehicle_3d::Load;
@@ -60,10 +60,8 @@ pub struct LayoutArgs {
 /// Run `afsv study layouts`.
 pub fn run(a: LayoutArgs) -> CmdResult {
     use afsv_design::layouts::MAX_SEEDS;
-    if a.seeds == 0 || a.seeds > MAX_SEEDS {
-        return Err(format!("--seeds {}: must be 1 to {MAX_SEEDS}", a.seeds).into());
-    }
-    let speeds = super::study::parse_list("--speeds", &a.speeds, 50)?;
+    super::args::check_seeds(a.seeds, MAX_SEEDS)?;
+    let speeds = afsv_design::value_lists::list("--speeds", &a.speeds, 50)?;
     let mut guard = OutputGuard::new(a.force);
     super::described::declare(&mut guard, a.vehicle.as_deref())?;
     guard.output_if("--plot", a.plot.as_deref(), OutputKind::Svg)?;
@@ -81,42 +79,9 @@ pub fn run(a: LayoutArgs) -> CmdResult {
     let s = layouts(&list, &options, &|d| progress.step(d))?;
     progress.finish();
     if let Some(path) = &a.plot {
-        plot(path, &s)?;
+        super::write_chart(path, &afsv_design::figures::layouts::layouts(&s))?;
     }
-    super::study::emit(a.output.json, &s, || text(&s))
-}
-
-/// The operator's a_wz of every row against the D4 speeds, with the zone's upper bound.
-fn plot(path: &std::path::Path, s: &LayoutStudy) -> CmdResult {
-    let mut columns: Vec<(String, Vec<f64>, Vec<f64>)> = s
-        .rows
-        .iter()
-        .map(|r| {
-            (
-                format!(
-                    "{} ({})",
-                    r.layout,
-                    if r.at_seat { "seat" } else { "frame" }
-                ),
-                s.sweep_speeds_kmh.clone(),
-                r.d4_a_wz_m_s2.clone(),
-            )
-        })
-        .collect();
-    columns.push((
-        "8 h HGCZ upper bound".into(),
-        s.sweep_speeds_kmh.clone(),
-        vec![s.hgcz_8h_m_s2.1; s.sweep_speeds_kmh.len()],
-    ));
-    super::study::line_svg(
-        path,
-        &format!(
-            "Layouts: operator a_wz against speed ({}, class E), {} seeds",
-            s.load,
-            s.seeds.len()
-        ),
-        "forward speed (km/h)",
-        "a_wz (m/s²)",
-        &columns,
-    )
+    Ok(afsv::output::print_json_or_text(a.output.json, &s, || {
+        text(&s)
+    })?)
 }

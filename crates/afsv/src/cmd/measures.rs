@@ -2,17 +2,9 @@
 //! (yaw-mode) fit, step-response metrics and the weighting check (crate `perf-measures`).
 
 use super::{args, CmdResult};
-use afsv_design::report::weighting::{wbv_inputs, wbv_report};
+use afsv_design::record_measures;
 use afsv_records::Record;
-use perf_measures::decay::decay_window;
-use perf_measures::iso2631::{
-    assess_whole_body, Axis, FilterMethod, IirWeighting, KFactors, Weighting,
-};
-use perf_measures::signal::sample_rate;
-use perf_measures::{
-    fit_free_decay, step_amplitude, step_metrics_with, step_time, MeasureError, StepOptions,
-};
-use serde_json::json;
+use perf_measures::iso2631::{IirWeighting, Weighting};
 use std::path::PathBuf;
 
 /// Subcommands of `afsv measures`.
@@ -182,98 +174,20 @@ fn weighting(a: WeightingArgs) -> CmdResult {
     Ok(())
 }
 
-fn parse_axis_weightings(specs: &[String]) -> Result<[Weighting; 3], String> {
-    let mut w = [Axis::X, Axis::Y, Axis::Z].map(Axis::health_weighting);
-    for s in specs {
-        let (axis, name) = s
-            .split_once('=')
-            .ok_or_else(|| format!("--weighting `{s}`: expected AXIS=W, e.g. z=wk"))?;
-        w[axis_index("--weighting", s, axis)?] = name
-            .parse()
-            .map_err(|e| format!("--weighting `{s}`: {e}"))?;
-    }
-    Ok(w)
-}
-
-/// Index of axis `x`, `y` or `z` in `option`'s value `spec`.
-fn axis_index(option: &str, spec: &str, axis: &str) -> Result<usize, String> {
-    match axis.trim().to_ascii_lowercase().as_str() {
-        "x" => Ok(0),
-        "y" => Ok(1),
-        "z" => Ok(2),
-        other => Err(format!(
-            "{option} `{spec}`: unknown axis `{other}` (x, y or z)"
-        )),
-    }
-}
-
-/// The column of each axis and whether `--channel` named it (then the record must have
-/// it): `ax_m_s2`, `ay_m_s2`, `az_m_s2` by default.
-fn axis_columns(specs: &[String]) -> Result<[(String, bool); 3], String> {
-    let mut c = ["ax_m_s2", "ay_m_s2", "az_m_s2"].map(|n| (n.to_string(), false));
-    for s in specs {
-        let (axis, column) = s.split_once('=').ok_or_else(|| {
-            format!("--channel `{s}`: expected AXIS=COLUMN, e.g. y=lateral_accel_front_m_s2")
-        })?;
-        let column = column.trim();
-        if !column.ends_with("_m_s2") {
-            return Err(format!(
-                "--channel `{s}`: column `{column}` must be in m/s^2 (name ending in _m_s2)"
-            ));
-        }
-        c[axis_index("--channel", s, axis)?] = (column.to_string(), true);
-    }
-    Ok(c)
-}
-
 fn wbv(a: WbvArgs) -> CmdResult {
     let rec = Record::read(&a.input)?;
-    let t = rec.require("time_s", &a.input)?;
-    let fs = sample_rate(t).map_err(|e| format!("{}: {e}", a.input.display()))?;
-    let w = parse_axis_weightings(&a.weighting)?;
-    if a.k.len() != 3 {
-        return Err(format!("--k: expected 3 values k_x,k_y,k_z, got {}", a.k.len()).into());
-    }
-    let k = KFactors {
-        x: a.k[0],
-        y: a.k[1],
-        z: a.k[2],
-    };
-    let method = if a.method == "iir" {
-        FilterMethod::Iir
-    } else {
-        FilterMethod::Fft
-    };
-    let columns = axis_columns(&a.channel)?;
-    let (inputs, used) = wbv_inputs(&rec, &a.input, &columns, w)?;
-    let r = assess_whole_body(&inputs, fs, a.hours, k, method)
-        .map_err(|e| format!("{}: {e}", a.input.display()))?;
-    afsv::output::print_json(&wbv_report(&r, used, &rec)?)?;
+    let names = (&a.weighting[..], &a.channel[..]);
+    let v = record_measures::wbv((&rec, &a.input), names, &a.k, &a.method, a.hours)?;
+    afsv::output::print_json(&v)?;
     Ok(())
 }
 
 fn decay(a: DecayArgs) -> CmdResult {
     let rec = Record::read(&a.input)?;
-    let t = rec.require("time_s", &a.input)?;
-    let y = rec.require(&a.column, &a.input)?;
-    if t.is_empty() {
-        return Err(format!("{}: the record is empty", a.input.display()).into());
-    }
-    let w = decay_window(t, y, a.start_s, a.end_s)
-        .map_err(|e| format!("{}: {e}", a.input.display()))?;
-    let (tw, yw) = (&t[w.clone()], &y[w]);
-    let fit = fit_free_decay(tw, yw).map_err(|e| format!("{}: {e}", a.input.display()))?;
-    let problems = fit.problems();
-    afsv::output::print_json(&json!({
-        "column": a.column,
-        "start_s": tw[0],
-        "end_s": tw[tw.len() - 1],
-        "samples": tw.len(),
-        "note": "amplitude, offset, rmse and noise_rms are in the column's unit",
-        "fit": fit,
-        "problems": problems,
-        "accepted_despite_problems": a.accept_poor_fit && !problems.is_empty(),
-    }))?;
+    let window = (a.start_s, a.end_s);
+    let accepted = a.accept_poor_fit;
+    let (v, problems) = record_measures::decay((&rec, &a.input), &a.column, window, accepted)?;
+    afsv::output::print_json(&v)?;
     if problems.is_empty() || a.accept_poor_fit {
         Ok(())
     } else {
@@ -282,38 +196,11 @@ fn decay(a: DecayArgs) -> CmdResult {
 }
 
 fn step(a: StepArgs) -> CmdResult {
-    let path = &a.input_file;
-    let rec = Record::read(path)?;
-    let t = rec.require("time_s", path)?;
-    let u = rec.require(&a.input, path)?;
-    let y = rec.require(&a.output, path)?;
-    let amplitude = match a.amplitude {
-        Some(v) => v,
-        None => step_amplitude(u, a.settle_fraction).map_err(|e| match e {
-            MeasureError::NotFound(why) => format!(
-                "{}: the input `{}` {why}; give --amplitude",
-                path.display(),
-                a.input
-            ),
-            other => format!("{}: `{}`: {other}", path.display(), a.input),
-        })?,
-    };
-    let t_step = match a.t_step {
-        Some(v) => v,
-        None => step_time(t, u, amplitude)
-            .map_err(|e| format!("{}: {e}; give --t-step", path.display()))?,
-    };
-    let opts = StepOptions {
-        settle_fraction: a.settle_fraction,
-    };
-    let m = step_metrics_with(t, y, t_step, amplitude, &opts)
-        .map_err(|e| format!("{}: {e}", path.display()))?;
-    afsv::output::print_json(&json!({
-        "input": a.input,
-        "output": a.output,
-        "t_step_s": t_step,
-        "input_amplitude": amplitude,
-        "metrics": m,
-    }))?;
+    let rec = Record::read(&a.input_file)?;
+    let columns = (&a.input[..], &a.output[..]);
+    let given = (a.t_step, a.amplitude);
+    let file = (&rec, a.input_file.as_path());
+    let v = record_measures::step(file, columns, given, a.settle_fraction)?;
+    afsv::output::print_json(&v)?;
     Ok(())
 }

@@ -13,7 +13,6 @@ pub mod layouts;
 pub mod measures;
 pub mod optimize;
 pub mod params;
-mod road;
 pub mod roll;
 pub mod study;
 pub mod terrain;

@@ -9,25 +9,21 @@
 
 use super::CmdResult;
 use afsv::output::{NotEarned, OutputGuard, OutputKind};
-use afsv_design::afs_batch::{
-    chapter4_objective, Eq49Desc, ProblemDesc, VehicleDesc, AFS_KIND, MAX_SHARDS,
-};
+use afsv_design::afs_batch::{chapter4_objective, Eq49Desc, ProblemDesc, MAX_SHARDS};
 use afsv_design::afs_resume::AfsCheckpoint;
+use afsv_design::afs_run::{self, run_here, vehicle_desc, AfsRunSpec, AfsStep};
 use afsv_design::ga_ask_tell::{self, GaAskTell, GaStep};
-use afsv_design::{optimise, AfsOptimisationSettings, AfsProblem, Objective};
+use afsv_design::report::afs::asked_text;
+use afsv_design::{AfsOptimisationSettings, AfsOptimum, AfsProblem, Objective};
 use afsv_records::lock::take_and_read;
-use afsv_records::stored::write_json;
 use serde_json::json;
-use std::io::IsTerminal;
 use std::path::PathBuf;
 
-mod ask_tell;
 mod hps;
 mod layout;
 mod report;
 
 use afsv_design::report::afs::{earned, to_json, to_text, AfsRun as RunOutcome};
-use ask_tell::AskTell;
 use report::{write_plots, Bar};
 
 /// `afsv optimize` subcommands.
@@ -94,9 +90,25 @@ impl AskTellArgs {
     }
 }
 
-/// Whether the status goes out as JSON (`--json`, or stdout not a terminal).
-fn machine(json: bool) -> bool {
-    json || !std::io::stdout().is_terminal()
+/// Progress of a GA run (`afsv optimize hps|layout`): one step per generation, with the
+/// best objective as the run shows it.
+struct Generations(afsv::progress::Progress, fn(f64) -> String);
+
+impl Generations {
+    fn new(command: &str, generations: usize, best: fn(f64) -> String) -> Self {
+        let what = format!("afsv optimize {command}");
+        Self(
+            afsv::progress::Progress::new(&what, "generations", Some(generations)),
+            best,
+        )
+    }
+}
+
+impl optimize::Progress for Generations {
+    fn report(&self, _phase: &str, done: usize, _total: usize, best: f64) {
+        self.0
+            .step(&format!("generation {done}, best {}", (self.1)(best)));
+    }
 }
 
 /// On stderr (unless quiet): `command`'s run has finished after `batches`, the report
@@ -152,14 +164,12 @@ fn print_asked(
 ) -> CmdResult {
     let status = json!({"batch": batch, "finished": false, "phase": phase,
         "points": points, "batch_file": batch_path.display().to_string()});
-    if machine(json) {
-        afsv::output::print_json(&status)?;
-    } else {
-        println!(
-            "batch {batch} ({phase}): {points} {unit} written to {}",
+    afsv::output::print_json_or_text(json, &status, || {
+        format!(
+            "batch {batch} ({phase}): {points} {unit} written to {}\n",
             batch_path.display()
-        );
-    }
+        )
+    })?;
     Ok(())
 }
 
@@ -167,18 +177,16 @@ fn print_asked(
 fn print_told(json: bool, told: usize, points: usize, unit: &str, finished: bool) -> CmdResult {
     let status =
         json!({"told": told, "points": points, "next_batch": told + 1, "finished": finished});
-    if machine(json) {
-        afsv::output::print_json(&status)?;
-    } else {
-        println!(
-            "batch {told} told ({points} {unit}); {}",
+    afsv::output::print_json_or_text(json, &status, || {
+        format!(
+            "batch {told} told ({points} {unit}); {}\n",
             if finished {
                 "the run has finished: --ask prints the report"
             } else {
                 "next: --ask"
             }
-        );
-    }
+        )
+    })?;
     Ok(())
 }
 
@@ -281,53 +289,8 @@ pub fn run(cmd: Command) -> CmdResult {
     }
 }
 
-fn form_name(f: FormArg) -> &'static str {
-    match f {
-        FormArg::EnergyConsistent => "energy_consistent",
-        FormArg::PaperEq313 => "paper_eq_3_13",
-    }
-}
-
-/// The `--vehicle` of `a` as a problem stores it.
-fn vehicle_desc(a: &AfsArgs) -> Result<Option<VehicleDesc>, String> {
-    let Some(path) = &a.vehicle else {
-        return Ok(None);
-    };
-    let v = super::described::articulated(Some(path))?;
-    Ok(Some(VehicleDesc {
-        name: v.name.clone(),
-        yaw_plane: v.yaw_plane(vehicle_3d::Load::Loaded).clone(),
-        steering: v.steering().clone(),
-    }))
-}
-
-fn desc_of(
-    a: &AfsArgs,
-    label: &str,
-    min_arm: Option<f64>,
-    vehicle: &Option<VehicleDesc>,
-) -> ProblemDesc {
-    let eq_4_9 = match (a.front_mount_dir_deg, a.tire_point, a.engine_point) {
-        (Some(dir), Some(t), Some(e)) => Some(Eq49Desc {
-            front_mount_dir_deg: dir,
-            tire_point: t,
-            engine_point: e,
-        }),
-        _ => None,
-    };
-    ProblemDesc {
-        kind: AFS_KIND.into(),
-        label: label.into(),
-        relaxed: a.relaxed,
-        min_steering_arm_m: min_arm,
-        rtol: a.rtol,
-        form: form_name(a.form).into(),
-        eq_4_9,
-        vehicle: vehicle.clone(),
-    }
-}
-
-fn run_afs(a: &AfsArgs) -> CmdResult {
+/// The run `a` defines, its solver settings checked.
+fn run_spec(a: &AfsArgs) -> Result<AfsRunSpec, Box<dyn std::error::Error>> {
     if a.starts >= afsv_design::afs_optimum::MAX_STARTS {
         return Err(format!(
             "--starts must be below {}",
@@ -342,6 +305,42 @@ fn run_afs(a: &AfsArgs) -> CmdResult {
         )
         .into());
     }
+    let mut settings = AfsOptimisationSettings {
+        extra_starts: a.starts,
+        seed: a.seed,
+        screen_min_mesh: a.screen_mesh,
+        ..AfsOptimisationSettings::default()
+    };
+    settings.pattern.search_points = a.search_points as usize;
+    settings.pattern.min_mesh = a.min_mesh;
+    settings.sqp.max_calls = a.sqp_calls as usize;
+    let eq_4_9 = match (a.front_mount_dir_deg, a.tire_point, a.engine_point) {
+        (Some(dir), Some(t), Some(e)) => Some(Eq49Desc {
+            front_mount_dir_deg: dir,
+            tire_point: t,
+            engine_point: e,
+        }),
+        _ => None,
+    };
+    Ok(AfsRunSpec {
+        relaxed: a.relaxed,
+        min_arm_m: a.min_arm_m,
+        arm_comparison: !a.no_arm_comparison,
+        starts: a.starts,
+        seed: a.seed,
+        rtol: a.rtol,
+        form: match a.form {
+            FormArg::EnergyConsistent => "energy_consistent",
+            FormArg::PaperEq313 => "paper_eq_3_13",
+        },
+        eq_4_9,
+        vehicle: None,
+        settings,
+    })
+}
+
+fn run_afs(a: &AfsArgs) -> CmdResult {
+    let mut spec = run_spec(a)?;
     a.ask_tell.check()?;
     // One run at a time on a checkpoint or state file; the lock is held until the command
     // returns, and taken before the file is read.
@@ -355,87 +354,57 @@ fn run_afs(a: &AfsArgs) -> CmdResult {
     guard.output_if("--plot-pulse", a.plot_pulse.as_deref(), OutputKind::Svg)?;
     guard.output_if("--checkpoint", a.checkpoint.as_deref(), OutputKind::Sidecar)?;
     a.ask_tell.declare_outputs(&mut guard)?;
-    let mut settings = AfsOptimisationSettings {
-        extra_starts: a.starts,
-        seed: a.seed,
-        screen_min_mesh: a.screen_mesh,
-        ..AfsOptimisationSettings::default()
-    };
-    settings.pattern.search_points = a.search_points as usize;
-    settings.pattern.min_mesh = a.min_mesh;
-    settings.sqp.max_calls = a.sqp_calls as usize;
     let objective = chapter4_objective()?;
-    let mut configs: Vec<(&'static str, Option<f64>)> =
-        vec![("with the steering-arm constraint", Some(a.min_arm_m))];
-    if !a.no_arm_comparison {
-        configs.push(("without the steering-arm constraint", None));
-    }
-    let vehicle = vehicle_desc(a)?;
-    let mut settings_json = json!({
-        "relaxed": a.relaxed, "min_arm_m": a.min_arm_m, "arm_comparison": !a.no_arm_comparison,
-        "starts": a.starts, "seed": a.seed, "rtol": a.rtol,
-        "form": form_name(a.form),
-        "eq_4_9": {"front_mount_dir_deg": a.front_mount_dir_deg, "tire_point": a.tire_point, "engine_point": a.engine_point},
-        "solver": settings,
-    });
-    if let Some(v) = &vehicle {
-        // only when given, so a checkpoint of the built-in vehicle still resumes
-        settings_json["vehicle"] = json!(v);
-    }
-    let descs: Vec<ProblemDesc> = configs
-        .iter()
-        .map(|(label, arm)| desc_of(a, label, *arm, &vehicle))
-        .collect();
+    spec.vehicle = vehicle_desc(a.vehicle.as_deref())?;
+    let descs = spec.descs();
     if let Some(state) = &a.ask_tell.state {
         let problems: Vec<AfsProblem> = descs
             .iter()
             .map(ProblemDesc::problem)
             .collect::<Result<_, _>>()?;
-        let job = AskTell {
-            args: a,
-            state_path: state,
-            stored,
-            settings,
-            settings_json,
-            descs,
-            problems: &problems,
-            objective,
+        let (ask, tell) = (a.ask_tell.ask.as_deref(), &a.ask_tell.tell[..]);
+        let notice = |batches| finished_notice("afs", batches, ask.unwrap_or(state));
+        let step = afs_run::ask_or_tell(&spec, &problems, (state, stored), (ask, tell), &notice)?;
+        return match step {
+            AfsStep::Finished { runs, .. } => report(a, &objective, &problems, &runs),
+            AfsStep::Asked { batch, asked } => {
+                let path = ask.unwrap_or(state);
+                let status = json!({
+                    "batch": batch, "finished": false, "points": asked.points.len(),
+                    "batch_file": path.display().to_string(), "phases": asked.phases,
+                });
+                let text = || asked_text(batch, &asked, path) + "\n";
+                Ok(afsv::output::print_json_or_text(
+                    a.output.json,
+                    &status,
+                    text,
+                )?)
+            }
+            AfsStep::Told {
+                batch,
+                points,
+                finished,
+            } => print_told(a.output.json, batch, points, "points", finished),
         };
-        return job.run();
     }
     let mut ck = match (&a.checkpoint, stored) {
         (Some(p), Some(text)) => {
-            AfsCheckpoint::read("--checkpoint", p, &text, &settings_json, configs.len())?
+            let configs = spec.configs().len();
+            AfsCheckpoint::read("--checkpoint", p, &text, &spec.settings_json(), configs)?
         }
-        _ => AfsCheckpoint::new("afsv optimize afs", settings_json),
+        _ => AfsCheckpoint::new("afsv optimize afs", spec.settings_json()),
     };
     let problems: Vec<AfsProblem> = descs
         .iter()
         .map(|d| AfsProblem::new(d.spec()?, objective).map_err(|e| e.to_string()))
         .collect::<Result<_, String>>()?;
     if let Some(p) = &a.checkpoint {
-        ck.check_runs("--checkpoint", p, &problems, &settings)?;
+        ck.check_runs("--checkpoint", p, &problems, &spec.settings)?;
     }
     let progress = Bar::new()?;
-    let mut outcomes = Vec::new();
-    for (i, ((label, arm), problem)) in configs.iter().zip(&problems).enumerate() {
-        let t = std::time::Instant::now();
-        let resume = ck.runs.get(i).cloned().unwrap_or_default();
-        let optimum = optimise(problem, &settings, resume, &progress, &mut |st| {
-            let Some(path) = &a.checkpoint else {
-                return Ok(());
-            };
-            ck.record(i, st);
-            write_json(path, &ck)
-        })?;
-        progress.done(label, &optimum, t.elapsed().as_secs_f64());
-        outcomes.push(RunOutcome {
-            label: label.to_string(),
-            min_arm_m: *arm,
-            optimum,
-            seconds: t.elapsed().as_secs_f64(),
-        });
-    }
+    let checkpoint = (&mut ck, a.checkpoint.as_deref());
+    let done = |label: &str, o: &AfsOptimum, seconds: f64| progress.done(label, o, seconds);
+    let outcomes = run_here(&spec, &problems, checkpoint, &progress, &done)?;
     progress.finish();
     report(a, &objective, &problems, &outcomes)
 }
@@ -451,11 +420,8 @@ fn report(
 ) -> CmdResult {
     write_plots(a, &problems[0], &outcomes[0].optimum.ps_sqp.design)?;
     let current = problems[0].evaluate_design(&problems[0].current_design())?;
-    if a.output.json || !std::io::stdout().is_terminal() {
-        afsv::output::print_json(&to_json(a.relaxed, a.rtol, objective, &current, outcomes))?;
-    } else {
-        print!("{}", to_text(a.relaxed, &current, outcomes));
-    }
+    let v = to_json(a.relaxed, a.rtol, objective, &current, outcomes);
+    afsv::output::print_json_or_text(a.output.json, &v, || to_text(a.relaxed, &current, outcomes))?;
     earned(outcomes).map_err(|why| {
         NotEarned(format!(
             "optimize afs: no feasible design found ({why}); the least infeasible point is printed, not an optimum (check the Eq 4.9 points and --min-arm-m)"

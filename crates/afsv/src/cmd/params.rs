@@ -4,19 +4,10 @@
 
 use super::hps::StrutChoice;
 use super::CmdResult;
-pub(super) use afsv_design::report::params::vehicle_3d_in_ranges;
-use afsv_design::report::params::{check_vehicle, list_text, named, specs};
-use afsv_dynamics::YawPlaneParams;
-use hps_emulsion::StrutParams;
-use roll_truck::TruckParams;
-use serde_json::{json, Value};
-use std::io::IsTerminal;
+use afsv_design::param_files;
+use afsv_design::report::params::list_text;
+use serde_json::json;
 use std::path::{Path, PathBuf};
-use terrain_psd::{SurfaceParams, TwoTrackSpec};
-use tire_fiala::TireParams;
-use vehicle_3d::VehicleParams;
-use vehicle_components::ParamSet as Named;
-use vehicle_components::{CabParams, SeatParams};
 
 /// Parameter sets that can be dumped, checked and listed.
 #[derive(Clone, Copy, Debug, clap::ValueEnum)]
@@ -115,15 +106,7 @@ pub fn run(cmd: Command) -> CmdResult {
             }
             let value = match set {
                 ParamSet::Vehicle => return dump_vehicle(&builtin, output.as_deref()),
-                ParamSet::YawPlane => serde_json::to_value(YawPlaneParams::nominal(load.into()))?,
-                ParamSet::Strut => serde_json::to_value(strut.params())?,
-                ParamSet::Tire => serde_json::to_value(TireParams::nominal())?,
-                ParamSet::Terrain => serde_json::to_value(TwoTrackSpec::paper_nominal())?,
-                ParamSet::Surface => serde_json::to_value(SurfaceParams::default())?,
-                ParamSet::Truck => serde_json::to_value(TruckParams::nominal())?,
-                ParamSet::Vehicle3d => serde_json::to_value(VehicleParams::nominal())?,
-                ParamSet::Seat => serde_json::to_value(SeatParams::generic())?,
-                ParamSet::Cab => serde_json::to_value(CabParams::generic())?,
+                _ => param_files::nominal(&set_name(set), load.into(), strut.name())?,
             };
             match output {
                 Some(path) => {
@@ -138,55 +121,14 @@ pub fn run(cmd: Command) -> CmdResult {
             }
         }
         Command::Check { set, file } => {
-            let mut report = match set {
-                ParamSet::YawPlane => {
-                    let p = super::yaw::read_params(&file)?;
-                    json!({ "load": p.load, "parameters": named(&p) })
-                }
-                ParamSet::Strut => json!({ "parameters": checked::<StrutParams>(&file)? }),
-                ParamSet::Tire => json!({ "parameters": checked::<TireParams>(&file)? }),
-                ParamSet::Terrain => json!({ "parameters": checked::<TwoTrackSpec>(&file)? }),
-                ParamSet::Surface => json!({ "parameters": checked::<SurfaceParams>(&file)? }),
-                ParamSet::Truck => json!({ "parameters": checked::<TruckParams>(&file)? }),
-                ParamSet::Vehicle3d => {
-                    let p: VehicleParams = read(&file)?;
-                    p.validate()
-                        .map_err(|e| format!("{}: {e}", file.display()))?;
-                    vehicle_3d_in_ranges(&p).map_err(|e| format!("{}: {e}", file.display()))?;
-                    json!({ "parameters": p })
-                }
-                ParamSet::Seat => json!({ "parameters": checked::<SeatParams>(&file)? }),
-                ParamSet::Cab => json!({ "parameters": checked::<CabParams>(&file)? }),
-                ParamSet::Vehicle => check_vehicle(&file)?,
-            };
+            let mut report = param_files::check(&set_name(set), &file)?;
             report["valid"] = json!(true);
             report["file"] = json!(file);
             afsv::output::print_json(&report)?;
         }
         Command::List { set, json } => {
-            let list = match set {
-                ParamSet::YawPlane => specs(&YawPlaneParams::nominal(afsv_dynamics::Load::Loaded)),
-                ParamSet::Strut => specs(&StrutParams::front_axle()),
-                ParamSet::Tire => specs(&TireParams::nominal()),
-                ParamSet::Terrain => specs(&TwoTrackSpec::paper_nominal()),
-                ParamSet::Surface => specs(&SurfaceParams::default()),
-                ParamSet::Truck => specs(&TruckParams::nominal()),
-                ParamSet::Vehicle3d => specs(&VehicleParams::nominal()),
-                ParamSet::Seat => specs(&SeatParams::generic()),
-                ParamSet::Cab => specs(&CabParams::generic()),
-                ParamSet::Vehicle => {
-                    let rows: Vec<Value> = afsv_vehicle::BUILTIN
-                        .iter()
-                        .map(|(name, about)| json!({ "name": name, "description": about }))
-                        .collect();
-                    json!({ "set": "vehicle", "builtin": rows })
-                }
-            };
-            if json || !std::io::stdout().is_terminal() {
-                afsv::output::print_json(&list)?;
-            } else {
-                print!("{}", list_text(&list));
-            }
+            let list = param_files::list(&set_name(set))?;
+            afsv::output::print_json_or_text(json, &list, || list_text(&list))?;
         }
     }
     Ok(())
@@ -214,18 +156,8 @@ fn dump_vehicle(name: &str, output: Option<&Path>) -> CmdResult {
     Ok(())
 }
 
-/// A parameter file as `T`, refusing unknown fields; errors name the file, line and column.
-pub(super) fn read<T: serde::de::DeserializeOwned>(path: &Path) -> Result<T, String> {
-    let text = afsv_records::provenance::read_input(path)
-        .map_err(|e| format!("{}: {e}", path.display()))?;
-    serde_json::from_str(&text).map_err(|e| format!("{}: {e}", path.display()))
-}
-
-/// The parameter file `path` read as `T` and validated by the set's own check; its named
-/// parameters with their values.
-fn checked<T: serde::de::DeserializeOwned + Named>(path: &Path) -> Result<Value, String> {
-    let p: T = read(path)?;
-    p.check().map_err(|e| format!("{}: {e}", path.display()))?;
-    vehicle_components::within_ranges(&p).map_err(|e| format!("{}: {e}", path.display()))?;
-    Ok(named(&p))
+/// The name of `set` on the command line (its clap value), as `afsv_design::param_files`
+/// takes it.
+fn set_name(set: ParamSet) -> String {
+    clap::ValueEnum::to_possible_value(&set).map_or_else(String::new, |v| v.get_name().into())
 }

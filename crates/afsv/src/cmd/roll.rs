@@ -8,18 +8,17 @@
 use super::{args, CmdResult};
 use afsv::output::{OutputGuard, OutputKind};
 use afsv_design::report::roll::{self, measures_text, Ground};
+use afsv_design::truck_case::{self, TruckSource};
 use afsv_records::Record;
 use perf_measures::roll::SustainedPeriodParams;
 use roll_truck::measures::RollMeasures;
-use roll_truck::studies::{run_case, run_case_on_road};
 use roll_truck::{BuiltinTruck, RunOptions, SteerDirection, TruckParams};
 use serde_json::json;
-use std::io::IsTerminal;
 use std::path::{Path, PathBuf};
 
 #[path = "roll_study.rs"]
 mod roll_study;
-use terrain_psd::{Band, CoherenceModel, IsoClass, PowerLawPsd, TwoTrackSpec};
+use terrain_psd::{Band, IsoClass};
 
 /// Which truck, and the settings chapter 2 does not state: the steering ramp rate and the
 /// bump stops.
@@ -61,16 +60,7 @@ pub struct RuleArgs {
 impl RuleArgs {
     /// The rule: the defaults with the given options replaced, validated.
     pub fn params(&self) -> Result<SustainedPeriodParams, String> {
-        let mut sp = SustainedPeriodParams::default();
-        if let Some(t) = self.sp_threshold {
-            sp.threshold = t;
-        }
-        if let Some(d) = self.sp_max_dip {
-            sp.max_dip_s = d;
-        }
-        sp.validate()
-            .map_err(|e| format!("--sp-threshold/--sp-max-dip: {e}"))?;
-        Ok(sp)
+        truck_case::sustained_period(self.sp_threshold, self.sp_max_dip)
     }
 
     fn given(&self) -> bool {
@@ -180,25 +170,17 @@ pub fn run(cmd: Command) -> CmdResult {
         Command::Measures { case, output } => {
             let p = truck(&case.truck, case.cg_height_m)?;
             let run = one_run(&case, &p, 0.01)?;
-            if output.json || !std::io::stdout().is_terminal() {
-                afsv::output::print_json(&measures_json(&run.measures, &case))?;
-            } else {
-                print!("{}", measures_text(&run.measures));
-            }
+            let v = measures_json(&run.measures, &case);
+            afsv::output::print_json_or_text(output.json, &v, || measures_text(&run.measures))?;
             Ok(())
         }
         Command::Study(a) => roll_study::run_study_cmd(&a),
         Command::Calibrate { params, target_g } => {
-            let p = truck(
-                &TruckArgs {
-                    params,
-                    truck: None,
-                    vehicle: None,
-                    ramp_rate: None,
-                    no_bump_stops: false,
-                },
-                None,
-            )?;
+            let source = TruckSource {
+                params: params.as_deref(),
+                ..TruckSource::default()
+            };
+            let p = truck_case::truck(&source, None)?;
             let c =
                 roll_truck::calibration::calibrate_strut_spacing(&p, (0.15, 0.6), target_g, 1e-4)?;
             afsv::output::print_json(&c)?;
@@ -208,12 +190,20 @@ pub fn run(cmd: Command) -> CmdResult {
 }
 
 impl TruckArgs {
+    /// The truck's source, as `afsv_design::truck_case` takes it.
+    pub fn source(&self) -> TruckSource<'_> {
+        TruckSource {
+            params: self.params.as_deref(),
+            builtin: self.truck,
+            vehicle: self.vehicle.as_deref(),
+            ramp_rate_deg_s: self.ramp_rate,
+            no_bump_stops: self.no_bump_stops,
+        }
+    }
+
     /// The truck's name in reports: the parameter file, the description or the built-in.
     pub fn name(&self) -> String {
-        match (&self.params, &self.vehicle, self.truck) {
-            (Some(p), _, _) | (None, Some(p), _) => p.display().to_string(),
-            (None, None, t) => t.unwrap_or(BuiltinTruck::Calibrated).name().to_string(),
-        }
+        self.source().name()
     }
 
     /// Declare the files the truck is read from as inputs.
@@ -224,38 +214,10 @@ impl TruckArgs {
     }
 }
 
-/// The truck of `--params`, `--truck` or `--vehicle` (default calibrated) with the ramp rate, the
-/// stops and an optional cg height applied, validated.
+/// The truck of `--params`, `--truck` or `--vehicle` (default calibrated) with the ramp
+/// rate, the stops and an optional cg height applied, validated.
 fn truck(a: &TruckArgs, cg_height_m: Option<f64>) -> Result<TruckParams, String> {
-    let params = a.params.as_deref();
-    let mut p: TruckParams = match (params, a.truck, &a.vehicle) {
-        (Some(path), _, _) => super::params::read(path)?,
-        (None, Some(t), _) => t.params(),
-        (None, None, Some(v)) => super::described::truck(v)?.params,
-        (None, None, None) => TruckParams::nominal(),
-    };
-    if let Some(h) = cg_height_m {
-        p.cg_height_m = h;
-    }
-    if let Some(r) = a.ramp_rate {
-        p.steering_wheel_rate_deg_s = r;
-    }
-    if a.no_bump_stops {
-        p = p.without_bump_stops();
-    }
-    p.validate().map_err(|e| match params {
-        Some(path) => format!("{}: {e}", path.display()),
-        None => e.to_string(),
-    })?;
-    Ok(p)
-}
-
-fn spec(case: &CaseArgs) -> Result<TwoTrackSpec, Box<dyn std::error::Error>> {
-    Ok(TwoTrackSpec::new(
-        PowerLawPsd::new(case.class.alpha_r(), case.waviness)?,
-        case.band,
-        CoherenceModel::piecewise(case.mc)?,
-    )?)
+    truck_case::truck(&a.source(), cg_height_m)
 }
 
 fn one_run(
@@ -274,17 +236,9 @@ fn one_run(
         ..RunOptions::default()
     };
     let sp = case.rule.params()?;
-    if let Some(file) = &case.road {
-        let (profile, _) = super::road::read(file, roll_truck::studies::half_track_m(p))?;
-        let run = run_case_on_road(p, profile, case.direction, &options, &sp)
-            .map_err(|e| format!("{}: {e}", file.display()))?;
-        return Ok(run);
-    }
-    let spec = if case.smooth { None } else { Some(spec(case)?) };
-    Ok(run_case(
+    Ok(truck_case::run_on(
         p,
-        spec.as_ref(),
-        case.seed,
+        &ground(case),
         case.direction,
         &options,
         &sp,
@@ -305,18 +259,12 @@ fn simulate(case: &CaseArgs, dt: f64, output: &Path, force: bool) -> CmdResult {
     guard.output("-o", output, OutputKind::Record)?;
     let p = truck(&case.truck, case.cg_height_m)?;
     let duration = duration(case, &p);
-    args::check_samples(
-        &format!("--duration {}", args::show(duration)),
-        &format!("duration/dt with --dt {}", args::show(dt)),
-        duration / dt,
-        roll_truck::simulate::MAX_SAMPLES as f64,
-    )?;
+    args::check_duration(duration, dt, roll_truck::simulate::MAX_SAMPLES as f64)?;
     let run = one_run(case, &p, dt)?;
-    let mut out = Record::from_columns(run.record.afsv_v1_columns())?;
     let rollover_s = run.record.rollover_s;
-    out.meta = roll::simulate_sidecar(&p, case.direction, &ground(case), dt, rollover_s);
-    afsv::provenance::stamp_record(&mut out);
-    out.write(output)?;
+    let meta = roll::simulate_sidecar(&p, case.direction, &ground(case), dt, rollover_s);
+    let columns = Record::from_columns(run.record.afsv_v1_columns())?;
+    let out = afsv::provenance::write_record(output, columns, meta)?;
     let mut summary = measures_json(&run.measures, case);
     summary["output"] = json!(output);
     summary["sidecar"] = json!(output.with_extension("json"));

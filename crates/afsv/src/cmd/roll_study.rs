@@ -8,7 +8,6 @@ use afsv_design::report::roll::{self, sensitivity_text, study_text};
 use roll_truck::sensitivity::run_sensitivity;
 use roll_truck::studies::{run_study, Study, MAX_SEEDS};
 use roll_truck::{BuiltinTruck, RunOptions, TruckParams};
-use std::io::IsTerminal;
 use std::path::PathBuf;
 
 /// Which study `afsv roll study` runs.
@@ -59,9 +58,7 @@ pub struct StudyArgs {
 /// Run `afsv roll study`.
 pub(super) fn run_study_cmd(a: &StudyArgs) -> CmdResult {
     let seeds = a.seeds;
-    if seeds == 0 || seeds > MAX_SEEDS {
-        return Err(format!("--seeds {seeds}: must be 1 to {MAX_SEEDS}").into());
-    }
+    super::super::args::check_seeds(seeds, MAX_SEEDS)?;
     let t = &a.truck;
     let chosen = t.params.is_some() || t.truck.is_some() || t.vehicle.is_some();
     match a.study {
@@ -87,7 +84,6 @@ pub(super) fn run_study_cmd(a: &StudyArgs) -> CmdResult {
             .get_or_init(|| afsv::progress::Progress::new("afsv roll study", "runs", Some(total)))
             .step("");
     };
-    let pretty = !a.output.json && std::io::stdout().is_terminal();
     let study = match a.study {
         StudyName::Runs(s) => s,
         StudyName::Sensitivity => {
@@ -108,12 +104,10 @@ pub(super) fn run_study_cmd(a: &StudyArgs) -> CmdResult {
             if let Some(p) = progress.get() {
                 p.finish();
             }
-            if pretty {
-                print!("{}", sensitivity_text(&cells, seeds));
-            } else {
-                afsv::output::print_json(&roll::sensitivity_json(&cells, &seed_list))?;
-            }
-            return Ok(());
+            let v = roll::sensitivity_json(&cells, &seed_list);
+            return Ok(afsv::output::print_json_or_text(a.output.json, &v, || {
+                sensitivity_text(&cells, seeds)
+            })?);
         }
     };
     let p = truck(t, None)?;
@@ -130,10 +124,8 @@ pub(super) fn run_study_cmd(a: &StudyArgs) -> CmdResult {
     if let Some(path) = &a.plot {
         crate::cmd::write_chart(path, &afsv_design::figures::studies::roll_study(&result))?;
     }
-    if pretty {
-        print!("{}", study_text(&result));
-    } else {
-        afsv::output::print_json(&roll::study_json(&result)?)?;
-    }
-    Ok(())
+    let v = roll::study_json(&result)?;
+    Ok(afsv::output::print_json_or_text(a.output.json, &v, || {
+        study_text(&result)
+    })?)
 }

@@ -9,7 +9,8 @@
 use super::CmdResult;
 use afsv::output::{OutputGuard, OutputKind};
 use afsv_design::hps_sensitivity::{StudyScope, MAX_SEEDS};
-use std::io::IsTerminal;
+use afsv_design::study_strut::study_vehicle;
+use afsv_design::value_lists::list;
 use std::path::PathBuf;
 
 /// `afsv study` subcommands.
@@ -99,87 +100,23 @@ pub fn run(c: Command) -> CmdResult {
     }
 }
 
-/// `--changes` as fractions: finite percents above -100, at most 20 of them.
-fn parse_changes(text: &str) -> Result<Vec<f64>, String> {
-    let mut out = Vec::new();
-    for (i, item) in text.split(',').enumerate() {
-        let v: f64 = item
-            .trim()
-            .parse()
-            .map_err(|_| format!("--changes: item {} `{item}` is not a number", i + 1))?;
-        if !(v.is_finite() && v > -100.0 && v <= 1000.0) {
-            return Err(format!(
-                "--changes: {v} % must be above -100 and at most 1000"
-            ));
-        }
-        out.push(v / 100.0);
-    }
-    if out.len() > 20 {
-        return Err(format!("--changes: at most 20 changes, got {}", out.len()));
-    }
-    Ok(out)
-}
-
-/// Comma-separated finite numbers of option `name`, at most `max` of them.
-pub(super) fn parse_list(name: &str, text: &str, max: usize) -> Result<Vec<f64>, String> {
-    let out = text
-        .split(',')
-        .enumerate()
-        .map(|(i, item)| match item.trim().parse::<f64>() {
-            Ok(v) if v.is_finite() => Ok(v),
-            _ => Err(format!(
-                "{name}: item {} `{item}` is not a finite number",
-                i + 1
-            )),
-        })
-        .collect::<Result<Vec<f64>, String>>()?;
-    if out.len() > max {
-        return Err(format!("{name}: at most {max} values, got {}", out.len()));
-    }
-    Ok(out)
-}
-
-/// The vehicle of `--vehicle`, `--hps` and `--design`: the described vehicle (the
-/// prototype by default) with the strut file's or its own front-axle strut, the strut's
-/// Eq 6.19 areas replaced by `--design`.
+/// The vehicle of `--vehicle`, `--hps` and `--design` (`afsv_design::study_strut`), its
+/// input files declared to `guard`.
 fn sweep_vehicle(
     a: &SweepArgs,
     guard: &mut OutputGuard,
 ) -> Result<vehicle_3d::VehicleParams, String> {
     super::described::declare(guard, a.vehicle.as_deref())?;
-    let mut p = if a.hps == "nominal" {
-        super::described::with_front_strut(a.vehicle.as_deref(), "--hps nominal")?
-    } else {
-        let file = std::path::Path::new(&a.hps);
-        guard.input("--hps", file)?;
-        let v = super::described::articulated(a.vehicle.as_deref())?;
-        super::described::refuse_link(&v, "--hps FILE")?;
-        let mut p = v.params;
-        p.hps = super::vehicle::read_strut(file, "nominal or a strut file")?;
-        p
-    };
-    if let Some(text) = &a.design {
-        let v = parse_list("--design", text, 3)?;
-        let [a_hc, a_v, a_b] = v[..] else {
-            return Err(format!(
-                "--design: three values A_HC,A_V,A_B, got {}",
-                v.len()
-            ));
-        };
-        let d = afsv_design::HpsDesign::new(a_hc, a_v * 1e-6, a_b * 1e-6)
-            .map_err(|e| format!("--design: {e}"))?;
-        p.hps = d.apply(&p.hps).map_err(|e| format!("--design: {e}"))?;
+    if a.hps != "nominal" {
+        guard.input("--hps", std::path::Path::new(&a.hps))?;
     }
-    p.validate().map_err(|e| e.to_string())?;
-    Ok(p)
+    study_vehicle(a.vehicle.as_deref(), &a.hps, a.design.as_deref())
 }
 
 fn speed_sweep(a: SweepArgs) -> CmdResult {
     use afsv_design::hps_speed_sweep::{hps_speed_sweep, MAX_SEEDS, MAX_SPEEDS};
-    if a.seeds == 0 || a.seeds > MAX_SEEDS {
-        return Err(format!("--seeds {}: must be 1 to {MAX_SEEDS}", a.seeds).into());
-    }
-    let speeds = parse_list("--speeds", &a.speeds, MAX_SPEEDS)?;
+    super::args::check_seeds(a.seeds, MAX_SEEDS)?;
+    let speeds = list("--speeds", &a.speeds, MAX_SPEEDS)?;
     let mut guard = OutputGuard::new(a.force);
     let p = sweep_vehicle(&a, &mut guard)?;
     guard.output_if("--plot", a.plot.as_deref(), OutputKind::Svg)?;
@@ -191,47 +128,13 @@ fn speed_sweep(a: SweepArgs) -> CmdResult {
     if let Some(path) = &a.plot {
         super::write_chart(path, &afsv_design::figures::studies::speed_sweep(&s))?;
     }
-    emit(a.output.json, &s, || {
-        afsv_design::report::speed_sweep::text(&s)
-    })
-}
-
-/// JSON of `value` with `--json` or when piped, else `text()` on the terminal.
-pub(super) fn emit<T: serde::Serialize>(
-    json: bool,
-    value: &T,
-    text: impl Fn() -> String,
-) -> CmdResult {
-    if json || !std::io::stdout().is_terminal() {
-        afsv::output::print_json(&serde_json::to_value(value)?)?;
-    } else {
-        print!("{}", text());
-    }
-    Ok(())
-}
-
-/// An SVG line plot of `columns` (label, x, y) at `path`, marked as afsv's.
-pub(super) fn line_svg(
-    path: &std::path::Path,
-    title: &str,
-    x_label: &str,
-    y_label: &str,
-    columns: &[(String, Vec<f64>, Vec<f64>)],
-) -> CmdResult {
-    let series: Vec<afsv_plot::Series> = columns
-        .iter()
-        .map(|(label, x, y)| afsv_plot::Series { label, x, y })
-        .collect();
-    afsv_plot::line_plot(path, title, x_label, y_label, &series)?;
-    afsv::output::mark_svg(path)?;
-    Ok(())
+    let text = || afsv_design::report::speed_sweep::text(&s);
+    Ok(afsv::output::print_json_or_text(a.output.json, &s, text)?)
 }
 
 fn hps(a: HpsArgs) -> CmdResult {
-    if a.seeds == 0 || a.seeds > MAX_SEEDS {
-        return Err(format!("--seeds {}: must be 1 to {MAX_SEEDS}", a.seeds).into());
-    }
-    let changes = parse_changes(&a.changes)?;
+    super::args::check_seeds(a.seeds, MAX_SEEDS)?;
+    let changes = afsv_design::value_lists::changes(&a.changes)?;
     let mut guard = OutputGuard::new(a.force);
     super::described::declare(&mut guard, a.vehicle.as_deref())?;
     guard.output_if("--plot", a.plot.as_deref(), OutputKind::Svg)?;
@@ -248,7 +151,6 @@ fn hps(a: HpsArgs) -> CmdResult {
     if let Some(path) = &a.plot {
         super::write_chart(path, &afsv_design::figures::studies::hps_sensitivity(&s))?;
     }
-    emit(a.output.json, &s, || {
-        afsv_design::report::hps_sensitivity::text(&s)
-    })
+    let text = || afsv_design::report::hps_sensitivity::text(&s);
+    Ok(afsv::output::print_json_or_text(a.output.json, &s, text)?)
 }

@@ -6,13 +6,11 @@ use afsv::progress::Progress;
 use afsv_design::report::terrain::{
     generated_record, generated_sidecar, generated_summary, psd_analysis, psd_summary, Generated,
 };
+use afsv_design::terrain_choice::{coherence_model, psd_model, psd_table, welch_config};
 use afsv_records::Record;
 use serde_json::json;
 use std::path::{Path, PathBuf};
-use terrain_psd::{
-    synthesize, Band, CoherenceModel, Detrend, IsoClass, OffRoadTerrain, PowerLawPsd, TwoTrackSpec,
-    WelchConfig, Window,
-};
+use terrain_psd::{synthesize, Band, TwoTrackSpec};
 
 /// Track width of the 35-t AFSV (Table 6.1), the default for the cross-slope PSD.
 const DEFAULT_TRACK_WIDTH_M: f64 = terrain_psd::summary::AFSV_TRACK_WIDTH_M;
@@ -149,60 +147,6 @@ pub fn run(cmd: Command) -> CmdResult {
     }
 }
 
-/// The PSD model chosen by the options, with a description.
-fn psd_model(a: &GenerateArgs) -> Result<(PowerLawPsd, String), String> {
-    let chosen = [a.class.is_some(), a.terrain.is_some(), a.alpha.is_some()];
-    if chosen.iter().filter(|c| **c).count() > 1 {
-        return Err("choose one PSD model: --class, --terrain or --alpha/--waviness".into());
-    }
-    if a.alpha.is_some() != a.waviness.is_some() {
-        return Err("--alpha and --waviness go together (G_d = alpha_r n^-w, Eq 2.8)".into());
-    }
-    if let (Some(alpha), Some(w)) = (a.alpha, a.waviness) {
-        let m = PowerLawPsd::new(alpha, w).map_err(|e| format!("--alpha/--waviness: {e}"))?;
-        return Ok((
-            m,
-            format!("user power law alpha_r = {alpha:e}, w = {w} (Eq 2.8)"),
-        ));
-    }
-    if let Some(t) = &a.terrain {
-        let t: OffRoadTerrain = t.parse().map_err(|e| format!("--terrain: {e}"))?;
-        let m = PowerLawPsd::off_road(t);
-        return Ok((
-            m,
-            format!(
-                "off-road terrain {t} (Tables 1.2/2.4): alpha_r = {:e}, w = {}",
-                m.alpha_r, m.waviness
-            ),
-        ));
-    }
-    let class: IsoClass = match &a.class {
-        Some(c) => c.parse().map_err(|e| format!("--class: {e}"))?,
-        None => IsoClass::E,
-    };
-    let m = PowerLawPsd::iso(class);
-    Ok((
-        m,
-        format!(
-            "ISO 8608 class {class}: G_d(n0) = {:e} m^3, alpha_r = {:e}, w = 2",
-            class.gd_n0(),
-            m.alpha_r
-        ),
-    ))
-}
-
-fn coherence_model(a: &GenerateArgs) -> Result<CoherenceModel, String> {
-    let c = CoherenceModel::parse(&a.coherence, a.half_track, a.speed)
-        .map_err(|e| format!("--coherence: {e}"))?;
-    if a.half_track.is_some() && !matches!(c, CoherenceModel::Bogsjo { .. }) {
-        return Err("--half-track is only used with --coherence bogsjo:RHO".into());
-    }
-    if a.speed.is_some() && !matches!(c, CoherenceModel::Zhang { .. }) {
-        return Err("--speed is only used with --coherence zhang".into());
-    }
-    Ok(c)
-}
-
 /// Profiles of at least this many samples report progress on stderr.
 const LONG_PROFILE_SAMPLES: f64 = 1e6;
 
@@ -216,9 +160,10 @@ fn generate(a: GenerateArgs) -> CmdResult {
     if let Some(path) = &a.output {
         OutputGuard::new(a.force).output("-o", path, OutputKind::Record)?;
     }
-    let (psd, model) = psd_model(&a)?;
+    let power_law = (a.alpha, a.waviness);
+    let (psd, model) = psd_model(a.class.as_deref(), a.terrain.as_deref(), power_law)?;
     let band: Band = a.band.parse().map_err(|e| format!("--band: {e}"))?;
-    let coherence = coherence_model(&a)?;
+    let coherence = coherence_model(&a.coherence, a.half_track, a.speed)?;
     let spec = TwoTrackSpec::new(psd, band, coherence)?;
     // A long profile takes seconds to synthesise and write: report the two stages.
     let progress = (a.length / a.dx >= LONG_PROFILE_SAMPLES)
@@ -267,21 +212,8 @@ fn psd(a: PsdArgs) -> CmdResult {
     let left = rec.require("left_m", &a.input)?;
     let right = rec.column("right_m");
     let dx = spacing(x, &a.input)?;
-    let mut cfg = match a.segment_m {
-        Some(s) => WelchConfig::with_segment_m(s, dx).map_err(|e| format!("--segment-m: {e}"))?,
-        None => WelchConfig::auto(left.len())?,
-    };
-    cfg.overlap = a.overlap;
-    cfg.window = a
-        .window
-        .parse::<Window>()
-        .map_err(|e| format!("--window: {e}"))?;
-    cfg.detrend = a
-        .detrend
-        .parse::<Detrend>()
-        .map_err(|e| format!("--detrend: {e}"))?;
-    cfg.validate(left.len())
-        .map_err(|e| format!("{}: {e}", a.input.display()))?;
+    let names = (&a.window[..], &a.detrend[..]);
+    let cfg = welch_config((left.len(), dx, &a.input), a.segment_m, a.overlap, names)?;
     if !(a.track_width.is_finite() && a.track_width > 0.0) {
         return Err(format!(
             "--track-width {}: must be a finite number > 0",
@@ -302,29 +234,7 @@ fn psd(a: PsdArgs) -> CmdResult {
         a.track_width,
         &rec.meta,
     )?;
-    let mut table = afsv::table::from_columns(
-        &spectrum,
-        &[
-            "n_cycles_per_m",
-            "psd_left_m3",
-            "psd_right_m3",
-            "coherence",
-            "cross_slope_psd_rad2_per_cycle_per_m",
-            "csd_re_m3",
-            "csd_im_m3",
-        ],
-    )?;
-    if let Some(target) = out.get("target") {
-        let t = afsv::table::from_columns(target, &["psd_m3", "coherence"])?;
-        for (name, col) in [
-            ("target_psd_m3", "psd_m3"),
-            ("target_coherence", "coherence"),
-        ] {
-            if let Some(c) = t.column(col) {
-                table.push_column(name, c.to_vec())?;
-            }
-        }
-    }
+    let table = psd_table(&out, &spectrum)?;
     let summary = psd_summary(&out);
     out["spectrum"] = spectrum;
     table_out.emit(

@@ -3,8 +3,9 @@
 use super::{args, CmdResult};
 use afsv::output::{OutputGuard, OutputKind};
 use afsv_design::report::tire::{envelope_rows, sweep_rows, ENVELOPE_COLUMNS, SWEEP_COLUMNS};
+use afsv_design::tire_sweep::{sweep_grid, tire_params, TireOverrides};
 use std::path::PathBuf;
-use tire_fiala::{Envelope, EnvelopeMethod, Fiala, PolylineProfile, TireParams};
+use tire_fiala::{Envelope, EnvelopeMethod, Fiala, PolylineProfile};
 
 /// Subcommands of `afsv tire`.
 #[derive(clap::Subcommand)]
@@ -125,114 +126,22 @@ pub fn run(cmd: Command) -> CmdResult {
     }
 }
 
-/// Parse `v` or `start:stop:step` (inclusive end) into values.
-fn parse_range(text: &str, option: &str) -> Result<Vec<f64>, String> {
-    let num = |s: &str, what: &str| -> Result<f64, String> {
-        let v: f64 = s.trim().parse().map_err(|_| {
-            format!(
-                "{option}: {what} `{}` is not a number (in `{text}`)",
-                s.trim()
-            )
-        })?;
-        if v.is_finite() {
-            Ok(v)
-        } else {
-            Err(format!("{option}: {what} `{}` is not finite", s.trim()))
-        }
-    };
-    let parts: Vec<&str> = text.split(':').collect();
-    match parts.as_slice() {
-        [v] => Ok(vec![num(v, "value")?]),
-        [a, b, s] => {
-            let (a, b, s) = (num(a, "start")?, num(b, "stop")?, num(s, "step")?);
-            if s <= 0.0 {
-                return Err(format!("{option}: step must be > 0 in `{text}`"));
-            }
-            if b < a {
-                return Err(format!("{option}: stop {b} is below start {a} in `{text}`"));
-            }
-            let n = ((b - a) / s + 1e-9).floor() + 1.0;
-            if n > 1e6 {
-                return Err(format!(
-                    "{option}: `{text}` gives {n} values (at most 1000000)"
-                ));
-            }
-            Ok((0..n as usize).map(|i| a + i as f64 * s).collect())
-        }
-        _ => Err(format!(
-            "{option}: expected a value or start:stop:step, got `{text}`"
-        )),
-    }
-}
-
-fn load_params(args: &SweepArgs) -> Result<TireParams, Box<dyn std::error::Error>> {
-    let mut p = match &args.params {
-        Some(path) => {
-            let text = afsv_records::provenance::read_input(path)
-                .map_err(|e| format!("{}: {e}", path.display()))?;
-            serde_json::from_str::<TireParams>(&text)
-                .map_err(|e| format!("{}: {e}", path.display()))?
-        }
-        None => TireParams::nominal(),
-    };
-    if let Some(v) = args.c_slip {
-        p.longitudinal_stiffness_n = v;
-    }
-    if let Some(v) = args.c_alpha_per_rad {
-        p.cornering_stiffness_n_per_rad = v;
-        p.cornering_stiffness_table.clear();
-    }
-    if let Some(v) = args.u_max {
-        p.u_max = v;
-    }
-    if let Some(v) = args.u_min {
-        p.u_min = v;
-    }
-    if let Some(v) = args.width_m {
-        p.width_m = v;
-    }
-    p.validate()?;
-    // The file and the options together must lie in the registry's ranges.
-    let source = args
-        .params
-        .as_ref()
-        .map_or("the tire".to_string(), |f| f.display().to_string());
-    vehicle_components::within_ranges(&p).map_err(|e| format!("{source}: {e}"))?;
-    Ok(p)
-}
-
 fn sweep(args: SweepArgs) -> CmdResult {
     let mut guard = OutputGuard::new(args.force);
     guard.input_if("--params", args.params.as_deref())?;
     guard.output_if("--plot", args.plot.as_deref(), OutputKind::Svg)?;
     let out = &args.table;
     out.declare(&mut guard)?;
-    let fzs = parse_range(&args.fz, "--fz")?;
-    if let Some(bad) = fzs.iter().find(|&&f| f <= 0.0) {
-        return Err(format!(
-            "--fz {}: normal loads must be > 0 N (got {bad}); a tire off the ground has no forces to sweep",
-            args.fz
-        )
-        .into());
-    }
-    let (alphas, kappas) = match (&args.alpha_deg, &args.kappa) {
-        (None, None) => (parse_range("-20:20:0.5", "--alpha-deg")?, vec![0.0]),
-        (a, k) => (
-            match a {
-                Some(t) => parse_range(t, "--alpha-deg")?,
-                None => vec![0.0],
-            },
-            match k {
-                Some(t) => parse_range(t, "--kappa")?,
-                None => vec![0.0],
-            },
-        ),
+    let (alpha, kappa) = (args.alpha_deg.as_deref(), args.kappa.as_deref());
+    let (fzs, alphas, kappas) = sweep_grid(&args.fz, alpha, kappa)?;
+    let overrides = TireOverrides {
+        c_slip: args.c_slip,
+        c_alpha_per_rad: args.c_alpha_per_rad,
+        u_max: args.u_max,
+        u_min: args.u_min,
+        width_m: args.width_m,
     };
-    let total = fzs.len() * alphas.len() * kappas.len();
-    if total > 2_000_000 {
-        return Err(format!("the sweep has {total} rows (at most 2000000)").into());
-    }
-    let tire = Fiala::new(&load_params(&args)?)?;
+    let tire = Fiala::new(&tire_params(args.params.as_deref(), &overrides)?)?;
     let rows = sweep_rows(&tire, &fzs, &kappas, &alphas);
     if let Some(path) = &args.plot {
         let tire_name = match &args.params {

@@ -8,8 +8,6 @@ mod measures;
 mod options;
 mod path_change;
 mod ride;
-mod road;
-mod seat;
 mod simulate;
 
 use super::{args, CmdResult};
@@ -22,22 +20,18 @@ use afsv_design::report::vehicle::{
     NO_STRUT,
 };
 use afsv_design::report::vehicle::{ride_psd, RidePsd};
-use hps_emulsion::StrutParams;
+use afsv_design::vehicle_case::{self, CaseSource, TerrainChoice as TerrainArg};
 use measures::measures_cmd;
 pub(crate) use options::PAPER_FORM_HELP;
-use options::{
-    duration_s, ramp_rate, seed_count, speed_kmh, steer_peak, terrain_arg, TerrainArg,
-    MAX_DURATION_S,
-};
+use options::{duration_s, parse_terrain, ramp_rate, seed_count, speed_kmh, steer_peak};
 use path_change::{offset_m, path_change_cmd, PathChangeFiles};
 use serde_json::{json, Value};
 use simulate::simulate_cmd;
-use std::io::IsTerminal;
 use std::path::{Path, PathBuf};
 use vehicle_3d::cab_ride::SeatRideMeasures;
 use vehicle_3d::interconnect::Link;
 use vehicle_3d::scenarios::{
-    RideMeasures, RideSpec, RollMeasures, RollSpec, TerrainSpec, YawMeasures, YawSpec, RUN_IN_M,
+    RideMeasures, RideSpec, RollMeasures, RollSpec, TerrainSpec, YawMeasures, YawSpec,
 };
 use vehicle_3d::{FrontAxle, Load, RunRecord, VehicleParams};
 
@@ -54,7 +48,7 @@ pub struct CaseArgs {
     /// Ground: `smooth` (or `flat`), or the two-track terrain `class:C,mc:0.3[,seed:N]`
     /// (ISO 8608 class A-H, coherence cut-off m_c in cycles/m, Eqs 6.4-6.5). Default:
     /// `class:E,mc:0.3` for ride and roll, smooth for yaw and simulate.
-    #[arg(long, allow_hyphen_values = true, value_parser = terrain_arg)]
+    #[arg(long, allow_hyphen_values = true, value_parser = parse_terrain)]
     pub terrain: Option<TerrainArg>,
     /// Front axle: `off` (rigid), `nominal` (the strut the vehicle description gives the
     /// front axle: Table 6.3 for the prototype) or a strut parameter file (JSON, as written
@@ -91,6 +85,13 @@ pub struct StudyArgs {
     /// Replace an existing plot afsv did not write.
     #[arg(long)]
     pub force: bool,
+}
+
+impl StudyArgs {
+    /// `--json` and `--plot`, for [`print_linked`].
+    fn shown(&self) -> (bool, Option<&Path>) {
+        (self.json, self.plot.as_deref())
+    }
 }
 
 /// `afsv vehicle` subcommands.
@@ -279,127 +280,60 @@ pub fn run(cmd: Command) -> CmdResult {
     }
 }
 
+impl CaseArgs {
+    /// Where the vehicle comes from, as `afsv_design::vehicle_case` takes it.
+    fn source(&self) -> CaseSource<'_> {
+        CaseSource {
+            params: self.params.as_deref(),
+            vehicle: self.vehicle.as_deref(),
+            hps: self.hps.as_deref(),
+            paper_form: self.paper_form,
+        }
+    }
+
+    /// The ground (`default` without `--terrain`) and the seeds to run
+    /// (`afsv_design::vehicle_case::terrain_and_seeds`).
+    fn terrain_and_seeds(
+        &self,
+        seeds: Option<usize>,
+        seed: Option<u64>,
+        default: Option<TerrainSpec>,
+    ) -> Result<(Option<TerrainSpec>, Vec<u64>), String> {
+        vehicle_case::terrain_and_seeds(self.terrain, seeds, seed, default)
+    }
+}
+
 /// Declare the input files of `case` to `guard`.
 fn declare_inputs(case: &CaseArgs, guard: &mut OutputGuard) -> Result<(), String> {
-    guard.input_if("--params", case.params.as_deref())?;
-    super::described::declare(guard, case.vehicle.as_deref())?;
-    guard.input_if("--hps", options::hps_file(case.hps.as_deref()))?;
-    Ok(())
+    vehicle_case::declare_inputs(&case.source(), guard)
 }
 
-/// The vehicle of `--vehicle` (the prototype by default) or of `--params`, with the front
-/// axle of `--hps` (default: as the description says; rigid for a raw `--params` set),
-/// validated; and its front axle. A strut file replaces the set's strut before the set is
-/// checked.
-fn vehicle_params(case: &CaseArgs) -> Result<(VehicleParams, FrontAxle), String> {
-    let (mut p, described, has_strut) = match &case.params {
-        Some(path) => (super::params::read(path)?, FrontAxle::Rigid, true),
-        None => {
-            let v = super::described::articulated(case.vehicle.as_deref())?;
-            let axle = match v.front_suspension {
-                afsv_vehicle::schema::Suspension::Hps => FrontAxle::Suspended,
-                afsv_vehicle::schema::Suspension::Rigid => FrontAxle::Rigid,
-            };
-            (v.params, axle, v.front_strut.is_some())
-        }
-    };
-    let axle = match case.hps.as_deref() {
-        None => described,
-        Some("off") => FrontAxle::Rigid,
-        Some("nominal") if !has_strut => {
-            return Err("--hps nominal: the vehicle description gives the front axle no strut (add `strut` to its [[axle]], or give --hps FILE)".into())
-        }
-        Some("nominal") => FrontAxle::Suspended,
-        Some(file) => {
-            p.hps = read_strut(Path::new(file), "off, nominal or a strut file")?;
-            FrontAxle::Suspended
-        }
-    };
-    p.yaw_inertia_form = options::yaw_inertia_form(case.paper_form);
-    p.validate().map_err(|e| match &case.params {
-        Some(path) => format!("{}: {e}", path.display()),
-        None => e.to_string(),
-    })?;
-    if let Some(path) = &case.params {
-        super::params::vehicle_3d_in_ranges(&p).map_err(|e| format!("{}: {e}", path.display()))?;
+/// [`CaseArgs`]'s vehicle, validated, its front axle and its struts' interconnection.
+fn vehicle_of(case: &CaseArgs) -> Result<(VehicleParams, FrontAxle, Option<Link>), String> {
+    let source = case.source();
+    let (p, axle) = vehicle_case::vehicle_params(&source)?;
+    let link = vehicle_case::described_link(&source, axle)?;
+    Ok((p, axle, link))
+}
+
+/// The report `(value, text)` of a run of a vehicle whose struts `link` interconnects (the
+/// report of a vehicle without one unchanged), with its `--plot` file: JSON with `--json`
+/// (`json`) or on a pipe, else the text.
+fn print_linked(
+    (json, plot): (bool, Option<&Path>),
+    report: (Value, String),
+    link: Option<&Link>,
+) -> CmdResult {
+    let (mut value, mut text) = report;
+    if let Some(plot) = plot {
+        value["plot"] = json!(plot);
     }
-    Ok((p, axle))
-}
-
-/// The struts' interconnection of the description (`[link]`, docs/vehicles.md) the runs
-/// of `afsv vehicle ride|roll|yaw|simulate` use: `None` without one, and for a raw
-/// `--params` set; refused with the front axle made rigid (`--hps off`), which leaves the
-/// link no front struts.
-fn described_link(case: &CaseArgs, axle: FrontAxle) -> Result<Option<Link>, String> {
-    if case.params.is_some() {
-        return Ok(None);
+    if let Some(l) = link {
+        let (v, line) = link_note(l);
+        value["link"] = v;
+        text = line + &text;
     }
-    let Some(link) = super::described::articulated(case.vehicle.as_deref())?.link else {
-        return Ok(None);
-    };
-    if axle == FrontAxle::Rigid {
-        return Err(
-            "--hps off: the vehicle description's [link] interconnects the front struts; leave --hps out or give a strut file"
-                .into(),
-        );
-    }
-    Ok(Some(link))
-}
-
-/// [`print_result`] of a run of a vehicle whose struts `link` interconnects (the report of
-/// a vehicle without one unchanged).
-fn print_linked(json_out: bool, mut value: Value, text: &str, link: Option<&Link>) -> CmdResult {
-    match link {
-        None => print_result(json_out, &value, text),
-        Some(l) => {
-            let (v, line) = link_note(l);
-            value["link"] = v;
-            print_result(json_out, &value, &(line + text))
-        }
-    }
-}
-
-/// The strut parameter file of `--hps`, validated; `expected` names the accepted values in
-/// the error of an unreadable file.
-pub(crate) fn read_strut(file: &Path, expected: &str) -> Result<StrutParams, String> {
-    let strut: StrutParams =
-        super::params::read(file).map_err(|e| format!("--hps: {e} (expected {expected})"))?;
-    strut
-        .validate()
-        .map_err(|e| format!("--hps {}: {e}", file.display()))?;
-    Ok(strut)
-}
-
-/// The terrain of `case` (`default` when `--terrain` is not given) and the seeds to run:
-/// one run on smooth ground (its seed, 0, is not used), else `--seed`, the terrain's
-/// `seed:N`, or 1..=`--seeds` (default 10).
-fn terrain_and_seeds(
-    case: &CaseArgs,
-    seeds: Option<usize>,
-    seed: Option<u64>,
-    default: Option<TerrainSpec>,
-) -> Result<(Option<TerrainSpec>, Vec<u64>), String> {
-    let t = case.terrain.unwrap_or(TerrainArg {
-        spec: default,
-        seed: None,
-    });
-    let Some(spec) = t.spec else {
-        if seeds.is_some() || seed.is_some() {
-            return Err(
-                "--seed/--seeds: smooth ground has no terrain seeds (give --terrain class:...)"
-                    .into(),
-            );
-        }
-        return Ok((None, vec![0]));
-    };
-    let list = match (t.seed, seed, seeds) {
-        (Some(_), Some(_), _) | (Some(_), _, Some(_)) => {
-            return Err("--terrain seed:N and --seed/--seeds both give the seeds; give one".into())
-        }
-        (Some(s), None, None) | (None, Some(s), _) => vec![s],
-        (None, None, n) => (1..=n.unwrap_or(10) as u64).collect(),
-    };
-    Ok((Some(spec), list))
+    Ok(afsv::output::print_json_or_text(json, &value, || text)?)
 }
 
 /// Run `one` for every seed in parallel (`afsv_design::fan_out::over_seeds`), with progress
@@ -431,81 +365,80 @@ fn over_seeds<T: Send>(
     out
 }
 
-fn print_result(json_out: bool, value: &Value, text: &str) -> CmdResult {
-    if json_out || !std::io::stdout().is_terminal() {
-        afsv::output::print_json(value)?;
-    } else {
-        print!("{text}");
-    }
-    Ok(())
-}
-
 /// Common start of the scenario commands: guard the inputs and the plot, read the vehicle.
-fn prepare(case: &CaseArgs, study: &StudyArgs) -> Result<(VehicleParams, FrontAxle), String> {
+fn prepare(
+    case: &CaseArgs,
+    study: &StudyArgs,
+) -> Result<(VehicleParams, FrontAxle, Option<Link>), String> {
     let mut guard = OutputGuard::new(study.force);
     declare_inputs(case, &mut guard)?;
     guard.output_if("--plot", study.plot.as_deref(), OutputKind::Svg)?;
-    vehicle_params(case)
+    vehicle_of(case)
 }
 
 fn roll_cmd(case: &CaseArgs, study: &StudyArgs, ramp_deg_s: f64, duration: f64) -> CmdResult {
-    let (p, axle) = prepare(case, study)?;
-    let link = described_link(case, axle)?;
+    let (p, axle, link) = prepare(case, study)?;
     let (terrain, seeds) =
-        terrain_and_seeds(case, study.seeds, study.seed, Some(TerrainSpec::default()))?;
-    let speed = case.speed_kmh.unwrap_or(50.0);
+        case.terrain_and_seeds(study.seeds, study.seed, Some(TerrainSpec::default()))?;
     let spec = RollSpec {
         load: case.load,
-        speed_kmh: speed,
+        speed_kmh: case.speed_kmh.unwrap_or(50.0),
         ramp_deg_s,
         t_end_s: duration,
         terrain,
         ..RollSpec::d2(axle)
     };
-    let want_record = study.plot.is_some();
-    let runs: Vec<(RollMeasures, Option<RunRecord>)> =
-        over_seeds("afsv vehicle roll", &terrain, &seeds, |i, s| {
-            let (rec, m) = roll_run(&p, &spec, s, link.as_ref()).map_err(|e| e.to_string())?;
-            Ok((m, (want_record && i == 0).then_some(rec)))
-        })?;
-    let measures: Vec<RollMeasures> = runs.iter().map(|r| r.0).collect();
-    if let (Some(path), Some((m, Some(rec)))) = (&study.plot, runs.first()) {
-        let chart = figures::vehicle::roll(rec, m, &spec, axle_name(axle, &p), seeds[0]);
-        super::write_chart(path, &chart)?;
-    }
-    let (mut v, text) = roll_report(&p, &spec, case.paper_form, &seeds, &measures)?;
-    if let Some(plot) = &study.plot {
-        v["plot"] = json!(plot);
-    }
-    print_linked(study.json, v, &text, link.as_ref())
+    let axles = axle_name(axle, &p);
+    scenario_cmd(
+        study,
+        ("afsv vehicle roll", &terrain, &seeds),
+        link.as_ref(),
+        |s| roll_run(&p, &spec, s, link.as_ref()).map_err(|e| e.to_string()),
+        |rec, m: &RollMeasures| Ok(figures::vehicle::roll(rec, m, &spec, axles, seeds[0])),
+        |m| roll_report(&p, &spec, case.paper_form, &seeds, m),
+    )
 }
 
 fn yaw_cmd(case: &CaseArgs, study: &StudyArgs, pulse_deg: f64) -> CmdResult {
-    let (p, axle) = prepare(case, study)?;
-    let link = described_link(case, axle)?;
-    let (terrain, seeds) = terrain_and_seeds(case, study.seeds, study.seed, None)?;
-    let speed = case.speed_kmh.unwrap_or(50.0);
+    let (p, axle, link) = prepare(case, study)?;
+    let (terrain, seeds) = case.terrain_and_seeds(study.seeds, study.seed, None)?;
     let spec = YawSpec {
         load: case.load,
-        speed_kmh: speed,
+        speed_kmh: case.speed_kmh.unwrap_or(50.0),
         pulse_deg,
         terrain,
         ..YawSpec::d3(axle)
     };
+    let axles = axle_name(axle, &p);
+    scenario_cmd(
+        study,
+        ("afsv vehicle yaw", &terrain, &seeds),
+        link.as_ref(),
+        |s| yaw_run(&p, &spec, s, link.as_ref()).map_err(|e| e.to_string()),
+        |rec, _: &YawMeasures| figures::vehicle::yaw(rec, &spec, axles, seeds[0]),
+        |m| yaw_report(&p, &spec, case.paper_form, &seeds, m),
+    )
+}
+
+/// What `vehicle roll` and `vehicle yaw` share once their scenario is set: `run` every seed
+/// (the first seed's record kept for the plot), draw the `chart` of the first seed, print
+/// the `report` of every seed's measures.
+fn scenario_cmd<M: Send>(
+    study: &StudyArgs,
+    (what, terrain, seeds): (&str, &Option<TerrainSpec>, &[u64]),
+    link: Option<&Link>,
+    run: impl Fn(u64) -> Result<(RunRecord, M), String> + Sync,
+    chart: impl Fn(&RunRecord, &M) -> Result<afsv_plot::Chart, String>,
+    report: impl Fn(&[M]) -> Result<(Value, String), String>,
+) -> CmdResult {
     let want_record = study.plot.is_some();
-    let runs: Vec<(YawMeasures, Option<RunRecord>)> =
-        over_seeds("afsv vehicle yaw", &terrain, &seeds, |i, s| {
-            let (rec, m) = yaw_run(&p, &spec, s, link.as_ref()).map_err(|e| e.to_string())?;
-            Ok((m, (want_record && i == 0).then_some(rec)))
-        })?;
-    let measures: Vec<YawMeasures> = runs.iter().map(|r| r.0).collect();
-    if let (Some(path), Some((_, Some(rec)))) = (&study.plot, runs.first()) {
-        let chart = figures::vehicle::yaw(rec, &spec, axle_name(axle, &p), seeds[0])?;
-        super::write_chart(path, &chart)?;
+    let runs: Vec<(M, Option<RunRecord>)> = over_seeds(what, terrain, seeds, |i, s| {
+        let (rec, m) = run(s)?;
+        Ok((m, (want_record && i == 0).then_some(rec)))
+    })?;
+    if let (Some(path), Some((m, Some(rec)))) = (&study.plot, runs.first()) {
+        super::write_chart(path, &chart(rec, m)?)?;
     }
-    let (mut v, text) = yaw_report(&p, &spec, case.paper_form, &seeds, &measures)?;
-    if let Some(plot) = &study.plot {
-        v["plot"] = json!(plot);
-    }
-    print_linked(study.json, v, &text, link.as_ref())
+    let measures: Vec<M> = runs.into_iter().map(|r| r.0).collect();
+    print_linked(study.shown(), report(&measures)?, link)
 }

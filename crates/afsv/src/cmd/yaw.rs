@@ -6,12 +6,9 @@ use super::{args, CmdResult};
 use afsv::output::{OutputGuard, OutputKind};
 use afsv::progress::Progress;
 use afsv_design::report::yaw;
-use afsv_dynamics::yaw_plane::analysis::{measures_for, sensitivity_of, MeasureSpec};
-use afsv_dynamics::yaw_plane::simulate::Recording;
-use afsv_dynamics::{
-    simulate, Course, EquationForm, Load, Manoeuvre, PathDriver, SimOptions, Solver, SteerInput,
-    YawPlaneParams,
-};
+use afsv_design::yaw_manoeuvre::{self, measures_spec, speed_m_s, yaw_plane_params};
+use afsv_dynamics::yaw_plane::analysis::{measures_for, sensitivity_of};
+use afsv_dynamics::{simulate, EquationForm, Load, SimOptions, Solver, YawPlaneParams};
 use afsv_records::Record;
 use std::path::{Path, PathBuf};
 
@@ -163,141 +160,9 @@ pub enum Command {
     },
 }
 
-fn kmh(v: f64) -> Result<f64, String> {
-    if v.is_finite() && v >= 0.0 {
-        Ok(v / 3.6)
-    } else {
-        Err(format!("--speed-kmh must be finite and >= 0, got {v}"))
-    }
-}
-
-/// Parameter set from `--params`, or the `--load` case of the `--vehicle` description (the
-/// prototype's Table 3.1 columns by default).
-fn load_params(v: &VehicleArgs) -> Result<YawPlaneParams, Box<dyn std::error::Error>> {
-    if let Some(path) = &v.params {
-        return read_params(path);
-    }
-    let d = super::described::articulated(v.vehicle.as_deref())?;
-    let load = match v.load {
-        LoadChoice::Loaded => Load::Loaded,
-        LoadChoice::Unloaded => Load::Unloaded,
-    };
-    let p = d.yaw_plane_params(load);
-    p.validate()?;
-    Ok(p)
-}
-
-/// Read and validate a yaw-plane parameter file.
-pub fn read_params(path: &Path) -> Result<YawPlaneParams, Box<dyn std::error::Error>> {
-    let text = afsv_records::provenance::read_input(path)
-        .map_err(|e| format!("{}: {e}", path.display()))?;
-    let p: YawPlaneParams =
-        serde_json::from_str(&text).map_err(|e| format!("{}: {e}", path.display()))?;
-    p.validate()
-        .map_err(|e| format!("{}: {e}", path.display()))?;
-    vehicle_components::within_ranges(&p).map_err(|e| format!("{}: {e}", path.display()))?;
-    Ok(p)
-}
-
-fn parse_number(what: &str, s: &str) -> Result<f64, String> {
-    s.parse::<f64>()
-        .ok()
-        .filter(|v| v.is_finite())
-        .ok_or_else(|| format!("--input {what}: `{s}` is not a finite number"))
-}
-
-/// The file of a `csv:FILE:COLUMN` input specification.
-fn csv_input_file(spec: &str) -> Option<&str> {
-    let parts: Vec<&str> = spec.splitn(3, ':').collect();
-    match parts.as_slice() {
-        ["csv", file, _] => Some(file),
-        _ => None,
-    }
-}
-
-/// Parse the `--input` specification into a manoeuvre.
-fn parse_input(
-    spec: &str,
-    speed: f64,
-    t0: f64,
-    duration: f64,
-) -> Result<Manoeuvre, Box<dyn std::error::Error>> {
-    let parts: Vec<&str> = spec.splitn(3, ':').collect();
-    let open = |input: SteerInput, label: &str| Manoeuvre::open_loop(speed, duration, input, label);
-    let m = match parts.as_slice() {
-        ["pulse"] => open(SteerInput::pulse_deg(30.0, 0.2, t0), "pulse"),
-        ["pulse", a] => open(
-            SteerInput::pulse_deg(parse_number("pulse peak", a)?, 0.2, t0),
-            "pulse",
-        ),
-        ["step", a] => open(SteerInput::step_deg(parse_number("step", a)?, t0), "step"),
-        ["ramp", r] => open(
-            SteerInput::Ramp {
-                rate_rad_s: parse_number("ramp rate", r)?.to_radians(),
-                start_s: t0,
-                limit_rad: 720f64.to_radians(),
-            },
-            "ramp",
-        ),
-        ["ramp", r, l] => open(
-            SteerInput::Ramp {
-                rate_rad_s: parse_number("ramp rate", r)?.to_radians(),
-                start_s: t0,
-                limit_rad: parse_number("ramp limit", l)?.abs().to_radians(),
-            },
-            "ramp",
-        ),
-        ["csv", file, column] => {
-            let path = Path::new(file);
-            let rec = Record::read(path)?;
-            let t = rec.require("time_s", path)?.to_vec();
-            let col = rec.require(column, path)?;
-            let scale = if column.ends_with("_deg") {
-                std::f64::consts::PI / 180.0
-            } else if column.ends_with("_rad") {
-                1.0
-            } else {
-                return Err(format!(
-                    "--input csv: column `{column}` must end in _deg or _rad to state its unit"
-                )
-                .into());
-            };
-            let input = SteerInput::Table {
-                time_s: t,
-                angle_rad: col.iter().map(|v| v * scale).collect(),
-            };
-            input.validate()?;
-            open(input, "csv")
-        }
-        ["turn"] => Manoeuvre::course(
-            speed,
-            duration,
-            PathDriver::new(Course::steady_turn_fig_3_6()),
-            "steady_turn",
-        ),
-        ["path-change"] => Manoeuvre::course(
-            speed,
-            duration,
-            PathDriver::new(Course::path_change_fig_3_6()),
-            "path_change",
-        ),
-        _ => {
-            return Err(format!(
-                "--input `{spec}` not understood (expected pulse[:DEG], step:DEG, ramp:DEG_S[:LIMIT_DEG], csv:FILE:COLUMN, turn or path-change)"
-            )
-            .into())
-        }
-    };
-    Ok(m)
-}
-
-/// The section 3.3 test definition in `form`, recording only the channels the measures
-/// read (the same numbers as a full record, without the per-sample cost of the others).
-fn measures_spec(form: FormChoice) -> MeasureSpec {
-    let mut spec = MeasureSpec::default();
-    spec.options.form = form.into();
-    spec.options.recording = Recording::Measures;
-    spec
+/// Parameter set from `--params`, or the `--load` case of the `--vehicle` description.
+fn load_params(v: &VehicleArgs) -> Result<YawPlaneParams, String> {
+    yaw_plane_params(v.params.as_deref(), v.vehicle.as_deref(), v.load.into())
 }
 
 /// Run an `afsv yaw` subcommand.
@@ -315,23 +180,18 @@ pub fn run(cmd: Command) -> CmdResult {
             columns,
             force,
         } => {
-            args::check_samples(
-                &format!("--duration {}", args::show(duration)),
-                &format!("duration/dt with --dt {}", args::show(dt)),
-                duration / dt,
-                args::MAX_YAW_SAMPLES,
-            )?;
+            args::check_duration(duration, dt, args::MAX_YAW_SAMPLES)?;
             let mut guard = OutputGuard::new(force);
             guard.input_if("--params", vehicle.params.as_deref())?;
             super::described::declare(&mut guard, vehicle.vehicle.as_deref())?;
-            if let Some(file) = csv_input_file(&input) {
+            if let Some(file) = yaw_manoeuvre::csv_input_file(&input) {
                 guard.record_input("--input", Path::new(file))?;
             }
             guard.output("-o", &output, OutputKind::Record)?;
             let p = load_params(&vehicle)?;
-            let speed = kmh(vehicle.speed_kmh)?;
+            let speed = speed_m_s(vehicle.speed_kmh)?;
             let sys = p.afs_system()?;
-            let man = parse_input(&input, speed, input_time, duration)?;
+            let man = yaw_manoeuvre::manoeuvre(&input, speed, input_time, duration)?;
             let opts = SimOptions {
                 solver: match solver {
                     SolverChoice::Dopri => Solver::Dopri5,
@@ -345,16 +205,15 @@ pub fn run(cmd: Command) -> CmdResult {
                 ..SimOptions::default()
             };
             let rec = simulate(&p.vehicle, &sys, &man, &opts)?;
-            let mut out = Record::from_selected(rec.columns(), &columns)?;
-            out.meta = yaw::simulate_sidecar(&p, &man, &input, &opts, &rec);
-            afsv::provenance::stamp_record(&mut out);
-            out.write(&output)?;
+            let meta = yaw::simulate_sidecar(&p, &man, &input, &opts, &rec);
+            let selected = Record::from_selected(rec.columns(), &columns)?;
+            let out = afsv::provenance::write_record(&output, selected, meta)?;
             afsv::output::print_json(&yaw::simulate_summary(&output, out.names(), &rec))?;
         }
         Command::Measures { vehicle } => {
             let p = load_params(&vehicle)?;
-            let speed = kmh(vehicle.speed_kmh)?;
-            let spec = measures_spec(vehicle.form);
+            let speed = speed_m_s(vehicle.speed_kmh)?;
+            let spec = measures_spec(vehicle.form.into());
             let m = measures_for(&p.vehicle, &p.afs, p.load, speed, &spec)?;
             let mut v = serde_json::json!(m);
             if let Some(caveat) = m.decay_fit_caveat() {
@@ -368,18 +227,17 @@ pub fn run(cmd: Command) -> CmdResult {
             table,
             vehicle,
         } => {
-            let spec = measures_spec(form);
+            let spec = measures_spec(form.into());
             let d = super::described::articulated(vehicle.as_deref())?;
             let base = |load: Load| d.yaw_plane_params(load);
             let progress = Progress::new("afsv yaw sensitivity", "configurations", Some(34));
-            let t = sensitivity_of(&base, kmh(speed_kmh)?, &spec, &|_, _| progress.step(""));
+            let t = sensitivity_of(&base, speed_m_s(speed_kmh)?, &spec, &|_, _| {
+                progress.step("")
+            });
             progress.finish();
             let t = t?;
             if table {
-                let form = match spec.options.form {
-                    EquationForm::EnergyConsistent => "energy-consistent Eq 3.13",
-                    EquationForm::PaperEq313 => "Eq 3.13 as printed",
-                };
+                let form = yaw_manoeuvre::form_text(spec.options.form);
                 println!(
                     "Percent change of the measures (section 3.4.3), {speed_kmh} km/h, {form}"
                 );

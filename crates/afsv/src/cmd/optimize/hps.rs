@@ -16,7 +16,6 @@ use afsv_design::hps_speed_sweep::speed_sweep_runs;
 use afsv_design::report::hps_optimum;
 use afsv_design::{HpsAskTell, HpsAskTellState, HpsProblemDesc};
 use afsv_records::lock::take_and_read;
-use std::io::IsTerminal;
 use std::path::Path;
 
 /// Options of `afsv optimize hps`.
@@ -57,15 +56,6 @@ pub struct HpsArgs {
     pub ask_tell: AskTellArgs,
     #[command(flatten)]
     pub output: crate::cmd::args::JsonOutput,
-}
-
-/// GA progress: one step per generation.
-struct Generations(afsv::progress::Progress);
-
-impl optimize::Progress for Generations {
-    fn report(&self, _phase: &str, done: usize, _total: usize, best: f64) {
-        self.0.step(&format!("generation {done}, best F {best:.4}"));
-    }
 }
 
 /// Run the optimisation and print the result.
@@ -112,11 +102,7 @@ pub fn run(a: &HpsArgs) -> CmdResult {
         };
         return ask_tell(a, &desc, state, stored);
     }
-    let progress = Generations(afsv::progress::Progress::new(
-        "afsv optimize hps",
-        "generations",
-        Some(a.generations),
-    ));
+    let progress = super::Generations::new("hps", a.generations, |b| format!("F {b:.4}"));
     let r = optimise_hps(&base, &settings, &progress)?;
     progress.0.finish();
     report(a, &base, &r)
@@ -140,14 +126,15 @@ fn report(a: &HpsArgs, base: &vehicle_3d::VehicleParams, r: &HpsOptimum) -> CmdR
     } else {
         None
     };
-    if a.output.json || !std::io::stdout().is_terminal() {
-        afsv::output::print_json(&hps_optimum::to_json(r, sweep.as_ref())?)?;
-    } else {
-        print!("{}", hps_optimum::text(r));
-        if let Some(s) = &sweep {
-            print!("\n{}", afsv_design::report::speed_sweep::text(s));
-        }
-    }
+    let v = hps_optimum::to_json(r, sweep.as_ref())?;
+    afsv::output::print_json_or_text(a.output.json, &v, || match &sweep {
+        None => hps_optimum::text(r),
+        Some(s) => format!(
+            "{}\n{}",
+            hps_optimum::text(r),
+            afsv_design::report::speed_sweep::text(s)
+        ),
+    })?;
     hps_optimum::earned(r)
         .map_err(|why| afsv::output::NotEarned(format!("optimize hps: {why}")).into())
 }

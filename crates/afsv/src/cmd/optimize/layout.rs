@@ -8,14 +8,13 @@
 use super::AskTellArgs;
 use crate::cmd::CmdResult;
 use afsv::output::{NotEarned, OutputGuard};
-use afsv_design::layout_optimum::LayoutMeasure;
+use afsv_design::layout_problem::{self, LayoutOptions};
 use afsv_design::report::layout_optimum::text;
 use afsv_design::{
-    optimise_layout, LayoutAskTell, LayoutAskTellState, LayoutConstraint, LayoutGaSettings,
-    LayoutOptimum, LayoutProblem, LayoutProblemDesc, LayoutVariable,
+    optimise_layout, LayoutAskTell, LayoutAskTellState, LayoutGaSettings, LayoutOptimum,
+    LayoutProblem, LayoutProblemDesc,
 };
 use afsv_records::lock::take_and_read;
-use std::io::IsTerminal;
 use std::path::{Path, PathBuf};
 use vehicle_3d::Load;
 
@@ -89,67 +88,23 @@ pub struct LayoutArgs {
     pub output: crate::cmd::args::JsonOutput,
 }
 
-/// The problem the options define.
+/// The problem the options define (`afsv_design::layout_problem`).
 fn problem_desc(a: &LayoutArgs) -> Result<LayoutProblemDesc, String> {
-    if a.layout.contains(',') {
-        return Err(format!("--layout {}: one layout", a.layout));
-    }
-    let v = crate::cmd::described::articulated(a.vehicle.as_deref())?;
-    let layout = afsv_design::layout_names::build_layouts(&v, &a.layout)?
-        .pop()
-        .ok_or("--layout: no layout named")?;
-    if a.seeds == 0 || a.seeds > afsv_design::layout_optimum::MAX_SEEDS {
-        return Err(format!("--seeds {}: must be 1 to 100", a.seeds));
-    }
-    let flag = |f: &'static str| move |e: String| format!("--{f}: {e}");
-    let link = layout.link();
-    let objective = LayoutMeasure::parse(&a.objective).map_err(flag("objective"))?;
-    let constraints: Vec<LayoutConstraint> = a
-        .constraints
-        .iter()
-        .map(|t| LayoutConstraint::parse(t).map_err(flag("constraint")))
-        .collect::<Result<_, _>>()?;
-    let d4 = [LayoutMeasure::D4Speed, LayoutMeasure::D4SpeedSeat];
-    let d4_speeds_kmh =
-        if d4.contains(&objective) || constraints.iter().any(|c| d4.contains(&c.measure)) {
-            crate::cmd::study::parse_list(
-                "--d4-speeds",
-                &a.d4_speeds,
-                afsv_design::layout_optimum::MAX_D4_SPEEDS,
-            )?
-        } else {
-            Vec::new()
-        };
-    Ok(LayoutProblemDesc {
-        vehicle: v.name.clone(),
-        layout: layout.name,
-        params: layout.params,
-        front_axle: layout.front_axle,
-        link,
-        seat: afsv_design::layout_names::seat_of(&v, a.seat.as_deref())?,
+    layout_problem::problem_desc(&LayoutOptions {
+        vehicle: a.vehicle.as_deref(),
+        layout: &a.layout,
+        seat: a.seat.as_deref(),
+        vary: &a.vary,
+        objective: &a.objective,
+        maximise: a.maximise,
+        constraints: &a.constraints,
         load: a.load,
         speed_kmh: a.speed_kmh,
         ride_length_m: a.ride_length_m,
-        seeds: afsv_design::fan_out::seed_range(a.terrain_seed, a.seeds as u64),
-        variables: a
-            .vary
-            .iter()
-            .map(|t| LayoutVariable::parse(t).map_err(flag("vary")))
-            .collect::<Result<_, _>>()?,
-        d4_speeds_kmh,
-        objective,
-        maximise: a.maximise,
-        constraints,
+        d4_speeds: &a.d4_speeds,
+        seeds: a.seeds,
+        terrain_seed: a.terrain_seed,
     })
-}
-
-/// GA progress: one step per generation.
-struct Generations(afsv::progress::Progress);
-
-impl optimize::Progress for Generations {
-    fn report(&self, _phase: &str, done: usize, _total: usize, best: f64) {
-        self.0.step(&format!("generation {done}, best {best:.5}"));
-    }
 }
 
 /// Run `afsv optimize layout`.
@@ -171,11 +126,7 @@ pub fn run(a: &LayoutArgs) -> CmdResult {
     if let Some(state) = &a.ask_tell.state {
         return ask_tell(a, &problem, &ga, state, stored);
     }
-    let progress = Generations(afsv::progress::Progress::new(
-        "afsv optimize layout",
-        "generations",
-        Some(a.generations),
-    ));
+    let progress = super::Generations::new("layout", a.generations, |b| format!("{b:.5}"));
     let r = optimise_layout(&problem, &ga, &progress)?;
     progress.0.finish();
     report(a, &r)
@@ -184,11 +135,7 @@ pub fn run(a: &LayoutArgs) -> CmdResult {
 /// The report on stdout (JSON, or text on a terminal); [`NotEarned`] when the optimum is
 /// infeasible or a variable lies on a bound.
 fn report(a: &LayoutArgs, r: &LayoutOptimum) -> CmdResult {
-    if a.output.json || !std::io::stdout().is_terminal() {
-        afsv::output::print_json(r)?;
-    } else {
-        print!("{}", text(r));
-    }
+    afsv::output::print_json_or_text(a.output.json, r, || text(r))?;
     r.earned().map_err(|why| {
         NotEarned(format!(
             "optimize layout: the best design found is printed, not an optimum: {why}"

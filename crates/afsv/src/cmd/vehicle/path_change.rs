@@ -4,9 +4,7 @@
 //! JSON sidecar, afsv-v1) and a four-panel SVG of the channels.
 
 use super::super::args;
-use super::terrain_and_seeds;
-use super::{axle_name, declare_inputs, described_link, print_linked};
-use super::{vehicle_params, CaseArgs, CmdResult};
+use super::{axle_name, declare_inputs, print_linked, vehicle_of, CaseArgs, CmdResult};
 use afsv::output::{OutputGuard, OutputKind};
 use afsv_design::figures;
 use afsv_design::report::vehicle::path_change_report;
@@ -44,9 +42,8 @@ pub(super) fn path_change_cmd(
     if let Some(p) = out.plot.as_deref() {
         guard.output("--plot", p, OutputKind::Svg)?;
     }
-    let (p, axle) = vehicle_params(case)?;
-    let link = described_link(case, axle)?;
-    let (terrain, seeds) = terrain_and_seeds(case, None, seed, None)?;
+    let (p, axle, link) = vehicle_of(case)?;
+    let (terrain, seeds) = case.terrain_and_seeds(None, seed, None)?;
     let seeds = &seeds[..1];
     let v3 = PathChangeSpec::v3(case.load, axle);
     let spec = PathChangeSpec {
@@ -61,10 +58,9 @@ pub(super) fn path_change_cmd(
         Some(l) => path_change_linked(&p, &spec, seeds[0], l).map(|(r, m)| (r.record, m))?,
     };
     if let Some(path) = out.output.as_deref() {
-        let mut r = afsv_records::Record::from_columns(rec.afsv_v1_columns())?;
-        r.meta = path_change_sidecar(&rec, &spec, seeds, &m, &p, link.as_ref());
-        afsv::provenance::stamp_record(&mut r);
-        r.write(path)?;
+        let meta = path_change_sidecar(&rec, &spec, seeds, &m, &p, link.as_ref());
+        let columns = afsv_records::Record::from_columns(rec.afsv_v1_columns())?;
+        afsv::provenance::write_record(path, columns, meta)?;
     }
     if let Some(path) = out.plot.as_deref() {
         let chart = figures::vehicle::path_change(&rec, &spec, axle_name(axle, &p), &m);
@@ -75,10 +71,7 @@ pub(super) fn path_change_cmd(
         v["output"] = json!(o);
         v["sidecar"] = json!(o.with_extension("json"));
     }
-    if let Some(plot) = out.plot.as_deref() {
-        v["plot"] = json!(plot);
-    }
-    print_linked(out.json, v, &text, link.as_ref())
+    print_linked((out.json, out.plot.as_deref()), (v, text), link.as_ref())
 }
 
 /// Output options of `afsv vehicle path-change`.

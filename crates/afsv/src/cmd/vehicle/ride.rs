@@ -3,6 +3,7 @@
 
 use super::*;
 use afsv_design::design_3d::ride_run;
+use afsv_design::vehicle_case::seat_of_run;
 
 pub(super) fn ride_cmd(
     case: &CaseArgs,
@@ -20,28 +21,18 @@ pub(super) fn ride_cmd(
                 .into(),
         );
     }
-    let (p, axle) = prepare(case, study)?;
-    let link = described_link(case, axle)?;
-    let layout = seat::layout(case, seat)?;
+    let (p, axle, link) = prepare(case, study)?;
+    let layout = vehicle_case::seat_layout(&case.source(), seat)?;
     let speed = case.speed_kmh.unwrap_or(20.0);
-    let t_window = RUN_IN_M / (speed / 3.6);
-    let sim_s = (RUN_IN_M + length_m) / (speed / 3.6);
-    if sim_s > MAX_DURATION_S {
-        return Err(format!(
-            "--length-m {}: the run-in and window take {} s at {speed} km/h, more than {MAX_DURATION_S} s",
-            args::show(length_m),
-            args::show(sim_s)
-        )
-        .into());
-    }
+    let t_window = vehicle_case::ride_window_start(speed, length_m)?;
     if let Some(road) = road {
         let spec = RideSpec {
             speed_kmh: speed,
             length_m,
             ..RideSpec::d1(case.load, axle)
         };
-        let (rec, m, ground) = road::ride(&p, &spec, road, link.as_ref())?;
-        let seats: Vec<_> = seat::of_run(&p, &rec, t_window, layout.as_ref())?
+        let (rec, m, ground) = afsv_design::measured_road::ride(&p, &spec, road, link.as_ref())?;
+        let seats: Vec<_> = seat_of_run(&p, &rec, t_window, layout.as_ref())?
             .into_iter()
             .collect();
         return print_ride(
@@ -54,7 +45,7 @@ pub(super) fn ride_cmd(
         );
     }
     let (terrain, seeds) =
-        terrain_and_seeds(case, study.seeds, study.seed, Some(TerrainSpec::default()))?;
+        case.terrain_and_seeds(study.seeds, study.seed, Some(TerrainSpec::default()))?;
     let Some(terrain) = terrain else {
         return Err("--terrain smooth: the ride run needs a terrain (class:...)".into());
     };
@@ -73,7 +64,7 @@ pub(super) fn ride_cmd(
         } else {
             None
         };
-        Ok((m, psd, seat::of_run(&p, &rec, t_window, layout.as_ref())?))
+        Ok((m, psd, seat_of_run(&p, &rec, t_window, layout.as_ref())?))
     })?;
     let measures: Vec<RideMeasures> = runs.iter().map(|r| r.0).collect();
     let seats: Vec<SeatRideMeasures> = runs.iter().filter_map(|r| r.2).collect();
@@ -109,9 +100,6 @@ fn print_ride(
     seats: &[SeatRideMeasures],
     ground: Ground,
 ) -> CmdResult {
-    let (mut v, text) = ride_report(p, spec, case.paper_form, measures, seats, ground)?;
-    if let Some(plot) = &study.plot {
-        v["plot"] = json!(plot);
-    }
-    print_linked(study.json, v, &text, link)
+    let report = ride_report(p, spec, case.paper_form, measures, seats, ground)?;
+    print_linked(study.shown(), report, link)
 }

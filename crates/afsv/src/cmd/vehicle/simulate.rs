@@ -2,18 +2,15 @@
 //! docs/records.md) in the afsv-v1 sign convention, through the output guard.
 
 use super::super::args;
-use super::options::steer_input;
+use super::options::parse_steer;
 use super::CmdResult;
-use super::{declare_inputs, described_link, terrain_and_seeds, vehicle_params, CaseArgs};
+use super::{declare_inputs, vehicle_of, CaseArgs};
 use afsv::output::{OutputGuard, OutputKind};
 use afsv_design::report::vehicle_record::{
     simulate_record, simulate_sidecar, simulate_summary, SimulateRun,
 };
+use afsv_design::vehicle_case::simulate_run;
 use std::path::PathBuf;
-use vehicle_3d::component_record::simulate_components;
-use vehicle_3d::interconnect::LinkedVehicle;
-use vehicle_3d::{RunOptions, Vehicle, VehicleOptions};
-use vehicle_components::FlatTerrain;
 
 /// Where `afsv vehicle simulate` writes its record, and what goes in it.
 #[derive(clap::Args, Debug)]
@@ -42,82 +39,29 @@ pub(super) fn simulate_cmd(
     out_args: &RecordOutput,
 ) -> CmdResult {
     let (output, force) = (out_args.output.as_path(), out_args.force);
-    args::check_samples(
-        &format!("--duration {}", args::show(duration)),
-        &format!("duration/dt with --dt {}", args::show(dt)),
-        duration / dt,
-        vehicle_3d::simulate::MAX_SAMPLES as f64,
-    )?;
-    let input = steer_input(steer)?;
+    args::check_duration(duration, dt, vehicle_3d::simulate::MAX_SAMPLES as f64)?;
+    let input = parse_steer(steer)?;
     let mut guard = OutputGuard::new(force);
     declare_inputs(case, &mut guard)?;
     guard.output("-o", output, OutputKind::Record)?;
-    let (p, axle) = vehicle_params(case)?;
-    let link = described_link(case, axle)?;
-    let (terrain, seeds) = terrain_and_seeds(case, None, seed, None)?;
+    let (p, axle, link) = vehicle_of(case)?;
+    let (terrain, seeds) = case.terrain_and_seeds(None, seed, None)?;
     // one run: the given seed, else the first of the default list (1)
-    let seeds = &seeds[..1];
-    let speed_kmh = case.speed_kmh.unwrap_or(20.0);
-    let speed = speed_kmh / 3.6;
-    let options = VehicleOptions {
-        front_axle: axle,
-        speed_m_s: speed,
-        steer: input.clone(),
-        path_length_m: speed * duration + 5.0,
-        ..VehicleOptions::default()
-    };
-    let run = RunOptions {
-        t_end_s: duration,
-        output_dt_s: dt,
-        ..RunOptions::default()
-    };
-    let half = 0.5 * p.front_track_m;
-    let vehicle = match &terrain {
-        None => {
-            let flat = FlatTerrain::new(0.0, vehicle_components::DEFAULT_FRICTION)?;
-            Vehicle::new(&p, case.load, options, &flat, half)?
-        }
-        Some(t) => {
-            let length = options.start_s_m + options.path_length_m + 50.0;
-            let ground = t.build(&p, length, seeds[0])?;
-            Vehicle::new(&p, case.load, options, &ground, half)?
-        }
-    };
-    let (rec, components) = match &link {
-        None if out_args.components => {
-            let (rec, c) = simulate_components(&vehicle, &run)?;
-            (rec, Some(c))
-        }
-        None => (vehicle_3d::simulate(&vehicle, &run)?, None),
-        Some(_) if out_args.components => {
-            return Err(
-                "--components: not with the description's [link] (the linked struts' lines are not components)"
-                    .into(),
-            )
-        }
-        Some(l) => {
-            let linked = LinkedVehicle::new(vehicle, l)?;
-            (
-                linked.simulate_from(&linked.initial_state()?, &run)?.record,
-                None,
-            )
-        }
-    };
     let run = SimulateRun {
         params: &p,
         load: case.load,
         front_axle: axle,
-        speed_kmh,
+        speed_kmh: case.speed_kmh.unwrap_or(20.0),
         steer: &input,
         terrain: &terrain,
-        seeds,
+        seeds: &seeds[..1],
         output_dt_s: dt,
         link: link.as_ref(),
     };
-    let mut out = simulate_record(&rec, components.as_ref())?;
-    out.meta = simulate_sidecar(&run, components.as_ref());
-    afsv::provenance::stamp_record(&mut out);
-    out.write(output)?;
+    let (rec, components) = simulate_run(&run, duration, out_args.components)?;
+    let meta = simulate_sidecar(&run, components.as_ref());
+    let columns = simulate_record(&rec, components.as_ref())?;
+    let out = afsv::provenance::write_record(output, columns, meta)?;
     afsv::output::print_json(&simulate_summary(output, out.names(), &rec))?;
     Ok(())
 }
