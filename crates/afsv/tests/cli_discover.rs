@@ -382,6 +382,9 @@ fn records_written_elsewhere_are_read_and_the_effect_is_named() {
         "{}",
         v["gap_shrink"]
     );
+    // the parameter file is among the report's inputs, with its digest
+    let inputs = rep["provenance"]["inputs"].to_string();
+    assert!(inputs.contains("unloaded.json"), "{inputs}");
     for d in [&data, &foreign, &report] {
         let _ = std::fs::remove_dir_all(d);
     }

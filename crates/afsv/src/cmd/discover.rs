@@ -1,6 +1,7 @@
 //! `afsv discover` and `afsv synth`: the model-discrepancy workflow (docs/discovery.md).
 
 use super::CmdResult;
+use afsv_design::param_files;
 use afsv_discovery::hps::HpsStrutModel;
 use afsv_discovery::report::{self, write_report};
 use afsv_discovery::synth;
@@ -113,29 +114,16 @@ pub struct SynthArgs {
     pub force: bool,
 }
 
-fn read_json<T: serde::de::DeserializeOwned>(path: &Path) -> Result<T, String> {
-    let text = std::fs::read_to_string(path).map_err(|e| format!("{}: {e}", path.display()))?;
-    serde_json::from_str(&text)
-        .map_err(|e| format!("{}:{}:{}: {e}", path.display(), e.line(), e.column()))
-}
-
 fn hps_model(params: Option<&Path>) -> Result<HpsStrutModel, String> {
     match params {
         Some(path) => {
-            let p: hps_emulsion::StrutParams = read_json(path)?;
+            let p: hps_emulsion::StrutParams = param_files::read(path)?;
             p.validate()
                 .map_err(|e| format!("{}: {e}", path.display()))?;
             Ok(HpsStrutModel::new(p, None))
         }
         None => Ok(HpsStrutModel::nominal()),
     }
-}
-
-fn read_vehicle(path: &Path) -> Result<afsv_dynamics::YawPlaneParams, String> {
-    let p: afsv_dynamics::YawPlaneParams = read_json(path)?;
-    p.validate()
-        .map_err(|e| format!("{}: {e}", path.display()))?;
-    Ok(p)
 }
 
 /// The 3-D vehicle with `front_axle`: Table 6.1's parameters or those of `params` (`afsv
@@ -148,12 +136,7 @@ fn vehicle3d_model(
 ) -> Result<Vehicle3dModel, String> {
     let mut m = Vehicle3dModel::nominal(front_axle);
     if let Some(path) = params {
-        let p: vehicle_3d::VehicleParams = read_json(path)?;
-        p.validate()
-            .map_err(|e| format!("{}: {e}", path.display()))?;
-        afsv_design::report::params::vehicle_3d_in_ranges(&p)
-            .map_err(|e| format!("{}: {e}", path.display()))?;
-        m.params = p;
+        m.params = param_files::read_vehicle_3d(path)?;
     }
     m.default_load = load
         .map(|l| l.parse::<vehicle_3d::Load>())
@@ -168,7 +151,7 @@ fn yaw_model(
     params_for: &[String],
 ) -> Result<YawPlaneModel, String> {
     let mut m = match params {
-        Some(path) => YawPlaneModel::with_vehicle(read_vehicle(path)?),
+        Some(path) => YawPlaneModel::with_vehicle(param_files::read_yaw_plane(path)?),
         None => YawPlaneModel::nominal(),
     };
     m.conditions.default_load = load
@@ -188,7 +171,7 @@ fn yaw_model(
         }
         m.conditions
             .per_record
-            .push((rec, read_vehicle(Path::new(file))?));
+            .push((rec, param_files::read_yaw_plane(Path::new(file))?));
     }
     Ok(m)
 }
