@@ -21,17 +21,22 @@ use afsv_dynamics::SteerInput;
 use afsv_records::Record;
 use hps_emulsion::HeatTransfer;
 use serde_json::Value;
-use std::collections::VecDeque;
 use std::sync::{Arc, Mutex};
-use terrain_psd::IsoClass;
 use vehicle_3d::scenarios::TerrainSpec;
 use vehicle_3d::{
     CamSpacing, FieldEffects, FrontAxle, Load, RunOptions, SpeedSetpoint, TireTracks, Vehicle,
     VehicleOptions, VehicleParams,
 };
-use vehicle_components::{FlatTerrain, ParamSet};
+use vehicle_components::FlatTerrain;
 
+mod cache;
+mod registry_paths;
+mod sidecar;
 mod throttle;
+use cache::{Channels, FOLLOW_KEY, GAIN_KEY, READING_KEY};
+pub use cache::{ReplayCache, CACHE_ENTRIES};
+pub use registry_paths::{assign, value};
+use sidecar::{meta, terrain_of};
 pub use throttle::{drive_error, local_quadratic, throttle_setpoint, throttle_target};
 
 /// Channels the 3-D model predicts (afsv-v1 names). Ride records are compared on the speed
@@ -182,54 +187,6 @@ pub struct Replay3d {
     pub cache: ReplayCache,
     /// A scouting copy: replayed at [`SCOUT_RTOL_FACTOR`] times the model's tolerance.
     pub coarse: bool,
-}
-
-/// The last [`CACHE_ENTRIES`] replays of one record, keyed by the vehicle-side inputs (the
-/// baseline vector and the model-side effects' values, bit for bit): a fit of a sensor
-/// effect (mount, misalignment) varies only what is applied after the replay, so its
-/// Jacobian columns and its line searches reuse the integration instead of repeating it.
-#[derive(Debug, Default)]
-pub struct ReplayCache(Mutex<VecDeque<(Vec<u64>, Channels)>>);
-
-/// Predicted series per entry of [`CHANNELS`].
-type Channels = Vec<Option<Vec<f64>>>;
-
-/// Replays kept per record.
-pub const CACHE_ENTRIES: usize = 24;
-
-/// Cache-key marks of `driver-throttle`'s replays: the replay that finds the following
-/// setpoint, and the replay at a gain (followed by the gain's bits).
-const FOLLOW_KEY: u64 = u64::MAX;
-/// See [`FOLLOW_KEY`].
-const GAIN_KEY: u64 = u64::MAX - 1;
-/// Cache-key mark of a replay under another reading of `cam-spacing` (followed by it).
-const READING_KEY: u64 = u64::MAX - 2;
-
-impl Clone for ReplayCache {
-    fn clone(&self) -> Self {
-        Self::default()
-    }
-}
-
-impl ReplayCache {
-    /// The cached channels for `key`, else `run()`'s, stored.
-    fn get_or(
-        &self,
-        key: Vec<u64>,
-        run: impl FnOnce() -> Result<Channels, DiscoveryError>,
-    ) -> Result<Channels, DiscoveryError> {
-        let lock = || self.0.lock().unwrap_or_else(|e| e.into_inner());
-        if let Some((_, ch)) = lock().iter().find(|(k, _)| *k == key) {
-            return Ok(ch.clone());
-        }
-        let ch = run()?;
-        let mut c = lock();
-        if c.len() >= CACHE_ENTRIES {
-            c.pop_front();
-        }
-        c.push_back((key, ch.clone()));
-        Ok(ch)
-    }
 }
 
 impl Vehicle3dModel {
@@ -479,86 +436,6 @@ impl Vehicle3dModel {
         }
         Ok((field, sensor, compliance))
     }
-}
-
-/// Set registry path `name` of `p` (a `tire.` or `hps.` prefix addresses the nested set).
-pub fn assign(p: &mut VehicleParams, name: &str, x: f64) -> Result<(), DiscoveryError> {
-    let set: &mut dyn ParamSet = if name.starts_with("tire.") {
-        &mut p.tire
-    } else if name.starts_with("hps.") {
-        &mut p.hps
-    } else {
-        p
-    };
-    let short = name
-        .strip_prefix("tire.")
-        .or_else(|| name.strip_prefix("hps."))
-        .unwrap_or(name);
-    let (i, _) = set.find(short)?;
-    set.assign(i, x);
-    Ok(())
-}
-
-/// Value of registry path `name` of `p`.
-pub fn value(p: &VehicleParams, name: &str) -> Result<f64, DiscoveryError> {
-    Ok(
-        match (name.strip_prefix("tire."), name.strip_prefix("hps.")) {
-            (Some(s), _) => p.tire.get(s)?,
-            (_, Some(s)) => p.hps.get(s)?,
-            _ => p.get(name)?,
-        },
-    )
-}
-
-/// A sidecar field, also looked up under the path-change command's `spec`.
-fn meta<'a>(record: &'a Record, key: &str) -> Option<&'a Value> {
-    record
-        .meta
-        .get(key)
-        .or_else(|| record.meta.get("spec").and_then(|s| s.get(key)))
-        .filter(|v| !v.is_null())
-}
-
-/// The ground of a record from its sidecar's `terrain` (as the vehicle commands write it:
-/// class, m_c, band, seeds; `smooth ground` or none is flat).
-fn terrain_of(record: &Record) -> Result<Option<(TerrainSpec, u64)>, DiscoveryError> {
-    let Some(t) = record
-        .meta
-        .get("terrain")
-        .filter(|t| t.get("class").is_some())
-    else {
-        return Ok(None);
-    };
-    let bad = |field: &'static str| DiscoveryError::Sidecar {
-        field,
-        reason: format!("terrain {t} lacks it or it is malformed"),
-    };
-    let class: IsoClass = t["class"]
-        .as_str()
-        .and_then(|c| c.parse().ok())
-        .ok_or_else(|| bad("terrain.class"))?;
-    let mut spec = TerrainSpec {
-        class,
-        ..TerrainSpec::default()
-    };
-    if let Some(m) = t.get("m_c_cycles_per_m").and_then(Value::as_f64) {
-        spec.m_c = m;
-    }
-    if let Some(b) = t.get("band_cycles_per_m").and_then(Value::as_array) {
-        let f = |i: usize| {
-            b.get(i)
-                .and_then(Value::as_f64)
-                .ok_or_else(|| bad("terrain.band"))
-        };
-        spec.band = (f(0)?, f(1)?);
-    }
-    let seed = t
-        .get("seeds")
-        .and_then(|s| s.get(0))
-        .or_else(|| t.get("seed"))
-        .and_then(Value::as_u64)
-        .ok_or_else(|| bad("terrain.seeds"))?;
-    Ok(Some((spec, seed)))
 }
 
 impl DiscoveryModel for Vehicle3dModel {

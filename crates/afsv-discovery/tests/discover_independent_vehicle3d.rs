@@ -18,7 +18,7 @@ mod vehicle3d;
 
 use afsv_discovery::vehicle3d::{Vehicle3dModel, CHANNELS};
 use afsv_discovery::{evaluate_errors, Discovery, DiscoveryModel, Outcome};
-use common::summary;
+use common::{assert_replays_within, summary};
 use independent::vehicle3d::{record, records, runs, Hidden3d};
 use vehicle3d::{discover_printed, Hidden};
 use vehicle_3d::FrontAxle;
@@ -77,31 +77,8 @@ fn the_adapter_replays_independent_records_within_a_few_percent() {
         .enumerate()
         .map(|(i, r)| record(r, Hidden3d::None, 0.0, 300 + i as u64))
         .collect();
-    let baseline: Vec<f64> = model.baseline_params().iter().map(|s| s.initial).collect();
     for (r, rec) in set.iter().zip(&recs) {
-        let errors = evaluate_errors(&model, std::slice::from_ref(rec), &baseline, &[]).unwrap();
-        let mut line = format!("{:?}:", r.ride.map(|(c, _)| c));
-        let mut bad = Vec::new();
-        for (name, e) in CHANNELS.iter().zip(&errors) {
-            let Some(x) = e.nrmse else { continue };
-            line += &format!(" {name} {:.2} %", 100.0 * x);
-            let sensor_axis = name.starts_with("cab_") || name.ends_with("accel_rad_s2");
-            if x > if sensor_axis { 0.25 } else { 0.10 } {
-                bad.push((name, x));
-            }
-        }
-        println!("{line}");
-        assert!(bad.is_empty(), "{bad:?}");
-        let sensor: Vec<f64> = CHANNELS
-            .iter()
-            .zip(&errors)
-            .filter(|(n, _)| n.starts_with("cab_"))
-            .filter_map(|(_, e)| e.nrmse)
-            .collect();
-        assert!(
-            sensor.iter().any(|x| *x > 0.01),
-            "the independent records replay too well to be independent: {sensor:?}"
-        );
+        assert_replays_within(&model, rec, &format!("{:?}", r.ride.map(|(c, _)| c)), true);
     }
 }
 

@@ -21,9 +21,9 @@ mod common;
 mod independent;
 mod vehicle3d;
 
-use afsv_discovery::vehicle3d::{Vehicle3dModel, CHANNELS};
+use afsv_discovery::vehicle3d::Vehicle3dModel;
 use afsv_discovery::{evaluate_errors, Discovery, DiscoveryModel, Outcome};
-use common::summary;
+use common::{assert_replays_within, summary};
 use independent::vehicle3d::{record_hps, records_hps, runs};
 use vehicle3d::{discover_printed, Hidden};
 use vehicle_3d::FrontAxle;
@@ -52,35 +52,11 @@ fn run(gas_tau_s: Option<f64>, seed: u64) -> Discovery {
 fn the_adapter_replays_independent_hps_records() {
     let model = Vehicle3dModel::nominal(FrontAxle::Suspended);
     let set = runs(1, 1, 3);
-    let baseline: Vec<f64> = model.baseline_params().iter().map(|s| s.initial).collect();
     for (i, r) in set.iter().enumerate() {
         let rec = record_hps(r, None, 0.0, 400 + i as u64);
         assert_eq!(rec.meta["front_axle"], "suspended");
-        let errors = evaluate_errors(&model, std::slice::from_ref(&rec), &baseline, &[]).unwrap();
-        let mut line = format!("{:?}:", r.ride.map(|(c, _)| c));
-        let mut bad = Vec::new();
-        for (name, e) in CHANNELS.iter().zip(&errors) {
-            let Some(x) = e.nrmse else { continue };
-            line += &format!(" {name} {:.2} %", 100.0 * x);
-            let sensor_axis = name.starts_with("cab_") || name.ends_with("accel_rad_s2");
-            if x > if sensor_axis { 0.25 } else { 0.10 } {
-                bad.push((name, x));
-            }
-        }
-        println!("{line}");
-        assert!(bad.is_empty(), "{bad:?}");
-        if r.ride.is_some() {
-            let sensor: Vec<f64> = CHANNELS
-                .iter()
-                .zip(&errors)
-                .filter(|(n, _)| n.starts_with("cab_"))
-                .filter_map(|(_, e)| e.nrmse)
-                .collect();
-            assert!(
-                sensor.iter().any(|x| *x > 0.01),
-                "the independent records replay too well to be independent: {sensor:?}"
-            );
-        }
+        let label = format!("{:?}", r.ride.map(|(c, _)| c));
+        assert_replays_within(&model, &rec, &label, r.ride.is_some());
     }
 }
 

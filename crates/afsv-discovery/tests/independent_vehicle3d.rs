@@ -265,9 +265,9 @@ fn path_change_mirrors() {
     assert!(worst < 1e-6 * peak(&r).abs(), "vertical: {worst}");
 }
 
-#[test]
-fn energy_is_conserved_without_losses() {
-    let mut d = Data::nominal(true);
+/// `d` with the tire damping, the horizontal tire forces, the rolling resistance, the
+/// steering's leakage and seal friction, the drive and the cavitation off.
+fn without_losses(mut d: Data) -> Data {
     d.tire_damping = 0.0;
     d.horizontal_forces = false;
     d.rolling_resistance = 0.0;
@@ -277,6 +277,12 @@ fn energy_is_conserved_without_losses() {
     d.kp = 0.0;
     d.ki = 0.0;
     d.cavitation = false;
+    d
+}
+
+#[test]
+fn energy_is_conserved_without_losses() {
+    let d = without_losses(Data::nominal(true));
     let run = RunInput {
         speed: 3.0,
         throttle: None,
@@ -468,16 +474,7 @@ fn hps_ride_agrees_with_the_crate() {
 
 #[test]
 fn hps_energy_is_conserved_without_losses() {
-    let mut d = Data::nominal_hps(true, None);
-    d.tire_damping = 0.0;
-    d.horizontal_forces = false;
-    d.rolling_resistance = 0.0;
-    d.steering.kl0 = 0.0;
-    d.steering.kl = 0.0;
-    d.steering.mu_v = 0.0;
-    d.kp = 0.0;
-    d.ki = 0.0;
-    d.cavitation = false;
+    let mut d = without_losses(Data::nominal_hps(true, None));
     // the struts' orifices, leakage and seal friction off: each chamber closed
     let h = d.hps.as_mut().unwrap();
     h.strut.c_b = 0.0;

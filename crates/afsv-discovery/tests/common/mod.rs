@@ -200,3 +200,43 @@ pub fn scratch(name: &str) -> std::path::PathBuf {
     std::fs::create_dir_all(&d).unwrap();
     d
 }
+
+/// Replay `rec` with the 3-D `model` at its nominal baseline and print each channel's NRMSE
+/// after `label`. Panics on a sensor axis above 25 % or another channel above 10 %, and, when
+/// `not_too_close`, on a record whose every cab axis replays within 1 % (records from an
+/// independent implementation do not agree that well).
+pub fn assert_replays_within(
+    model: &afsv_discovery::vehicle3d::Vehicle3dModel,
+    rec: &Record,
+    label: &str,
+    not_too_close: bool,
+) {
+    use afsv_discovery::vehicle3d::CHANNELS;
+    let baseline: Vec<f64> = model.baseline_params().iter().map(|s| s.initial).collect();
+    let errors =
+        afsv_discovery::evaluate_errors(model, std::slice::from_ref(rec), &baseline, &[]).unwrap();
+    let mut line = format!("{label}:");
+    let mut bad = Vec::new();
+    for (name, e) in CHANNELS.iter().zip(&errors) {
+        let Some(x) = e.nrmse else { continue };
+        line += &format!(" {name} {:.2} %", 100.0 * x);
+        let sensor_axis = name.starts_with("cab_") || name.ends_with("accel_rad_s2");
+        if x > if sensor_axis { 0.25 } else { 0.10 } {
+            bad.push((name, x));
+        }
+    }
+    println!("{line}");
+    assert!(bad.is_empty(), "{bad:?}");
+    if not_too_close {
+        let sensor: Vec<f64> = CHANNELS
+            .iter()
+            .zip(&errors)
+            .filter(|(n, _)| n.starts_with("cab_"))
+            .filter_map(|(_, e)| e.nrmse)
+            .collect();
+        assert!(
+            sensor.iter().any(|x| *x > 0.01),
+            "the independent records replay too well to be independent: {sensor:?}"
+        );
+    }
+}
