@@ -63,23 +63,7 @@ impl EffectiveTrack {
                 reason: "must be in [0, free radius)",
             });
         }
-        let span = s_end - s_start;
-        if !(s_start.is_finite() && span.is_finite() && span >= 0.0) {
-            return Err(TireError::InvalidParameter {
-                field: "track_length_m",
-                value: span,
-                reason: "the track range must be finite and not inverted",
-            });
-        }
-        let n = (span / ds).ceil() + 2.0;
-        if n > MAX_TRACK_POINTS as f64 {
-            return Err(TireError::InvalidParameter {
-                field: "track_length_m",
-                value: span,
-                reason: "too many enveloping grid points (length / grid above 4e6)",
-            });
-        }
-        let n = n as usize;
+        let n = grid_points((s_start, s_end), 0.0, ds)?;
         let mut wheel_z = Vec::with_capacity(n);
         let mut slope = Vec::with_capacity(n);
         let mut z = f64::NAN;
@@ -182,24 +166,9 @@ impl InstantaneousTrack {
         }
         let ds = positive("track_grid_m", ds)?;
         let radius = envelope.radius();
-        let span = s_end - s_start;
-        if !(s_start.is_finite() && span.is_finite() && span >= 0.0) {
-            return Err(TireError::InvalidParameter {
-                field: "track_length_m",
-                value: span,
-                reason: "the track range must be finite and not inverted",
-            });
-        }
-        let n = ((span + 2.0 * radius) / ds).ceil() + 2.0;
-        if n > MAX_TRACK_POINTS as f64 {
-            return Err(TireError::InvalidParameter {
-                field: "track_length_m",
-                value: span,
-                reason: "too many enveloping grid points (length / grid above 4e6)",
-            });
-        }
+        let n = grid_points((s_start, s_end), 2.0 * radius, ds)?;
         let s0 = s_start - radius;
-        let base = (0..n as usize)
+        let base = (0..n)
             .map(|i| envelope.cam_base(profile, s0 + i as f64 * ds))
             .collect::<Vec<_>>();
         if let Some(b) = base.iter().find(|b| !b.is_finite()) {
@@ -265,6 +234,30 @@ impl InstantaneousTrack {
         let end = self.s0 + (self.base.len() - 1) as f64 * self.ds;
         (self.s0 + self.radius, end - self.radius)
     }
+}
+
+/// Grid points of a cache at spacing `ds` over the path range `(s_start, s_end)` widened by
+/// `margin` (m): the range's length plus the margin, in steps, plus two. Refuses a range that
+/// is not finite or inverted, and more than [`MAX_TRACK_POINTS`] points (the allocation a
+/// user's track length asks for).
+fn grid_points((s_start, s_end): (f64, f64), margin: f64, ds: f64) -> Result<usize, TireError> {
+    let span = s_end - s_start;
+    if !(s_start.is_finite() && span.is_finite() && span >= 0.0) {
+        return Err(TireError::InvalidParameter {
+            field: "track_length_m",
+            value: span,
+            reason: "the track range must be finite and not inverted",
+        });
+    }
+    let n = ((span + margin) / ds).ceil() + 2.0;
+    if n > MAX_TRACK_POINTS as f64 {
+        return Err(TireError::InvalidParameter {
+            field: "track_length_m",
+            value: span,
+            reason: "too many enveloping grid points (length / grid above 4e6)",
+        });
+    }
+    Ok(n as usize)
 }
 
 #[cfg(test)]
