@@ -131,7 +131,7 @@ fn push_sample(
     // failure there is a divergence error), so this evaluation succeeds too.
     let tires = vehicle.apply_forces(t, y, &mut ws, &mut tau).ok()?;
     if channels {
-        let (sprung, sensor) = sprung_accelerations(vehicle, &mut ws, &tau, tires.heading);
+        let (sprung, sensor) = sprung_accelerations(vehicle, &mut ws, &tau, tires.heading_axis);
         rec.sprung_lateral_accel_m_s2.push(sprung);
         rec.sprung_sensor_lateral_accel_m_s2.push(sensor);
     }
@@ -170,7 +170,7 @@ fn sprung_accelerations(
     vehicle: &TruckVehicle,
     ws: &mut multibody::Workspace,
     tau: &[f64; NV],
-    heading: f64,
+    heading_axis: [f64; 2],
 ) -> (f64, f64) {
     let model = &vehicle.model;
     let mut vdot = [0.0; NV];
@@ -183,7 +183,7 @@ fn sprung_accelerations(
     }
     let sprung = crate::model::body::SPRUNG;
     let a = ws.point_acceleration(sprung, &nalgebra::Vector3::zeros());
-    let lat = nalgebra::Vector3::new(-heading.sin(), heading.cos(), 0.0);
+    let lat = nalgebra::Vector3::new(-heading_axis[1], heading_axis[0], 0.0);
     let specific = a - model.gravity();
     let body_y = ws.body_rotation(sprung).column(1).into_owned();
     (a.dot(&lat), specific.dot(&body_y))

@@ -46,13 +46,19 @@ pub fn circle_line_track<P: Profile + ?Sized>(
 }
 
 /// Lateral force law of Eqs 2.5-2.6: `F_y = -k_ty(F_z) alpha`, `alpha = atan(V_sy / |V_x|)`
-/// with `k_ty = coefficient * F_z` (the line through the Table 2.3 point), the speed
-/// regularised as in `tire_fiala::relaxation`. Zero out of contact (`F_z = 0`). Linear in
+/// with `k_ty = coefficient * F_z` (the line through the Table 2.3 point), `|V_x|` given as
+/// `regularised_speed` (`tire_fiala::regularised_speed` of the forward speed, which the
+/// lag of Eq 2.7 takes too). Zero out of contact (`F_z = 0`). Linear in
 /// `F_z` of either sign: a tire frozen in contact past its lift-off inside one step
 /// (docs/numerics.md, "Kinks") keeps a smooth law; Eq 2.1 never gives a negative load.
 #[inline]
-pub fn lateral_force(coefficient_per_rad: f64, normal_force: f64, v_sy: f64, v_x: f64) -> f64 {
-    let alpha = (v_sy / tire_fiala::relaxation::regularised_speed(v_x)).atan();
+pub fn lateral_force(
+    coefficient_per_rad: f64,
+    normal_force: f64,
+    v_sy: f64,
+    regularised_speed: f64,
+) -> f64 {
+    let alpha = (v_sy / regularised_speed).atan();
     -coefficient_per_rad * normal_force * alpha
 }
 
@@ -64,6 +70,7 @@ mod tests {
     fn lateral_force_is_odd_in_slip_and_linear_in_load() {
         let f = lateral_force(57.3, 140e3, 0.1, 10.0);
         assert!(f < 0.0);
+        assert!((f + 57.3 * 140e3 * 0.01_f64.atan()).abs() < 1e-9 * f.abs());
         assert_eq!(lateral_force(57.3, 140e3, -0.1, 10.0), -f);
         assert_eq!(lateral_force(57.3, 0.0, 0.1, 10.0), 0.0);
         let half = lateral_force(57.3, 70e3, 0.1, 10.0);

@@ -15,7 +15,7 @@ use std::cell::{Cell, RefCell};
 
 use multibody::Workspace;
 use nalgebra::Vector3;
-use tire_fiala::relaxation::contact_velocity_lag_rate;
+use tire_fiala::relaxation::{contact_velocity_lag_rate, regularised_speed};
 use tire_fiala::{EffectiveTrack, LoadDeflectionTable, Track, VerticalContact};
 use vehicle_components::{StateInfo, StateLayout, Terrain};
 
@@ -123,6 +123,9 @@ pub struct TireState {
     pub lateral_velocity: [f64; 6],
     /// Forward velocity of the wheel centre V_x (m/s).
     pub forward_velocity: [f64; 6],
+    /// Its regularised magnitude `|V_x|_eff` (m/s, `tire_fiala::regularised_speed`), the
+    /// speed of the slip angle (Eq 2.6) and of the lag (Eq 2.7).
+    pub regularised_speed: [f64; 6],
     /// Tire deflection (m).
     pub deflection: [f64; 6],
     /// Sum of the horizontal tire forces along the heading's lateral axis (N).
@@ -133,8 +136,9 @@ pub struct TireState {
     pub speed: f64,
     /// Speed of the sprung cg along the heading (m/s): the rate of the path coordinate.
     pub path_rate: f64,
-    /// Heading psi of the sprung mass (rad).
-    pub heading: f64,
+    /// The unit vector `[cos psi, sin psi]` of the sprung mass's heading psi: its x axis
+    /// projected on the ground.
+    pub heading_axis: [f64; 2],
     /// Contact margin of each tire (m), `min(delta, delta + (c_t / k_t) d(delta)/dt)`: the
     /// tire carries load (Eq 2.1 with `delta > 0` and `k_t delta + c_t d(delta)/dt > 0`)
     /// exactly when it is positive. The switching function of lift-off and touchdown.
@@ -332,8 +336,10 @@ impl TruckVehicle {
         tau.fill(0.0);
         tau[6..].copy_from_slice(&self.suspension.joint_forces(&f));
         let rot = ws.body_rotation(body::SPRUNG);
-        let heading = rot[(1, 0)].atan2(rot[(0, 0)]);
-        let h = Vector3::new(heading.cos(), heading.sin(), 0.0);
+        // the heading's unit vector: the body's x axis projected on the ground and
+        // normalised (the same as `cos`/`sin` of its `atan2`, without the three calls)
+        let norm = (rot[(0, 0)] * rot[(0, 0)] + rot[(1, 0)] * rot[(1, 0)]).sqrt();
+        let h = Vector3::new(rot[(0, 0)] / norm, rot[(1, 0)] / norm, 0.0);
         let lat = Vector3::new(-h.y, h.x, 0.0);
         let origin = ws.body_position(body::SPRUNG);
         // The controller reads the drive axle's speed (a wheel-speed signal): the sprung
@@ -343,7 +349,7 @@ impl TruckVehicle {
             .point_velocity(body::REAR_AXLE, &Vector3::zeros())
             .dot(&h);
         let mut out = TireState {
-            heading,
+            heading_axis: [h.x, h.y],
             speed,
             path_rate: ws.point_velocity(body::SPRUNG, &Vector3::zeros()).dot(&h),
             drive_force: self.speed.force(speed, y[state::PI]),
@@ -365,7 +371,7 @@ impl TruckVehicle {
             let vc = ws.point_velocity(m.body, &m.point);
             let s = y[state::PATH] + (c - origin).dot(&h);
             let contact = self.tracks[track_index(m)].contact(s, c.z);
-            let (sin, cos) = contact.slope.sin_cos();
+            let (sin, cos) = (contact.sin_slope, contact.cos_slope);
             slopes[i] = (sin, cos);
             let rate = vc.dot(&h) * sin - vc.z * cos;
             let delta = contact.deflection;
@@ -383,7 +389,9 @@ impl TruckVehicle {
             }
         }
         // wheel headings: the front wheels steered, the rear ones along the heading
-        let front = (heading + self.steer.angle(t)).sin_cos();
+        // by angle addition: psi + steer angle
+        let (sin_s, cos_s) = self.steer.angle(t).sin_cos();
+        let front = (h.y * cos_s + h.x * sin_s, h.x * cos_s - h.y * sin_s);
         for (i, m) in self.mounts.iter().enumerate() {
             let (sin_w, cos_w) = if m.front { front } else { (h.y, h.x) };
             let (e_x, e_y) = (
@@ -393,7 +401,8 @@ impl TruckVehicle {
             let vc = velocities[i];
             let (v_x, v_y) = (vc.dot(&e_x), vc.dot(&e_y));
             let fz = out.normal_force[i];
-            let fy = lateral_force(self.coefficient, fz, y[state::LAG + i], v_x);
+            let u = regularised_speed(v_x);
+            let fy = lateral_force(self.coefficient, fz, y[state::LAG + i], u);
             let fx = if m.front || rear_load <= 0.0 {
                 0.0
             } else {
@@ -409,6 +418,7 @@ impl TruckVehicle {
             out.lateral_force[i] = fy;
             out.lateral_velocity[i] = v_y;
             out.forward_velocity[i] = v_x;
+            out.regularised_speed[i] = u;
             out.lateral_total += force.dot(&lat);
         }
         Ok(out)
@@ -538,7 +548,7 @@ impl odeint::OdeSystem for TruckVehicle {
             dydt[state::LAG + i] = contact_velocity_lag_rate(
                 y[state::LAG + i],
                 tires.lateral_velocity[i],
-                tires.forward_velocity[i],
+                tires.regularised_speed[i],
                 sigma,
             );
         }

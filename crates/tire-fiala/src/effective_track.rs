@@ -41,6 +41,22 @@ pub struct TrackContact {
     pub deflection: f64,
     /// Slope theta of the effective line P1P2 along the path (rad), Eqs 2.4 / 6.3.
     pub slope: f64,
+    /// `sin theta`, for the contact frame.
+    pub sin_slope: f64,
+    /// `cos theta`, which the penetration takes too.
+    pub cos_slope: f64,
+}
+
+impl TrackContact {
+    /// Out of contact or on level ground: `deflection` at slope 0.
+    fn level(deflection: f64) -> Self {
+        Self {
+            deflection,
+            slope: 0.0,
+            sin_slope: 0.0,
+            cos_slope: 1.0,
+        }
+    }
 }
 
 impl EffectiveTrack {
@@ -109,9 +125,12 @@ impl EffectiveTrack {
         let w = (u - i as f64).min(1.0);
         let z_ref = self.wheel_z[i] + w * (self.wheel_z[i + 1] - self.wheel_z[i]);
         let slope = self.slope[i] + w * (self.slope[i + 1] - self.slope[i]);
+        let (sin_slope, cos_slope) = slope.sin_cos();
         TrackContact {
-            deflection: self.reference_deflection + (z_ref - z_c) * slope.cos(),
+            deflection: self.reference_deflection + (z_ref - z_c) * cos_slope,
             slope,
+            sin_slope,
+            cos_slope,
         }
     }
 
@@ -201,10 +220,7 @@ impl InstantaneousTrack {
     pub fn contact(&self, s: f64, z_c: f64) -> TrackContact {
         let r = self.radius;
         let b0 = self.base_at(s);
-        let mut contact = TrackContact {
-            deflection: r - (z_c - b0),
-            slope: 0.0,
-        };
+        let mut contact = TrackContact::level(r - (z_c - b0));
         if contact.deflection <= 0.0 {
             return contact;
         }
@@ -221,11 +237,15 @@ impl InstantaneousTrack {
             } else {
                 0.0
             };
+            let cos_slope = slope.cos();
             contact = TrackContact {
-                deflection: r - (z_c - 0.5 * (b1 + b2)) * slope.cos(),
+                deflection: r - (z_c - 0.5 * (b1 + b2)) * cos_slope,
                 slope,
+                sin_slope: 0.0,
+                cos_slope,
             };
         }
+        contact.sin_slope = contact.slope.sin();
         contact
     }
 

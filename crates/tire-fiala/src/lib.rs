@@ -51,7 +51,7 @@ pub use fiala::Fiala;
 pub use model::{HandlingModel, TireForces};
 pub use params::TireParams;
 pub use relaxation::{
-    contact_velocity_lag_rate, regularised_speed, slip_lag_rate, Relaxation,
+    contact_velocity_lag_rate, lag_rate, regularised_speed, slip_lag_rate, Relaxation,
     LOW_SPEED_REGULARISATION,
 };
 pub use terrain::{PolylineProfile, Profile, Track};

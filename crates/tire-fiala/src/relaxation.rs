@@ -51,14 +51,33 @@ pub fn regularised_speed(speed: f64) -> f64 {
 /// replaced by [`regularised_speed`] and sigma by `max(sigma, MIN_RELAXATION_LENGTH)`.
 #[inline]
 pub fn slip_lag_rate(alpha: f64, alpha_steady: f64, speed: f64, relaxation_length: f64) -> f64 {
-    (alpha_steady - alpha) * regularised_speed(speed) / relaxation_length.max(MIN_RELAXATION_LENGTH)
+    lag_rate(
+        alpha,
+        alpha_steady,
+        regularised_speed(speed),
+        relaxation_length,
+    )
 }
 
-/// Eq 2.7 in velocity form: d(V_sy)/dt = |V_x| / sigma_y (V_y - V_sy), with the same
-/// low-speed regularisation; the lagged lateral contact velocity `v_sy` is the state.
+/// [`slip_lag_rate`] with the regularised speed `|u|_eff` ([`regularised_speed`]) given, for
+/// a model that also takes its slip from it and evaluates it once.
 #[inline]
-pub fn contact_velocity_lag_rate(v_sy: f64, v_y: f64, v_x: f64, relaxation_length: f64) -> f64 {
-    slip_lag_rate(v_sy, v_y, v_x, relaxation_length)
+pub fn lag_rate(alpha: f64, alpha_steady: f64, regularised: f64, relaxation_length: f64) -> f64 {
+    (alpha_steady - alpha) * regularised / relaxation_length.max(MIN_RELAXATION_LENGTH)
+}
+
+/// Eq 2.7 in velocity form: d(V_sy)/dt = |V_x|_eff / sigma_y (V_y - V_sy), the lagged
+/// lateral contact velocity `v_sy` the state, with `|V_x|_eff` = [`regularised_speed`] of
+/// the forward speed given as `regularised` (the slip angle of Eq 2.6 takes it too, so a
+/// model evaluates it once per tire).
+#[inline]
+pub fn contact_velocity_lag_rate(
+    v_sy: f64,
+    v_y: f64,
+    regularised: f64,
+    relaxation_length: f64,
+) -> f64 {
+    lag_rate(v_sy, v_y, regularised, relaxation_length)
 }
 
 /// Longitudinal and lateral relaxation lengths of one tire (validated).

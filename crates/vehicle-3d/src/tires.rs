@@ -308,8 +308,8 @@ pub fn tire_forces(
     let e_y = Vector3::new(-sin_p, cos_p, 0.0);
     let axle = rot.column(1).into_owned();
     let h = &input.path_direction;
-    let (delta, theta) = (input.contact.deflection, input.contact.slope);
-    let (sin_t, cos_t) = theta.sin_cos();
+    let delta = input.contact.deflection;
+    let (sin_t, cos_t) = (input.contact.sin_slope, input.contact.cos_slope);
     let n = Vector3::new(-sin_t * h.x, -sin_t * h.y, cos_t);
     let v = &input.velocity;
     let rate = v.dot(h) * sin_t - v.z * cos_t;
@@ -333,7 +333,7 @@ pub fn tire_forces(
         contact: TireContact {
             normal_force: fz,
             deflection: delta,
-            slope: theta,
+            slope: input.contact.slope,
             forward_velocity: v_x,
             lateral_velocity: v_y,
             slip_steady,
@@ -359,6 +359,8 @@ mod tests {
             contact: TrackContact {
                 deflection: 0.1,
                 slope: 0.0,
+                sin_slope: 0.0,
+                cos_slope: 1.0,
             },
             lag,
         }
