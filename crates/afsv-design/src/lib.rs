@@ -95,6 +95,7 @@ pub mod tire_sweep;
 pub mod truck_case;
 pub mod value_lists;
 pub mod vehicle_case;
+pub mod vehicle_options;
 pub mod yaw_leakage;
 pub mod yaw_manoeuvre;
 

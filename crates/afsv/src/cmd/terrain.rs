@@ -214,13 +214,6 @@ fn psd(a: PsdArgs) -> CmdResult {
     let dx = spacing(x, &a.input)?;
     let names = (&a.window[..], &a.detrend[..]);
     let cfg = welch_config((left.len(), dx, &a.input), a.segment_m, a.overlap, names)?;
-    if !(a.track_width.is_finite() && a.track_width > 0.0) {
-        return Err(format!(
-            "--track-width {}: must be a finite number > 0",
-            a.track_width
-        )
-        .into());
-    }
     let band: Option<Band> = match &a.band {
         Some(b) => Some(b.parse().map_err(|e| format!("--band: {e}"))?),
         None => None,

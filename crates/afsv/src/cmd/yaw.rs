@@ -250,9 +250,6 @@ pub fn run(cmd: Command) -> CmdResult {
             steer_wheel_deg,
             vehicle,
         } => {
-            if !steer_wheel_deg.is_finite() {
-                return Err("--steer-wheel-deg must be finite".into());
-            }
             let d = super::described::articulated(vehicle.as_deref())?;
             afsv::output::print_json(&afsv_design::yaw_leakage::leakage(&d, steer_wheel_deg)?)?;
         }

@@ -3,7 +3,6 @@
 //! peaks of the Fig 6.12 channels and the course deviation, optionally the record (CSV +
 //! JSON sidecar, afsv-v1) and a four-panel SVG of the channels.
 
-use super::super::args;
 use super::{axle_name, declare_inputs, print_linked, vehicle_of, CaseArgs, CmdResult};
 use afsv::output::{OutputGuard, OutputKind};
 use afsv_design::figures;
@@ -13,19 +12,6 @@ use serde_json::json;
 use std::path::PathBuf;
 use vehicle_3d::path_change::path_change_linked;
 use vehicle_3d::scenarios::{path_change, PathChangeSpec};
-
-/// Largest lateral offset of the course (m): a lane change of a few truck widths.
-const MAX_OFFSET_M: f64 = 20.0;
-
-/// A signed course offset within ±[`MAX_OFFSET_M`] (m).
-pub(super) fn offset_m(s: &str) -> Result<f64, String> {
-    let v = args::finite_f64(s)?;
-    if v.abs() <= MAX_OFFSET_M {
-        Ok(v)
-    } else {
-        Err(format!("must be at most {MAX_OFFSET_M} m in magnitude"))
-    }
-}
 
 pub(super) fn path_change_cmd(
     case: &CaseArgs,
