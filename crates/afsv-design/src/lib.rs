@@ -85,6 +85,7 @@ pub mod objective;
 pub mod param_files;
 pub mod record_measures;
 pub mod report;
+pub mod sample_bounds;
 pub mod shift_case;
 pub mod strut_lab;
 pub mod strut_shift;

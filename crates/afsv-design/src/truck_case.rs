@@ -27,6 +27,11 @@ pub struct TruckSource<'a> {
 }
 
 impl TruckSource<'_> {
+    /// Whether a truck was chosen: a parameter file, a built-in or a description.
+    pub fn chosen(&self) -> bool {
+        self.params.is_some() || self.builtin.is_some() || self.vehicle.is_some()
+    }
+
     /// The truck's name in reports: the parameter file, the description or the built-in.
     pub fn name(&self) -> String {
         match (self.params, self.vehicle, self.builtin) {
@@ -59,6 +64,23 @@ pub fn truck(source: &TruckSource, cg_height_m: Option<f64>) -> Result<TruckPara
         None => e.to_string(),
     })?;
     Ok(p)
+}
+
+/// The trucks of the ramp and rule sensitivity (`roll_truck::sensitivity`), named: the
+/// [`truck`] of `source` when one was chosen ([`TruckSource::chosen`]), else the calibrated
+/// and the plausible built-in, without their bump stops when `source` says so.
+pub fn sensitivity_trucks(source: &TruckSource) -> Result<Vec<(String, TruckParams)>, String> {
+    if source.chosen() {
+        return Ok(vec![(source.name(), truck(source, None)?)]);
+    }
+    let builtins = [BuiltinTruck::Calibrated, BuiltinTruck::Plausible].map(|b| {
+        let mut p = b.params();
+        if source.no_bump_stops {
+            p = p.without_bump_stops();
+        }
+        (b.name().to_string(), p)
+    });
+    Ok(builtins.to_vec())
 }
 
 /// The detection rule of the sustained period (not given in chapter 2): the defaults
@@ -147,5 +169,29 @@ mod tests {
         };
         assert_eq!(described.name(), "chapter2-truck");
         assert!(truck(&described, None).is_ok());
+        assert!(described.chosen() && adjusted.chosen() && !nominal.chosen());
+    }
+
+    #[test]
+    fn the_sensitivity_runs_the_chosen_truck_or_both_builtins() {
+        let both = sensitivity_trucks(&TruckSource::default()).unwrap();
+        let names: Vec<&str> = both.iter().map(|t| t.0.as_str()).collect();
+        assert_eq!(names, ["calibrated", "plausible"]);
+        assert_eq!(both[1].1, BuiltinTruck::Plausible.params());
+        let stopless = TruckSource {
+            no_bump_stops: true,
+            ..TruckSource::default()
+        };
+        let free = sensitivity_trucks(&stopless).unwrap();
+        assert_eq!(
+            free[0].1,
+            BuiltinTruck::Calibrated.params().without_bump_stops()
+        );
+        let one = TruckSource {
+            builtin: Some(BuiltinTruck::Plausible),
+            ..TruckSource::default()
+        };
+        let one = sensitivity_trucks(&one).unwrap();
+        assert_eq!((one.len(), one[0].0.as_str()), (1, "plausible"));
     }
 }

@@ -181,16 +181,7 @@ fn with_gamma0(p: StrutParams, g: Option<f64>) -> Result<StrutParams, Box<dyn st
 }
 
 fn harmonic(a: HarmonicArgs) -> CmdResult {
-    args::check_samples(
-        &format!("--cycles {}", args::show(a.cycles)),
-        &format!(
-            "cycles / freq * rate with --freq {} --rate {}",
-            args::show(a.freq),
-            args::show(a.rate)
-        ),
-        a.cycles / a.freq * a.rate,
-        args::MAX_HPS_SAMPLES,
-    )?;
+    args::check_cycles(a.cycles, a.freq, a.rate)?;
     let mut guard = OutputGuard::new(a.force);
     guard.input_if("--strut", a.strut.file())?;
     guard.output_if("-o", a.output.as_deref(), OutputKind::Record)?;
@@ -282,9 +273,9 @@ fn identify_cmd(a: IdentifyArgs) -> CmdResult {
         a.accept_poor_fit,
     );
     afsv::output::print_json(&report)?;
-    if problems.is_empty() || a.accept_poor_fit {
-        Ok(())
-    } else {
-        Err(afsv::output::NotEarned(format!("hps identify: {}", problems.join("; "))).into())
-    }
+    Ok(afsv::output::fit_earned(
+        "hps identify",
+        &problems,
+        a.accept_poor_fit,
+    )?)
 }

@@ -185,11 +185,11 @@ fn decay(a: DecayArgs) -> CmdResult {
     let accepted = a.accept_poor_fit;
     let (v, problems) = record_measures::decay((&rec, &a.input), &a.column, window, accepted)?;
     afsv::output::print_json(&v)?;
-    if problems.is_empty() || a.accept_poor_fit {
-        Ok(())
-    } else {
-        Err(afsv::output::NotEarned(format!("measures decay: {}", problems.join("; "))).into())
-    }
+    Ok(afsv::output::fit_earned(
+        "measures decay",
+        &problems,
+        accepted,
+    )?)
 }
 
 fn step(a: StepArgs) -> CmdResult {

@@ -110,9 +110,7 @@ pub fn run(cmd: Command) -> CmdResult {
             };
             match output {
                 Some(path) => {
-                    let text = serde_json::to_string_pretty(&value)? + "\n";
-                    afsv_records::atomic::write(&path, text)
-                        .map_err(|e| format!("{}: {e}", path.display()))?;
+                    afsv::output::write_json_file(&path, &value)?;
                     afsv::output::print_json(&json!({ "written": path }))?;
                 }
                 // a parameter file, read back as it is printed (`params dump strut > s.json`
@@ -147,8 +145,7 @@ fn dump_vehicle(name: &str, output: Option<&Path>) -> CmdResult {
     let text = afsv_vehicle::to_commented_toml(&d)?;
     match output {
         Some(path) => {
-            afsv_records::atomic::write(path, text)
-                .map_err(|e| format!("{}: {e}", path.display()))?;
+            afsv::output::write_file(path, text)?;
             afsv::output::print_json(&json!({ "written": path }))?;
         }
         None => print!("{text}"),

@@ -151,12 +151,7 @@ pub fn run(cmd: Command) -> CmdResult {
 const LONG_PROFILE_SAMPLES: f64 = 1e6;
 
 fn generate(a: GenerateArgs) -> CmdResult {
-    args::check_samples(
-        &format!("--length {}", args::show(a.length)),
-        &format!("length/dx with --dx {}", args::show(a.dx)),
-        a.length / a.dx,
-        args::MAX_SAMPLES,
-    )?;
+    args::check_profile(a.length, a.dx)?;
     if let Some(path) = &a.output {
         OutputGuard::new(a.force).output("-o", path, OutputKind::Record)?;
     }

@@ -102,8 +102,7 @@ pub fn run(a: &HpsArgs) -> CmdResult {
 fn report(a: &HpsArgs, base: &vehicle_3d::VehicleParams, r: &HpsOptimum) -> CmdResult {
     let best = optimum_vehicle(base, r)?;
     if let Some(path) = &a.strut_out {
-        let text = serde_json::to_string_pretty(&best.hps)? + "\n";
-        afsv_records::atomic::write(path, text).map_err(|e| format!("{}: {e}", path.display()))?;
+        afsv::output::write_json_file(path, &best.hps)?;
     }
     let sweep = if a.speed_sweep {
         let runs = speed_sweep_runs(D4_SPEEDS_KMH.len(), r.settings.reevaluation_seeds);
