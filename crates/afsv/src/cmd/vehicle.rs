@@ -15,12 +15,9 @@ use afsv::progress::Progress;
 use afsv_design::design_3d::{roll_run, yaw_run};
 use afsv_design::figures;
 use afsv_design::report::vehicle::{
-    axle_name, link_note, per_seed, ride_report, roll_report, terrain_json, yaw_report, Ground,
-    NO_STRUT,
+    axle_name, link_note, ride_report, roll_report, yaw_report, Ground, RidePsd,
 };
-use afsv_design::report::vehicle::{ride_psd, RidePsd};
-use afsv_design::vehicle_case::parse_terrain;
-use afsv_design::vehicle_case::{self, CaseSource, TerrainChoice as TerrainArg};
+use afsv_design::vehicle_case::{self, parse_terrain, CaseSource, TerrainChoice as TerrainArg};
 use afsv_design::vehicle_options::{
     duration_s, offset_m, ramp_rate, seed_count, speed_kmh, steer_peak,
 };
