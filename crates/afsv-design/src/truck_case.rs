@@ -5,6 +5,7 @@
 
 use crate::report::roll::Ground;
 use perf_measures::roll::SustainedPeriodParams;
+use roll_truck::calibration::{calibrate_strut_spacing, Calibration};
 use roll_truck::studies::{run_case, run_case_on_road, Run};
 use roll_truck::{BuiltinTruck, RunOptions, SteerDirection, TruckParams};
 use std::path::Path;
@@ -81,6 +82,22 @@ pub fn sensitivity_trucks(source: &TruckSource) -> Result<Vec<(String, TruckPara
         (b.name().to_string(), p)
     });
     Ok(builtins.to_vec())
+}
+
+/// Strut spacing ratios the calibration searches (the roll-stable floor and the smooth-road
+/// DRT target lie inside).
+pub const CALIBRATION_RATIOS: (f64, f64) = (0.15, 0.6);
+
+/// Tolerance of the calibrated smooth-road DRT (g).
+pub const CALIBRATION_TOL_G: f64 = 1e-4;
+
+/// The strut spacing ratio of the truck of `source` whose smooth-road DRT is `target_g`,
+/// among the roll-stable ratios in [`CALIBRATION_RATIOS`]
+/// (`roll_truck::calibration::calibrate_strut_spacing`).
+pub fn calibrate(source: &TruckSource, target_g: f64) -> Result<Calibration, String> {
+    let p = truck(source, None)?;
+    calibrate_strut_spacing(&p, CALIBRATION_RATIOS, target_g, CALIBRATION_TOL_G)
+        .map_err(|e| e.to_string())
 }
 
 /// The detection rule of the sustained period (not given in chapter 2): the defaults
@@ -170,6 +187,21 @@ mod tests {
         assert_eq!(described.name(), "chapter2-truck");
         assert!(truck(&described, None).is_ok());
         assert!(described.chosen() && adjusted.chosen() && !nominal.chosen());
+    }
+
+    /// The derivation of the built-in constant: the calibrated truck's own ratio.
+    #[test]
+    fn the_calibration_finds_the_builtin_ratio() {
+        let c = calibrate(&TruckSource::default(), 0.279).unwrap();
+        let builtin = roll_truck::calibration::CALIBRATED_STRUT_SPACING_RATIO;
+        assert!((c.strut_spacing_ratio - builtin).abs() < 1e-3, "{c:?}");
+        let missing = TruckSource {
+            params: Some(Path::new("no-such-truck.json")),
+            ..TruckSource::default()
+        };
+        assert!(calibrate(&missing, 0.279)
+            .unwrap_err()
+            .contains("no-such-truck.json"));
     }
 
     #[test]

@@ -180,10 +180,7 @@ pub fn run(cmd: Command) -> CmdResult {
                 params: params.as_deref(),
                 ..TruckSource::default()
             };
-            let p = truck_case::truck(&source, None)?;
-            let c =
-                roll_truck::calibration::calibrate_strut_spacing(&p, (0.15, 0.6), target_g, 1e-4)?;
-            afsv::output::print_json(&c)?;
+            afsv::output::print_json(&truck_case::calibrate(&source, target_g)?)?;
             Ok(())
         }
     }
