@@ -3,7 +3,7 @@
 //! `cycles / freq * rate`) takes grow with it, so an option that asks for more than a
 //! bound is refused before anything runs, with a one-line error naming the option, what was
 //! counted and the bound ([`check_samples`]); and the seed counts of the studies
-//! ([`check_seeds`]).
+//! ([`check_seeds`], [`seed_list`]).
 
 use crate::report::show;
 
@@ -76,6 +76,13 @@ pub fn check_seeds(n: usize, max: usize) -> Result<(), String> {
     } else {
         Err(format!("--seeds {n}: must be 1 to {max}"))
     }
+}
+
+/// The `n` common terrain seeds from `first` on (`crate::fan_out::seed_range`), `n` within
+/// 1..=`max` ([`check_seeds`]).
+pub fn seed_list(first: u64, n: usize, max: usize) -> Result<Vec<u64>, String> {
+    check_seeds(n, max)?;
+    Ok(crate::fan_out::seed_range(first, n as u64))
 }
 
 #[cfg(test)]

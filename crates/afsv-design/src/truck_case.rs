@@ -4,6 +4,7 @@
 //! ground of its report ([`run_on`]: level, synthesised rough terrain or a measured road).
 
 use crate::report::roll::Ground;
+use crate::report::show;
 use perf_measures::roll::SustainedPeriodParams;
 use roll_truck::calibration::{calibrate_strut_spacing, Calibration};
 use roll_truck::studies::{run_case, run_case_on_road, Run};
@@ -119,6 +120,26 @@ pub fn sustained_period(
     Ok(sp)
 }
 
+/// Longest simulated time of one run (s).
+pub const MAX_DURATION_S: f64 = 3600.0;
+
+/// The settings of a run of `t_end_s` (s), at most [`MAX_DURATION_S`], sampled every
+/// `dt` (s), with the acceleration channels its measures report.
+pub fn run_options(t_end_s: f64, dt: f64) -> Result<RunOptions, String> {
+    if t_end_s > MAX_DURATION_S {
+        return Err(format!(
+            "--duration {}: at most {MAX_DURATION_S} s",
+            show(t_end_s)
+        ));
+    }
+    Ok(RunOptions {
+        t_end_s,
+        output_dt_s: dt,
+        acceleration_channels: true,
+        ..RunOptions::default()
+    })
+}
+
 /// One ramp-steer run of `p` to rollover in `direction` on `ground` (a measured road must
 /// cover the run; errors name its file), with the sustained-period rule `sp`.
 pub fn run_on(
@@ -187,6 +208,19 @@ mod tests {
         assert_eq!(described.name(), "chapter2-truck");
         assert!(truck(&described, None).is_ok());
         assert!(described.chosen() && adjusted.chosen() && !nominal.chosen());
+    }
+
+    #[test]
+    fn a_run_lasts_at_most_an_hour() {
+        let o = run_options(3600.0, 0.01).unwrap();
+        assert_eq!(
+            (o.t_end_s, o.output_dt_s, o.acceleration_channels),
+            (3600.0, 0.01, true)
+        );
+        assert_eq!(
+            run_options(3600.5, 0.01).unwrap_err(),
+            "--duration 3600.5: at most 3600 s"
+        );
     }
 
     /// The derivation of the built-in constant: the calibrated truck's own ratio.

@@ -5,13 +5,13 @@
 
 use super::{axle_name, declare_inputs, print_linked, vehicle_of, CaseArgs, CmdResult};
 use afsv::output::{OutputGuard, OutputKind};
+use afsv_design::design_3d::path_change_run;
 use afsv_design::figures;
 use afsv_design::report::vehicle::path_change_report;
 use afsv_design::report::vehicle_record::path_change_sidecar;
 use serde_json::json;
 use std::path::PathBuf;
-use vehicle_3d::path_change::path_change_linked;
-use vehicle_3d::scenarios::{path_change, PathChangeSpec};
+use vehicle_3d::scenarios::PathChangeSpec;
 
 pub(super) fn path_change_cmd(
     case: &CaseArgs,
@@ -39,10 +39,7 @@ pub(super) fn path_change_cmd(
         terrain,
         ..v3
     };
-    let (rec, m) = match &link {
-        None => path_change(&p, &spec, seeds[0])?,
-        Some(l) => path_change_linked(&p, &spec, seeds[0], l).map(|(r, m)| (r.record, m))?,
-    };
+    let (rec, m) = path_change_run(&p, &spec, seeds[0], link.as_ref())?;
     if let Some(path) = out.output.as_deref() {
         let meta = path_change_sidecar(&rec, &spec, seeds, &m, &p, link.as_ref());
         let columns = afsv_records::Record::from_columns(rec.afsv_v1_columns())?;
