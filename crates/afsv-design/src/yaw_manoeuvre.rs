@@ -162,7 +162,7 @@ mod tests {
             EquationForm::PaperEq313,
         );
         let d = SimOptions::default();
-        assert_eq!((o.rtol, o.atol, o.output_dt_s), (1e-5, 1e-6, 0.005));
+        assert_eq!((o.rtol, o.atol, o.output_dt_s), (1e-5, 1e-5 * 0.1, 0.005));
         assert_eq!(
             (o.form, o.max_step_s),
             (EquationForm::PaperEq313, d.max_step_s)
