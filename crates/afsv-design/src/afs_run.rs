@@ -87,6 +87,39 @@ impl AfsRunSpec {
     }
 }
 
+/// The solver settings of the options: `starts` pattern-search starts besides the current
+/// design (below [`crate::afs_optimum::MAX_STARTS`]) from `seed`, `search_points` per
+/// search step, every start screened to `screen_mesh`, the best refined to `min_mesh`
+/// (`min_mesh <= screen_mesh < 0.25`, the initial mesh), at most `sqp_calls` SLSQP calls.
+/// Errors name the options.
+pub fn solver_settings(
+    starts: usize,
+    seed: u64,
+    search_points: usize,
+    (screen_mesh, min_mesh): (f64, f64),
+    sqp_calls: usize,
+) -> Result<AfsOptimisationSettings, String> {
+    use crate::afs_optimum::MAX_STARTS;
+    if starts >= MAX_STARTS {
+        return Err(format!("--starts must be below {MAX_STARTS}"));
+    }
+    if !(min_mesh <= screen_mesh && screen_mesh < 0.25) {
+        return Err(format!(
+            "--screen-mesh {screen_mesh} and --min-mesh {min_mesh}: need --min-mesh <= --screen-mesh < 0.25 (the initial mesh)"
+        ));
+    }
+    let mut settings = AfsOptimisationSettings {
+        extra_starts: starts,
+        seed,
+        screen_min_mesh: screen_mesh,
+        ..AfsOptimisationSettings::default()
+    };
+    settings.pattern.search_points = search_points;
+    settings.pattern.min_mesh = min_mesh;
+    settings.sqp.max_calls = sqp_calls;
+    Ok(settings)
+}
+
 /// The vehicle description `path` names (`crate::described`) as a problem stores it: its
 /// name, loaded yaw-plane data and steering; `None` without one.
 pub fn vehicle_desc(path: Option<&Path>) -> Result<Option<VehicleDesc>, String> {
@@ -244,6 +277,23 @@ mod tests {
             eq_4_9: None,
             vehicle: None,
             settings: AfsOptimisationSettings::default(),
+        }
+    }
+
+    #[test]
+    fn solver_settings_keep_the_defaults_and_refuse_bad_meshes() {
+        let d = AfsOptimisationSettings::default();
+        let s = solver_settings(4, 1, 75, (1.0 / 32.0, 1.0 / 512.0), 40).unwrap();
+        assert_eq!(json!(s), json!(d));
+        let s = solver_settings(1, 7, 4, (0.1, 0.1), 2).unwrap();
+        assert_eq!((s.extra_starts, s.seed, s.sqp.max_calls), (1, 7, 2));
+        assert_eq!((s.pattern.search_points, s.pattern.min_mesh), (4, 0.1));
+        assert!(solver_settings(1000, 1, 4, (0.1, 0.01), 2)
+            .unwrap_err()
+            .contains("--starts must be below 1000"));
+        for meshes in [(0.25, 0.01), (0.01, 0.1)] {
+            let e = solver_settings(1, 1, 4, meshes, 2).unwrap_err();
+            assert!(e.contains("need --min-mesh <= --screen-mesh < 0.25"), "{e}");
         }
     }
 

@@ -3,7 +3,7 @@
 //! [`crate::hps_ask_tell`] or [`crate::layout_ask_tell`], and the shard's results file is
 //! written for the `--tell` of the run that asked.
 
-use crate::afs_batch::{evaluate_shard, in_shard, read_batch, ResultsHeader};
+use crate::afs_batch::{evaluate_shard, in_shard, read_batch, ResultsHeader, MAX_SHARDS};
 use crate::hps_ask_tell::HPS_BATCH_FORMAT;
 use crate::hps_ask_tell::{evaluate_hps_shard, read_hps_batch, HpsResultsHeader};
 use crate::layout_ask_tell::LAYOUT_BATCH_FORMAT;
@@ -65,6 +65,22 @@ fn batch_format(path: &Path) -> Option<String> {
     v["format"].as_str().map(str::to_string)
 }
 
+/// The shard `"I/N"` of a batch (`--shard`), 1 <= I <= N <= [`MAX_SHARDS`]: the points
+/// whose 0-based index is I-1 modulo N.
+pub fn parse_shard(s: &str) -> Result<(usize, usize), String> {
+    let bad = || format!("expected \"I/N\" with 1 <= I <= N <= {MAX_SHARDS}, got {s:?}");
+    let (i, n) = s.split_once('/').ok_or_else(bad)?;
+    let (i, n): (usize, usize) = (
+        i.trim().parse().map_err(|_| bad())?,
+        n.trim().parse().map_err(|_| bad())?,
+    );
+    if 1 <= i && i <= n && n <= MAX_SHARDS {
+        Ok((i, n))
+    } else {
+        Err(bad())
+    }
+}
+
 /// The points of `shard` (I, N) among `n`.
 fn mine(n: usize, shard: (usize, usize)) -> usize {
     (0..n).filter(|&i| in_shard(i, shard)).count()
@@ -122,6 +138,16 @@ pub fn evaluate_batch_shard(
 mod tests {
     use super::*;
     use std::sync::atomic::{AtomicUsize, Ordering};
+
+    #[test]
+    fn shards_are_one_based_and_bounded() {
+        assert_eq!(parse_shard("1/1").unwrap(), (1, 1));
+        assert_eq!(parse_shard(" 2 / 3 ").unwrap(), (2, 3));
+        for bad in ["0/2", "3/2", "1", "a/b", "1/0"] {
+            assert!(parse_shard(bad).unwrap_err().contains("I/N"), "{bad}");
+        }
+        assert!(parse_shard(&format!("1/{}", MAX_SHARDS + 1)).is_err());
+    }
 
     /// Counts what a shard reports.
     #[derive(Default)]

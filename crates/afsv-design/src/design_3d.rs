@@ -13,7 +13,8 @@ use std::sync::Arc;
 use vehicle_3d::interconnect::{
     ride_linked, ride_linked_on, roll_linked, roll_linked_on, yaw_linked, Link,
 };
-use vehicle_3d::scenarios::{self, RideMeasures, RollMeasures};
+use vehicle_3d::path_change::path_change_linked;
+use vehicle_3d::scenarios::{self, PathChangeMeasures, PathChangeSpec, RideMeasures, RollMeasures};
 use vehicle_3d::scenarios::{
     ride_on, ride_tracks, roll_on, roll_tracks, yaw, RideSpec, RollSpec, Spread, YawMeasures,
     YawSpec,
@@ -211,6 +212,20 @@ pub fn yaw_run(
     match link {
         Some(l) => yaw_linked(p, spec, l).map(|(r, m)| (r.record, m)),
         None => yaw(p, spec, seed),
+    }
+}
+
+/// One V3 path change of `p` (on terrain `seed` when the spec has one), linked as in
+/// [`ride_run`]: its record and measures.
+pub fn path_change_run(
+    p: &VehicleParams,
+    spec: &PathChangeSpec,
+    seed: u64,
+    link: Option<&Link>,
+) -> Result<(RunRecord, PathChangeMeasures), VehicleError> {
+    match link {
+        Some(l) => path_change_linked(p, spec, seed, l).map(|(r, m)| (r.record, m)),
+        None => scenarios::path_change(p, spec, seed),
     }
 }
 

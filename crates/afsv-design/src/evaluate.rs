@@ -36,6 +36,17 @@ pub struct Assessment {
 /// Eq 3.13 lose meaning.
 pub const MIN_SPEED_KMH: f64 = 1.0;
 
+/// `speed_kmh` (`--speed-kmh`) is at least [`MIN_SPEED_KMH`].
+pub fn check_speed(speed_kmh: f64) -> Result<(), String> {
+    if speed_kmh.is_finite() && speed_kmh >= MIN_SPEED_KMH {
+        Ok(())
+    } else {
+        Err(format!(
+            "--speed-kmh must be at least {MIN_SPEED_KMH} km/h (the yaw-plane measures need forward speed), got {speed_kmh}"
+        ))
+    }
+}
+
 /// The yaw-plane measures of `v` at `load` and `speed` (m/s) in the equation `form`.
 pub fn yaw_of(
     v: &ArticulatedVehicle,
@@ -102,6 +113,14 @@ pub fn yaw_stable(m: &YawMeasures) -> bool {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn the_yaw_plane_measures_need_forward_speed() {
+        assert!(check_speed(MIN_SPEED_KMH).is_ok() && check_speed(50.0).is_ok());
+        let e = check_speed(0.5).unwrap_err();
+        assert!(e.starts_with("--speed-kmh must be at least 1 km/h") && e.ends_with("got 0.5"));
+        assert!(check_speed(f64::NAN).is_err());
+    }
 
     #[test]
     fn a_yaw_mode_is_stable_only_with_positive_finite_damping() {

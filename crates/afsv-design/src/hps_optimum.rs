@@ -64,6 +64,32 @@ impl Default for HpsGaSettings {
     }
 }
 
+impl HpsGaSettings {
+    /// The sizes a command line may give (`afsv optimize hps`): an even population of 4 to
+    /// 1000, 1 to 1000 generations, 1 to 100 re-evaluation seeds; errors name the option.
+    pub fn check_options(&self) -> Result<(), String> {
+        if !(4..=1000).contains(&self.population) || self.population % 2 == 1 {
+            return Err(format!(
+                "--population {}: must be even, 4 to 1000",
+                self.population
+            ));
+        }
+        if !(1..=1000).contains(&self.generations) {
+            return Err(format!(
+                "--generations {}: must be 1 to 1000",
+                self.generations
+            ));
+        }
+        if !(1..=100).contains(&self.reevaluation_seeds) {
+            return Err(format!(
+                "--reevaluation-seeds {}: must be 1 to 100",
+                self.reevaluation_seeds
+            ));
+        }
+        Ok(())
+    }
+}
+
 /// a_wz and d_s of one design on the search seed.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct RideValues {
@@ -369,4 +395,29 @@ pub fn optimise_hps(
             optimum_over_seeds: optimum_over_seeds?,
         },
     )
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn command_line_sizes_are_bounded_and_named() {
+        assert!(HpsGaSettings::default().check_options().is_ok());
+        let with = |population, generations, reevaluation_seeds| HpsGaSettings {
+            population,
+            generations,
+            reevaluation_seeds,
+            ..HpsGaSettings::default()
+        };
+        assert!(with(4, 1, 1).check_options().is_ok());
+        assert!(with(1000, 1000, 100).check_options().is_ok());
+        let e = with(5, 1, 1).check_options().unwrap_err();
+        assert_eq!(e, "--population 5: must be even, 4 to 1000");
+        assert!(with(2, 1, 1).check_options().is_err());
+        let e = with(4, 0, 1).check_options().unwrap_err();
+        assert_eq!(e, "--generations 0: must be 1 to 1000");
+        let e = with(4, 1, 101).check_options().unwrap_err();
+        assert_eq!(e, "--reevaluation-seeds 101: must be 1 to 100");
+    }
 }

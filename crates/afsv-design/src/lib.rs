@@ -85,6 +85,7 @@ pub mod objective;
 pub mod param_files;
 pub mod record_measures;
 pub mod report;
+pub mod sample_bounds;
 pub mod shift_case;
 pub mod strut_lab;
 pub mod strut_shift;
@@ -95,6 +96,7 @@ pub mod tire_sweep;
 pub mod truck_case;
 pub mod value_lists;
 pub mod vehicle_case;
+pub mod vehicle_options;
 pub mod yaw_leakage;
 pub mod yaw_manoeuvre;
 

@@ -151,6 +151,19 @@ fn unknown(set: &str) -> String {
     )
 }
 
+/// The built-in vehicle description `name` as commented TOML (`afsv params dump vehicle
+/// --builtin`); an unknown name lists the built-ins.
+pub fn builtin_vehicle_toml(name: &str) -> Result<String, String> {
+    let d = afsv_vehicle::builtin(name).ok_or_else(|| {
+        let names: Vec<&str> = afsv_vehicle::BUILTIN.iter().map(|b| b.0).collect();
+        format!(
+            "--builtin {name}: no such built-in vehicle (one of: {})",
+            names.join(", ")
+        )
+    })?;
+    afsv_vehicle::to_commented_toml(&d).map_err(|e| e.to_string())
+}
+
 /// A strut named on the command line: a built-in set (`front-axle`, `lab-1orifice`,
 /// `lab-2orifice`; `afsv_vehicle::builtin_strut`) or a strut parameter file (JSON, `afsv
 /// params dump strut`); a file of a built-in's name wins.
@@ -204,6 +217,17 @@ impl StrutSource {
         }
     }
 
+    /// The strut's parameters ([`StrutSource::params`]) with the emulsion's gas volume
+    /// fraction `gamma0` when given (`StrutParams::with_gamma0`, gas moved from the free
+    /// gas volume).
+    pub fn params_with_gamma0(&self, gamma0: Option<f64>) -> Result<StrutParams, String> {
+        let p = self.params()?;
+        match gamma0 {
+            Some(g) => p.with_gamma0(g).map_err(|e| e.to_string()),
+            None => Ok(p),
+        }
+    }
+
     /// The name shown in outputs: the built-in name or the file as given.
     pub fn name(&self) -> &str {
         &self.given
@@ -222,6 +246,16 @@ mod tests {
             assert!(list(set).unwrap()["parameters"].is_array(), "{set}");
         }
         assert!(list("vehicle").unwrap()["builtin"].is_array());
+        for (name, ..) in afsv_vehicle::BUILTIN {
+            let text = builtin_vehicle_toml(name).unwrap();
+            assert!(text.starts_with('#'), "{name}");
+            assert!(text.contains("format = \"afsv-vehicle-1\""), "{name}");
+        }
+        let e = builtin_vehicle_toml("nope").unwrap_err();
+        assert!(
+            e.contains("--builtin nope") && e.contains("prototype"),
+            "{e}"
+        );
         assert!(nominal("strut", Load::Loaded, "nope").is_err());
         assert!(nominal("nope", Load::Loaded, "front-axle").is_err());
     }
@@ -239,5 +273,9 @@ mod tests {
         assert!(f.params().unwrap_err().starts_with("--strut: "));
         assert!(StrutSource::parse(" ").is_err());
         assert!(StrutSource::builtin("nope").is_none());
+        assert_eq!(s.params_with_gamma0(None).unwrap(), s.params().unwrap());
+        let emulsion = s.params_with_gamma0(Some(0.03)).unwrap();
+        assert_eq!(emulsion, s.params().unwrap().with_gamma0(0.03).unwrap());
+        assert!(s.params_with_gamma0(Some(2.0)).is_err());
     }
 }

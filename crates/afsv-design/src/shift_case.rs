@@ -3,7 +3,9 @@
 //! levelling valve, where the struts' heat comes from, and the conditions the report
 //! states (`crate::strut_shift`, docs/layouts.md "HPS temperature and ride height").
 
+use crate::report::show;
 use crate::report::strut_shift::ShiftConditions;
+use crate::sample_bounds::{check_samples, MAX_HPS_SAMPLES};
 use crate::strut_shift::{HeatInput, ShiftSpec};
 use afsv_vehicle::ArticulatedVehicle;
 use hps_emulsion::thermal::KELVIN_AT_0C;
@@ -36,6 +38,32 @@ pub struct ShiftOptions {
     /// The levelling valve: deadband half width (mm), time constant (s), largest flow
     /// (L/min).
     pub valve: (f64, f64, f64),
+}
+
+/// Longest shift (h).
+pub const MAX_HOURS: f64 = 72.0;
+
+/// Highest speed of the ride that sets the dissipation (km/h).
+pub const MAX_RIDE_SPEED_KMH: f64 = 80.0;
+
+impl ShiftOptions {
+    /// The shift's size before anything runs: at most [`MAX_HOURS`], a ride of at most
+    /// [`MAX_RIDE_SPEED_KMH`], at most [`MAX_HPS_SAMPLES`] table rows; errors name the
+    /// options.
+    pub fn check_size(&self) -> Result<(), String> {
+        if self.hours > MAX_HOURS {
+            return Err(format!("--hours {}: at most {MAX_HOURS}", show(self.hours)));
+        }
+        if let Some((speed_kmh, _)) = self.ride.filter(|r| r.0 > MAX_RIDE_SPEED_KMH) {
+            return Err(format!("--speed-kmh {}: at most 80", show(speed_kmh)));
+        }
+        check_samples(
+            &format!("--step-min {}", show(self.step_min)),
+            &format!("--hours {} * 60 / --step-min", show(self.hours)),
+            self.hours * 3600.0 / (self.step_min * 60.0),
+            MAX_HPS_SAMPLES,
+        )
+    }
 }
 
 /// The vehicle `v` with its front-axle strut (a description without one is refused), the
@@ -94,6 +122,39 @@ pub fn shift_case(
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn the_size_of_a_shift_is_bounded() {
+        let o = ShiftOptions {
+            load: Load::Loaded,
+            with_rear: false,
+            ambient_c: 20.0,
+            charge_c: 20.0,
+            start_c: None,
+            power_w: None,
+            ride: Some((80.0, 1)),
+            stroke: (1.0, 10.0),
+            hours: 72.0,
+            step_min: 30.0,
+            valve: (5.0, 30.0, 6.0),
+        };
+        assert!(o.check_size().is_ok());
+        let long = ShiftOptions { hours: 72.5, ..o };
+        assert_eq!(long.check_size().unwrap_err(), "--hours 72.5: at most 72");
+        let fast = ShiftOptions {
+            ride: Some((81.0, 1)),
+            ..o
+        };
+        assert_eq!(fast.check_size().unwrap_err(), "--speed-kmh 81: at most 80");
+        let fine = ShiftOptions {
+            step_min: 1e-4,
+            ..o
+        };
+        assert!(fine
+            .check_size()
+            .unwrap_err()
+            .starts_with("--step-min 0.0001"));
+    }
 
     #[test]
     fn the_options_in_si_units() {

@@ -6,7 +6,7 @@ use afsv_records::Record;
 use serde_json::Value;
 use std::path::Path;
 use terrain_psd::{
-    CoherenceModel, Detrend, IsoClass, OffRoadTerrain, PowerLawPsd, WelchConfig, Window,
+    Band, CoherenceModel, Detrend, IsoClass, OffRoadTerrain, PowerLawPsd, WelchConfig, Window,
 };
 
 /// The columns of the spectrum table of `afsv terrain psd`.
@@ -66,6 +66,11 @@ pub fn psd_model(
             m.alpha_r
         ),
     ))
+}
+
+/// The spatial band `N_MIN,N_MAX` (cycles/m) of `--band`.
+pub fn band(text: &str) -> Result<Band, String> {
+    text.parse().map_err(|e| format!("--band: {e}"))
 }
 
 /// The coherence model `text` names; a half-track width (m) only with `bogsjo:RHO`, a
@@ -137,6 +142,14 @@ pub fn psd_table(out: &Value, spectrum: &Value) -> Result<Record, String> {
 mod tests {
     use super::*;
     use serde_json::json;
+
+    #[test]
+    fn a_band_is_two_ascending_frequencies() {
+        let b = band("0.02,5").unwrap();
+        assert_eq!((b.n_min, b.n_max), (0.02, 5.0));
+        assert!(band("5,0.02").unwrap_err().starts_with("--band: "));
+        assert!(band("1").unwrap_err().starts_with("--band: "));
+    }
 
     #[test]
     fn one_psd_model_is_chosen() {

@@ -2,7 +2,7 @@
 //! ([`finite_f64`], [`positive_f64`], [`nonneg_f64`], [`fraction_f64`],
 //! [`open_fraction_f64`]; errors naming the value and the rule); a value or an inclusive range
 //! `start:stop:step` ([`range`], tire sweeps), comma-separated numbers ([`list`], speeds,
-//! designs) and percent changes ([`changes`], Table 6.4). Errors name the option and the
+//! designs; [`point`], x,y) and percent changes ([`changes`], Table 6.4). Errors name the option and the
 //! item.
 
 fn number(s: &str) -> Result<f64, String> {
@@ -102,6 +102,20 @@ pub fn range(text: &str, option: &str) -> Result<Vec<f64>, String> {
         }
         _ => Err(format!(
             "{option}: expected a value or start:stop:step, got `{text}`"
+        )),
+    }
+}
+
+/// A point `"x,y"` of two finite numbers (the Eq 4.9 geometry of `afsv optimize afs`).
+pub fn point(s: &str) -> Result<[f64; 2], String> {
+    let v: Vec<f64> = s
+        .split(',')
+        .map(|t| t.trim().parse::<f64>().map_err(|e| format!("{t:?}: {e}")))
+        .collect::<Result<_, _>>()?;
+    match v[..] {
+        [x, y] if x.is_finite() && y.is_finite() => Ok([x, y]),
+        _ => Err(format!(
+            "expected \"x,y\" with two finite numbers, got {s:?}"
         )),
     }
 }
@@ -214,6 +228,14 @@ mod tests {
             .contains("at most 1000000"));
         assert!(range("nan", "--x").unwrap_err().contains("not finite"));
         assert!(range("1:2", "--x").is_err());
+    }
+
+    #[test]
+    fn points_are_two_finite_numbers() {
+        assert_eq!(point(" 1.5, -2").unwrap(), [1.5, -2.0]);
+        assert!(point("1,2,3").unwrap_err().contains("two finite numbers"));
+        assert!(point("1,inf").is_err() && point("1").is_err());
+        assert!(point("1,x").unwrap_err().contains("\"x\""));
     }
 
     #[test]

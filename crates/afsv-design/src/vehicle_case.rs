@@ -6,7 +6,7 @@
 //! one recorded run of it ([`simulate_run`]).
 
 use crate::report::show;
-use crate::report::vehicle::yaw_inertia_form;
+use crate::report::vehicle::{ride_psd, yaw_inertia_form, RidePsd};
 use crate::report::vehicle_record::SimulateRun;
 use crate::value_lists::{finite_f64, positive_f64};
 use afsv_dynamics::SteerInput;
@@ -16,7 +16,7 @@ use terrain_psd::IsoClass;
 use vehicle_3d::cab_ride::{seat_ride_measures, CabSeatLayout, SeatRideMeasures};
 use vehicle_3d::component_record::simulate_components;
 use vehicle_3d::interconnect::{Link, LinkedVehicle};
-use vehicle_3d::scenarios::{TerrainSpec, RUN_IN_M};
+use vehicle_3d::scenarios::{RideMeasures, RideSpec, TerrainSpec, RUN_IN_M};
 use vehicle_3d::{FrontAxle, RunOptions, RunRecord, Vehicle, VehicleOptions, VehicleParams};
 use vehicle_components::recorder::Recorder;
 use vehicle_components::FlatTerrain;
@@ -336,6 +336,29 @@ pub fn seat_of_run(
         .transpose()
 }
 
+/// What the report of one seed's D1 ride needs: its measures, the cab's PSDs when a plot
+/// asks for them, the seat's measures when there is a seat.
+pub type RideSeed = (RideMeasures, Option<RidePsd>, Option<SeatRideMeasures>);
+
+/// One seed's D1 ride of `p` (`crate::design_3d::ride_run`, the struts linked as `link`
+/// says) measured from `t_window` (s): the [`RideSeed`], its PSDs only `with_psd`, the
+/// seat's measures with a cab and seat `layout` ([`seat_of_run`]).
+pub fn ride_seed(
+    (p, spec, link): (&VehicleParams, &RideSpec, Option<&Link>),
+    seed: u64,
+    t_window: f64,
+    layout: Option<&CabSeatLayout>,
+    with_psd: bool,
+) -> Result<RideSeed, String> {
+    let (rec, m) = crate::design_3d::ride_run(p, spec, seed, link).map_err(|e| e.to_string())?;
+    let psd = if with_psd {
+        Some(ride_psd(&rec, t_window)?)
+    } else {
+        None
+    };
+    Ok((m, psd, seat_of_run(p, &rec, t_window, layout)?))
+}
+
 /// One run of `run.params` for `duration_s` (s) on its ground (the first seed of a
 /// terrain), its struts interconnected as `run.link` says; with `components`, also every
 /// component's own channels (not with a link: the linked struts' lines are not components).
@@ -393,6 +416,27 @@ pub fn simulate_run(
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// A short ride: the measures are the ride's, the PSDs and the seat only when asked.
+    #[test]
+    fn a_ride_seed_carries_what_its_report_asks_for() {
+        let p = VehicleParams::nominal();
+        let spec = RideSpec {
+            length_m: 10.0,
+            ..RideSpec::d1(vehicle_3d::Load::Loaded, FrontAxle::Rigid)
+        };
+        let t_window = ride_window_start(spec.speed_kmh, spec.length_m).unwrap();
+        let (_, m) = crate::design_3d::ride_run(&p, &spec, 1, None).unwrap();
+        let (bare, psd, seat) = ride_seed((&p, &spec, None), 1, t_window, None, false).unwrap();
+        assert_eq!(
+            (bare.a_wz_m_s2, psd.is_none(), seat.is_none()),
+            (m.a_wz_m_s2, true, true)
+        );
+        let seat_layout = CabSeatLayout::generic();
+        let (_, psd, seat) =
+            ride_seed((&p, &spec, None), 1, t_window, Some(&seat_layout), true).unwrap();
+        assert!(psd.is_some() && seat.is_some());
+    }
 
     #[test]
     fn seeds_come_from_one_option() {

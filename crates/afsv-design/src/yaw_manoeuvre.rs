@@ -7,6 +7,7 @@ use afsv_dynamics::yaw_plane::analysis::MeasureSpec;
 use afsv_dynamics::yaw_plane::simulate::Recording;
 use afsv_dynamics::YawPlaneParams;
 use afsv_dynamics::{Course, EquationForm, Load, Manoeuvre, PathDriver, SteerInput};
+use afsv_dynamics::{SimOptions, Solver};
 use afsv_records::Record;
 use std::path::Path;
 
@@ -48,6 +49,23 @@ pub fn measures_spec(form: EquationForm) -> MeasureSpec {
     spec.options.form = form;
     spec.options.recording = Recording::Measures;
     spec
+}
+
+/// Fixed step of the RK4 integrator of a recorded run (s).
+pub const RK4_STEP_S: f64 = 2e-4;
+
+/// The integrator settings of a recorded run (`afsv yaw simulate`): `solver` at the
+/// relative tolerance `rtol` (absolute tolerance a tenth of it), samples every `dt` (s),
+/// the yaw equations in `form`.
+pub fn sim_options(solver: Solver, rtol: f64, dt: f64, form: EquationForm) -> SimOptions {
+    SimOptions {
+        solver,
+        rtol,
+        atol: rtol * 0.1,
+        output_dt_s: dt,
+        form,
+        ..SimOptions::default()
+    }
 }
 
 /// How `form` is named in the sensitivity table's heading.
@@ -134,6 +152,23 @@ fn record_input(path: &Path, column: &str) -> Result<SteerInput, String> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_recorded_run_keeps_the_solver_defaults_it_does_not_set() {
+        let o = sim_options(
+            Solver::Rk4 { step: RK4_STEP_S },
+            1e-5,
+            0.005,
+            EquationForm::PaperEq313,
+        );
+        let d = SimOptions::default();
+        assert_eq!((o.rtol, o.atol, o.output_dt_s), (1e-5, 1e-5 * 0.1, 0.005));
+        assert_eq!(
+            (o.form, o.max_step_s),
+            (EquationForm::PaperEq313, d.max_step_s)
+        );
+        assert!(matches!(o.solver, Solver::Rk4 { step } if step == 2e-4));
+    }
 
     #[test]
     fn the_input_texts_name_their_manoeuvres() {

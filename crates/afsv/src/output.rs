@@ -4,6 +4,7 @@
 
 use serde::Serialize;
 use std::io::{IsTerminal, Write};
+use std::path::Path;
 
 pub use afsv_records::guard::*;
 pub use afsv_records::json::*;
@@ -45,6 +46,24 @@ pub fn print_json_or_text<T: Serialize + ?Sized>(
     }
 }
 
+/// Write `text` to `path`, whole or not at all (`afsv_records::atomic::write`); the error
+/// names the file.
+pub fn write_file(path: &Path, text: impl AsRef<[u8]>) -> Result<(), String> {
+    afsv_records::atomic::write(path, text).map_err(|e| format!("{}: {e}", path.display()))
+}
+
+/// Write `value` to `path` as pretty JSON with a final newline (a parameter file, as
+/// `afsv params dump` prints one), through [`write_file`].
+pub fn write_json_file<T: Serialize + ?Sized>(
+    path: &Path,
+    value: &T,
+) -> Result<(), Box<dyn std::error::Error>> {
+    Ok(write_file(
+        path,
+        serde_json::to_string_pretty(value)? + "\n",
+    )?)
+}
+
 /// Exit status of a command that printed its result but did not earn it: a fit that ended
 /// on a bound, did not converge or ended worse than its start (`afsv` exits with it; 1 is
 /// an error with nothing printed, 2 a usage error).
@@ -62,3 +81,13 @@ impl std::fmt::Display for NotEarned {
 }
 
 impl std::error::Error for NotEarned {}
+
+/// `Ok` when a fit has no `problems` or they are `accepted` (`--accept-poor-fit`), else
+/// [`NotEarned`] naming `command` (e.g. `hps identify`) and the problems.
+pub fn fit_earned(command: &str, problems: &[String], accepted: bool) -> Result<(), NotEarned> {
+    if problems.is_empty() || accepted {
+        Ok(())
+    } else {
+        Err(NotEarned(format!("{command}: {}", problems.join("; "))))
+    }
+}

@@ -1,7 +1,9 @@
 //! The rows of `afsv tire` (crate `tire-fiala`): the Fiala forces over a sweep of loads and
 //! slips, and a terrain profile enveloped by the tire (Eqs 2.3-2.4 / 6.2-6.3).
 
-use tire_fiala::{Envelope, Fiala, HandlingModel, PolylineProfile};
+use afsv_records::Record;
+use std::path::Path;
+use tire_fiala::{Envelope, EnvelopeMethod, Fiala, HandlingModel, PolylineProfile};
 
 /// The columns of `afsv tire sweep`'s table, in [`SweepRow`]'s order.
 pub const SWEEP_COLUMNS: [&str; 7] = [
@@ -66,7 +68,7 @@ pub fn sweep_rows(tire: &Fiala, fzs: &[f64], kappas: &[f64], alphas: &[f64]) -> 
     rows
 }
 
-#[derive(serde::Serialize)]
+#[derive(Debug, serde::Serialize)]
 /// One row of `afsv tire envelope`: the enveloped profile at one point.
 pub struct EnvelopeRow {
     /// Distance along the profile (m).
@@ -83,18 +85,25 @@ pub struct EnvelopeRow {
     pub wheel_z_m: f64,
 }
 
-/// The profile `profile` (points `xs`, heights `zs`) enveloped by `env` with the wheel held
-/// at the deflection `deflection_m` (m) at every point.
-pub fn envelope_rows(
-    env: &Envelope,
-    profile: &PolylineProfile,
-    (xs, zs): (&[f64], &[f64]),
+/// The track `column` (`left_m` or `right_m`) of the profile record `rec` read from `path`
+/// (points `x_m`), enveloped by a tire of `radius` (m) sampled every `spacing` (m) with
+/// `method`, the wheel held at the deflection `deflection_m` (m) at every point; errors of
+/// the profile name the file.
+pub fn envelope_track(
+    (rec, path): (&Record, &Path),
+    column: &str,
+    (method, radius, spacing): (EnvelopeMethod, f64, f64),
     deflection_m: f64,
 ) -> Result<Vec<EnvelopeRow>, String> {
+    let xs = rec.require("x_m", path).map_err(|e| e.to_string())?;
+    let zs = rec.require(column, path).map_err(|e| e.to_string())?;
+    let profile = PolylineProfile::new(xs.to_vec(), zs.to_vec())
+        .map_err(|e| format!("{}: {e}", path.display()))?;
+    let env = Envelope::new(method, radius, spacing).map_err(|e| e.to_string())?;
     let mut rows = Vec::with_capacity(xs.len());
     for (&x, &z) in xs.iter().zip(zs) {
         let p = env
-            .at_deflection(profile, x, deflection_m)
+            .at_deflection(&profile, x, deflection_m)
             .map_err(|e| e.to_string())?;
         rows.push(EnvelopeRow {
             x_m: x,
@@ -139,5 +148,24 @@ mod tests {
             wheel_z_m: 0.0,
         };
         assert_eq!(fields(&env), sorted(&ENVELOPE_COLUMNS));
+    }
+
+    /// Flat ground enveloped is flat ground (statics: the wheel stands at its radius less
+    /// the deflection); a missing track names the file.
+    #[test]
+    fn a_flat_track_envelopes_flat() {
+        let xs: Vec<f64> = (0..=40).map(|i| i as f64 * 0.1).collect();
+        let flat = vec![0.0; xs.len()];
+        let rec = Record::from_columns([("x_m", xs), ("left_m", flat)]).unwrap();
+        let file = Path::new("flat.csv");
+        let method = (EnvelopeMethod::CircleLine, 1.0, 0.01);
+        let rows = envelope_track((&rec, file), "left_m", method, 0.1).unwrap();
+        assert_eq!(rows.len(), 41);
+        for r in &rows[10..30] {
+            assert!(r.z_eff_m.abs() < 1e-9 && r.slope_rad.abs() < 1e-9, "{r:?}");
+            assert!((r.wheel_z_m - 0.9).abs() < 1e-6, "{r:?}");
+        }
+        let e = envelope_track((&rec, file), "right_m", method, 0.1).unwrap_err();
+        assert!(e.contains("flat.csv") && e.contains("right_m"), "{e}");
     }
 }

@@ -47,6 +47,17 @@ pub struct Ground {
     pub per_run: Value,
 }
 
+impl Ground {
+    /// The two-track terrain `t` run on `seeds`, with each seed's ride `measures`.
+    pub fn terrain(t: TerrainSpec, seeds: &[u64], measures: &[RideMeasures]) -> Self {
+        Ground {
+            json: terrain_json(&Some(t), seeds),
+            text: format!("terrain class {}, m_c {} cycles/m", t.class, t.m_c),
+            per_run: per_seed(&Some(t), seeds, measures, NO_STRUT),
+        }
+    }
+}
+
 /// The ground of a run as JSON: smooth, or the two-track terrain with its seeds.
 pub fn terrain_json(spec: &Option<TerrainSpec>, seeds: &[u64]) -> Value {
     match spec {

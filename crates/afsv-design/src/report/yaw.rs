@@ -1,7 +1,8 @@
 //! The record of `afsv yaw simulate` (the yaw-plane model of Chapters 3-4, crate
-//! `afsv-dynamics`): its sidecar, and the summary printed once it is written.
+//! `afsv-dynamics`): its sidecar, and the summary printed once it is written; the
+//! measures of `afsv yaw measures` ([`measures_json`]).
 
-use afsv_dynamics::{Manoeuvre, SimOptions, YawPlaneParams, YawRecord};
+use afsv_dynamics::{Manoeuvre, SimOptions, YawMeasures, YawPlaneParams, YawRecord};
 use serde_json::{json, Value};
 use std::path::Path;
 
@@ -45,6 +46,16 @@ pub fn simulate_summary(output: &Path, columns: &[String], rec: &YawRecord) -> V
         "peak_articulation_deg": super::signed_peak(&rec.articulation_deg),
         "solver_stats": rec.stats,
     })
+}
+
+/// The yaw-plane measures `m` as JSON, with the caveat of a decay fit that is not one mode
+/// (`"decay_fit_caveat"`) when there is one.
+pub fn measures_json(m: &YawMeasures) -> Value {
+    let mut v = json!(m);
+    if let Some(caveat) = m.decay_fit_caveat() {
+        v["decay_fit_caveat"] = json!(caveat);
+    }
+    v
 }
 
 #[cfg(test)]

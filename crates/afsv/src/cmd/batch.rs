@@ -6,8 +6,7 @@
 
 use super::CmdResult;
 use afsv::output::{OutputGuard, OutputKind};
-use afsv_design::afs_batch::MAX_SHARDS;
-use afsv_design::batch_shard::{evaluate_batch_shard, ShardOutcome, ShardProgress};
+use afsv_design::batch_shard::{evaluate_batch_shard, parse_shard, ShardOutcome, ShardProgress};
 use std::path::PathBuf;
 
 /// `afsv batch` subcommands.
@@ -23,7 +22,7 @@ pub struct EvaluateArgs {
     /// The batch file (JSON Lines) written by `afsv optimize afs|hps|layout --ask`.
     pub batch: PathBuf,
     /// The shard "I/N" (1 <= I <= N): the points whose 0-based index is I-1 modulo N.
-    #[arg(long, default_value = "1/1", value_parser = shard)]
+    #[arg(long, default_value = "1/1", value_parser = parse_shard)]
     pub shard: (usize, usize),
     /// Results file (JSON Lines) to write.
     #[arg(short, long)]
@@ -34,20 +33,6 @@ pub struct EvaluateArgs {
     /// Print the summary as JSON even on a terminal.
     #[arg(long)]
     pub json: bool,
-}
-
-fn shard(s: &str) -> Result<(usize, usize), String> {
-    let bad = || format!("expected \"I/N\" with 1 <= I <= N <= {MAX_SHARDS}, got {s:?}");
-    let (i, n) = s.split_once('/').ok_or_else(bad)?;
-    let (i, n): (usize, usize) = (
-        i.trim().parse().map_err(|_| bad())?,
-        n.trim().parse().map_err(|_| bad())?,
-    );
-    if 1 <= i && i <= n && n <= MAX_SHARDS {
-        Ok((i, n))
-    } else {
-        Err(bad())
-    }
 }
 
 /// Run `afsv batch`.

@@ -17,7 +17,7 @@
 //! weighting table, terrain synthesis fidelity) are `afsv check`.
 
 use super::CmdResult;
-use afsv_design::evaluate::{assess, MIN_SPEED_KMH};
+use afsv_design::evaluate::{assess, check_speed};
 use afsv_design::report::evaluate::{to_json, to_text};
 use std::path::PathBuf;
 
@@ -45,13 +45,7 @@ pub struct Args {
 
 /// Run the assessment and print it (text on a terminal, JSON otherwise).
 pub fn run(args: Args) -> CmdResult {
-    if !(args.speed_kmh.is_finite() && args.speed_kmh >= MIN_SPEED_KMH) {
-        return Err(format!(
-            "--speed-kmh must be at least {MIN_SPEED_KMH} km/h (the yaw-plane measures need forward speed), got {}",
-            args.speed_kmh
-        )
-        .into());
-    }
+    check_speed(args.speed_kmh)?;
     let v = super::described::articulated(args.vehicle.as_deref())?;
     let seeds = afsv_design::fan_out::seed_range(args.seed, args.seeds);
     let runs = afsv_design::design_3d::assess_runs(v.front_strut.is_some(), seeds.len());

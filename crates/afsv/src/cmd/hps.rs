@@ -14,7 +14,7 @@ use afsv_design::strut_lab::{characterize_each, characterize_report, identify_st
 use afsv_records::Record;
 use hps_emulsion::{
     identify, lab_programme, FitParam, HarmonicTest, HpsExtensions, IdentifyOptions, SimOptions,
-    Solver, StrutParams,
+    Solver,
 };
 use std::path::PathBuf;
 
@@ -173,29 +173,13 @@ pub fn run(cmd: Command) -> CmdResult {
     }
 }
 
-fn with_gamma0(p: StrutParams, g: Option<f64>) -> Result<StrutParams, Box<dyn std::error::Error>> {
-    Ok(match g {
-        Some(g) => p.with_gamma0(g)?,
-        None => p,
-    })
-}
-
 fn harmonic(a: HarmonicArgs) -> CmdResult {
-    args::check_samples(
-        &format!("--cycles {}", args::show(a.cycles)),
-        &format!(
-            "cycles / freq * rate with --freq {} --rate {}",
-            args::show(a.freq),
-            args::show(a.rate)
-        ),
-        a.cycles / a.freq * a.rate,
-        args::MAX_HPS_SAMPLES,
-    )?;
+    args::check_cycles(a.cycles, a.freq, a.rate)?;
     let mut guard = OutputGuard::new(a.force);
     guard.input_if("--strut", a.strut.file())?;
     guard.output_if("-o", a.output.as_deref(), OutputKind::Record)?;
     guard.output_if("--plot", a.plot.as_deref(), OutputKind::Svg)?;
-    let params = with_gamma0(a.strut.params()?, a.gamma0)?;
+    let params = a.strut.params_with_gamma0(a.gamma0)?;
     let test = HarmonicTest {
         frequency_hz: a.freq,
         amplitude_m: a.amp_mm * 1e-3,
@@ -245,7 +229,7 @@ fn characterize_cmd(a: CharacterizeArgs) -> CmdResult {
     let mut guard = afsv::output::OutputGuard::new(a.force);
     guard.input_if("--strut", a.strut.file())?;
     a.table.declare(&mut guard)?;
-    let params = with_gamma0(a.strut.params()?, a.gamma0)?;
+    let params = a.strut.params_with_gamma0(a.gamma0)?;
     let tests = lab_programme(params.travel);
     let progress = Progress::new("afsv hps characterize", "tests", Some(tests.len()));
     let rows = characterize_each(&params, &tests, &|t| {
@@ -282,9 +266,9 @@ fn identify_cmd(a: IdentifyArgs) -> CmdResult {
         a.accept_poor_fit,
     );
     afsv::output::print_json(&report)?;
-    if problems.is_empty() || a.accept_poor_fit {
-        Ok(())
-    } else {
-        Err(afsv::output::NotEarned(format!("hps identify: {}", problems.join("; "))).into())
-    }
+    Ok(afsv::output::fit_earned(
+        "hps identify",
+        &problems,
+        a.accept_poor_fit,
+    )?)
 }

@@ -15,9 +15,6 @@ use serde_json::json;
 use std::path::PathBuf;
 use vehicle_3d::Load;
 
-/// Longest shift (h).
-const MAX_HOURS: f64 = 72.0;
-
 /// Options of `afsv hps thermal`.
 #[derive(clap::Args)]
 pub struct ThermalArgs {
@@ -95,30 +92,6 @@ pub struct ThermalArgs {
 
 /// Run `afsv hps thermal`.
 pub fn run(a: ThermalArgs) -> CmdResult {
-    if a.hours > MAX_HOURS {
-        return Err(format!("--hours {}: at most {MAX_HOURS}", args::show(a.hours)).into());
-    }
-    if a.ride && a.speed_kmh > 80.0 {
-        return Err(format!("--speed-kmh {}: at most 80", args::show(a.speed_kmh)).into());
-    }
-    let step_s = a.step_min * 60.0;
-    args::check_samples(
-        &format!("--step-min {}", args::show(a.step_min)),
-        &format!("--hours {} * 60 / --step-min", args::show(a.hours)),
-        a.hours * 3600.0 / step_s,
-        args::MAX_HPS_SAMPLES,
-    )?;
-    let mut guard = OutputGuard::new(a.force);
-    super::described::declare(&mut guard, a.vehicle.as_deref())?;
-    a.table.declare(&mut guard)?;
-    let other = afsv::output::OutputKind::Other;
-    guard.output_if("--strut-out", a.strut_out.as_deref(), other)?;
-    guard.output_if(
-        "--strut-out-levelled",
-        a.strut_out_levelled.as_deref(),
-        other,
-    )?;
-    let v = super::described::articulated(a.vehicle.as_deref())?;
     let options = ShiftOptions {
         load: a.load,
         with_rear: a.with_rear,
@@ -132,6 +105,18 @@ pub fn run(a: ThermalArgs) -> CmdResult {
         step_min: a.step_min,
         valve: (a.deadband_mm, a.levelling_tau_s, a.levelling_flow_l_min),
     };
+    options.check_size()?;
+    let mut guard = OutputGuard::new(a.force);
+    super::described::declare(&mut guard, a.vehicle.as_deref())?;
+    a.table.declare(&mut guard)?;
+    let other = afsv::output::OutputKind::Other;
+    guard.output_if("--strut-out", a.strut_out.as_deref(), other)?;
+    guard.output_if(
+        "--strut-out-levelled",
+        a.strut_out_levelled.as_deref(),
+        other,
+    )?;
+    let v = super::described::articulated(a.vehicle.as_deref())?;
     let (params, spec, conditions) = shift_case(&v, &options)?;
     let shift = strut_shift(&params, &spec).map_err(|e| format!("`{}`: {e}", v.name))?;
     write_end_struts(&a, &shift)?;
@@ -165,8 +150,7 @@ fn write_end_struts(a: &ThermalArgs, shift: &Shift) -> CmdResult {
         let strut = front
             .end_strut(levelled)
             .map_err(|e| format!("{flag}: the strut at the end of the shift: {e}"))?;
-        let text = serde_json::to_string_pretty(&strut)? + "\n";
-        afsv_records::atomic::write(path, text).map_err(|e| format!("{}: {e}", path.display()))?;
+        afsv::output::write_json_file(path, &strut)?;
     }
     Ok(())
 }

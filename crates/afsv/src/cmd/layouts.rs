@@ -60,7 +60,7 @@ pub struct LayoutArgs {
 /// Run `afsv study layouts`.
 pub fn run(a: LayoutArgs) -> CmdResult {
     use afsv_design::layouts::MAX_SEEDS;
-    super::args::check_seeds(a.seeds, MAX_SEEDS)?;
+    let seeds = super::args::seed_list(a.seed, a.seeds, MAX_SEEDS)?;
     let speeds = afsv_design::value_lists::list("--speeds", &a.speeds, 50)?;
     let mut guard = OutputGuard::new(a.force);
     super::described::declare(&mut guard, a.vehicle.as_deref())?;
@@ -71,7 +71,7 @@ pub fn run(a: LayoutArgs) -> CmdResult {
         load: a.load,
         ride_speed_kmh: a.speed_kmh,
         sweep_speeds_kmh: speeds,
-        seeds: afsv_design::fan_out::seed_range(a.seed, a.seeds as u64),
+        seeds,
         seat: seat_of(&v, a.seat.as_deref())?,
     };
     let runs = layout_runs(list.len(), &options);

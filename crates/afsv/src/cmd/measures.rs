@@ -165,9 +165,6 @@ fn weighting(a: WeightingArgs) -> CmdResult {
         Some(fs) => Some(IirWeighting::new(a.weighting, fs)?),
         None => None,
     };
-    if let Some(f) = a.freqs.iter().find(|f| !(f.is_finite() && **f > 0.0)) {
-        return Err(format!("--freqs: {f} is not a positive frequency").into());
-    }
     let out =
         afsv_design::report::weighting::weighting_report(a.weighting, &a.freqs, iir.as_ref(), a.fs);
     afsv::output::print_json(&out)?;
@@ -188,11 +185,11 @@ fn decay(a: DecayArgs) -> CmdResult {
     let accepted = a.accept_poor_fit;
     let (v, problems) = record_measures::decay((&rec, &a.input), &a.column, window, accepted)?;
     afsv::output::print_json(&v)?;
-    if problems.is_empty() || a.accept_poor_fit {
-        Ok(())
-    } else {
-        Err(afsv::output::NotEarned(format!("measures decay: {}", problems.join("; "))).into())
-    }
+    Ok(afsv::output::fit_earned(
+        "measures decay",
+        &problems,
+        accepted,
+    )?)
 }
 
 fn step(a: StepArgs) -> CmdResult {

@@ -11,10 +11,10 @@ use super::CmdResult;
 use afsv::output::{NotEarned, OutputGuard, OutputKind};
 use afsv_design::afs_batch::{chapter4_objective, Eq49Desc, ProblemDesc, MAX_SHARDS};
 use afsv_design::afs_resume::AfsCheckpoint;
-use afsv_design::afs_run::{self, run_here, vehicle_desc, AfsRunSpec, AfsStep};
+use afsv_design::afs_run::{self, run_here, solver_settings, vehicle_desc, AfsRunSpec, AfsStep};
 use afsv_design::ga_ask_tell::{self, GaAskTell, GaStep};
 use afsv_design::report::afs::asked_text;
-use afsv_design::{AfsOptimisationSettings, AfsOptimum, AfsProblem, Objective};
+use afsv_design::{AfsOptimum, AfsProblem, Objective};
 use afsv_records::lock::take_and_read;
 use serde_json::json;
 use std::path::PathBuf;
@@ -235,10 +235,10 @@ pub struct AfsArgs {
     #[arg(long, allow_hyphen_values = true, value_parser = super::args::finite_f64, requires_all = ["tire_point", "engine_point"])]
     pub front_mount_dir_deg: Option<f64>,
     /// Eq 4.9: inner extremity of the left front tire, "x,y" in m (front-unit frame, origin at the joint).
-    #[arg(long, allow_hyphen_values = true, value_parser = point, requires_all = ["front_mount_dir_deg", "engine_point"])]
+    #[arg(long, allow_hyphen_values = true, value_parser = afsv_design::value_lists::point, requires_all = ["front_mount_dir_deg", "engine_point"])]
     pub tire_point: Option<[f64; 2]>,
     /// Eq 4.9: extremity of the engine supporting structure, "x,y" in m.
-    #[arg(long, allow_hyphen_values = true, value_parser = point, requires_all = ["front_mount_dir_deg", "tire_point"])]
+    #[arg(long, allow_hyphen_values = true, value_parser = afsv_design::value_lists::point, requires_all = ["front_mount_dir_deg", "tire_point"])]
     pub engine_point: Option<[f64; 2]>,
     /// Write the step responses of the optimum and the current design (SVG, Fig 4.9).
     #[arg(long)]
@@ -267,19 +267,6 @@ pub enum FormArg {
     PaperEq313,
 }
 
-fn point(s: &str) -> Result<[f64; 2], String> {
-    let v: Vec<f64> = s
-        .split(',')
-        .map(|t| t.trim().parse::<f64>().map_err(|e| format!("{t:?}: {e}")))
-        .collect::<Result<_, _>>()?;
-    match v[..] {
-        [x, y] if x.is_finite() && y.is_finite() => Ok([x, y]),
-        _ => Err(format!(
-            "expected \"x,y\" with two finite numbers, got {s:?}"
-        )),
-    }
-}
-
 /// Run `afsv optimize`.
 pub fn run(cmd: Command) -> CmdResult {
     match cmd {
@@ -291,29 +278,10 @@ pub fn run(cmd: Command) -> CmdResult {
 
 /// The run `a` defines, its solver settings checked.
 fn run_spec(a: &AfsArgs) -> Result<AfsRunSpec, Box<dyn std::error::Error>> {
-    if a.starts >= afsv_design::afs_optimum::MAX_STARTS {
-        return Err(format!(
-            "--starts must be below {}",
-            afsv_design::afs_optimum::MAX_STARTS
-        )
-        .into());
-    }
-    if !(a.min_mesh <= a.screen_mesh && a.screen_mesh < 0.25) {
-        return Err(format!(
-            "--screen-mesh {} and --min-mesh {}: need --min-mesh <= --screen-mesh < 0.25 (the initial mesh)",
-            a.screen_mesh, a.min_mesh
-        )
-        .into());
-    }
-    let mut settings = AfsOptimisationSettings {
-        extra_starts: a.starts,
-        seed: a.seed,
-        screen_min_mesh: a.screen_mesh,
-        ..AfsOptimisationSettings::default()
-    };
-    settings.pattern.search_points = a.search_points as usize;
-    settings.pattern.min_mesh = a.min_mesh;
-    settings.sqp.max_calls = a.sqp_calls as usize;
+    let search_points = a.search_points as usize;
+    let meshes = (a.screen_mesh, a.min_mesh);
+    let sqp_calls = a.sqp_calls as usize;
+    let settings = solver_settings(a.starts, a.seed, search_points, meshes, sqp_calls)?;
     let eq_4_9 = match (a.front_mount_dir_deg, a.tire_point, a.engine_point) {
         (Some(dir), Some(t), Some(e)) => Some(Eq49Desc {
             front_mount_dir_deg: dir,

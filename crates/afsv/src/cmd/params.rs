@@ -110,9 +110,7 @@ pub fn run(cmd: Command) -> CmdResult {
             };
             match output {
                 Some(path) => {
-                    let text = serde_json::to_string_pretty(&value)? + "\n";
-                    afsv_records::atomic::write(&path, text)
-                        .map_err(|e| format!("{}: {e}", path.display()))?;
+                    afsv::output::write_json_file(&path, &value)?;
                     afsv::output::print_json(&json!({ "written": path }))?;
                 }
                 // a parameter file, read back as it is printed (`params dump strut > s.json`
@@ -137,18 +135,10 @@ pub fn run(cmd: Command) -> CmdResult {
 /// `afsv params dump vehicle`: the built-in description `name` as commented TOML, to
 /// standard output or (through a temporary file) to `output`.
 fn dump_vehicle(name: &str, output: Option<&Path>) -> CmdResult {
-    let d = afsv_vehicle::builtin(name).ok_or_else(|| {
-        let names: Vec<&str> = afsv_vehicle::BUILTIN.iter().map(|b| b.0).collect();
-        format!(
-            "--builtin {name}: no such built-in vehicle (one of: {})",
-            names.join(", ")
-        )
-    })?;
-    let text = afsv_vehicle::to_commented_toml(&d)?;
+    let text = param_files::builtin_vehicle_toml(name)?;
     match output {
         Some(path) => {
-            afsv_records::atomic::write(path, text)
-                .map_err(|e| format!("{}: {e}", path.display()))?;
+            afsv::output::write_file(path, text)?;
             afsv::output::print_json(&json!({ "written": path }))?;
         }
         None => print!("{text}"),

@@ -12,7 +12,7 @@ use afsv_design::truck_case::{self, TruckSource};
 use afsv_records::Record;
 use perf_measures::roll::SustainedPeriodParams;
 use roll_truck::measures::RollMeasures;
-use roll_truck::{BuiltinTruck, RunOptions, SteerDirection, TruckParams};
+use roll_truck::{BuiltinTruck, SteerDirection, TruckParams};
 use serde_json::json;
 use std::path::{Path, PathBuf};
 
@@ -180,10 +180,7 @@ pub fn run(cmd: Command) -> CmdResult {
                 params: params.as_deref(),
                 ..TruckSource::default()
             };
-            let p = truck_case::truck(&source, None)?;
-            let c =
-                roll_truck::calibration::calibrate_strut_spacing(&p, (0.15, 0.6), target_g, 1e-4)?;
-            afsv::output::print_json(&c)?;
+            afsv::output::print_json(&truck_case::calibrate(&source, target_g)?)?;
             Ok(())
         }
     }
@@ -225,16 +222,7 @@ fn one_run(
     p: &TruckParams,
     dt: f64,
 ) -> Result<roll_truck::studies::Run, Box<dyn std::error::Error>> {
-    let duration = duration(case, p);
-    if duration > 3600.0 {
-        return Err(format!("--duration {}: at most 3600 s", args::show(duration)).into());
-    }
-    let options = RunOptions {
-        t_end_s: duration,
-        output_dt_s: dt,
-        acceleration_channels: true,
-        ..RunOptions::default()
-    };
+    let options = truck_case::run_options(duration(case, p), dt)?;
     let sp = case.rule.params()?;
     Ok(truck_case::run_on(
         p,

@@ -5,9 +5,10 @@
 use super::{truck, CmdResult, RuleArgs, TruckArgs};
 use afsv::output::{OutputGuard, OutputKind};
 use afsv_design::report::roll::{self, sensitivity_text, study_text};
+use afsv_design::truck_case::sensitivity_trucks;
 use roll_truck::sensitivity::run_sensitivity;
 use roll_truck::studies::{run_study, Study, MAX_SEEDS};
-use roll_truck::{BuiltinTruck, RunOptions, TruckParams};
+use roll_truck::RunOptions;
 use std::path::PathBuf;
 
 /// Which study `afsv roll study` runs.
@@ -60,7 +61,7 @@ pub(super) fn run_study_cmd(a: &StudyArgs) -> CmdResult {
     let seeds = a.seeds;
     super::super::args::check_seeds(seeds, MAX_SEEDS)?;
     let t = &a.truck;
-    let chosen = t.params.is_some() || t.truck.is_some() || t.vehicle.is_some();
+    let chosen = t.source().chosen();
     match a.study {
         StudyName::Runs(Study::Trucks) if chosen || t.ramp_rate.is_some() || t.no_bump_stops => {
             return Err("study trucks compares the built-in trucks with and without stops at their own ramp; --params, --truck, --vehicle, --ramp-rate and --no-bump-stops do not apply".into());
@@ -87,19 +88,7 @@ pub(super) fn run_study_cmd(a: &StudyArgs) -> CmdResult {
     let study = match a.study {
         StudyName::Runs(s) => s,
         StudyName::Sensitivity => {
-            let trucks: Vec<(String, TruckParams)> = if chosen {
-                vec![(t.name(), truck(t, None)?)]
-            } else {
-                [BuiltinTruck::Calibrated, BuiltinTruck::Plausible]
-                    .map(|b| {
-                        let mut p = b.params();
-                        if t.no_bump_stops {
-                            p = p.without_bump_stops();
-                        }
-                        (b.name().to_string(), p)
-                    })
-                    .to_vec()
-            };
+            let trucks = sensitivity_trucks(&t.source())?;
             let cells = run_sensitivity(&trucks, &seed_list, &report)?;
             if let Some(p) = progress.get() {
                 p.finish();

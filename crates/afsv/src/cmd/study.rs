@@ -115,12 +115,11 @@ fn sweep_vehicle(
 
 fn speed_sweep(a: SweepArgs) -> CmdResult {
     use afsv_design::hps_speed_sweep::{hps_speed_sweep, MAX_SEEDS, MAX_SPEEDS};
-    super::args::check_seeds(a.seeds, MAX_SEEDS)?;
+    let seeds = super::args::seed_list(a.seed, a.seeds, MAX_SEEDS)?;
     let speeds = list("--speeds", &a.speeds, MAX_SPEEDS)?;
     let mut guard = OutputGuard::new(a.force);
     let p = sweep_vehicle(&a, &mut guard)?;
     guard.output_if("--plot", a.plot.as_deref(), OutputKind::Svg)?;
-    let seeds: Vec<u64> = afsv_design::fan_out::seed_range(a.seed, a.seeds as u64);
     let runs = afsv_design::hps_speed_sweep::speed_sweep_runs(speeds.len(), seeds.len());
     let progress = afsv::progress::Progress::new("afsv study speed-sweep", "runs", Some(runs));
     let s = hps_speed_sweep(&p, &speeds, &seeds, &|d| progress.step(d))?;
@@ -133,13 +132,12 @@ fn speed_sweep(a: SweepArgs) -> CmdResult {
 }
 
 fn hps(a: HpsArgs) -> CmdResult {
-    super::args::check_seeds(a.seeds, MAX_SEEDS)?;
+    let seeds = super::args::seed_list(a.seed, a.seeds, MAX_SEEDS)?;
     let changes = afsv_design::value_lists::changes(&a.changes)?;
     let mut guard = OutputGuard::new(a.force);
     super::described::declare(&mut guard, a.vehicle.as_deref())?;
     guard.output_if("--plot", a.plot.as_deref(), OutputKind::Svg)?;
     let p = super::described::with_front_strut(a.vehicle.as_deref(), "study hps-sensitivity")?;
-    let seeds: Vec<u64> = afsv_design::fan_out::seed_range(a.seed, a.seeds as u64);
     let scope = StudyScope {
         roll: !a.no_roll,
         yaw: !a.no_yaw,

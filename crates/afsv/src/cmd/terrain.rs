@@ -6,11 +6,11 @@ use afsv::progress::Progress;
 use afsv_design::report::terrain::{
     generated_record, generated_sidecar, generated_summary, psd_analysis, psd_summary, Generated,
 };
-use afsv_design::terrain_choice::{coherence_model, psd_model, psd_table, welch_config};
+use afsv_design::terrain_choice::{self, coherence_model, psd_model, psd_table, welch_config};
 use afsv_records::Record;
 use serde_json::json;
 use std::path::{Path, PathBuf};
-use terrain_psd::{synthesize, Band, TwoTrackSpec};
+use terrain_psd::{synthesize, TwoTrackSpec};
 
 /// Track width of the 35-t AFSV (Table 6.1), the default for the cross-slope PSD.
 const DEFAULT_TRACK_WIDTH_M: f64 = terrain_psd::summary::AFSV_TRACK_WIDTH_M;
@@ -151,18 +151,13 @@ pub fn run(cmd: Command) -> CmdResult {
 const LONG_PROFILE_SAMPLES: f64 = 1e6;
 
 fn generate(a: GenerateArgs) -> CmdResult {
-    args::check_samples(
-        &format!("--length {}", args::show(a.length)),
-        &format!("length/dx with --dx {}", args::show(a.dx)),
-        a.length / a.dx,
-        args::MAX_SAMPLES,
-    )?;
+    args::check_profile(a.length, a.dx)?;
     if let Some(path) = &a.output {
         OutputGuard::new(a.force).output("-o", path, OutputKind::Record)?;
     }
     let power_law = (a.alpha, a.waviness);
     let (psd, model) = psd_model(a.class.as_deref(), a.terrain.as_deref(), power_law)?;
-    let band: Band = a.band.parse().map_err(|e| format!("--band: {e}"))?;
+    let band = terrain_choice::band(&a.band)?;
     let coherence = coherence_model(&a.coherence, a.half_track, a.speed)?;
     let spec = TwoTrackSpec::new(psd, band, coherence)?;
     // A long profile takes seconds to synthesise and write: report the two stages.
@@ -214,17 +209,7 @@ fn psd(a: PsdArgs) -> CmdResult {
     let dx = spacing(x, &a.input)?;
     let names = (&a.window[..], &a.detrend[..]);
     let cfg = welch_config((left.len(), dx, &a.input), a.segment_m, a.overlap, names)?;
-    if !(a.track_width.is_finite() && a.track_width > 0.0) {
-        return Err(format!(
-            "--track-width {}: must be a finite number > 0",
-            a.track_width
-        )
-        .into());
-    }
-    let band: Option<Band> = match &a.band {
-        Some(b) => Some(b.parse().map_err(|e| format!("--band: {e}"))?),
-        None => None,
-    };
+    let band = a.band.as_deref().map(terrain_choice::band).transpose()?;
     let (mut out, spectrum) = psd_analysis(
         &a.input.display().to_string(),
         (left, right),

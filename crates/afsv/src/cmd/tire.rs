@@ -2,10 +2,10 @@
 
 use super::{args, CmdResult};
 use afsv::output::{OutputGuard, OutputKind};
-use afsv_design::report::tire::{envelope_rows, sweep_rows, ENVELOPE_COLUMNS, SWEEP_COLUMNS};
+use afsv_design::report::tire::{envelope_track, sweep_rows, ENVELOPE_COLUMNS, SWEEP_COLUMNS};
 use afsv_design::tire_sweep::{sweep_grid, tire_params, TireOverrides};
 use std::path::PathBuf;
-use tire_fiala::{Envelope, EnvelopeMethod, Fiala, PolylineProfile};
+use tire_fiala::{EnvelopeMethod, Fiala};
 
 /// Subcommands of `afsv tire`.
 #[derive(clap::Subcommand)]
@@ -173,20 +173,16 @@ fn envelope(args: EnvelopeArgs) -> CmdResult {
     let out = &args.table;
     out.declare(&mut guard)?;
     let rec = afsv_records::Record::read(&args.profile)?;
-    let xs = rec.require("x_m", &args.profile)?.to_vec();
     let col = match args.track {
         TrackSide::Left => "left_m",
         TrackSide::Right => "right_m",
     };
-    let zs = rec.require(col, &args.profile)?.to_vec();
-    let profile = PolylineProfile::new(xs.clone(), zs.clone())
-        .map_err(|e| format!("{}: {e}", args.profile.display()))?;
     let method = match args.method {
         MethodArg::Cams => EnvelopeMethod::TandemCams,
         MethodArg::Circle => EnvelopeMethod::CircleLine,
     };
-    let env = Envelope::new(method, args.radius, args.spacing_m)?;
-    let rows = envelope_rows(&env, &profile, (&xs, &zs), args.deflection_m)?;
+    let tire = (method, args.radius, args.spacing_m);
+    let rows = envelope_track((&rec, &args.profile), col, tire, args.deflection_m)?;
     let full = serde_json::to_value(&rows)?;
     let table = afsv::table::from_rows(
         full.as_array().map_or(&[], Vec::as_slice),

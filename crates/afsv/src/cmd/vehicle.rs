@@ -5,7 +5,6 @@
 //! (`simulate`) in the record format of docs/records.md. Parses, calls, prints.
 
 mod measures;
-mod options;
 mod path_change;
 mod ride;
 mod simulate;
@@ -16,15 +15,14 @@ use afsv::progress::Progress;
 use afsv_design::design_3d::{roll_run, yaw_run};
 use afsv_design::figures;
 use afsv_design::report::vehicle::{
-    axle_name, link_note, per_seed, ride_report, roll_report, terrain_json, yaw_report, Ground,
-    NO_STRUT,
+    axle_name, link_note, ride_report, roll_report, yaw_report, Ground, RidePsd,
 };
-use afsv_design::report::vehicle::{ride_psd, RidePsd};
-use afsv_design::vehicle_case::{self, CaseSource, TerrainChoice as TerrainArg};
+use afsv_design::vehicle_case::{self, parse_terrain, CaseSource, TerrainChoice as TerrainArg};
+use afsv_design::vehicle_options::{
+    duration_s, offset_m, ramp_rate, seed_count, speed_kmh, steer_peak,
+};
 use measures::measures_cmd;
-pub(crate) use options::PAPER_FORM_HELP;
-use options::{duration_s, parse_terrain, ramp_rate, seed_count, speed_kmh, steer_peak};
-use path_change::{offset_m, path_change_cmd, PathChangeFiles};
+use path_change::{path_change_cmd, PathChangeFiles};
 use serde_json::{json, Value};
 use simulate::simulate_cmd;
 use std::path::{Path, PathBuf};
@@ -34,6 +32,9 @@ use vehicle_3d::scenarios::{
     RideMeasures, RideSpec, RollMeasures, RollSpec, TerrainSpec, YawMeasures, YawSpec,
 };
 use vehicle_3d::{FrontAxle, Load, RunRecord, VehicleParams};
+
+/// Help of `--paper-form` (the vehicle commands and `afsv evaluate`).
+pub(crate) const PAPER_FORM_HELP: &str = "Use the printed Eq 3.13 yaw inertias (m L² counted twice) instead of the energy-consistent equations, to reproduce the dissertation's lower yaw frequency; for comparison with the paper, never for design (docs/vehicle-3d.md)";
 
 /// The vehicle and where it runs, shared by every subcommand.
 #[derive(clap::Args, Debug)]

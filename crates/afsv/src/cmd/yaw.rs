@@ -6,9 +6,9 @@ use super::{args, CmdResult};
 use afsv::output::{OutputGuard, OutputKind};
 use afsv::progress::Progress;
 use afsv_design::report::yaw;
-use afsv_design::yaw_manoeuvre::{self, measures_spec, speed_m_s, yaw_plane_params};
+use afsv_design::yaw_manoeuvre::{self, measures_spec, speed_m_s, yaw_plane_params, RK4_STEP_S};
 use afsv_dynamics::yaw_plane::analysis::{measures_for, sensitivity_of};
-use afsv_dynamics::{simulate, EquationForm, Load, SimOptions, Solver, YawPlaneParams};
+use afsv_dynamics::{simulate, EquationForm, Load, Solver, YawPlaneParams};
 use afsv_records::Record;
 use std::path::{Path, PathBuf};
 
@@ -192,18 +192,12 @@ pub fn run(cmd: Command) -> CmdResult {
             let speed = speed_m_s(vehicle.speed_kmh)?;
             let sys = p.afs_system()?;
             let man = yaw_manoeuvre::manoeuvre(&input, speed, input_time, duration)?;
-            let opts = SimOptions {
-                solver: match solver {
-                    SolverChoice::Dopri => Solver::Dopri5,
-                    SolverChoice::Rosenbrock => Solver::Rosenbrock23,
-                    SolverChoice::Rk4 => Solver::Rk4 { step: 2e-4 },
-                },
-                rtol,
-                atol: rtol * 0.1,
-                output_dt_s: dt,
-                form: vehicle.form.into(),
-                ..SimOptions::default()
+            let solver = match solver {
+                SolverChoice::Dopri => Solver::Dopri5,
+                SolverChoice::Rosenbrock => Solver::Rosenbrock23,
+                SolverChoice::Rk4 => Solver::Rk4 { step: RK4_STEP_S },
             };
+            let opts = yaw_manoeuvre::sim_options(solver, rtol, dt, vehicle.form.into());
             let rec = simulate(&p.vehicle, &sys, &man, &opts)?;
             let meta = yaw::simulate_sidecar(&p, &man, &input, &opts, &rec);
             let selected = Record::from_selected(rec.columns(), &columns)?;
@@ -215,11 +209,7 @@ pub fn run(cmd: Command) -> CmdResult {
             let speed = speed_m_s(vehicle.speed_kmh)?;
             let spec = measures_spec(vehicle.form.into());
             let m = measures_for(&p.vehicle, &p.afs, p.load, speed, &spec)?;
-            let mut v = serde_json::json!(m);
-            if let Some(caveat) = m.decay_fit_caveat() {
-                v["decay_fit_caveat"] = serde_json::json!(caveat);
-            }
-            afsv::output::print_json(&v)?;
+            afsv::output::print_json(&yaw::measures_json(&m))?;
         }
         Command::Sensitivity {
             speed_kmh,
@@ -250,9 +240,6 @@ pub fn run(cmd: Command) -> CmdResult {
             steer_wheel_deg,
             vehicle,
         } => {
-            if !steer_wheel_deg.is_finite() {
-                return Err("--steer-wheel-deg must be finite".into());
-            }
             let d = super::described::articulated(vehicle.as_deref())?;
             afsv::output::print_json(&afsv_design::yaw_leakage::leakage(&d, steer_wheel_deg)?)?;
         }

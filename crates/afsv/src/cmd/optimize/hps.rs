@@ -60,20 +60,6 @@ pub struct HpsArgs {
 
 /// Run the optimisation and print the result.
 pub fn run(a: &HpsArgs) -> CmdResult {
-    if !(4..=1000).contains(&a.population) || a.population % 2 == 1 {
-        return Err(format!("--population {}: must be even, 4 to 1000", a.population).into());
-    }
-    if !(1..=1000).contains(&a.generations) {
-        return Err(format!("--generations {}: must be 1 to 1000", a.generations).into());
-    }
-    if !(1..=100).contains(&a.reevaluation_seeds) {
-        return Err(format!(
-            "--reevaluation-seeds {}: must be 1 to 100",
-            a.reevaluation_seeds
-        )
-        .into());
-    }
-    a.ask_tell.check()?;
     let settings = HpsGaSettings {
         population: a.population,
         generations: a.generations,
@@ -83,6 +69,8 @@ pub fn run(a: &HpsArgs) -> CmdResult {
         reevaluate_roll: !a.no_roll,
         ..HpsGaSettings::default()
     };
+    settings.check_options()?;
+    a.ask_tell.check()?;
     let (_lock, stored) = take_and_read("--state", a.ask_tell.state.as_deref())?;
     let mut guard = OutputGuard::new(a.force);
     crate::cmd::described::declare(&mut guard, a.vehicle.as_deref())?;
@@ -114,8 +102,7 @@ pub fn run(a: &HpsArgs) -> CmdResult {
 fn report(a: &HpsArgs, base: &vehicle_3d::VehicleParams, r: &HpsOptimum) -> CmdResult {
     let best = optimum_vehicle(base, r)?;
     if let Some(path) = &a.strut_out {
-        let text = serde_json::to_string_pretty(&best.hps)? + "\n";
-        afsv_records::atomic::write(path, text).map_err(|e| format!("{}: {e}", path.display()))?;
+        afsv::output::write_json_file(path, &best.hps)?;
     }
     let sweep = if a.speed_sweep {
         let runs = speed_sweep_runs(D4_SPEEDS_KMH.len(), r.settings.reevaluation_seeds);

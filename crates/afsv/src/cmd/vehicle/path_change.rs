@@ -3,29 +3,15 @@
 //! peaks of the Fig 6.12 channels and the course deviation, optionally the record (CSV +
 //! JSON sidecar, afsv-v1) and a four-panel SVG of the channels.
 
-use super::super::args;
 use super::{axle_name, declare_inputs, print_linked, vehicle_of, CaseArgs, CmdResult};
 use afsv::output::{OutputGuard, OutputKind};
+use afsv_design::design_3d::path_change_run;
 use afsv_design::figures;
 use afsv_design::report::vehicle::path_change_report;
 use afsv_design::report::vehicle_record::path_change_sidecar;
 use serde_json::json;
 use std::path::PathBuf;
-use vehicle_3d::path_change::path_change_linked;
-use vehicle_3d::scenarios::{path_change, PathChangeSpec};
-
-/// Largest lateral offset of the course (m): a lane change of a few truck widths.
-const MAX_OFFSET_M: f64 = 20.0;
-
-/// A signed course offset within ±[`MAX_OFFSET_M`] (m).
-pub(super) fn offset_m(s: &str) -> Result<f64, String> {
-    let v = args::finite_f64(s)?;
-    if v.abs() <= MAX_OFFSET_M {
-        Ok(v)
-    } else {
-        Err(format!("must be at most {MAX_OFFSET_M} m in magnitude"))
-    }
-}
+use vehicle_3d::scenarios::PathChangeSpec;
 
 pub(super) fn path_change_cmd(
     case: &CaseArgs,
@@ -53,10 +39,7 @@ pub(super) fn path_change_cmd(
         terrain,
         ..v3
     };
-    let (rec, m) = match &link {
-        None => path_change(&p, &spec, seeds[0])?,
-        Some(l) => path_change_linked(&p, &spec, seeds[0], l).map(|(r, m)| (r.record, m))?,
-    };
+    let (rec, m) = path_change_run(&p, &spec, seeds[0], link.as_ref())?;
     if let Some(path) = out.output.as_deref() {
         let meta = path_change_sidecar(&rec, &spec, seeds, &m, &p, link.as_ref());
         let columns = afsv_records::Record::from_columns(rec.afsv_v1_columns())?;

@@ -2,8 +2,7 @@
 //! vehicle has one.
 
 use super::*;
-use afsv_design::design_3d::ride_run;
-use afsv_design::vehicle_case::seat_of_run;
+use afsv_design::vehicle_case::{ride_seed, seat_of_run};
 
 pub(super) fn ride_cmd(
     case: &CaseArgs,
@@ -56,15 +55,9 @@ pub(super) fn ride_cmd(
         ..RideSpec::d1(case.load, axle)
     };
     let want_psd = study.plot.is_some();
-    type RideRun = (RideMeasures, Option<RidePsd>, Option<SeatRideMeasures>);
-    let runs: Vec<RideRun> = over_seeds("afsv vehicle ride", &Some(terrain), &seeds, |_, s| {
-        let (rec, m) = ride_run(&p, &spec, s, link.as_ref()).map_err(|e| e.to_string())?;
-        let psd = if want_psd {
-            Some(ride_psd(&rec, t_window)?)
-        } else {
-            None
-        };
-        Ok((m, psd, seat_of_run(&p, &rec, t_window, layout.as_ref())?))
+    let runs = over_seeds("afsv vehicle ride", &Some(terrain), &seeds, |_, s| {
+        let run = (&p, &spec, link.as_ref());
+        ride_seed(run, s, t_window, layout.as_ref(), want_psd)
     })?;
     let measures: Vec<RideMeasures> = runs.iter().map(|r| r.0).collect();
     let seats: Vec<SeatRideMeasures> = runs.iter().filter_map(|r| r.2).collect();
@@ -73,14 +66,7 @@ pub(super) fn ride_cmd(
         let chart = figures::vehicle::ride(&psds, &spec, super::axle_name(axle, &p), &seeds)?;
         super::super::write_chart(path, &chart)?;
     }
-    let ground = Ground {
-        json: terrain_json(&Some(terrain), &seeds),
-        text: format!(
-            "terrain class {}, m_c {} cycles/m",
-            terrain.class, terrain.m_c
-        ),
-        per_run: per_seed(&Some(terrain), &seeds, &measures, NO_STRUT),
-    };
+    let ground = Ground::terrain(terrain, &seeds, &measures);
     print_ride(
         case,
         study,

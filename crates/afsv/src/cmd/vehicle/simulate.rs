@@ -2,14 +2,13 @@
 //! docs/records.md) in the afsv-v1 sign convention, through the output guard.
 
 use super::super::args;
-use super::options::parse_steer;
 use super::CmdResult;
 use super::{declare_inputs, vehicle_of, CaseArgs};
 use afsv::output::{OutputGuard, OutputKind};
 use afsv_design::report::vehicle_record::{
     simulate_record, simulate_sidecar, simulate_summary, SimulateRun,
 };
-use afsv_design::vehicle_case::simulate_run;
+use afsv_design::vehicle_case::{parse_steer, simulate_run};
 use std::path::PathBuf;
 
 /// Where `afsv vehicle simulate` writes its record, and what goes in it.
