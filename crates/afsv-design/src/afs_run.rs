@@ -108,6 +108,24 @@ pub fn solver_settings(
             "--screen-mesh {screen_mesh} and --min-mesh {min_mesh}: need --min-mesh <= --screen-mesh < 0.25 (the initial mesh)"
         ));
     }
+    Ok(settings(
+        starts,
+        seed,
+        search_points,
+        (screen_mesh, min_mesh),
+        sqp_calls,
+    ))
+}
+
+/// The solver settings of [`solver_settings`], for values a caller has checked with its own
+/// names (the Python package).
+pub fn settings(
+    starts: usize,
+    seed: u64,
+    search_points: usize,
+    (screen_mesh, min_mesh): (f64, f64),
+    sqp_calls: usize,
+) -> AfsOptimisationSettings {
     let mut settings = AfsOptimisationSettings {
         extra_starts: starts,
         seed,
@@ -117,7 +135,7 @@ pub fn solver_settings(
     settings.pattern.search_points = search_points;
     settings.pattern.min_mesh = min_mesh;
     settings.sqp.max_calls = sqp_calls;
-    Ok(settings)
+    settings
 }
 
 /// The vehicle description `path` names (`crate::described`) as a problem stores it: its

@@ -7,8 +7,7 @@
 
 use crate::{py_err, to_json, value_err};
 use afsv_design::{
-    optimise, AfsDesignBounds, AfsOptimisationSettings, AfsProblem, AfsProblemSpec, AfsRunState,
-    AhpHierarchy, Objective,
+    optimise, AfsDesignBounds, AfsProblem, AfsProblemSpec, AfsRunState, AhpHierarchy, Objective,
 };
 use afsv_dynamics::EquationForm;
 use optimize::{ConstrainedProblem, Silent};
@@ -161,15 +160,13 @@ fn optimize_afs(
             "sqp_calls must be 1 to 10000 and search_points at most 100000",
         ));
     }
-    let mut settings = AfsOptimisationSettings {
-        extra_starts: starts,
+    let settings = afsv_design::afs_run::settings(
+        starts,
         seed,
-        screen_min_mesh: screen_mesh,
-        ..AfsOptimisationSettings::default()
-    };
-    settings.pattern.search_points = search_points;
-    settings.pattern.min_mesh = min_mesh;
-    settings.sqp.max_calls = sqp_calls;
+        search_points,
+        (screen_mesh, min_mesh),
+        sqp_calls,
+    );
     let p = problem(py, spec(relaxed, min_arm_m, rtol, form)?)?;
     let opt = py
         .detach(|| {

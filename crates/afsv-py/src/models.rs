@@ -191,14 +191,7 @@ fn yaw_job(
     let speed = speed_kmh / 3.6;
     let sys = p.afs_system().map_err(|e| py_err(py, &e))?;
     let man = manoeuvre(input, table, speed, input_time, duration)?;
-    let opts = SimOptions {
-        solver,
-        rtol,
-        atol: rtol * 0.1,
-        output_dt_s: dt,
-        form,
-        ..SimOptions::default()
-    };
+    let opts = afsv_design::yaw_manoeuvre::sim_options(solver, rtol, dt, form);
     Ok(YawJob {
         p,
         sys,
