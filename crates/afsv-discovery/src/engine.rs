@@ -95,10 +95,9 @@ impl Progress for () {
 }
 
 /// Per-channel error of a configuration given as baseline values and active effects,
-/// normalised as the workflow normalises it with `records` as the training records: by each
-/// channel's standard deviation over `records`, or over the records of the same scaling
-/// group ([`DiscoveryModel::scaling_group`]) for models that scale each experiment kind by
-/// its own spread.
+/// normalised by each channel's standard deviation over `records` (for every model, also
+/// one with scaling groups, [`DiscoveryModel::scaling_group`]: give the records of one kind
+/// to see them as the workflow weighs them).
 pub fn evaluate_errors<M: DiscoveryModel + ?Sized>(
     model: &M,
     records: &[Record],
@@ -107,7 +106,7 @@ pub fn evaluate_errors<M: DiscoveryModel + ?Sized>(
 ) -> Result<Vec<ChannelError>, DiscoveryError> {
     let channels = model.channels();
     let prepared = prepare_all(model, records, &[])?;
-    let scales = ChannelScales::new(model, records, &prepared, &channels);
+    let scales = ChannelScales::whole_set(records, &channels);
     let set = RecordSet::new(
         model,
         records.iter().collect(),

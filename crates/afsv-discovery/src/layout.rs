@@ -63,6 +63,14 @@ impl ChannelScales {
         Self { all, groups }
     }
 
+    /// The whole set's scales for every record, whatever the model's scaling groups.
+    pub fn whole_set(records: &[Record], channels: &[String]) -> Self {
+        Self {
+            all: channel_scales(records.iter(), channels, None),
+            groups: Vec::new(),
+        }
+    }
+
     /// The scales of a record of scaling group `group` (the whole set's for `None` or a
     /// group without training records).
     pub fn of_record(&self, group: Option<&str>) -> &[f64] {
