@@ -3,7 +3,7 @@
 use super::evidence;
 use super::fitting::{finalists, spanning_subset, Config, Context, Fitted, Scouted, RIVAL_SHARE};
 use super::form::{self, FormRule, NamingTests};
-use super::layout::{channel_scales, RecordSet};
+use super::layout::{ChannelScales, RecordSet};
 use super::placebo::WithPlacebos;
 use super::readings::{self, ReadingChoice, ReadingScore, WithReadings};
 use super::signature::{channel_signature, ChannelSignature};
@@ -95,7 +95,9 @@ impl Progress for () {
 }
 
 /// Per-channel error of a configuration given as baseline values and active effects,
-/// normalised by each channel's standard deviation over `records`.
+/// normalised by each channel's standard deviation over `records` (for every model, also
+/// one with scaling groups, [`DiscoveryModel::scaling_group`]: give the records of one kind
+/// to see them as the workflow weighs them).
 pub fn evaluate_errors<M: DiscoveryModel + ?Sized>(
     model: &M,
     records: &[Record],
@@ -103,8 +105,8 @@ pub fn evaluate_errors<M: DiscoveryModel + ?Sized>(
     effects: &[ActiveEffect<'_>],
 ) -> Result<Vec<ChannelError>, DiscoveryError> {
     let channels = model.channels();
-    let scales = channel_scales(records, &channels);
     let prepared = prepare_all(model, records, &[])?;
+    let scales = ChannelScales::whole_set(records, &channels);
     let set = RecordSet::new(
         model,
         records.iter().collect(),
@@ -419,7 +421,7 @@ fn check_candidates<M: DiscoveryModel + ?Sized>(
 }
 
 /// The fitting context: record sets laid out by the nominal baseline, channel scales from
-/// the training records, and the scouting subset (also in the coarse replays `tc` of the
+/// the training records (per scaling group where the model has them), and the scouting subset (also in the coarse replays `tc` of the
 /// training records, when given).
 #[allow(clippy::too_many_arguments)]
 fn context<'a, M: DiscoveryModel + ?Sized>(
@@ -435,7 +437,7 @@ fn context<'a, M: DiscoveryModel + ?Sized>(
     let channels = model.channels();
     let base_specs = model.baseline_params();
     let nominal: Vec<f64> = base_specs.iter().map(|s| s.initial).collect();
-    let scales = channel_scales(train, &channels);
+    let scales = ChannelScales::new(model, train, tp, &channels);
     let set = |recs: &'a [Record], prep: &'a [M::Prepared], idx: &[usize]| {
         RecordSet::new(
             model,

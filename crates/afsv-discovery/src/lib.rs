@@ -175,6 +175,18 @@ pub trait DiscoveryModel: Sync {
         baseline: &[f64],
         effects: &[ActiveEffect<'_>],
     ) -> Result<Vec<Option<Vec<f64>>>, DiscoveryError>;
+    /// The experiment kind a prepared record belongs to for the residuals' normalisation
+    /// (docs/discovery.md, "Each experiment's own scale"). `None` (the default, every
+    /// record): each channel's residual is divided by the channel's standard deviation over
+    /// all training records. Where records of one kind are separate experiments whose
+    /// channels span very different ranges (the 3-D vehicle's ride runs and V3 path
+    /// changes), `Some(kind)` divides each record's channel by the channel's standard
+    /// deviation over the training records of the same kind, so that each experiment's
+    /// error counts as a normalised error of that experiment (a kind without training
+    /// records, or a channel constant over them, keeps the whole set's scale).
+    fn scaling_group(&self, _prepared: &Self::Prepared) -> Option<String> {
+        None
+    }
     /// Laws the paper states ambiguously, each offered in several readings (calibration
     /// switches: step 0 calibrates each reading and keeps the better one, see
     /// [`LawSwitch`]). None by default.

@@ -156,6 +156,9 @@ impl<M: DiscoveryModel + ?Sized> DiscoveryModel for WithPlacebos<'_, M> {
     fn group(&self, prepared: &Self::Prepared) -> Option<String> {
         self.inner.group(&prepared.inner)
     }
+    fn scaling_group(&self, prepared: &Self::Prepared) -> Option<String> {
+        self.inner.scaling_group(&prepared.inner)
+    }
     fn simulate(
         &self,
         prepared: &Self::Prepared,

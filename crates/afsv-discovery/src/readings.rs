@@ -78,6 +78,9 @@ impl<M: DiscoveryModel + ?Sized> DiscoveryModel for WithReadings<'_, M> {
     fn group(&self, prepared: &Self::Prepared) -> Option<String> {
         self.inner.group(prepared)
     }
+    fn scaling_group(&self, prepared: &Self::Prepared) -> Option<String> {
+        self.inner.scaling_group(prepared)
+    }
     fn simulate(
         &self,
         prepared: &Self::Prepared,

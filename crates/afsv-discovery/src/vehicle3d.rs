@@ -605,6 +605,19 @@ impl DiscoveryModel for Vehicle3dModel {
         Some(prepared.group.clone())
     }
 
+    /// Ride runs and V3 path changes are separate experiments: each is scaled by the spread
+    /// of its own kind's training records (docs/discovery.md, "Each experiment's own
+    /// scale").
+    fn scaling_group(&self, prepared: &Replay3d) -> Option<String> {
+        Some(
+            match prepared.kind {
+                RunKind::Ride => "ride",
+                RunKind::PathChange => "path change",
+            }
+            .to_string(),
+        )
+    }
+
     fn simulate(
         &self,
         prepared: &Replay3d,

@@ -12,7 +12,9 @@ pub struct ChannelError {
     pub channel: String,
     /// RMS error in channel units.
     pub rmse: Option<f64>,
-    /// RMS error over the channel's standard deviation (training-set scale).
+    /// RMS error over the channel's standard deviation (training-set scale; each record by
+    /// its experiment kind's for models with scaling groups,
+    /// [`DiscoveryModel::scaling_group`](crate::DiscoveryModel::scaling_group)).
     pub nrmse: Option<f64>,
     /// Samples compared (0: no record has the channel).
     pub samples: usize,
