@@ -121,10 +121,9 @@ pub struct TireState {
     pub lateral_force: [f64; 6],
     /// Lateral velocity of the wheel centre V_y (m/s), the input of Eq 2.7.
     pub lateral_velocity: [f64; 6],
-    /// Forward velocity of the wheel centre V_x (m/s).
-    pub forward_velocity: [f64; 6],
-    /// Its regularised magnitude `|V_x|_eff` (m/s, `tire_fiala::regularised_speed`), the
-    /// speed of the slip angle (Eq 2.6) and of the lag (Eq 2.7).
+    /// Regularised magnitude `|V_x|_eff` of the wheel centre's forward velocity V_x (m/s,
+    /// `tire_fiala::regularised_speed`), the speed of the slip angle (Eq 2.6) and of the lag
+    /// (Eq 2.7).
     pub regularised_speed: [f64; 6],
     /// Tire deflection (m).
     pub deflection: [f64; 6],
@@ -417,7 +416,6 @@ impl TruckVehicle {
             ws.apply_force_world(m.body, &force, &point);
             out.lateral_force[i] = fy;
             out.lateral_velocity[i] = v_y;
-            out.forward_velocity[i] = v_x;
             out.regularised_speed[i] = u;
             out.lateral_total += force.dot(&lat);
         }
