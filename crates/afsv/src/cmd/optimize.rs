@@ -193,10 +193,11 @@ fn print_told(json: bool, told: usize, points: usize, unit: &str, finished: bool
 /// Options of `afsv optimize afs`.
 #[derive(clap::Args)]
 pub struct AfsArgs {
-    /// Optimise this vehicle description's steering on its loaded yaw-plane data (the
-    /// description is stored whole in checkpoints, states and batches, so a resume or a
-    /// shard needs no file).
-    #[arg(long, help = super::described::HELP)]
+    /// Optimise this vehicle description's steering on its loaded yaw-plane data: a
+    /// description file (TOML, docs/vehicles.md) or a built-in name (prototype,
+    /// chapter2-truck). It is stored whole in checkpoints, states and batches, so a resume or
+    /// a shard needs no file.
+    #[arg(long)]
     pub vehicle: Option<PathBuf>,
     /// Relax the upper B_eff bound to 2.08 GPa (Table 4.4) instead of 1.7 GPa (Table 4.3).
     #[arg(long)]

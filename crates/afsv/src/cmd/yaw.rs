@@ -143,8 +143,9 @@ pub enum Command {
         #[arg(long)]
         table: bool,
         /// Vary the parameters about this vehicle description's yaw-plane data and steering
-        /// (both loads) instead of Table 3.1's.
-        #[arg(long, help = super::described::HELP)]
+        /// (both loads) instead of Table 3.1's: a description file (TOML, docs/vehicles.md) or
+        /// a built-in name (prototype, chapter2-truck).
+        #[arg(long)]
         vehicle: Option<PathBuf>,
     },
     /// Leakage effects: steady-turning articulation decay at the Table 3.2 speeds
@@ -154,8 +155,9 @@ pub enum Command {
         #[arg(long, default_value_t = 300.0, value_parser = args::finite_f64, allow_hyphen_values = true)]
         steer_wheel_deg: f64,
         /// Run this vehicle description's yaw-plane data and steering instead of Table
-        /// 3.1's (at the Table 3.2 speeds).
-        #[arg(long, help = super::described::HELP)]
+        /// 3.1's (at the Table 3.2 speeds): a description file (TOML, docs/vehicles.md) or a
+        /// built-in name (prototype, chapter2-truck).
+        #[arg(long)]
         vehicle: Option<PathBuf>,
     },
 }
