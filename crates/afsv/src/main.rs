@@ -22,7 +22,7 @@ struct Cli {
 
 #[derive(Subcommand)]
 enum Command {
-    /// Assess a vehicle (the built-in default, or `--vehicle FILE`): ride, roll and yaw with their seed spread and paper standing; a summary on a terminal, JSON with --json or when piped.
+    /// Assess a vehicle (the built-in default, or a description: `afsv evaluate FILE` or `--vehicle FILE`): ride, roll and yaw with their seed spread and paper standing; a summary on a terminal, JSON with --json or when piped.
     Evaluate(cmd::evaluate::Args),
     /// Run the toolkit's self-checks (ISO 2631-1 weightings, terrain synthesis fidelity).
     Check(cmd::check::Args),

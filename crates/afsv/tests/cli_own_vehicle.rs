@@ -24,12 +24,12 @@ fn without_provenance(mut v: serde_json::Value) -> serde_json::Value {
     v
 }
 
-/// `afsv evaluate --vehicle adt-28t.toml --seeds 1`, run once for the tests that compare
+/// `afsv evaluate adt-28t.toml --seeds 1` (the file as the positional `VEHICLE`), run once for the tests that compare
 /// with it (the chain of commands is split into tests so that libtest runs them side by
 /// side; each command runs once, as before).
 fn evaluated() -> &'static serde_json::Value {
     static E: OnceLock<serde_json::Value> = OnceLock::new();
-    E.get_or_init(|| json(&afsv(&["evaluate", "--vehicle", &adt(), "--seeds", "1"])))
+    E.get_or_init(|| json(&afsv(&["evaluate", &adt(), "--seeds", "1"])))
 }
 
 /// `a_wz` of the D1 ride in [`evaluated`]: (unsuspended, nominal HPS).
@@ -76,6 +76,12 @@ fn an_own_truck_is_checked_and_evaluated_with_its_own_strut() {
     assert!(src.ends_with("adt-28t-front-strut.json"), "{src}");
     let (rigid, hps) = evaluated_a_wz();
     assert!(hps < rigid, "the strut lowers a_wz: {hps} vs {rigid}");
+
+    // The vehicle is named once: the positional file and `--vehicle` together are refused.
+    let both = afsv(&["evaluate", &f, "--vehicle", "prototype", "--seeds", "1"]);
+    assert_eq!(both.status.code(), Some(2), "{both:?}");
+    let err = String::from_utf8_lossy(&both.stderr);
+    assert!(err.contains("cannot be used with"), "{err}");
 }
 
 /// `vehicle ride` (loaded by default) takes the described front axle (HPS) unless told

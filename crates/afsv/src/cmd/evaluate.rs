@@ -1,5 +1,5 @@
-//! `afsv evaluate`: the main job, on the built-in default vehicle or on a vehicle
-//! description (`--vehicle`, docs/vehicles.md).
+//! `afsv evaluate [VEHICLE]`: the main job, on the built-in default vehicle or on a vehicle
+//! description (`VEHICLE` or `--vehicle`, docs/vehicles.md).
 //!
 //! The default vehicle is the 35 t articulated dump truck of the dissertation (Table 3.1
 //! steering and yaw-plane parameters, Table 6.1 3-D vehicle, Table 6.3 front-axle strut) on
@@ -36,6 +36,9 @@ pub struct Args {
     pub speed_kmh: f64,
     #[arg(long, help = super::described::HELP)]
     pub vehicle: Option<PathBuf>,
+    /// The vehicle to assess, as `--vehicle` takes it (`afsv evaluate my-truck.toml`).
+    #[arg(value_name = "VEHICLE", conflicts_with = "vehicle")]
+    pub vehicle_positional: Option<PathBuf>,
     #[arg(long, help = super::vehicle::PAPER_FORM_HELP)]
     pub paper_form: bool,
     /// Print JSON even on a terminal (JSON is the default when stdout is not a terminal).
@@ -46,7 +49,8 @@ pub struct Args {
 /// Run the assessment and print it (text on a terminal, JSON otherwise).
 pub fn run(args: Args) -> CmdResult {
     check_speed(args.speed_kmh)?;
-    let v = super::described::articulated(args.vehicle.as_deref())?;
+    let vehicle = args.vehicle.or(args.vehicle_positional);
+    let v = super::described::articulated(vehicle.as_deref())?;
     let seeds = afsv_design::fan_out::seed_range(args.seed, args.seeds);
     let runs = afsv_design::design_3d::assess_runs(v.front_strut.is_some(), seeds.len());
     let progress = afsv::progress::Progress::new("afsv evaluate", "vehicle runs", Some(runs));
