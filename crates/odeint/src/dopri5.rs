@@ -1,16 +1,12 @@
 //! Dormand-Prince 5(4) step with error estimate and 4th-order dense output
 //! (Hairer, Nørsett & Wanner, *Solving ODEs I*, section II.5/II.6, code DOPRI5).
 //!
-//! Workspace use: `k[0..7]` the stages k1..k7 (k7 = f(t+h, y_new) is the next k1, FSAL),
-//! `aux[0]` the error estimate, `aux[1..4]` the dense-output coefficients, `y_stage` the
-//! sixth stage's argument (kept to the end of the step for the stiffness test).
-//!
-//! Stiffness detection: [`crate::stiffness`] on the stages k6 and k7, both at `t + h`.
+//! The step, its error estimate, the step-size factors and the stiffness test are the
+//! shared seven-stage FSAL kernel's ([`crate::explicit_rk`]); this module gives the
+//! tableau and the dense output, whose coefficients it keeps in `aux[1..4]`.
 
-use crate::kernel::Kernel;
-use crate::stiffness::StiffnessWatch;
-use crate::tolerance::error_norm;
-use crate::{OdeSystem, Workspace};
+use crate::explicit_rk::{FsalKernel, Pair};
+use crate::Workspace;
 
 const C2: f64 = 1.0 / 5.0;
 const C3: f64 = 3.0 / 10.0;
@@ -49,104 +45,24 @@ const D5: f64 = 701980252875.0 / 199316789632.0;
 const D6: f64 = -1453857185.0 / 822651844.0;
 const D7: f64 = 69997945.0 / 29380423.0;
 
+/// Dormand-Prince's tableau and dense output.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct DormandPrince;
+
 /// The Dormand-Prince 5(4) kernel with its stiffness test.
-#[derive(Debug, Clone, Copy, Default)]
-pub(crate) struct Dopri5Kernel {
-    /// Step of the last attempt.
-    h: f64,
-    /// Stiffness test.
-    watch: StiffnessWatch,
-}
+pub(crate) type Dopri5Kernel = FsalKernel<DormandPrince>;
 
-impl Kernel for Dopri5Kernel {
-    const ORDER: i32 = 5;
+impl Pair for DormandPrince {
+    const C: [f64; 4] = [C2, C3, C4, C5];
+    const A2: f64 = A21;
+    const A3: [f64; 2] = [A31, A32];
+    const A4: [f64; 3] = [A41, A42, A43];
+    const A5: [f64; 4] = [A51, A52, A53, A54];
+    const A6: [f64; 5] = [A61, A62, A63, A64, A65];
+    const B: [f64; 6] = [A71, 0.0, A73, A74, A75, A76];
+    const E: [f64; 7] = [E1, 0.0, E3, E4, E5, E6, E7];
 
-    fn start<S: OdeSystem + ?Sized>(&mut self, sys: &S, t: f64, ws: &mut Workspace) -> usize {
-        self.watch.reset();
-        sys.rhs(t, &ws.y, &mut ws.k[0]);
-        1
-    }
-
-    fn attempt<S: OdeSystem + ?Sized>(
-        &mut self,
-        sys: &S,
-        t: f64,
-        h: f64,
-        rtol: f64,
-        ws: &mut Workspace,
-    ) -> (f64, usize) {
-        let Workspace {
-            y,
-            y_new: y1,
-            y_stage: ys,
-            k,
-            aux,
-            atol,
-            ..
-        } = ws;
-        let [k1, k2, k3, k4, k5, k6, k7] = k;
-        let err = &mut aux[0];
-        let n = y.len();
-        self.h = h;
-        for i in 0..n {
-            ys[i] = y[i] + h * A21 * k1[i];
-        }
-        sys.rhs(t + C2 * h, ys, k2);
-        for i in 0..n {
-            ys[i] = y[i] + h * (A31 * k1[i] + A32 * k2[i]);
-        }
-        sys.rhs(t + C3 * h, ys, k3);
-        for i in 0..n {
-            ys[i] = y[i] + h * (A41 * k1[i] + A42 * k2[i] + A43 * k3[i]);
-        }
-        sys.rhs(t + C4 * h, ys, k4);
-        for i in 0..n {
-            ys[i] = y[i] + h * (A51 * k1[i] + A52 * k2[i] + A53 * k3[i] + A54 * k4[i]);
-        }
-        sys.rhs(t + C5 * h, ys, k5);
-        for i in 0..n {
-            ys[i] =
-                y[i] + h * (A61 * k1[i] + A62 * k2[i] + A63 * k3[i] + A64 * k4[i] + A65 * k5[i]);
-        }
-        sys.rhs(t + h, ys, k6);
-        for i in 0..n {
-            y1[i] =
-                y[i] + h * (A71 * k1[i] + A73 * k3[i] + A74 * k4[i] + A75 * k5[i] + A76 * k6[i]);
-        }
-        sys.rhs(t + h, y1, k7);
-        for i in 0..n {
-            err[i] =
-                h * (E1 * k1[i] + E3 * k3[i] + E4 * k4[i] + E5 * k5[i] + E6 * k6[i] + E7 * k7[i]);
-        }
-        let e = error_norm(err, y, y1, rtol, atol);
-        let finite = e.is_finite() && y1.iter().all(|v| v.is_finite());
-        (if finite { e } else { f64::INFINITY }, 6)
-    }
-
-    fn reject_factor(&self, e: f64) -> f64 {
-        if e.is_finite() {
-            (0.9 * e.powf(-0.2)).clamp(0.2, 1.0)
-        } else {
-            0.1
-        }
-    }
-
-    fn accept_factor(&self, e: f64, last_rejected: bool) -> f64 {
-        let fac = (0.9 * e.max(1e-10).powf(-0.2)).clamp(0.2, 5.0);
-        if last_rejected {
-            fac.min(1.0)
-        } else {
-            fac
-        }
-    }
-
-    fn prepare_dense<S: OdeSystem + ?Sized>(
-        &mut self,
-        _sys: &S,
-        _t: f64,
-        h: f64,
-        ws: &mut Workspace,
-    ) -> usize {
+    fn prepare_dense(h: f64, ws: &mut Workspace) -> usize {
         let Workspace {
             y,
             y_new: y1,
@@ -167,7 +83,7 @@ impl Kernel for Dopri5Kernel {
         0
     }
 
-    fn dense(&self, theta: f64, _h: f64, ws: &mut Workspace) {
+    fn dense(theta: f64, _h: f64, ws: &mut Workspace) {
         let Workspace {
             y,
             y_new: y1,
@@ -181,22 +97,5 @@ impl Kernel for Dopri5Kernel {
             let ydiff = y1[i] - y[i];
             y_out[i] = y[i] + theta * (ydiff + theta1 * (r3[i] + theta * (r4[i] + theta1 * r5[i])));
         }
-    }
-
-    fn accept<S: OdeSystem + ?Sized>(
-        &mut self,
-        _sys: &S,
-        _t_new: f64,
-        ws: &mut Workspace,
-    ) -> usize {
-        let [k1, .., k6, k7] = &mut ws.k;
-        self.watch.observe(self.h, k6, k7, &ws.y_stage, &ws.y_new);
-        k1.copy_from_slice(k7);
-        ws.y.copy_from_slice(&ws.y_new);
-        0
-    }
-
-    fn stiff(&self) -> bool {
-        self.watch.stiff()
     }
 }

@@ -16,6 +16,7 @@
 mod dopri5;
 mod driver;
 mod event;
+mod explicit_rk;
 mod kernel;
 mod linalg;
 mod rk4;

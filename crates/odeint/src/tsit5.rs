@@ -12,16 +12,14 @@
 //! 1.06·10⁻³ against 1.18·10⁻³ (computed from the coefficients in 40-digit arithmetic;
 //! docs/numerics.md, "Tsitouras 5(4)").
 //!
-//! Workspace use: `k[0..7]` the stages k1..k7, `aux[0]` the error estimate, `y_stage` the
-//! sixth stage's argument (at `c_6 = 1`, kept to the end of the step for the stiffness test,
-//! [`crate::stiffness`], as with Dormand-Prince). The dense output reads the stages
-//! directly, so it needs no preparation: `y(t + θh) = y + h Σ_i b_i(θ) k_i` with the
-//! paper's quartic weights `b_i(θ)`, `b_i(1) = b_i`.
+//! The step, its error estimate, the step-size factors and the stiffness test are the
+//! shared seven-stage FSAL kernel's ([`crate::explicit_rk`], as for Dormand-Prince); this
+//! module gives the tableau and the dense output, which reads the stages directly, so it
+//! needs no preparation: `y(t + θh) = y + h Σ_i b_i(θ) k_i` with the paper's quartic
+//! weights `b_i(θ)`, `b_i(1) = b_i`.
 
-use crate::kernel::Kernel;
-use crate::stiffness::StiffnessWatch;
-use crate::tolerance::error_norm;
-use crate::{OdeSystem, Workspace};
+use crate::explicit_rk::{FsalKernel, Pair};
+use crate::Workspace;
 
 pub(crate) const C2: f64 = 0.161;
 pub(crate) const C3: f64 = 0.327;
@@ -90,114 +88,28 @@ pub(crate) const R: [[f64; 4]; 7] = [
     [0.0, 1.5, -4.0, 2.5],
 ];
 
+/// Tsitouras's tableau and dense output.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Tsitouras;
+
 /// The Tsitouras 5(4) kernel with the stiffness test of [`crate::stiffness`].
-#[derive(Debug, Clone, Copy, Default)]
-pub(crate) struct Tsit5Kernel {
-    /// Step of the last attempt.
-    h: f64,
-    /// Stiffness test.
-    watch: StiffnessWatch,
-}
+pub(crate) type Tsit5Kernel = FsalKernel<Tsitouras>;
 
-impl Kernel for Tsit5Kernel {
-    const ORDER: i32 = 5;
+impl Pair for Tsitouras {
+    const C: [f64; 4] = [C2, C3, C4, C5];
+    const A2: f64 = A21;
+    const A3: [f64; 2] = [A31, A32];
+    const A4: [f64; 3] = [A41, A42, A43];
+    const A5: [f64; 4] = [A51, A52, A53, A54];
+    const A6: [f64; 5] = [A61, A62, A63, A64, A65];
+    const B: [f64; 6] = [B1, B2, B3, B4, B5, B6];
+    const E: [f64; 7] = [E1, E2, E3, E4, E5, E6, E7];
 
-    fn start<S: OdeSystem + ?Sized>(&mut self, sys: &S, t: f64, ws: &mut Workspace) -> usize {
-        self.watch.reset();
-        sys.rhs(t, &ws.y, &mut ws.k[0]);
-        1
-    }
-
-    fn attempt<S: OdeSystem + ?Sized>(
-        &mut self,
-        sys: &S,
-        t: f64,
-        h: f64,
-        rtol: f64,
-        ws: &mut Workspace,
-    ) -> (f64, usize) {
-        let Workspace {
-            y,
-            y_new: y1,
-            y_stage: ys,
-            k,
-            aux,
-            atol,
-            ..
-        } = ws;
-        let [k1, k2, k3, k4, k5, k6, k7] = k;
-        let err = &mut aux[0];
-        let n = y.len();
-        self.h = h;
-        for i in 0..n {
-            ys[i] = y[i] + h * A21 * k1[i];
-        }
-        sys.rhs(t + C2 * h, ys, k2);
-        for i in 0..n {
-            ys[i] = y[i] + h * (A31 * k1[i] + A32 * k2[i]);
-        }
-        sys.rhs(t + C3 * h, ys, k3);
-        for i in 0..n {
-            ys[i] = y[i] + h * (A41 * k1[i] + A42 * k2[i] + A43 * k3[i]);
-        }
-        sys.rhs(t + C4 * h, ys, k4);
-        for i in 0..n {
-            ys[i] = y[i] + h * (A51 * k1[i] + A52 * k2[i] + A53 * k3[i] + A54 * k4[i]);
-        }
-        sys.rhs(t + C5 * h, ys, k5);
-        for i in 0..n {
-            ys[i] =
-                y[i] + h * (A61 * k1[i] + A62 * k2[i] + A63 * k3[i] + A64 * k4[i] + A65 * k5[i]);
-        }
-        sys.rhs(t + h, ys, k6);
-        for i in 0..n {
-            y1[i] = y[i]
-                + h * (B1 * k1[i] + B2 * k2[i] + B3 * k3[i] + B4 * k4[i] + B5 * k5[i] + B6 * k6[i]);
-        }
-        sys.rhs(t + h, y1, k7);
-        for i in 0..n {
-            err[i] = h
-                * (E1 * k1[i]
-                    + E2 * k2[i]
-                    + E3 * k3[i]
-                    + E4 * k4[i]
-                    + E5 * k5[i]
-                    + E6 * k6[i]
-                    + E7 * k7[i]);
-        }
-        let e = error_norm(err, y, y1, rtol, atol);
-        let finite = e.is_finite() && y1.iter().all(|v| v.is_finite());
-        (if finite { e } else { f64::INFINITY }, 6)
-    }
-
-    fn reject_factor(&self, e: f64) -> f64 {
-        if e.is_finite() {
-            (0.9 * e.powf(-0.2)).clamp(0.2, 1.0)
-        } else {
-            0.1
-        }
-    }
-
-    fn accept_factor(&self, e: f64, last_rejected: bool) -> f64 {
-        let fac = (0.9 * e.max(1e-10).powf(-0.2)).clamp(0.2, 5.0);
-        if last_rejected {
-            fac.min(1.0)
-        } else {
-            fac
-        }
-    }
-
-    fn prepare_dense<S: OdeSystem + ?Sized>(
-        &mut self,
-        _sys: &S,
-        _t: f64,
-        _h: f64,
-        _ws: &mut Workspace,
-    ) -> usize {
+    fn prepare_dense(_h: f64, _ws: &mut Workspace) -> usize {
         0
     }
 
-    fn dense(&self, theta: f64, h: f64, ws: &mut Workspace) {
+    fn dense(theta: f64, h: f64, ws: &mut Workspace) {
         let Workspace { y, y_out, k, .. } = ws;
         let mut w = [0.0; 7];
         for (wi, r) in w.iter_mut().zip(&R) {
@@ -214,23 +126,6 @@ impl Kernel for Tsit5Kernel {
                     + w[5] * k6[i]
                     + w[6] * k7[i]);
         }
-    }
-
-    fn accept<S: OdeSystem + ?Sized>(
-        &mut self,
-        _sys: &S,
-        _t_new: f64,
-        ws: &mut Workspace,
-    ) -> usize {
-        let [k1, .., k6, k7] = &mut ws.k;
-        self.watch.observe(self.h, k6, k7, &ws.y_stage, &ws.y_new);
-        k1.copy_from_slice(k7);
-        ws.y.copy_from_slice(&ws.y_new);
-        0
-    }
-
-    fn stiff(&self) -> bool {
-        self.watch.stiff()
     }
 }
 
