@@ -37,38 +37,7 @@ use nalgebra::{Vector3, Vector6};
 /// ([`Workspace::mass_matrix`]).
 pub(crate) fn crba(model: &Model, ws: &mut Workspace) {
     let bodies = model.bodies();
-    for (i, (body, link)) in bodies.iter().zip(&model.links).enumerate() {
-        let dofs = link.v_offset..link.v_offset + link.nv;
-        match body.parent {
-            None => {
-                ws.x_root[i] = SpatialTransform::identity();
-                ws.ic[i] = link.rigid_inertia;
-                for (k, s) in ws.cdof[dofs].iter_mut().enumerate() {
-                    *s = link.subspace.column(k).into_owned();
-                }
-            }
-            Some(p) => {
-                let x = if bodies[p].parent.is_none() {
-                    ws.x_up[i]
-                } else {
-                    ws.x_up[i].after(&ws.x_root[p])
-                };
-                ws.x_root[i] = x;
-                ws.ic[i] = if body.mass == 0.0 {
-                    RigidInertia::zero()
-                } else {
-                    RigidInertia::body_in(
-                        body.mass,
-                        &body.com,
-                        &body.inertia,
-                        link.inertia_diagonal,
-                        &x,
-                    )
-                };
-                subspace_in_root(&body.joint, &x, &mut ws.cdof[dofs]);
-            }
-        }
-    }
+    bodies_in_root_frames(model, ws);
     for (i, body) in bodies.iter().enumerate().rev() {
         if let Some(p) = body.parent {
             let ic = ws.ic[i];
@@ -108,6 +77,46 @@ pub(crate) fn crba(model: &Model, ws: &mut Workspace) {
     }
     ws.h_dense_current = false;
     ws.h_current = true;
+}
+
+/// Every body's transform from its tree's root body `i X r` into `ws.x_root`, its own
+/// inertia in root coordinates `Ī_i` into `ws.ic` (zero for a massless body), and its
+/// motion subspace columns in root coordinates `S̄` into `ws.cdof` (module docs): what CRBA
+/// and the articulated-body algorithm ([`crate::aba`]) both start from.
+pub(crate) fn bodies_in_root_frames(model: &Model, ws: &mut Workspace) {
+    let bodies = model.bodies();
+    for (i, (body, link)) in bodies.iter().zip(&model.links).enumerate() {
+        let dofs = link.v_offset..link.v_offset + link.nv;
+        match body.parent {
+            None => {
+                ws.x_root[i] = SpatialTransform::identity();
+                ws.ic[i] = link.rigid_inertia;
+                for (k, s) in ws.cdof[dofs].iter_mut().enumerate() {
+                    *s = link.subspace.column(k).into_owned();
+                }
+            }
+            Some(p) => {
+                let x = if bodies[p].parent.is_none() {
+                    ws.x_up[i]
+                } else {
+                    ws.x_up[i].after(&ws.x_root[p])
+                };
+                ws.x_root[i] = x;
+                ws.ic[i] = if body.mass == 0.0 {
+                    RigidInertia::zero()
+                } else {
+                    RigidInertia::body_in(
+                        body.mass,
+                        &body.com,
+                        &body.inertia,
+                        link.inertia_diagonal,
+                        &x,
+                    )
+                };
+                subspace_in_root(&body.joint, &x, &mut ws.cdof[dofs]);
+            }
+        }
+    }
 }
 
 /// The 21 packed entries of a floating root's rows (row `m` at `m (m + 1) / 2`, columns

@@ -34,6 +34,7 @@
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
+mod aba;
 mod crba;
 mod dynamics;
 mod energy;
@@ -46,6 +47,7 @@ mod model;
 pub mod spatial;
 mod workspace;
 
+pub use aba::forward_dynamics_aba;
 pub use dynamics::{
     bias_forces, forward_dynamics, inverse_dynamics, mass_matrix, solve_mass_matrix,
 };

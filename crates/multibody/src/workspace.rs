@@ -9,7 +9,7 @@ use crate::inertia::RigidInertia;
 use crate::ltdl::NONE;
 use crate::model::Model;
 use crate::spatial::{spatial, SpatialTransform};
-use nalgebra::{DMatrix, DVector, Vector3, Vector6};
+use nalgebra::{DMatrix, DVector, Matrix6, Vector3, Vector6};
 
 /// Per-evaluation state of one [`Model`]: transforms, velocities, accelerations, forces,
 /// composite inertias, mass matrix (dense and packed), bias vector, accelerations and the
@@ -55,6 +55,20 @@ pub struct Workspace {
     /// Dof parent array of the model whose sparsity pattern `h` holds (its other entries
     /// are zero).
     pub(crate) h_pattern: Vec<usize>,
+    /// Articulated-body algorithm (`forward_dynamics_aba`), in each tree's root frame:
+    /// body velocities `v̄_i`.
+    pub(crate) aba_v: Vec<Vector6<f64>>,
+    /// Velocity-product accelerations `c̄_i` (the bias forces `p^A_i` use `force`, the
+    /// accelerations `acc`).
+    pub(crate) aba_c: Vec<Vector6<f64>>,
+    /// `I^A_i`.
+    pub(crate) aba_ia: Vec<Matrix6<f64>>,
+    /// `U_i = I^A_i S_i` of a one-dof joint.
+    pub(crate) aba_u: Vec<Vector6<f64>>,
+    /// `D_i = S_i^T U_i` of a one-dof joint.
+    pub(crate) aba_d: Vec<f64>,
+    /// `u_i = tau_i - S_i^T p^A_i` of a one-dof joint.
+    pub(crate) aba_uj: Vec<f64>,
     /// Whether `h` and `hs` hold the mass matrix at the current kinematics.
     pub(crate) h_current: bool,
     /// Whether the dense `h` holds the packed `hs` (else [`Workspace::mass_matrix`]
@@ -88,6 +102,12 @@ impl Workspace {
             hs: vec![0.0; nv * (nv + 1) / 2],
             ldl: vec![0.0; nv * (nv + 1) / 2],
             h_pattern: model.dofs.parent.clone(),
+            aba_v: vec![Vector6::zeros(); nb],
+            aba_c: vec![Vector6::zeros(); nb],
+            aba_ia: vec![Matrix6::zeros(); nb],
+            aba_u: vec![Vector6::zeros(); nb],
+            aba_d: vec![0.0; nb],
+            aba_uj: vec![0.0; nb],
             h_current: false,
             h_dense_current: true,
             kinematics_ready: false,

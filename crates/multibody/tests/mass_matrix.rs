@@ -3,13 +3,14 @@
 //! consistent with the body-sum kinetic energy 1/2 v^T H v; and the RNEA bias forces obey
 //! the power balance v^T C = d/dt(potential) + 1/2 v^T Hdot v (Hdot by central differences);
 //! forward dynamics inverts inverse dynamics on branched trees with fixed joints and
-//! agrees with a direct Cholesky solve of H.
+//! agrees with a direct Cholesky solve of H; the articulated-body algorithm gives the same
+//! accelerations with external forces.
 #[path = "support/random_tree.rs"]
 mod random_tree;
 
 use multibody::{
-    bias_forces, forward_dynamics, inverse_dynamics, kinetic_energy, mass_matrix, potential_energy,
-    update_kinematics, Model, Workspace,
+    bias_forces, forward_dynamics, forward_dynamics_aba, inverse_dynamics, kinetic_energy,
+    mass_matrix, potential_energy, update_kinematics, Model, Workspace,
 };
 use nalgebra::{SymmetricEigen, Vector3};
 use proptest::prelude::*;
@@ -113,6 +114,35 @@ proptest! {
         for k in 0..nv {
             prop_assert!((got[k] - vdot[k]).abs() <= 1e-7 * scale, "vdot[{k}] {} vs {}", got[k], vdot[k]);
             prop_assert!((got[k] - dense[k]).abs() <= 1e-9 * scale, "vdot[{k}] {} vs dense {}", got[k], dense[k]);
+        }
+    }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(300))]
+    #[test]
+    fn the_articulated_body_algorithm_equals_crba_forward_dynamics(
+        bodies in prop::collection::vec(random_body(), 1..9),
+        seed in 0u64..1000,
+    ) {
+        let (model, q, v) = random_tree(&bodies);
+        let nv = model.nv();
+        let mut ws = Workspace::new(&model);
+        let tau: Vec<f64> = (0..nv).map(|k| ((seed + 5 * k as u64) % 11) as f64 - 5.0).collect();
+        update_kinematics(&model, &mut ws, &q, &v).unwrap();
+        // a force and a moment on every body, at a point off its origin
+        for b in 0..model.num_bodies() {
+            let s = (seed + b as u64) as f64;
+            let force = Vector3::new(s.sin(), (2.0 * s).cos(), 0.5 - (s * 0.3).sin()) * 20.0;
+            let point = Vector3::new(0.1 * s.cos(), -0.2, 0.3 * (s * 0.7).sin());
+            ws.apply_force_world(b, &force, &point);
+            ws.apply_moment_world(b, &Vector3::new(0.0, 3.0 * s.cos(), -1.0));
+        }
+        let crba = forward_dynamics(&model, &mut ws, &tau).unwrap().clone();
+        let aba = forward_dynamics_aba(&model, &mut ws, &tau).unwrap().clone();
+        let scale = 1.0 + crba.amax();
+        for k in 0..nv {
+            prop_assert!((aba[k] - crba[k]).abs() <= 1e-9 * scale, "vdot[{k}] ABA {} vs CRBA {}", aba[k], crba[k]);
         }
     }
 }

@@ -5,8 +5,9 @@
 mod vehicle;
 
 use multibody::{
-    bias_forces, forward_dynamics, inverse_dynamics, kinetic_energy, mass_matrix, potential_energy,
-    solve_mass_matrix, spatial_momentum, update_kinematics, Workspace,
+    bias_forces, forward_dynamics, forward_dynamics_aba, inverse_dynamics, kinetic_energy,
+    mass_matrix, potential_energy, solve_mass_matrix, spatial_momentum, update_kinematics,
+    Workspace,
 };
 use nalgebra::{UnitQuaternion, Vector3};
 use std::alloc::{GlobalAlloc, Layout, System};
@@ -66,6 +67,7 @@ fn right_hand_side_evaluation_does_not_allocate() {
         ws.apply_moment_world(0, &Vector3::new(100.0, 0.0, 0.0));
         springs(&model, &TRUCK_SPRINGS, &q, &mut tau);
         forward_dynamics(&model, &mut ws, &tau).unwrap();
+        forward_dynamics_aba(&model, &mut ws, &tau).unwrap();
         mass_matrix(&model, &mut ws).unwrap();
         bias_forces(&model, &mut ws).unwrap();
         inverse_dynamics(&model, &mut ws, &tau, &mut out).unwrap();

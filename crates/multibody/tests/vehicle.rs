@@ -1,4 +1,5 @@
-//! Vehicle-like tree checks: energy conservation with suspension springs under gravity,
+//! Vehicle-like tree checks: energy conservation with suspension springs under gravity (by
+//! CRBA and by the articulated-body algorithm, also across a massless hitch),
 //! equivalence of point-force and force + moment application, and static equilibrium of
 //! a body on four vertical point springs.
 #[path = "support/rk4.rs"]
@@ -7,8 +8,8 @@ mod rk4;
 mod vehicle;
 
 use multibody::{
-    forward_dynamics, kinetic_energy, potential_energy, update_kinematics, Body, Joint, Model,
-    ModelBuilder, Workspace,
+    forward_dynamics, forward_dynamics_aba, kinetic_energy, potential_energy, update_kinematics,
+    Body, Joint, Model, ModelBuilder, Workspace,
 };
 use nalgebra::{Isometry3, Matrix3, UnitQuaternion, Vector3};
 use rk4::rk4_step;
@@ -29,10 +30,18 @@ fn perturbed_state(orientation: UnitQuaternion<f64>) -> (Vec<f64>, Vec<f64>) {
     (q, v)
 }
 
+/// A forward-dynamics function: [`forward_dynamics`] or [`forward_dynamics_aba`].
+type ForwardDynamics = for<'w> fn(
+    &Model,
+    &'w mut Workspace,
+    &[f64],
+) -> Result<&'w nalgebra::DVector<f64>, multibody::DynamicsError>;
+
 /// Integrates `steps` RK4 steps of 1 ms with the joint springs and returns the largest
 /// |E(t) - E(0)| relative to the initial kinetic + spring energy, E = kinetic +
 /// gravitational + spring.
 fn energy_drift(
+    fd: ForwardDynamics,
     model: &Model,
     spring_list: &[(&str, f64)],
     q: &mut [f64],
@@ -55,7 +64,7 @@ fn energy_drift(
     let mut f = |ws: &mut Workspace, q: &[f64], v: &[f64], vd: &mut [f64]| {
         update_kinematics(model, ws, q, v).unwrap();
         springs(model, spring_list, q, &mut tau_rhs);
-        vd.copy_from_slice(forward_dynamics(model, ws, &tau_rhs).unwrap().as_slice());
+        vd.copy_from_slice(fd(model, ws, &tau_rhs).unwrap().as_slice());
     };
     let mut max_rel = 0.0_f64;
     for _ in 0..steps {
@@ -71,7 +80,14 @@ fn sprung_truck_conserves_total_energy() {
     let model = truck(GRAVITY);
     assert_eq!((model.nq(), model.nv()), (15, 14));
     let (mut q, mut v) = perturbed_state(UnitQuaternion::from_euler_angles(0.1, 0.05, 0.3));
-    let drift = energy_drift(&model, &TRUCK_SPRINGS, &mut q, &mut v, 3_000);
+    let drift = energy_drift(
+        forward_dynamics,
+        &model,
+        &TRUCK_SPRINGS,
+        &mut q,
+        &mut v,
+        3_000,
+    );
     assert!(
         drift < 1e-6,
         "energy drift {drift:e} of the initial kinetic + spring energy"
@@ -178,11 +194,24 @@ fn articulated_dump_truck_with_massless_hitch_conserves_total_energy() {
         ("carrier_fl", 3.0e5),
         ("carrier_fr", 3.0e5),
     ];
-    let (mut q, mut v) = perturbed_state(UnitQuaternion::from_euler_angles(-0.1, 0.05, 1.0));
-    let drift = energy_drift(&model, &spring_list, &mut q, &mut v, 3_000);
+    let (q0, v0) = perturbed_state(UnitQuaternion::from_euler_angles(-0.1, 0.05, 1.0));
+    for fd in [forward_dynamics as ForwardDynamics, forward_dynamics_aba] {
+        let (mut q, mut v) = (q0.clone(), v0.clone());
+        let drift = energy_drift(fd, &model, &spring_list, &mut q, &mut v, 3_000);
+        assert!(
+            drift < 1e-6,
+            "energy drift {drift:e} of the initial kinetic + spring energy"
+        );
+    }
+    // and the two algorithms agree at the perturbed state
+    let mut ws = Workspace::new(&model);
+    update_kinematics(&model, &mut ws, &q0, &v0).unwrap();
+    let tau: Vec<f64> = (0..model.nv()).map(|k| 100.0 * k as f64 - 500.0).collect();
+    let crba = forward_dynamics(&model, &mut ws, &tau).unwrap().clone();
+    let aba = forward_dynamics_aba(&model, &mut ws, &tau).unwrap();
     assert!(
-        drift < 1e-6,
-        "energy drift {drift:e} of the initial kinetic + spring energy"
+        (aba - &crba).amax() < 1e-10 * (1.0 + crba.amax()),
+        "{aba} vs {crba}"
     );
 }
 

@@ -164,8 +164,9 @@ fn push_sample(
 }
 
 /// The sprung cg's horizontal lateral acceleration in the heading frame and the specific
-/// force along the sprung y axis (m/s²), from the forward dynamics at the kinematics and
-/// external forces in `ws` (NaN if the dynamics fail).
+/// force along the sprung y axis (m/s²), from the forward dynamics (the articulated-body
+/// algorithm, as in the right-hand side) at the kinematics and external forces in `ws`
+/// (NaN if the dynamics fail).
 fn sprung_accelerations(
     vehicle: &TruckVehicle,
     ws: &mut multibody::Workspace,
@@ -174,7 +175,7 @@ fn sprung_accelerations(
 ) -> (f64, f64) {
     let model = &vehicle.model;
     let mut vdot = [0.0; NV];
-    match multibody::forward_dynamics(model, ws, tau) {
+    match multibody::forward_dynamics_aba(model, ws, tau) {
         Ok(a) => vdot.copy_from_slice(a.as_slice()),
         Err(_) => return (f64::NAN, f64::NAN),
     }

@@ -5,7 +5,7 @@
 //! ([`crate::suspension`]); per tire the contact on its cached effective track, the
 //! normal force of Eq 2.1, the lateral force of Eqs 2.5-2.6 from the lagged contact
 //! velocity, the rear drive share; forces applied at the contact points; forward dynamics
-//! (CRBA + RNEA + Cholesky); `qdot` from `v`; the lag of Eq 2.7; the PI integral; the
+//! (the articulated-body algorithm, `multibody::forward_dynamics_aba`); `qdot` from `v`; the lag of Eq 2.7; the PI integral; the
 //! path coordinate `ds/dt = v . h` (h the sprung-mass heading). Nothing allocates.
 //!
 //! A dynamics failure (a mass matrix that is not positive definite) writes NaN
@@ -531,7 +531,7 @@ impl odeint::OdeSystem for TruckVehicle {
             dydt.fill(f64::NAN);
             return;
         };
-        let Ok(vdot) = multibody::forward_dynamics(&self.model, &mut ws, &tau) else {
+        let Ok(vdot) = multibody::forward_dynamics_aba(&self.model, &mut ws, &tau) else {
             dydt.fill(f64::NAN);
             return;
         };
