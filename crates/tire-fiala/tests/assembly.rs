@@ -406,38 +406,17 @@ fn the_constructors_name_the_bad_field() {
     let tracks: Arc<[TireTrack]> = Arc::new([track(&|_: f64| 0.0, EnvelopeMethod::CircleLine)]);
     let law = || HandlingLaw::Fiala(FialaLaw::new(&p).unwrap());
     let vertical = || VerticalContact::from_params(&p).unwrap();
-    let err = |r: Result<TireAssembly, tire_fiala::TireError>| r.unwrap_err().to_string();
-    assert!(err(TireAssembly::new(
-        tracks.clone(),
-        &[],
-        1.0,
-        vertical(),
-        law()
-    ))
-    .contains("track_of"));
-    assert!(err(TireAssembly::new(
-        tracks.clone(),
-        &[0; 9],
-        1.0,
-        vertical(),
-        law()
-    ))
-    .contains("track_of"));
-    assert!(err(TireAssembly::new(
-        tracks.clone(),
-        &[0, 1],
-        1.0,
-        vertical(),
-        law()
-    ))
-    .contains("track_of"));
-    let e = err(TireAssembly::new(
-        tracks.clone(),
-        &[0],
-        0.0,
-        vertical(),
-        law(),
-    ));
+    let refused = |track_of: &[usize], radius: f64| {
+        TireAssembly::new(tracks.clone(), track_of, radius, vertical(), law())
+            .unwrap_err()
+            .to_string()
+    };
+    // no tire, more than MAX_TIRES, a track that is not there, a radius of zero
+    for track_of in [&[][..], &[0; 9], &[0, 1]] {
+        let e = refused(track_of, 1.0);
+        assert!(e.contains("track_of"), "{e}");
+    }
+    let e = refused(&[0], 0.0);
     assert!(e.contains("unloaded_radius_m"), "{e}");
     let e = LinearCorneringLaw::new(-1.0, 0.6).unwrap_err().to_string();
     assert!(e.contains("cornering_coefficient_per_rad"), "{e}");
