@@ -1,12 +1,15 @@
 //! Cost of one force evaluation (target well under 100 ns), of one enveloping contact per
-//! wheel per integration step on a rough polyline profile, and of one evaluation of the
-//! whole tire assembly on a rough terrain.
+//! wheel per integration step on a rough polyline profile, and of one tire of the tire
+//! assembly (contact on its cached track, Fiala law) per wheel per integration step.
 
 use criterion::{criterion_group, criterion_main, Criterion};
+use nalgebra::Vector3;
 use std::hint::black_box;
+use std::sync::Arc;
 use tire_fiala::{
-    Envelope, EnvelopeMethod, Fiala, HandlingModel, PolylineProfile, TireAssembly, TireParams,
-    WheelInput,
+    EffectiveTrack, Envelope, EnvelopeMethod, Fiala, FialaLaw, HandlingLaw, HandlingModel,
+    PathFrame, PolylineProfile, TireAssembly, TireInput, TireParams, TireTrack, Track,
+    VerticalContact, Wheel,
 };
 use vehicle_components::{Component, Terrain, DEFAULT_FRICTION};
 
@@ -62,26 +65,45 @@ impl Terrain for Rough {
 }
 
 fn assembly(c: &mut Criterion) {
+    let p = TireParams::nominal();
+    let envelope = Envelope::new(EnvelopeMethod::TandemCams, 1.0, 0.02).unwrap();
+    let profile = Track {
+        terrain: Rough,
+        y: 1.14,
+    };
+    let track = EffectiveTrack::build(&profile, (0.0, 200.0), 0.05, &envelope, 0.08).unwrap();
     let tire = TireAssembly::new(
-        &TireParams::nominal(),
-        EnvelopeMethod::TandemCams,
-        0.02,
-        Rough,
+        Arc::new([TireTrack::Static(track)]),
+        &[0],
+        1.0,
+        VerticalContact::from_params(&p).unwrap(),
+        HandlingLaw::Fiala(FialaLaw::new(&p).unwrap()),
     )
     .unwrap();
+    let path = PathFrame {
+        direction: Vector3::x(),
+        origin: Vector3::zeros(),
+        coordinate: 0.0,
+    };
     let mut x = 10.0;
     let mut d = [0.0; 2];
-    c.bench_function("tire_assembly_cams_per_wheel_step", |b| {
+    c.bench_function("tire_assembly_cached_per_wheel_step", |b| {
         b.iter(|| {
             x += 0.01;
             if x > 190.0 {
                 x = 10.0;
             }
-            let input = WheelInput {
-                position: [x, 1.14, 0.92],
-                velocity: [10.0, 0.3, 0.0],
-                heading: 0.05,
+            let wheel = Wheel {
+                centre: Vector3::new(x, 1.14, 0.92),
+                velocity: Vector3::new(10.0, 0.3, 0.0),
+                heading: 0.05f64.sin_cos(),
+                axle: Vector3::new(-0.05f64.sin(), 0.05f64.cos(), 0.0),
                 spin: 10.5,
+            };
+            let input = TireInput {
+                contact: tire.contact(0, black_box(&wheel), &path, None),
+                wheel,
+                drive_force: 0.0,
             };
             black_box(tire.evaluate(black_box(&input), black_box(&[0.01, 0.02]), &mut d))
         })

@@ -1,7 +1,11 @@
 //! The tires of Chapter 2: circle-line enveloping on the two-track terrain (Eqs 2.2-2.4),
 //! vertical contact with loss of contact (Eq 2.1), linear cornering with the stiffness
 //! interpolated against the instantaneous load (Eq 2.5) and lateral relaxation
-//! (Eqs 2.6-2.7).
+//! (Eqs 2.6-2.7). The vehicle evaluates them through `tire_fiala::TireAssembly` with the
+//! linear cornering law (`tire_fiala::LinearCorneringLaw`: `F_y = -k_ty(F_z) alpha`,
+//! `alpha = atan(V_sy / |V_x|_eff)`, `k_ty = coefficient F_z` the line through the
+//! Table 2.3 point, the lag of Eq 2.7 on the lateral contact velocity), the same assembly
+//! as the 3-D vehicle's; this module builds its enveloping caches.
 //!
 //! Terrain: every left tire runs on the left track `q(s)` of the two-track terrain, every
 //! right tire on the right track `p(s)` (the two tracks of Eq 2.10; the chapter gives no
@@ -43,38 +47,4 @@ pub fn circle_line_track<P: Profile + ?Sized>(
         &envelope,
         reference_deflection,
     )?)
-}
-
-/// Lateral force law of Eqs 2.5-2.6: `F_y = -k_ty(F_z) alpha`, `alpha = atan(V_sy / |V_x|)`
-/// with `k_ty = coefficient * F_z` (the line through the Table 2.3 point), `|V_x|` given as
-/// `regularised_speed` (`tire_fiala::regularised_speed` of the forward speed, which the
-/// lag of Eq 2.7 takes too). Zero out of contact (`F_z = 0`). Linear in
-/// `F_z` of either sign: a tire frozen in contact past its lift-off inside one step
-/// (docs/numerics.md, "Kinks") keeps a smooth law; Eq 2.1 never gives a negative load.
-#[inline]
-pub fn lateral_force(
-    coefficient_per_rad: f64,
-    normal_force: f64,
-    v_sy: f64,
-    regularised_speed: f64,
-) -> f64 {
-    let alpha = (v_sy / regularised_speed).atan();
-    -coefficient_per_rad * normal_force * alpha
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn lateral_force_is_odd_in_slip_and_linear_in_load() {
-        let f = lateral_force(57.3, 140e3, 0.1, 10.0);
-        assert!(f < 0.0);
-        assert!((f + 57.3 * 140e3 * 0.01_f64.atan()).abs() < 1e-9 * f.abs());
-        assert_eq!(lateral_force(57.3, 140e3, -0.1, 10.0), -f);
-        assert_eq!(lateral_force(57.3, 0.0, 0.1, 10.0), 0.0);
-        let half = lateral_force(57.3, 70e3, 0.1, 10.0);
-        assert!((2.0 * half - f).abs() < 1e-9 * f.abs());
-        assert_eq!(lateral_force(57.3, -140e3, 0.1, 10.0), -f);
-    }
 }

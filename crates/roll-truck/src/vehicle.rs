@@ -2,22 +2,27 @@
 //! `[q (11), v (10), V_sy (6), speed-error integral, path coordinate]`.
 //!
 //! One right-hand-side evaluation: kinematics of the tree; strut forces in joint space
-//! ([`crate::suspension`]); per tire the contact on its cached effective track, the
-//! normal force of Eq 2.1, the lateral force of Eqs 2.5-2.6 from the lagged contact
-//! velocity, the rear drive share; forces applied at the contact points; forward dynamics
-//! (the articulated-body algorithm, `multibody::forward_dynamics_aba`); `qdot` from `v`; the lag of Eq 2.7; the PI integral; the
-//! path coordinate `ds/dt = v . h` (h the sprung-mass heading). Nothing allocates.
+//! ([`crate::suspension`]); the tires through `tire_fiala::TireAssembly` (linear cornering
+//! law): per tire the contact on its side's cached effective track and the normal force of
+//! Eq 2.1 (or its frozen piece), then, with the rear drive shared by the rear tires' loads,
+//! the lateral force of Eqs 2.5-2.6 from the lagged contact velocity and the lag of
+//! Eq 2.7; forces applied at the contact points; forward dynamics (the articulated-body
+//! algorithm, `multibody::forward_dynamics_aba`); `qdot` from `v`; the PI integral; the path
+//! coordinate `ds/dt = v . h` (h the sprung-mass heading). Nothing allocates.
 //!
 //! A dynamics failure (a mass matrix that is not positive definite) writes NaN
 //! derivatives, which the integrator reports as a divergence with time and state.
 
 use std::cell::{Cell, RefCell};
+use std::sync::Arc;
 
 use multibody::Workspace;
 use nalgebra::Vector3;
-use tire_fiala::relaxation::{contact_velocity_lag_rate, regularised_speed};
-use tire_fiala::{EffectiveTrack, LoadDeflectionTable, Track, VerticalContact};
-use vehicle_components::{StateInfo, StateLayout, Terrain};
+use tire_fiala::{
+    HandlingLaw, LinearCorneringLaw, LoadDeflectionTable, PathFrame, TireAssembly, TireInput,
+    TireTrack, Track, VerticalContact,
+};
+use vehicle_components::{Component, StateInfo, StateLayout, Terrain};
 
 use crate::driver::{RampSteer, SpeedController, SteerDirection};
 use crate::error::{positive, TruckError};
@@ -25,7 +30,7 @@ use crate::model::{body, build_tree, TireMount, NQ, NV};
 use crate::params::TruckParams;
 use crate::statics::Statics;
 use crate::suspension::Suspension;
-use crate::tires::{circle_line_track, lateral_force};
+use crate::tires::circle_line_track;
 
 /// Offsets of the state blocks: the plain indices of [`truck_states`], fixed at compile
 /// time so the right-hand side works on fixed-size arrays.
@@ -119,12 +124,8 @@ pub struct TireState {
     pub normal_force: [f64; 6],
     /// Lateral force F_y (N), Eq 2.5.
     pub lateral_force: [f64; 6],
-    /// Lateral velocity of the wheel centre V_y (m/s), the input of Eq 2.7.
-    pub lateral_velocity: [f64; 6],
-    /// Regularised magnitude `|V_x|_eff` of the wheel centre's forward velocity V_x (m/s,
-    /// `tire_fiala::regularised_speed`), the speed of the slip angle (Eq 2.6) and of the lag
-    /// (Eq 2.7).
-    pub regularised_speed: [f64; 6],
+    /// Rate of each tire's lagged lateral contact velocity (m/s^2), Eq 2.7.
+    pub lag_rate: [f64; 6],
     /// Tire deflection (m).
     pub deflection: [f64; 6],
     /// Sum of the horizontal tire forces along the heading's lateral axis (N).
@@ -180,10 +181,8 @@ pub struct TruckVehicle {
     pub(crate) mounts: [TireMount; 6],
     /// Names, units and typical magnitudes of the states ([`truck_states`]).
     states: StateLayout,
-    /// Effective tracks: left, right.
-    tracks: [EffectiveTrack; 2],
-    vertical: VerticalContact,
-    coefficient: f64,
+    /// The six tires on the two sides' effective tracks (left, right), linear cornering.
+    tires: TireAssembly,
     pub(crate) steer: RampSteer,
     speed: SpeedController,
     pub(crate) options: ModelOptions,
@@ -237,10 +236,22 @@ impl TruckVehicle {
             || build(half_width, deflection),
             || build(-half_width, deflection),
         );
-        let tracks = [left?, right?];
+        let tracks: Arc<[TireTrack]> =
+            Arc::new([TireTrack::Static(left?), TireTrack::Static(right?)]);
         let vertical = VerticalContact::new(
             LoadDeflectionTable::linear(params.tire_vertical_stiffness_n_per_m)?,
             params.tire_vertical_damping_n_s_per_m,
+        )?;
+        let law = LinearCorneringLaw::new(
+            params.cornering_coefficient_per_rad(),
+            params.relaxation_length_m,
+        )?;
+        let tires = TireAssembly::new(
+            tracks,
+            &mounts.map(|m| track_index(&m)),
+            params.tire_free_radius_m,
+            vertical,
+            HandlingLaw::LinearCornering(law),
         )?;
         let ws = RefCell::new(Workspace::new(&model));
         Ok(Self {
@@ -251,9 +262,7 @@ impl TruckVehicle {
             pieces: Cell::new(None),
             mounts,
             states: truck_states()?,
-            tracks,
-            vertical,
-            coefficient: params.cornering_coefficient_per_rad(),
+            tires,
             steer: RampSteer::new(params, options.direction),
             speed: SpeedController::new(params),
             options,
@@ -354,69 +363,53 @@ impl TruckVehicle {
             drive_force: self.speed.force(speed, y[state::PI]),
             ..TireState::default()
         };
-        let (k_t, c_t) = (
-            self.params.tire_vertical_stiffness_n_per_m,
-            self.params.tire_vertical_damping_n_s_per_m,
-        );
-        let mut centres = [Vector3::zeros(); 6];
-        let mut velocities = [Vector3::zeros(); 6];
-        let mut slopes = [(0.0, 1.0); 6];
-        let mut rear_load = 0.0;
-        for (i, m) in self.mounts.iter().enumerate() {
-            // the effective wheel centre: the column above the hanging point (zero length
-            // at the nominal roll centres)
-            let mut c = ws.point_position(m.body, &m.point);
-            c.z += m.column_m;
-            let vc = ws.point_velocity(m.body, &m.point);
-            let s = y[state::PATH] + (c - origin).dot(&h);
-            let contact = self.tracks[track_index(m)].contact(s, c.z);
-            let (sin, cos) = (contact.sin_slope, contact.cos_slope);
-            slopes[i] = (sin, cos);
-            let rate = vc.dot(&h) * sin - vc.z * cos;
-            let delta = contact.deflection;
-            out.contact_margin[i] = delta.min(delta + (c_t / k_t) * rate);
-            let fz = match pieces {
-                Some(p) if p.contact[i] => k_t * delta + c_t * rate,
-                Some(_) => 0.0,
-                None => self.vertical.normal_force(delta, rate),
-            };
-            out.normal_force[i] = fz;
-            out.deflection[i] = contact.deflection;
-            (centres[i], velocities[i]) = (c, vc);
-            if !m.front {
-                rear_load += fz;
-            }
-        }
         // wheel headings: the front wheels steered, the rear ones along the heading
         // by angle addition: psi + steer angle
         let (sin_s, cos_s) = self.steer.angle(t).sin_cos();
         let front = (h.y * cos_s + h.x * sin_s, h.x * cos_s - h.y * sin_s);
-        for (i, m) in self.mounts.iter().enumerate() {
-            let (sin_w, cos_w) = if m.front { front } else { (h.y, h.x) };
-            let (e_x, e_y) = (
-                Vector3::new(cos_w, sin_w, 0.0),
-                Vector3::new(-sin_w, cos_w, 0.0),
+        let path = PathFrame {
+            direction: h,
+            origin,
+            coordinate: y[state::PATH],
+        };
+        // the tires' inputs, filled in place: wheel and contact first (the rear tires'
+        // loads share the drive), then the drive force
+        let mut inputs = [TireInput::default(); 6];
+        let mut rear_load = 0.0;
+        for (i, (m, input)) in self.mounts.iter().zip(&mut inputs).enumerate() {
+            // the effective wheel centre: the column above the hanging point (zero length
+            // at the nominal roll centres)
+            let w = &mut input.wheel;
+            w.centre = ws.point_position(m.body, &m.point);
+            w.centre.z += m.column_m;
+            w.velocity = ws.point_velocity(m.body, &m.point);
+            w.heading = if m.front { front } else { (h.y, h.x) };
+            let frozen = pieces.map(|p| p.contact[i]);
+            let c = self.tires.contact(i, w, &path, frozen);
+            out.contact_margin[i] = self.tires.contact_margin(&c);
+            out.normal_force[i] = c.normal_force;
+            out.deflection[i] = c.track.deflection;
+            if !m.front {
+                rear_load += c.normal_force;
+            }
+            input.contact = c;
+        }
+        for (i, (m, input)) in self.mounts.iter().zip(&mut inputs).enumerate() {
+            // (written so a NaN load gives a NaN share, as the integrator expects)
+            if !(m.front || rear_load <= 0.0) {
+                input.drive_force = out.drive_force * out.normal_force[i] / rear_load;
+            }
+            let lag = state::LAG + i;
+            let tire = Component::evaluate(
+                &self.tires,
+                input,
+                &y[lag..lag + 1],
+                &mut out.lag_rate[i..i + 1],
             );
-            let vc = velocities[i];
-            let (v_x, v_y) = (vc.dot(&e_x), vc.dot(&e_y));
-            let fz = out.normal_force[i];
-            let u = regularised_speed(v_x);
-            let fy = lateral_force(self.coefficient, fz, y[state::LAG + i], u);
-            let fx = if m.front || rear_load <= 0.0 {
-                0.0
-            } else {
-                out.drive_force * fz / rear_load
-            };
-            let (sin, cos) = slopes[i];
-            let normal = Vector3::new(-sin * h.x, -sin * h.y, cos);
-            let tangent = Vector3::new(cos * e_x.x, cos * e_x.y, sin);
-            let force = normal * fz + e_y * fy + tangent * fx;
-            let lever = self.params.tire_free_radius_m - out.deflection[i].max(0.0);
-            let point = centres[i] - normal * lever;
+            // by value: the output's other fields, unused here, then need no memory
+            let (force, point) = (tire.force, tire.point);
             ws.apply_force_world(m.body, &force, &point);
-            out.lateral_force[i] = fy;
-            out.lateral_velocity[i] = v_y;
-            out.regularised_speed[i] = u;
+            out.lateral_force[i] = tire.contact.fy;
             out.lateral_total += force.dot(&lat);
         }
         Ok(out)
@@ -541,15 +534,7 @@ impl odeint::OdeSystem for TruckVehicle {
             &y[state::V..state::V + NV],
             &mut dydt[state::Q..state::Q + NQ],
         );
-        let sigma = self.params.relaxation_length_m;
-        for i in 0..6 {
-            dydt[state::LAG + i] = contact_velocity_lag_rate(
-                y[state::LAG + i],
-                tires.lateral_velocity[i],
-                tires.regularised_speed[i],
-                sigma,
-            );
-        }
+        dydt[state::LAG..state::LAG + 6].copy_from_slice(&tires.lag_rate);
         dydt[state::PI] = self.speed.error(tires.speed);
         dydt[state::PATH] = tires.path_rate;
     }

@@ -34,8 +34,9 @@ pub struct EffectiveTrack {
     slope: Vec<f64>,
 }
 
-/// The contact of one tire at one instant, from an [`EffectiveTrack`].
-#[derive(Debug, Clone, Copy, PartialEq)]
+/// The contact of one tire at one instant, from an [`EffectiveTrack`] (the default: all
+/// zero, a placeholder).
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct TrackContact {
     /// Normal penetration delta (m), positive in contact.
     pub deflection: f64,
@@ -253,6 +254,36 @@ impl InstantaneousTrack {
     pub fn range(&self) -> (f64, f64) {
         let end = self.s0 + (self.base.len() - 1) as f64 * self.ds;
         (self.s0 + self.radius, end - self.radius)
+    }
+}
+
+/// One tire's enveloping cache along its track: the contact at a reference deflection
+/// ([`EffectiveTrack`]) or the tandem cams spaced at the instantaneous deflection
+/// ([`InstantaneousTrack`]). What [`crate::TireAssembly`] reads per tire.
+#[derive(Debug, Clone, PartialEq)]
+pub enum TireTrack {
+    /// The contact cached at a reference deflection, the penetration linearised about it.
+    Static(EffectiveTrack),
+    /// The cams' base cached, the cams spaced on line at the instantaneous deflection.
+    Instantaneous(InstantaneousTrack),
+}
+
+impl TireTrack {
+    /// Contact of a wheel with centre height `z_c` at path coordinate `s`.
+    #[inline]
+    pub fn contact(&self, s: f64, z_c: f64) -> TrackContact {
+        match self {
+            Self::Static(t) => t.contact(s, z_c),
+            Self::Instantaneous(t) => t.contact(s, z_c),
+        }
+    }
+
+    /// Path range covered `(s_start, s_end)` (m).
+    pub fn range(&self) -> (f64, f64) {
+        match self {
+            Self::Static(t) => t.range(),
+            Self::Instantaneous(t) => t.range(),
+        }
     }
 }
 

@@ -7,9 +7,11 @@
 //!   cornering stiffness; [`cornering`]: the linear model of Eq 3.15, the Table 6.2
 //!   stiffness table and Eqs 1.3 / 1.4, all behind [`HandlingModel`];
 //! - [`relaxation`]: first-order slip lag (Eqs 2.7, 3.16) as state derivatives;
-//! - [`assembly`]: the four composed as one tire on any `vehicle_components::Terrain`
-//!   ([`TireAssembly`], a `vehicle_components::Component`);
-//! - [`effective_track`]: the enveloping precomputed along a track for vehicle runs;
+//! - [`effective_track`]: the enveloping precomputed along a track for vehicle runs
+//!   ([`TireTrack`]: at a reference or the instantaneous deflection);
+//! - [`assembly`]: a vehicle's tires as one `vehicle_components::Component`
+//!   ([`TireAssembly`]): their tracks, the vertical contact and a handling law (Chapter 2's
+//!   linear cornering or Chapter 6's Fiala) with its lags, forces in world axes;
 //! - [`vertical`]: point contact with lift-off (Eq 2.1) and a load-deflection table;
 //! - [`terrain`] and [`envelope`]: the single-track [`Profile`] under a wheel (from any
 //!   `vehicle_components::Terrain`) and the circle-line (Eqs 2.2-2.4) and tandem-cam
@@ -40,11 +42,14 @@ mod table;
 pub mod terrain;
 pub mod vertical;
 
-pub use assembly::{TireAssembly, TireOutput, WheelInput};
+pub use assembly::{
+    Contact, FialaLaw, HandlingLaw, LinearCorneringLaw, PathFrame, TireAssembly, TireContact,
+    TireInput, TireOutput, Wheel, ROLLING_SIGN_SPEED_M_S,
+};
 pub use cornering::{
     CorneringStiffnessTable, ExponentialCornering, LinearCornering, TractionDependentCornering,
 };
-pub use effective_track::{EffectiveTrack, InstantaneousTrack, TrackContact};
+pub use effective_track::{EffectiveTrack, InstantaneousTrack, TireTrack, TrackContact};
 pub use envelope::{EffectiveContact, Envelope, EnvelopeMethod, EnvelopedPoint};
 pub use error::TireError;
 pub use fiala::Fiala;

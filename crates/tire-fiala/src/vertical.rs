@@ -178,6 +178,11 @@ impl VerticalContact {
         &self.stiffness
     }
 
+    /// The damping coefficient c_t (N s/m).
+    pub fn damping(&self) -> f64 {
+        self.damping
+    }
+
     /// Normal force F_z (N) of Eq 2.1 at deflection `delta` (m, positive in compression)
     /// and deflection rate `delta_rate` (m/s); exactly 0 when `delta <= 0`.
     #[inline]

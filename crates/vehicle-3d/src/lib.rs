@@ -7,8 +7,8 @@
 //! - [`params`]: Table 6.1 and every documented assumption, [`registry`]: the same by name;
 //!   [`statics`]: the hand tire loads; [`model`]: the tree (14 DOF, 16 with the front
 //!   HPS, 18 with HPS on both axles; 4 more with the rear bogie);
-//! - [`steering`]: the struts between their 3-D mounts; [`tires`]: one tire on its cached
-//!   track; [`vehicle`]: the ODE system; [`simulate`](mod@simulate): a recorded run;
+//! - [`steering`]: the struts between their 3-D mounts; [`tires`]: the tires' cached
+//!   tracks (evaluated by `tire_fiala::TireAssembly`, Fiala law); [`vehicle`]: the ODE system; [`simulate`](mod@simulate): a recorded run;
 //!   [`channels`]: its channels in the record convention `afsv-v1`;
 //!   [`component_record`]: every component's own channels along a run (a `Recorder`);
 //! - [`scenarios`]: the design runs D1 (ride), D2 (roll), D3 (yaw) and their measures;

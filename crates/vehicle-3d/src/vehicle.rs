@@ -18,9 +18,10 @@
 //! 3. with the HPS, each strut's force from its travel `z_s = z_static + c` (c the carrier
 //!    coordinate, positive up = compression; `HpsStrut` through `Component::evaluate`),
 //!    acting between its unit and the carrier;
-//! 4. per tire ([`crate::tires`]): the contact on its effective track, the normal force with
-//!    damping (Eq 2.1 form with the nonlinear load curve), the slips and their lags, the
-//!    Fiala forces and moments, applied at the contact point;
+//! 4. per tire (`tire_fiala::TireAssembly` with the Fiala law on the tracks of
+//!    [`crate::tires`]): the contact on its effective track, the normal force with damping
+//!    (Eq 2.1 form with the nonlinear load curve), the slips and their lags, the Fiala
+//!    forces and moments, applied at the contact point;
 //! 5. one drive torque for all wheels from the PI law ([`crate::params::DriveParams`]);
 //! 6. with the path-following driver ([`VehicleOptions::driver`], section 3.4.1), the
 //!    steering-wheel rate `PathDriver::wheel_rate(theta_d, theta)` from the front-axle
@@ -38,7 +39,10 @@ use afs_hydraulics::{AfsSystem, StrutInput};
 use hps_emulsion::HpsStrut;
 use multibody::{Model, Workspace};
 use nalgebra::Vector3;
-use tire_fiala::{EnvelopeMethod, Fiala, LoadDeflectionTable, Relaxation, VerticalContact};
+use tire_fiala::{
+    EnvelopeMethod, FialaLaw, HandlingLaw, LoadDeflectionTable, PathFrame, TireAssembly,
+    TireContact, TireInput, VerticalContact, Wheel,
+};
 use vehicle_components::{Component, Course, PathDriver, StateLayout, SteerInput, Terrain};
 
 use crate::error::{finite, positive, rejected, VehicleError};
@@ -50,7 +54,7 @@ use crate::state_layout::{add_drive_states, add_tire_states, add_tree_states, ST
 use crate::statics::Statics;
 use crate::steering::{apply_strut_forces, strut_geometry, StrutGeometry};
 use crate::suspension::AxleStruts;
-use crate::tires::{tire_forces, CamSpacing, TireContact, TireInput, TireTracks};
+use crate::tires::{CamSpacing, TireTracks};
 
 mod energy;
 
@@ -270,11 +274,8 @@ pub struct Vehicle {
     rear_struts: Option<AxleStruts>,
     /// Each strut's states: the blocks the Rosenbrock-W method treats implicitly.
     stiff_blocks: Vec<Vec<usize>>,
-    /// Effective tracks per tire in [`crate::model::TIRE_NAMES`] order.
-    tracks: Arc<TireTracks>,
-    vertical: VerticalContact,
-    fiala: Fiala,
-    relaxation: Relaxation,
+    /// The tires on their effective tracks, Fiala law, in [`crate::model::tire_names`] order.
+    tires: TireAssembly,
     rolling_torque_n_m: f64,
 }
 
@@ -423,11 +424,19 @@ impl Vehicle {
         let (mean_load, mean_deflection) = statics.mean_tire_load_and_deflection(params);
         // the rolling-resistance moment of the tires is signed smoothly with the spin
         // (`tires::ROLLING_SIGN_SPEED_M_S`): so is its feed-forward
-        let rolling_sign = (options.speed_m_s / crate::tires::ROLLING_SIGN_SPEED_M_S).tanh();
+        let rolling_sign = (options.speed_m_s / tire_fiala::ROLLING_SIGN_SPEED_M_S).tanh();
         let rolling_torque_n_m = rolling_sign
             * params.tire.rolling_resistance_coefficient
             * (radius - mean_deflection)
             * mean_load;
+        let track_of: Vec<usize> = mounts.iter().map(TireMount::track).collect();
+        let tires = TireAssembly::new(
+            tracks.shared(),
+            &track_of,
+            radius,
+            vertical,
+            HandlingLaw::Fiala(FialaLaw::new(&params.tire)?),
+        )?;
         let ws = RefCell::new(Workspace::new(&model));
         Ok(Self {
             params: params.clone(),
@@ -446,10 +455,7 @@ impl Vehicle {
             front_struts,
             rear_struts,
             stiff_blocks: crate::stiff_block::strut_blocks(&offsets),
-            tracks,
-            vertical,
-            fiala: Fiala::new(&params.tire)?,
-            relaxation: Relaxation::from_params(&params.tire)?,
+            tires,
             rolling_torque_n_m,
         })
     }
@@ -605,39 +611,40 @@ impl Vehicle {
         let rot = ws.body_rotation(body::FRONT);
         let heading = rot[(1, 0)].atan2(rot[(0, 0)]);
         let h = Vector3::new(heading.cos(), heading.sin(), 0.0);
-        let origin = ws.body_position(body::FRONT);
+        let path = PathFrame {
+            direction: h,
+            origin: ws.body_position(body::FRONT),
+            coordinate: y[o.path],
+        };
         let mut speed = 0.0;
         // 1/4 exactly for four tires (the bits of the four-wheel vehicle)
         let share = 1.0 / self.mounts.len() as f64;
         for (i, m) in self.mounts.iter().enumerate() {
-            let c = ws.body_position(m.wheel);
-            let s = y[o.path] + (c - origin).dot(&h);
-            let at = o.tires + 2 * i;
-            let input = TireInput {
-                centre: c,
+            // the wheel's heading: the carrier's x axis projected on the ground; its axle:
+            // the carrier's y axis
+            let carrier = ws.body_rotation(m.carrier);
+            let heading = carrier[(1, 0)].atan2(carrier[(0, 0)]).sin_cos();
+            let axle = carrier.column(1).into_owned();
+            let omega =
+                ws.body_rotation(m.wheel) * multibody::spatial::angular(&ws.body_velocity(m.wheel));
+            let wheel = Wheel {
+                centre: ws.body_position(m.wheel),
                 velocity: ws.point_velocity(m.wheel, &Vector3::zeros()),
-                carrier_rotation: ws.body_rotation(m.carrier),
-                wheel_angular_velocity: ws.body_rotation(m.wheel)
-                    * multibody::spatial::angular(&ws.body_velocity(m.wheel)),
-                path_direction: h,
-                contact: self.tracks.contact(m.track(), s, c.z),
-                lag: [y[at], y[at + 1]],
+                heading,
+                axle,
+                spin: omega.dot(&axle),
             };
-            let out = tire_forces(
-                &input,
-                self.params.tire.unloaded_radius_m,
-                &self.vertical,
-                &self.fiala,
-            );
-            let rates = self.relaxation.rates(
-                input.lag,
-                out.contact.slip_steady,
-                out.contact.forward_velocity,
-            );
-            dydt[at] = rates[0];
-            dydt[at + 1] = rates[1];
-            ws.apply_force_world(m.wheel, &out.force, &out.point);
-            ws.apply_moment_world(m.wheel, &out.moment);
+            let input = TireInput {
+                contact: self.tires.contact(i, &wheel, &path, None),
+                wheel,
+                drive_force: 0.0,
+            };
+            let at = o.tires + 2 * i;
+            let out =
+                Component::evaluate(&self.tires, &input, &y[at..at + 2], &mut dydt[at..at + 2]);
+            let (force, point, moment) = (out.force, out.point, out.moment);
+            ws.apply_force_world(m.wheel, &force, &point);
+            ws.apply_moment_world(m.wheel, &moment);
             speed += share * out.contact.forward_velocity;
             snap.tires[i] = out.contact;
         }

@@ -37,7 +37,7 @@ impl Vehicle {
             snap.strut_disp_m[1],
             &y[o.afs..o.afs + 3],
         );
-        let table = self.vertical.load_deflection();
+        let table = self.tires.vertical().load_deflection();
         let tires: f64 = snap.tires[..self.mounts.len()]
             .iter()
             .map(|c| table.energy(c.deflection))
