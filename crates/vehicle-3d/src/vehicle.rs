@@ -27,7 +27,8 @@
 //!    steering-wheel rate `PathDriver::wheel_rate(theta_d, theta)` from the front-axle
 //!    centre (the mid-point of the front wheel centres) and the front unit's heading,
 //!    mapped into the course frame ([`course_frame`]);
-//! 7. forward dynamics (CRBA + RNEA + Cholesky), `qdot` from `v`.
+//! 7. forward dynamics (the articulated-body algorithm, `multibody::forward_dynamics_aba`),
+//!    `qdot` from `v`.
 //!
 //! A dynamics failure writes NaN derivatives, which the integrator reports as a divergence
 //! with time and state.
@@ -719,7 +720,7 @@ impl Vehicle {
         let mut tau = [0.0; MAX_DIM];
         let tau = &mut tau[..self.model.nv()];
         let snap = self.apply_forces(t, y, ws, tau, dydt)?;
-        let vdot = multibody::forward_dynamics(&self.model, ws, tau)?;
+        let vdot = multibody::forward_dynamics_aba(&self.model, ws, tau)?;
         dydt[o.v..o.afs].copy_from_slice(vdot.as_slice());
         self.model
             .velocity_to_qdot(&y[o.q..o.v], &y[o.v..o.afs], &mut dydt[o.q..o.v]);

@@ -176,7 +176,6 @@ fn statics_match_the_hand_calculation() {
 /// pivoted at its cg, so its pitch hardly moves the pivot.
 #[test]
 fn the_beam_pitch_mode_matches_the_hand_model() {
-    use nalgebra::{Complex, DMatrix, DVector};
     let p = quiet(tandem(false));
     let v = vehicle(
         &p,
@@ -185,48 +184,20 @@ fn the_beam_pitch_mode_matches_the_hand_model() {
             ..Default::default()
         }),
     );
-    let y0 = v.initial_state();
-    let n = y0.len();
-    let mut jac = DMatrix::<f64>::zeros(n, n);
-    let (mut fp, mut fm) = (vec![0.0; n], vec![0.0; n]);
-    for c in 0..n {
-        let h = 1e-7 * y0[c].abs().max(1e-2);
-        let mut y = y0.clone();
-        y[c] = y0[c] + h;
-        v.rhs(0.0, &y, &mut fp);
-        y[c] = y0[c] - h;
-        v.rhs(0.0, &y, &mut fm);
-        for r in 0..n {
-            jac[(r, c)] = (fp[r] - fm[r]) / (2.0 * h);
-        }
-    }
     let (o, j) = (*v.offsets(), *v.joints());
     let beams = j.beam.unwrap().map(|b| b.1);
-    let jc = jac.map(|x| Complex::new(x, 0.0));
+    let spins: Vec<usize> = j.spins().iter().map(|s| s.1).collect();
     let mut found = Vec::new();
-    for lambda in jac.complex_eigenvalues().iter() {
-        let f = lambda.norm() / (2.0 * std::f64::consts::PI);
-        if lambda.im <= 0.0 || -lambda.re > 0.5 * lambda.norm() || !(1.0..20.0).contains(&f) {
-            continue;
-        }
-        let shift = lambda * Complex::new(1.0 + 1e-9, 1e-9);
-        let lu = (&jc - DMatrix::identity(n, n) * shift).lu();
-        let mut x = DVector::from_element(n, Complex::new(1.0, 0.0));
-        for _ in 0..3 {
-            x = lu.solve(&x).unwrap();
-            x /= Complex::new(x.norm(), 0.0);
-        }
-        let rates = |k: usize| x[o.v + k].norm_sqr();
+    for (f, rates) in support::body_modes(&v, &v.initial_state(), 1.0..20.0) {
         let lever = 9.0;
-        let pitch: f64 = beams.iter().map(|&k| lever * rates(k)).sum();
-        let spins: Vec<usize> = j.spins().iter().map(|s| s.1).collect();
+        let pitch: f64 = beams.iter().map(|&k| lever * rates[k]).sum();
         let other: f64 = (0..o.afs - o.v)
             .filter(|k| !beams.contains(k) && !spins.contains(k))
             .map(|k| {
                 if (3..6).contains(&k) {
-                    rates(k)
+                    rates[k]
                 } else {
-                    lever * rates(k)
+                    lever * rates[k]
                 }
             })
             .sum();

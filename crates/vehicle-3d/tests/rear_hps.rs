@@ -330,49 +330,20 @@ fn hand_bounce_pitch(p: &VehicleParams, v: &Vehicle) -> [f64; 2] {
 /// damping (so the modes are those of the springs).
 #[test]
 fn the_bounce_and_pitch_modes_match_the_two_axle_hand_model() {
-    use nalgebra::{Complex, DMatrix, DVector};
     let p = quiet_both_axles();
     let options = VehicleOptions {
         speed_m_s: 3.0,
         ..Default::default()
     };
     let v = vehicle(&p, Load::Loaded, options);
-    let y0 = v.initial_state();
-    let n = y0.len();
-    let mut jac = DMatrix::<f64>::zeros(n, n);
-    let (mut fp, mut fm) = (vec![0.0; n], vec![0.0; n]);
-    for c in 0..n {
-        let h = 1e-7 * y0[c].abs().max(1e-2);
-        let mut y = y0.clone();
-        y[c] = y0[c] + h;
-        v.rhs(0.0, &y, &mut fp);
-        y[c] = y0[c] - h;
-        v.rhs(0.0, &y, &mut fm);
-        for r in 0..n {
-            jac[(r, c)] = (fp[r] - fm[r]) / (2.0 * h);
-        }
-    }
-    let (o, j) = (*v.offsets(), *v.joints());
-    let jc = jac.map(|x| Complex::new(x, 0.0));
+    let j = *v.joints();
+    let rates = [j.articulation.1, j.rear_roll.unwrap().1];
     let mut found: Vec<f64> = Vec::new();
-    for lambda in jac.complex_eigenvalues().iter() {
-        let f = lambda.norm() / (2.0 * std::f64::consts::PI);
-        // oscillatory modes only: the tire lags relax at v / sigma (real eigenvalues)
-        if lambda.im <= 0.0 || -lambda.re > 0.5 * lambda.norm() || !(0.5..4.0).contains(&f) {
-            continue;
-        }
-        let shift = lambda * Complex::new(1.0 + 1e-9, 1e-9);
-        let lu = (&jc - DMatrix::identity(n, n) * shift).lu();
-        let mut x = DVector::from_element(n, Complex::new(1.0, 0.0));
-        for _ in 0..3 {
-            x = lu.solve(&x).unwrap();
-            x /= Complex::new(x.norm(), 0.0);
-        }
-        let at = |k: usize| x[o.v + k].norm_sqr();
+    // oscillatory modes only: the tire lags relax at v / sigma (real eigenvalues)
+    for (f, at) in support::body_modes(&v, &v.initial_state(), 0.5..4.0) {
         let len2 = 9.0; // a 3 m lever for the rotations
-        let vertical = at(5) + len2 * at(1);
-        let rates = [j.articulation.1, j.rear_roll.unwrap().1];
-        let out = at(4) + len2 * (at(0) + at(2) + rates.iter().map(|&k| at(k)).sum::<f64>());
+        let vertical = at[5] + len2 * at[1];
+        let out = at[4] + len2 * (at[0] + at[2] + rates.iter().map(|&k| at[k]).sum::<f64>());
         if vertical > 100.0 * out {
             found.push(f);
         }
