@@ -169,7 +169,7 @@ fn statics_match_the_hand_calculation() {
 }
 
 /// The linear modes of the right-hand side's Jacobian (central differences) at the static
-/// state rolling at 3 m/s, tires undamped: the oscillatory modes whose eigenvector is mostly
+/// state rolling at 3 m/s, rigid front axle, tires undamped: the oscillatory modes whose eigenvector is mostly
 /// beam pitch (a hundred times more, in rates, than every other velocity with a 3 m lever
 /// for the rotations) lie within 0.1 % of the hand model `omega² = 2 k_t (s/2)² / I_p` with the
 /// tire's tangent stiffness at the quarter load and `I_p = I_b + 2 m_w (s/2)²`: the beam is
@@ -179,10 +179,10 @@ fn the_beam_pitch_mode_matches_the_hand_model() {
     let p = quiet(tandem(false));
     let v = vehicle(
         &p,
-        suspended_front(VehicleOptions {
+        VehicleOptions {
             speed_m_s: 3.0,
             ..Default::default()
-        }),
+        },
     );
     let (o, j) = (*v.offsets(), *v.joints());
     let beams = j.beam.unwrap().map(|b| b.1);
