@@ -85,24 +85,25 @@ pub fn forward_dynamics_aba<'w>(
     }
     for (i, (body, link)) in bodies.iter().zip(&model.links).enumerate().rev() {
         let pa = ws.force[i];
+        if link.nv == 1 {
+            let k = link.v_offset;
+            let s = &ws.cdof[k];
+            let u = mul(&ws.aba_ia[i], s);
+            let d = s.dot(&u);
+            if !(d.is_finite() && d > 0.0) {
+                return Err(DynamicsError::MassMatrixNotPositiveDefinite);
+            }
+            (ws.aba_u[i], ws.aba_d[i], ws.aba_uj[i]) = (u, d, tau[k] - s.dot(&pa));
+        }
+        // a root passes nothing on
+        let Some(p) = body.parent else { continue };
         let c = ws.aba_c[i];
         let ia = &mut ws.aba_ia[i];
         // what the parent receives: `I^a` into `ia` in place, `p^a` returned
         let pass = match link.nv {
             0 => pa + mul(ia, &c),
             1 => {
-                let k = link.v_offset;
-                let s = &ws.cdof[k];
-                let u = mul(ia, s);
-                let d = s.dot(&u);
-                if !(d.is_finite() && d > 0.0) {
-                    return Err(DynamicsError::MassMatrixNotPositiveDefinite);
-                }
-                let uj = tau[k] - s.dot(&pa);
-                (ws.aba_u[i], ws.aba_d[i], ws.aba_uj[i]) = (u, d, uj);
-                if body.parent.is_none() {
-                    continue;
-                }
+                let (u, d, uj) = (ws.aba_u[i], ws.aba_d[i], ws.aba_uj[i]);
                 subtract_outer(ia, &u, d);
                 pa + mul(ia, &c) + u * (uj / d)
             }
@@ -111,13 +112,11 @@ pub fn forward_dynamics_aba<'w>(
                 ws.x_root[i].transpose_apply_force(&t)
             }
         };
-        if let Some(p) = body.parent {
-            if link.nv != 6 {
-                let (parents, rest) = ws.aba_ia.split_at_mut(i);
-                parents[p] += &rest[0];
-            }
-            ws.force[p] += pass;
+        if link.nv != 6 {
+            let (parents, rest) = ws.aba_ia.split_at_mut(i);
+            parents[p] += &rest[0];
         }
+        ws.force[p] += pass;
     }
     let a_base = spatial(&Vector3::zeros(), &(-model.gravity()));
     for (i, (body, link)) in bodies.iter().zip(&model.links).enumerate() {
