@@ -101,7 +101,8 @@ pub fn forward_dynamics_aba<'w>(
         let ia = &mut ws.aba_ia[i];
         // what the parent receives: `I^a` into `ia` in place, `p^a` returned
         let pass = match link.nv {
-            0 => pa + mul(ia, &c),
+            // a fixed joint: `S̄ q̇ = 0`, so `c̄ = 0` and the whole `p^A` passes on
+            0 => pa,
             1 => {
                 let (u, d, uj) = (ws.aba_u[i], ws.aba_d[i], ws.aba_uj[i]);
                 subtract_outer(ia, &u, d);
