@@ -1,7 +1,9 @@
 //! Work against precision of the explicit pairs on the models' own runs (docs/numerics.md,
 //! "Tsitouras 5(4)"): right-hand sides and steps of Dormand-Prince and Tsitouras at 3, 1,
 //! 1/3 and 1/10 times the model's default tolerance (and of `Auto`, the 3-D vehicle's
-//! default, at it), and the error against a reference run of Dormand-Prince at rtol 1e-10.
+//! default, at it; on the 3-D vehicle also of the additive Runge-Kutta method implicit in
+//! the struts' states, docs/numerics.md "ARK4(3)6L\[2\]SA"), and the error against a
+//! reference run of Dormand-Prince at rtol 1e-10.
 //! Right-hand-side counts do not depend on the machine's load. Not a criterion bench: it
 //! prints one table (`cargo bench -p afsv-benches --bench work_precision`; a name filter
 //! given to `cargo xtask bench` that does not match `work_precision` skips it).
@@ -80,7 +82,8 @@ fn case_3d(name: &str, vehicle: &Vehicle, breakpoints: &[f64], t_end: f64) {
         ref_stats.rhs_evals,
         err(&check).0
     );
-    for (solver, f) in runs() {
+    let ark = [3.0, 1.0, 1.0 / 3.0, 0.1].map(|f| (Solver::Ark436, f));
+    for (solver, f) in runs().into_iter().chain(ark) {
         if f != 1.0 && solver == Solver::Auto {
             continue;
         }

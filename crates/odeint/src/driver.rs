@@ -1,6 +1,7 @@
 //! The one driver loop every method runs under: output grid, observer, breakpoints, event
 //! location, step limit and divergence error. The methods are single-step kernels.
 
+use crate::ark::ArkKernel;
 use crate::dopri5::Dopri5Kernel;
 use crate::event::{locate, Event};
 use crate::kernel::{initial_step, Kernel};
@@ -194,6 +195,9 @@ impl Integrator {
                 ws,
                 &mut observe,
             ),
+            Solver::Ark436 => {
+                Drive::new(self, sys, problem, ArkKernel::default()).run(None, ws, &mut observe)
+            }
             Solver::Rk4 { step } => Drive::new(self, sys, problem, Rk4Kernel::default()).run(
                 Some(step),
                 ws,

@@ -5,7 +5,8 @@
 //! single driver loop ([`Integrator::run`]) owns the output grid, the observer, breakpoints,
 //! event location, the step limit and the divergence error, and calls one of three
 //! single-step kernels (Dormand-Prince 5(4), Tsitouras 5(4), Rosenbrock 2(3), the
-//! Rosenbrock-W 3(2) ROS34PW2 on a model's stiff blocks, fixed-step RK4).
+//! Rosenbrock-W 3(2) ROS34PW2 and the additive Runge-Kutta ARK4(3)6L\[2\]SA on a model's
+//! stiff blocks, fixed-step RK4).
 //!
 //! Work buffers live in a caller-supplied [`Workspace`]: a caller that runs thousands of
 //! short simulations creates one and passes it to every run, and the runs allocate nothing.
@@ -13,6 +14,8 @@
 //! A run that produces a non-finite state, or whose step size collapses, returns
 //! [`OdeError`] carrying the time and the last finite state: never NaN results.
 
+mod ark;
+mod blocks;
 mod dopri5;
 mod driver;
 mod event;
@@ -47,11 +50,12 @@ pub trait OdeSystem {
     fn is_stiff(&self) -> bool {
         false
     }
-    /// The stiff diagonal blocks that [`Solver::Ros34pw2`] treats implicitly: disjoint sets
+    /// The stiff diagonal blocks that [`Solver::Ros34pw2`] and [`Solver::Ark436`] treat
+    /// implicitly: disjoint sets
     /// of state indices whose rows, differentiated with respect to the block's own states,
     /// hold the fast eigenvalues (e.g. each HPS strut's states with the velocity of the
-    /// carrier it acts on). Every other state is advanced explicitly by that method. Empty
-    /// (the default): that method is then explicit in every state.
+    /// carrier it acts on). Every other state is advanced explicitly by those methods. Empty
+    /// (the default): they are then explicit in every state.
     fn stiff_blocks(&self) -> &[Vec<usize>] {
         &[]
     }
@@ -61,6 +65,15 @@ pub trait OdeSystem {
     /// block's states (one call per state). A model whose block is cheap to evaluate on its
     /// own (a strut beside a multibody vehicle) fills it far more cheaply. Must not allocate.
     fn block_jacobian(&self, _t: f64, _y: &[f64], _block: usize, _jac: &mut [f64]) -> bool {
+        false
+    }
+    /// The rows of stiff block `block` of `f(t, y)`, in the block's index order, into `out`
+    /// (the block's length). Return `true` when filled; the default returns `false`, and
+    /// [`Solver::Ark436`] then evaluates the whole right-hand side in each Newton iteration
+    /// of its implicit stages. A model whose block is cheap on its own (a strut's rates at its
+    /// carrier's travel and rate) fills it with exactly the values `rhs` writes in those rows.
+    /// Must not allocate.
+    fn block_rhs(&self, _t: f64, _y: &[f64], _block: usize, _out: &mut [f64]) -> bool {
         false
     }
 }
@@ -80,6 +93,9 @@ impl<S: OdeSystem + ?Sized> OdeSystem for &S {
     }
     fn block_jacobian(&self, t: f64, y: &[f64], block: usize, jac: &mut [f64]) -> bool {
         (**self).block_jacobian(t, y, block, jac)
+    }
+    fn block_rhs(&self, t: f64, y: &[f64], block: usize, out: &mut [f64]) -> bool {
+        (**self).block_rhs(t, y, block, out)
     }
 }
 

@@ -29,11 +29,12 @@
 //! Workspace use: `k[0]` f(t, y), `k[1..5]` the stage increments u_1..u_4, `k[5]` the stage
 //! derivative, `k[6]` f(t + h, y_1); `aux[0]` the error, `aux[1]` solve scratch, `aux[2]`
 //! the blocks' gathered entries, `aux[3]` the mask of block states for the dense output (set
-//! at each start); `jac` the packed block Jacobians, `w` their factored
-//! iteration matrices, `piv` their pivots (packed).
+//! at each start); `jac`, `w` and `piv` the blocks' Jacobians and factors
+//! ([`crate::blocks`]).
 
+use crate::blocks;
 use crate::kernel::Kernel;
-use crate::linalg::{lu_factor, lu_solve};
+use crate::linalg::lu_solve;
 use crate::tolerance::error_norm;
 use crate::{OdeSystem, Workspace};
 
@@ -152,73 +153,6 @@ impl Default for RosenbrockWKernel {
     }
 }
 
-impl RosenbrockWKernel {
-    /// Each block's Jacobian at `(t, ws.y)`, packed row-major one after the other into
-    /// `ws.jac`: the model's own ([`OdeSystem::block_jacobian`]) or forward differences of
-    /// the whole right-hand side over the block's states. Returns RHS calls.
-    fn jacobians<S2: OdeSystem + ?Sized>(
-        &self,
-        sys: &S2,
-        t: f64,
-        rtol: f64,
-        ws: &mut Workspace,
-    ) -> usize {
-        let Workspace {
-            y,
-            y_stage: ys,
-            k,
-            atol,
-            jac,
-            ..
-        } = ws;
-        let [f0, .., f1] = k;
-        let mut at = 0;
-        let mut evals = 0;
-        for (b, block) in sys.stiff_blocks().iter().enumerate() {
-            let nb = block.len();
-            let jb = &mut jac[at..at + nb * nb];
-            at += nb * nb;
-            if sys.block_jacobian(t, y, b, jb) {
-                continue;
-            }
-            for (c, &j) in block.iter().enumerate() {
-                let yj = y[j];
-                let dy = f64::EPSILON.sqrt() * yj.abs().max(atol[j] / rtol).max(1e-8);
-                ys.copy_from_slice(y);
-                ys[j] = yj + dy;
-                sys.rhs(t, ys, f1);
-                evals += 1;
-                for (r, &i) in block.iter().enumerate() {
-                    jb[r * nb + c] = (f1[i] - f0[i]) / dy;
-                }
-            }
-        }
-        evals
-    }
-
-    /// Factor `I/(h γ) − J_b` of every block into `ws.w` (pivots packed in `ws.piv`);
-    /// `false` if one is singular.
-    fn factor<S2: OdeSystem + ?Sized>(&self, sys: &S2, h: f64, ws: &mut Workspace) -> bool {
-        let inv = 1.0 / (h * GAMMA);
-        let (mut at, mut p) = (0, 0);
-        for block in sys.stiff_blocks() {
-            let nb = block.len();
-            let (jb, wb) = (&ws.jac[at..at + nb * nb], &mut ws.w[at..at + nb * nb]);
-            for r in 0..nb {
-                for c in 0..nb {
-                    wb[r * nb + c] = if r == c { inv } else { 0.0 } - jb[r * nb + c];
-                }
-            }
-            if !lu_factor(wb, &mut ws.piv[p..p + nb], nb) {
-                return false;
-            }
-            at += nb * nb;
-            p += nb;
-        }
-        true
-    }
-}
-
 /// `u <- (I/(h γ) − J)⁻¹ u`: every state scaled by h γ, then each block's entries solved
 /// through its factors from their values before scaling (`tmp`, `gather`: scratch).
 fn solve<S2: OdeSystem + ?Sized>(
@@ -260,11 +194,7 @@ impl Kernel for RosenbrockWKernel {
     fn start<S2: OdeSystem + ?Sized>(&mut self, sys: &S2, t: f64, ws: &mut Workspace) -> usize {
         self.need_jac = true;
         self.end_ready = false;
-        let mask = &mut ws.aux[3];
-        mask.fill(0.0);
-        for &i in sys.stiff_blocks().iter().flatten() {
-            mask[i] = 1.0;
-        }
+        blocks::mark(sys, ws);
         sys.rhs(t, &ws.y, &mut ws.k[0]);
         1
     }
@@ -279,11 +209,11 @@ impl Kernel for RosenbrockWKernel {
     ) -> (f64, usize) {
         let mut evals = 0;
         if self.need_jac {
-            evals += self.jacobians(sys, t, rtol, ws);
+            evals += blocks::jacobians(sys, t, rtol, ws);
             self.need_jac = false;
         }
         self.end_ready = false;
-        self.singular = !self.factor(sys, h, ws);
+        self.singular = !blocks::factor(sys, h * GAMMA, ws);
         if self.singular {
             return (f64::INFINITY, evals);
         }
@@ -372,25 +302,10 @@ impl Kernel for RosenbrockWKernel {
         1
     }
 
-    /// Cubic Hermite interpolation between (y, f(t, y)) and (y_1, f(t + h, y_1)), linear in
-    /// the stiff blocks' states (`aux[3]` marks them): there `f` multiplies the step's error
-    /// by the stiffness, while the linear form's error is `h² |y''| / 8` of the slow motion
-    /// the stiff state follows.
+    /// Cubic Hermite in the explicit states, linear in the stiff ones
+    /// ([`blocks::dense`]).
     fn dense(&self, theta: f64, h: f64, ws: &mut Workspace) {
-        let Workspace {
-            y,
-            y_new,
-            y_out,
-            k,
-            aux,
-            ..
-        } = ws;
-        crate::rk4::hermite(theta, h, y, &k[0], y_new, &k[6], y_out);
-        for (i, m) in aux[3].iter().enumerate() {
-            if *m != 0.0 {
-                y_out[i] = (1.0 - theta) * y[i] + theta * y_new[i];
-            }
-        }
+        blocks::dense(theta, h, ws);
     }
 
     fn accept<S2: OdeSystem + ?Sized>(

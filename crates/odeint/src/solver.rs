@@ -5,7 +5,8 @@ use serde::{Deserialize, Serialize};
 
 /// Integration method of a run.
 ///
-/// Serialised in snake_case: `"dopri5"`, `"tsit5"`, `"rosenbrock23"`, `"ros34pw2"`, `"auto"`,
+/// Serialised in snake_case: `"dopri5"`, `"tsit5"`, `"rosenbrock23"`, `"ros34pw2"`,
+/// `"ark436"`, `"auto"`,
 /// `{"rk4": {"step": 2e-4}}`.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
@@ -27,6 +28,13 @@ pub enum Solver {
     /// state; of order 3 whatever coupling the blocks leave out. For models with a few stiff
     /// states beside many non-stiff ones: the suspended vehicles' HPS struts.
     Ros34pw2,
+    /// Adaptive additive Runge-Kutta ARK4(3)6L\[2\]SA of Kennedy & Carpenter (2003), split
+    /// by components: explicit (order 4) in every state outside the model's stiff blocks,
+    /// singly diagonally implicit (L-stable, stiffly accurate) in the block states, whose
+    /// stages are solved by Newton's method on the model's own block rates
+    /// ([`OdeSystem::block_rhs`]). For models whose stiffness lives in a few states and whose
+    /// other states move smoothly: the suspended vehicles' HPS struts.
+    Ark436,
     /// Classical fixed-step Runge-Kutta 4: every interval between output times and
     /// breakpoints is split into `ceil(span / step)` equal steps, so outputs are hit exactly.
     Rk4 {
@@ -53,13 +61,15 @@ impl Solver {
         }
     }
 
-    /// Short lower-case name (`dopri5`, `tsit5`, `rosenbrock23`, `ros34pw2`, `rk4`, `auto`) for reports.
+    /// Short lower-case name (`dopri5`, `tsit5`, `rosenbrock23`, `ros34pw2`, `ark436`, `rk4`,
+    /// `auto`) for reports.
     pub fn name(&self) -> &'static str {
         match self {
             Solver::Dopri5 => "dopri5",
             Solver::Tsit5 => "tsit5",
             Solver::Rosenbrock23 => "rosenbrock23",
             Solver::Ros34pw2 => "ros34pw2",
+            Solver::Ark436 => "ark436",
             Solver::Rk4 { .. } => "rk4",
             Solver::Auto => "auto",
         }

@@ -4,57 +4,12 @@
 //! allocator wrapper, per thread).
 
 mod common;
+mod counting;
 
-use common::{loglog_slope, Oscillator};
+use common::{loglog_slope, Logistic, Oscillator};
 use odeint::{
     Control, Direction, Event, Integrator, OdeSystem, Problem, SampleKind, Solver, Workspace,
 };
-use std::alloc::{GlobalAlloc, Layout, System};
-use std::cell::Cell;
-
-thread_local! {
-    static ALLOCATIONS: Cell<usize> = const { Cell::new(0) };
-}
-
-struct Counting;
-
-// SAFETY: forwards to the system allocator; only adds a thread-local counter.
-unsafe impl GlobalAlloc for Counting {
-    unsafe fn alloc(&self, layout: Layout) -> *mut u8 {
-        ALLOCATIONS.with(|c| c.set(c.get() + 1));
-        // SAFETY: same contract as the caller's.
-        unsafe { System.alloc(layout) }
-    }
-
-    unsafe fn dealloc(&self, ptr: *mut u8, layout: Layout) {
-        // SAFETY: same contract as the caller's.
-        unsafe { System.dealloc(ptr, layout) }
-    }
-}
-
-#[global_allocator]
-static GLOBAL: Counting = Counting;
-
-/// Two nonlinear equations with closed forms (every elementary differential of order <= 5
-/// appears, unlike on a linear problem): the logistic `y0' = y0 (1 - y0)`, `y0(0) = 0.1`,
-/// and `y1' = -2 t y1²`, `y1(0) = 1`, whose solution is `1 / (1 + t²)`.
-struct Logistic;
-
-impl Logistic {
-    fn exact(t: f64) -> [f64; 2] {
-        [1.0 / (1.0 + 9.0 * (-t).exp()), 1.0 / (1.0 + t * t)]
-    }
-}
-
-impl OdeSystem for Logistic {
-    fn dim(&self) -> usize {
-        2
-    }
-    fn rhs(&self, t: f64, y: &[f64], d: &mut [f64]) {
-        d[0] = y[0] * (1.0 - y[0]);
-        d[1] = -2.0 * t * y[1] * y[1];
-    }
-}
 
 const T_END: f64 = 8.0;
 
@@ -266,14 +221,14 @@ fn a_run_with_its_workspace_allocates_nothing() {
             Control::Continue
         })
         .unwrap();
-    let before = ALLOCATIONS.with(Cell::get);
+    let before = counting::allocations();
     let st = integ
         .run(&Logistic, &problem, &mut ws, |s| {
             sum += s.y[0];
             Control::Continue
         })
         .unwrap();
-    let allocated = ALLOCATIONS.with(Cell::get) - before;
+    let allocated = counting::allocations() - before;
     assert_eq!(allocated, 0, "{allocated} allocations in a run of {st:?}");
     assert_eq!(st.events, 1);
     assert!(sum.is_finite());

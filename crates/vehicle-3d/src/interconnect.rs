@@ -202,6 +202,13 @@ pub struct LinkedVehicle {
 }
 
 impl LinkedVehicle {
+    /// A stiff block past the pairs' as the vehicle's own block index, with the vehicle's
+    /// state count; `None` past the last block.
+    fn own_block(&self, block: usize) -> Option<(usize, usize)> {
+        let b = *self.own_blocks.get(block.checked_sub(self.pairs.len())?)?;
+        Some((b, self.vehicle.offsets().dim))
+    }
+
     /// Link the struts of `vehicle` by `link`: [`Link::Roll`] needs the front-axle HPS
     /// ([`FrontAxle::Suspended`]), [`Link::Pitch`] struts on both axles. The linked struts
     /// become [`HpsStrut::ported`] with sealed pistons, their other parameters and
@@ -355,15 +362,27 @@ impl OdeSystem for LinkedVehicle {
         &self.blocks
     }
 
+    /// A pair block's rates: the pair's evaluate, as the right-hand side scatters it; a kept
+    /// strut's block is the vehicle's own.
+    fn block_rhs(&self, t: f64, y: &[f64], block: usize, out: &mut [f64]) -> bool {
+        let Some(lp) = self.pairs.get(block) else {
+            return self
+                .own_block(block)
+                .is_some_and(|(b, dim)| self.vehicle.block_rhs(t, &y[..dim], b, out));
+        };
+        let mut s = [0.0; MAX_PAIR];
+        let (z, zdot, m) = lp.gather(y, self.vehicle.offsets().v, &mut s);
+        lp.pair.evaluate(z, zdot, &s[..m], &mut out[..m]);
+        true
+    }
+
     /// A pair block's Jacobian by forward differences of the pair's evaluate with the
     /// struts' travels and rates held; a kept strut's block is the vehicle's own.
     fn block_jacobian(&self, t: f64, y: &[f64], block: usize, jac: &mut [f64]) -> bool {
         let Some(lp) = self.pairs.get(block) else {
-            let dim = self.vehicle.offsets().dim;
-            return match self.own_blocks.get(block - self.pairs.len()) {
-                Some(&b) => self.vehicle.block_jacobian(t, &y[..dim], b, jac),
-                None => false,
-            };
+            return self
+                .own_block(block)
+                .is_some_and(|(b, dim)| self.vehicle.block_jacobian(t, &y[..dim], b, jac));
         };
         let mut s = [0.0; MAX_PAIR];
         let (z, zdot, m) = lp.gather(y, self.vehicle.offsets().v, &mut s);

@@ -1,7 +1,7 @@
-//! The stiff part of the suspended vehicle, for the Rosenbrock-W integrator
-//! ([`odeint::Solver::Ros34pw2`]): each strut's own states, front then rear axle (gas
-//! volume, rod-side pressure, velocity amplitude and any extension states of Eqs
-//! 6.9-6.18).
+//! The stiff part of the suspended vehicle, for the integrators implicit in it
+//! ([`odeint::Solver::Ros34pw2`], [`odeint::Solver::Ark436`]): each strut's own states,
+//! front then rear axle (gas volume, rod-side pressure, velocity amplitude and any
+//! extension states of Eqs 6.9-6.18).
 //!
 //! The rod-side pressure relaxes through the orifices with a rate `β/V_r · ∂Q/∂Δp` that
 //! reaches about 3·10⁴ s⁻¹ near zero flow (nominal strut, loaded D1 ride; 150-700 s⁻¹
@@ -10,7 +10,10 @@
 //! fast relaxation; the Rosenbrock-W method inverts `I/(hγ) − J` on these 3 × 3 blocks
 //! only. Their Jacobian is differenced through the strut's own evaluate at the carrier's
 //! current travel and rate: four strut evaluations per strut, no vehicle right-hand side.
+//! The additive Runge-Kutta method's Newton iterations read the strut's rates alone the
+//! same way.
 
+use crate::suspension::AxleStruts;
 use crate::vehicle::{Offsets, Vehicle};
 
 /// One block per strut, its states in order: the front struts, then the rear; none on
@@ -27,19 +30,23 @@ pub(crate) fn strut_blocks(offsets: &Offsets) -> Vec<Vec<usize>> {
 }
 
 impl Vehicle {
+    /// The strut of stiff block `block` and its side: the front struts first, left then
+    /// right, then the rear; `None` for a block that does not exist.
+    fn block_strut(&self, block: usize) -> Option<(&AxleStruts, usize)> {
+        self.axle_struts()
+            .into_iter()
+            .flatten()
+            .flat_map(|a| [(a, 0), (a, 1)])
+            .nth(block)
+    }
+
     /// ∂(the rates of block `block`'s strut)/∂(its states) at `y`, row-major into `jac`,
     /// by forward differences of `HpsStrut::evaluate` with the carrier's travel and rate
     /// held. Blocks count the front struts first, left then right, then the rear. `false`
     /// for a block that does not exist.
     pub(crate) fn strut_block_jacobian(&self, y: &[f64], block: usize, jac: &mut [f64]) -> bool {
         const MAX_STATES: usize = 8;
-        let Some((axle, side)) = self
-            .axle_struts()
-            .into_iter()
-            .flatten()
-            .flat_map(|a| [(a, 0), (a, 1)])
-            .nth(block)
-        else {
+        let Some((axle, side)) = self.block_strut(block) else {
             return false;
         };
         let strut = &axle.strut;
@@ -63,6 +70,17 @@ impl Vehicle {
                 jac[r * n + c] = (f1[r] - f0[r]) / d;
             }
         }
+        true
+    }
+
+    /// The rates of block `block`'s strut at `y` into `out` (its states' length): the
+    /// values the right-hand side writes in those rows (`AxleStruts::evaluate`, the same
+    /// call). `false` for a block that does not exist.
+    pub(crate) fn strut_block_rates(&self, y: &[f64], block: usize, out: &mut [f64]) -> bool {
+        let Some((axle, side)) = self.block_strut(block) else {
+            return false;
+        };
+        axle.evaluate(y, self.offsets.v, side, out);
         true
     }
 }

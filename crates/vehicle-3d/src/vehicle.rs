@@ -772,4 +772,8 @@ impl odeint::OdeSystem for Vehicle {
     fn block_jacobian(&self, _t: f64, y: &[f64], block: usize, jac: &mut [f64]) -> bool {
         self.strut_block_jacobian(y, block, jac)
     }
+
+    fn block_rhs(&self, _t: f64, y: &[f64], block: usize, out: &mut [f64]) -> bool {
+        self.strut_block_rates(y, block, out)
+    }
 }

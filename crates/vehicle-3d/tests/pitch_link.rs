@@ -299,3 +299,36 @@ fn d1_and_d2_with_and_without_the_pitch_link() {
         );
     }
 }
+
+/// Each stiff block's own rates (`OdeSystem::block_rhs`: a linked pair's evaluate, the
+/// additive Runge-Kutta method's Newton iterations) are the linked vehicle's right-hand
+/// side rows of that block, to the bit, with the pitch link (two pair blocks) and the roll
+/// link (one pair block beside the rear struts' own blocks), away from the static state.
+#[test]
+fn a_linked_block_rates_are_the_right_hand_side_rows() {
+    let p = both_axles();
+    for link in [
+        Link::pitch_of(&p).unwrap(),
+        Link::Roll(LineParams::front_axle_roll()),
+    ] {
+        let linked = LinkedVehicle::new(vehicle(&p, Load::Loaded), &link).unwrap();
+        let mut y = linked.initial_state().unwrap();
+        for (k, yk) in y.iter_mut().enumerate() {
+            *yk *= 1.0 + 1e-3 * (k as f64).sin();
+        }
+        let mut d = vec![0.0; linked.dim()];
+        linked.rhs(0.2, &y, &mut d);
+        let blocks = linked.stiff_blocks();
+        for (b, rows) in blocks.iter().enumerate() {
+            let mut out = vec![f64::NAN; rows.len()];
+            assert!(
+                linked.block_rhs(0.2, &y, b, &mut out),
+                "{link:?}, block {b}"
+            );
+            let want: Vec<f64> = rows.iter().map(|&i| d[i]).collect();
+            assert_eq!(out, want, "{link:?}, block {b}");
+        }
+        let mut out = [0.0; 16];
+        assert!(!linked.block_rhs(0.2, &y, blocks.len(), &mut out));
+    }
+}

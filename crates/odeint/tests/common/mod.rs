@@ -41,6 +41,27 @@ impl OdeSystem for BlowUp {
     }
 }
 
+/// Two nonlinear equations with closed forms (every elementary differential of order <= 5
+/// appears, unlike on a linear problem): the logistic `y0' = y0 (1 - y0)`, `y0(0) = 0.1`,
+/// and `y1' = -2 t y1²`, `y1(0) = 1`, whose solution is `1 / (1 + t²)`.
+pub struct Logistic;
+
+impl Logistic {
+    pub fn exact(t: f64) -> [f64; 2] {
+        [1.0 / (1.0 + 9.0 * (-t).exp()), 1.0 / (1.0 + t * t)]
+    }
+}
+
+impl OdeSystem for Logistic {
+    fn dim(&self) -> usize {
+        2
+    }
+    fn rhs(&self, t: f64, y: &[f64], d: &mut [f64]) {
+        d[0] = y[0] * (1.0 - y[0]);
+        d[1] = -2.0 * t * y[1] * y[1];
+    }
+}
+
 /// Least-squares slope of log(error) against log(steps).
 pub fn loglog_slope(points: &[(f64, f64)]) -> f64 {
     let n = points.len() as f64;

@@ -1,0 +1,106 @@
+//! The model's stiff diagonal blocks ([`crate::OdeSystem::stiff_blocks`]) as the implicit
+//! kernels use them: their Jacobians packed one after the other, the iteration matrices
+//! `I/(h γ) − J_b` factored block by block, and the mask of block states. Shared by the
+//! Rosenbrock-W method ([`crate::Solver::Ros34pw2`]) and the additive Runge-Kutta method
+//! ([`crate::Solver::Ark436`]).
+//!
+//! Workspace use: `jac` the packed block Jacobians, `w` their factored iteration matrices,
+//! `piv` their pivots (packed), `aux[3]` the mask (1 on a block state, else 0).
+
+use crate::linalg::lu_factor;
+use crate::{OdeSystem, Workspace};
+
+/// Each block's Jacobian at `(t, ws.y)`, packed row-major one after the other into
+/// `ws.jac`: the model's own ([`OdeSystem::block_jacobian`]) or forward differences of the
+/// whole right-hand side over the block's states, from `ws.k[0] = f(t, y)` (scratch
+/// `ws.y_stage`, `ws.k[6]`). Returns RHS calls.
+pub(crate) fn jacobians<S: OdeSystem + ?Sized>(
+    sys: &S,
+    t: f64,
+    rtol: f64,
+    ws: &mut Workspace,
+) -> usize {
+    let Workspace {
+        y,
+        y_stage: ys,
+        k,
+        atol,
+        jac,
+        ..
+    } = ws;
+    let [f0, .., f1] = k;
+    let mut at = 0;
+    let mut evals = 0;
+    for (b, block) in sys.stiff_blocks().iter().enumerate() {
+        let nb = block.len();
+        let jb = &mut jac[at..at + nb * nb];
+        at += nb * nb;
+        if sys.block_jacobian(t, y, b, jb) {
+            continue;
+        }
+        for (c, &j) in block.iter().enumerate() {
+            let yj = y[j];
+            let dy = f64::EPSILON.sqrt() * yj.abs().max(atol[j] / rtol).max(1e-8);
+            ys.copy_from_slice(y);
+            ys[j] = yj + dy;
+            sys.rhs(t, ys, f1);
+            evals += 1;
+            for (r, &i) in block.iter().enumerate() {
+                jb[r * nb + c] = (f1[i] - f0[i]) / dy;
+            }
+        }
+    }
+    evals
+}
+
+/// Factor `I/hg − J_b` of every block into `ws.w` (pivots packed in `ws.piv`), `hg` the
+/// step times the method's diagonal coefficient; `false` if one is singular.
+pub(crate) fn factor<S: OdeSystem + ?Sized>(sys: &S, hg: f64, ws: &mut Workspace) -> bool {
+    let inv = 1.0 / hg;
+    let (mut at, mut p) = (0, 0);
+    for block in sys.stiff_blocks() {
+        let nb = block.len();
+        let (jb, wb) = (&ws.jac[at..at + nb * nb], &mut ws.w[at..at + nb * nb]);
+        for r in 0..nb {
+            for c in 0..nb {
+                wb[r * nb + c] = if r == c { inv } else { 0.0 } - jb[r * nb + c];
+            }
+        }
+        if !lu_factor(wb, &mut ws.piv[p..p + nb], nb) {
+            return false;
+        }
+        at += nb * nb;
+        p += nb;
+    }
+    true
+}
+
+/// Mark the block states in `ws.aux[3]` (1 on a block state, 0 elsewhere).
+pub(crate) fn mark<S: OdeSystem + ?Sized>(sys: &S, ws: &mut Workspace) {
+    let mask = &mut ws.aux[3];
+    mask.fill(0.0);
+    for &i in sys.stiff_blocks().iter().flatten() {
+        mask[i] = 1.0;
+    }
+}
+
+/// Cubic Hermite interpolation between `(y, k[0])` and `(y_new, k[6])` at `theta`, linear
+/// in the block states (`aux[3]`): there `f` multiplies the step's error by the stiffness,
+/// while the linear form's error is `h² |y''| / 8` of the slow motion the stiff state
+/// follows.
+pub(crate) fn dense(theta: f64, h: f64, ws: &mut Workspace) {
+    let Workspace {
+        y,
+        y_new,
+        y_out,
+        k,
+        aux,
+        ..
+    } = ws;
+    crate::rk4::hermite(theta, h, y, &k[0], y_new, &k[6], y_out);
+    for (i, m) in aux[3].iter().enumerate() {
+        if *m != 0.0 {
+            y_out[i] = (1.0 - theta) * y[i] + theta * y_new[i];
+        }
+    }
+}

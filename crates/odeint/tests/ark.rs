@@ -1,0 +1,251 @@
+//! ARK4(3)6L[2]SA split by components: order 4 whichever states are implicit, a stiff
+//! state solved implicitly beside explicit ones with the model's own block rates or
+//! without them (the same steps), a nonlinear stiff block against a tight reference, and
+//! a second run with the same workspace allocating nothing.
+
+mod common;
+mod counting;
+
+use common::{loglog_slope, Logistic};
+use odeint::{output_grid, Control, Integrator, OdeSystem, Problem, Solver, Stats, Workspace};
+
+/// The logistic pair (`common::Logistic`) with any of its states named a stiff block (none
+/// of them is stiff: the split alone is tested).
+struct Split {
+    blocks: Vec<Vec<usize>>,
+}
+
+impl OdeSystem for Split {
+    fn dim(&self) -> usize {
+        2
+    }
+    fn rhs(&self, t: f64, y: &[f64], d: &mut [f64]) {
+        Logistic.rhs(t, y, d)
+    }
+    fn stiff_blocks(&self) -> &[Vec<usize>] {
+        &self.blocks
+    }
+    fn block_rhs(&self, t: f64, y: &[f64], block: usize, out: &mut [f64]) -> bool {
+        let mut d = [0.0; 2];
+        self.rhs(t, y, &mut d);
+        for (c, &r) in self.blocks[block].iter().enumerate() {
+            out[c] = d[r];
+        }
+        true
+    }
+}
+
+/// Accepted steps and the error at the end of 8 s, a step end (between steps the dense
+/// output is linear in block states), at tolerance `tol`.
+fn logistic_error(sys: &Split, tol: f64) -> (f64, f64) {
+    let mut e: f64 = 0.0;
+    let st = Integrator::new(Solver::Ark436, tol, tol)
+        .integrate(sys, 0.0, &[0.1, 1.0], &[8.0], |t, y| {
+            let x = Logistic::exact(t);
+            e = e.max((y[0] - x[0]).abs()).max((y[1] - x[1]).abs());
+            Control::Continue
+        })
+        .unwrap();
+    (st.accepted as f64, e)
+}
+
+#[test]
+fn fourth_order_whichever_states_are_implicit() {
+    for blocks in [vec![], vec![vec![0]], vec![vec![1]], vec![vec![0, 1]]] {
+        let sys = Split {
+            blocks: blocks.clone(),
+        };
+        let pts: Vec<(f64, f64)> = [1e-5, 1e-6, 1e-7, 1e-8, 1e-9]
+            .iter()
+            .map(|&tol| logistic_error(&sys, tol))
+            .collect();
+        let order = -loglog_slope(&pts);
+        assert!(
+            order > 3.3 && order < 5.0,
+            "{blocks:?}: order {order} from {pts:?}"
+        );
+        assert!(pts[4].1 < 1e-7, "{blocks:?}: {pts:?}");
+    }
+}
+
+/// Between the steps, the explicit states follow Kennedy & Carpenter's continuous
+/// extension: with no block, the largest error over outputs every 0.1 s falls with the
+/// tolerance at order 3 or more.
+#[test]
+fn the_dense_output_of_the_explicit_states_is_of_order_3() {
+    let sys = Split { blocks: vec![] };
+    let pts: Vec<(f64, f64)> = [1e-5, 1e-6, 1e-7, 1e-8, 1e-9]
+        .iter()
+        .map(|&tol| {
+            let mut e: f64 = 0.0;
+            let st = Integrator::new(Solver::Ark436, tol, tol)
+                .integrate(
+                    &sys,
+                    0.0,
+                    &[0.1, 1.0],
+                    &output_grid(0.0, 8.0, 0.1),
+                    |t, y| {
+                        let x = Logistic::exact(t);
+                        e = e.max((y[0] - x[0]).abs()).max((y[1] - x[1]).abs());
+                        Control::Continue
+                    },
+                )
+                .unwrap();
+            (st.accepted as f64, e)
+        })
+        .collect();
+    let order = -loglog_slope(&pts);
+    assert!(order > 3.0 && order < 5.0, "order {order} from {pts:?}");
+}
+
+/// A slow oscillator beside a stiff state driven by it, nonlinear in its own state:
+/// `x'' = −x`, `s' = −k (s + s³ − x)`; `s` follows the root of `s + s³ = x`.
+struct CubicFollower {
+    k: f64,
+    blocks: Vec<Vec<usize>>,
+    own_rates: bool,
+}
+
+impl OdeSystem for CubicFollower {
+    fn dim(&self) -> usize {
+        3
+    }
+    fn rhs(&self, _t: f64, y: &[f64], d: &mut [f64]) {
+        d[0] = y[1];
+        d[1] = -y[0];
+        d[2] = -self.k * (y[2] + y[2].powi(3) - y[0]);
+    }
+    fn stiff_blocks(&self) -> &[Vec<usize>] {
+        &self.blocks
+    }
+    fn block_jacobian(&self, _t: f64, y: &[f64], _block: usize, jac: &mut [f64]) -> bool {
+        jac[0] = -self.k * (1.0 + 3.0 * y[2] * y[2]);
+        true
+    }
+    fn block_rhs(&self, _t: f64, y: &[f64], _block: usize, out: &mut [f64]) -> bool {
+        if self.own_rates {
+            out[0] = -self.k * (y[2] + y[2].powi(3) - y[0]);
+        }
+        self.own_rates
+    }
+}
+
+/// The follower's run (rtol 1e-6, atol 1e-9) over 10 s with outputs every 0.1 s, steps up
+/// to 0.02 s: at least 500, where an explicit method needs about 3·10⁵.
+fn follower_run(sys: &CubicFollower, solver: Solver) -> (Stats, Vec<Vec<f64>>) {
+    let mut out = Vec::new();
+    let st = Integrator::new(solver, 1e-6, 1e-9)
+        .with_max_step(0.02)
+        .with_max_steps(2_000_000)
+        .integrate(
+            sys,
+            0.0,
+            &[1.0, 0.0, 0.5],
+            &output_grid(0.0, 10.0, 0.1),
+            |_, y| {
+                out.push(y.to_vec());
+                Control::Continue
+            },
+        )
+        .unwrap();
+    (st, out)
+}
+
+#[test]
+fn a_stiff_nonlinear_block_is_solved_implicitly_with_or_without_its_own_rates() {
+    let k = 1e5;
+    let own = CubicFollower {
+        k,
+        blocks: vec![vec![2]],
+        own_rates: true,
+    };
+    let (st, ark) = follower_run(&own, Solver::Ark436);
+    // the reference: Dormand-Prince at a tight tolerance (held to about 3.3 / k per step)
+    let mut reference = Vec::new();
+    let tight = CubicFollower {
+        k,
+        blocks: vec![],
+        own_rates: false,
+    };
+    Integrator::new(Solver::Dopri5, 1e-11, 1e-13)
+        .with_max_steps(2_000_000)
+        .integrate(
+            &tight,
+            0.0,
+            &[1.0, 0.0, 0.5],
+            &output_grid(0.0, 10.0, 0.1),
+            |_, y| {
+                reference.push(y.to_vec());
+                Control::Continue
+            },
+        )
+        .unwrap();
+    let err = |run: &[Vec<f64>], i: usize| {
+        run.iter()
+            .zip(&reference)
+            .map(|(a, b)| (a[i] - b[i]).abs())
+            .fold(0.0, f64::max)
+    };
+    assert!(err(&ark, 0) < 1e-6, "x error {}", err(&ark, 0));
+    // between steps the stiff state is the quadratic through y, the fifth stage and y_1
+    assert!(err(&ark, 2) < 1e-5, "s error {}", err(&ark, 2));
+    // explicit in the stiff state it would take ~ 10 k / 3.3 = 3e5 steps
+    assert!(st.accepted < 2_000, "{st:?}");
+    // the model's block rates stand in for the whole right-hand side: six calls per
+    // accepted step, five per rejected one, and the start's
+    assert!(
+        st.rhs_evals <= 6 * st.accepted + 5 * st.rejected + 2,
+        "{st:?}"
+    );
+    // without them the Newton iterations evaluate the whole right-hand side, with the same
+    // values in the block's rows, so the run takes the same steps to the bit
+    let fallback = CubicFollower {
+        own_rates: false,
+        ..own
+    };
+    let (st_fallback, run_fallback) = follower_run(&fallback, Solver::Ark436);
+    assert_eq!(run_fallback, ark);
+    assert_eq!(
+        (st_fallback.accepted, st_fallback.rejected),
+        (st.accepted, st.rejected)
+    );
+    assert!(st_fallback.rhs_evals > st.rhs_evals + 5 * st.accepted);
+}
+
+#[test]
+fn a_run_with_its_workspace_allocates_nothing() {
+    let sys = CubicFollower {
+        k: 1e4,
+        blocks: vec![vec![2]],
+        own_rates: true,
+    };
+    let t_out = output_grid(0.0, 5.0, 0.05);
+    let integ = Integrator::new(Solver::Ark436, 1e-6, 1e-9);
+    let mut ws = Workspace::new(3);
+    let problem = Problem::new(0.0, &[1.0, 0.0, 0.5], &t_out);
+    let mut sum = 0.0;
+    integ
+        .run(&sys, &problem, &mut ws, |s| {
+            sum += s.y[2];
+            Control::Continue
+        })
+        .unwrap();
+    let before = counting::allocations();
+    integ
+        .run(&sys, &problem, &mut ws, |s| {
+            sum += s.y[2];
+            Control::Continue
+        })
+        .unwrap();
+    assert_eq!(counting::allocations(), before);
+    assert!(sum.is_finite());
+}
+
+#[test]
+fn named_ark436() {
+    assert_eq!(
+        serde_json::to_string(&Solver::Ark436).unwrap(),
+        "\"ark436\""
+    );
+    assert_eq!(Solver::Ark436.name(), "ark436");
+}
