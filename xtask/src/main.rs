@@ -9,6 +9,8 @@
 //!   `--profile dist` builds both with the workspace's `dist` profile (fat LTO, one codegen
 //!   unit) instead of `release`.
 //! - `bench --summary`: only print the table from the last run's results.
+//! - `bench --no-discovery`: leave out the whole discovery runs (the ignored timing test of
+//!   `afsv-discovery`) that follow the criterion table.
 //! - `validate [--fixtures DIR] [--out DIR]`: compare our models with the dissertation's
 //!   reported numbers (`fixtures/reported/`, see `docs/validation.md`), print the table,
 //!   write `target/validation/report.md`, `report.json` and SVG plots; exit non-zero only
@@ -53,7 +55,7 @@ fn main() -> ExitCode {
     }
 }
 
-const HELP: &str = "usage: cargo xtask <task>\n\ntasks:\n  bench [--summary] [--commands] [--runs N] [--profile release|dist] [ARGS...]  run the criterion benches (ARGS go to the bench harness) and print mean times and real-time factors, then time whole afsv commands (median of N runs, default 20); --commands: only those; --profile dist: built with fat LTO and one codegen unit (Cargo.toml)\n  validate [--fixtures DIR] [--out DIR] [--quick]  compare the models with fixtures/reported/ and write target/validation/report.md; --quick skips the chapter-6 design studies (Table 6.4, the GA of Table 6.5, the D4 sweep: about two minutes)\n  fuzz [--cases N] [--seed S] [--jobs J] [--timeout SECS] [--mem-mib MIB] [--bin PATH] [--only GROUPS] [--skip GROUPS] [--keep]  run afsv on N generated bad inputs (default 10000); fail on panics, hangs, aborts, non-finite output or modified inputs\n  discover-matrix [--vehicle3d]  run the discovery workflow on every catalogue effect of the strut and the yaw-plane vehicle and print the detection table (minutes); --vehicle3d: the 3-D adapter's rows instead (null and effect sets of the mild and realistic variants and of the independent 3-D implementation, rigid and with the front-axle HPS; about two hours of CPU, the crate-made HPS rows most of it)\n  slurm-test [--bin PATH]  as root: install slurm-wlm and munge, start a single-node Slurm, run scripts/slurm/optimize.sh end to end for `optimize afs` and a tiny `optimize layout` and compare each with the in-process optimum (skipped without root, apt-get or network); --bin: run that afsv binary instead of building one";
+const HELP: &str = "usage: cargo xtask <task>\n\ntasks:\n  bench [--summary] [--commands] [--no-discovery] [--runs N] [--profile release|dist] [ARGS...]  run the criterion benches (ARGS go to the bench harness) and print mean times and real-time factors, then the whole discovery runs and whole afsv commands (median of N runs, default 20); --commands: only those; --no-discovery: without the discovery runs; --profile dist: built with fat LTO and one codegen unit (Cargo.toml)\n  validate [--fixtures DIR] [--out DIR] [--quick]  compare the models with fixtures/reported/ and write target/validation/report.md; --quick skips the chapter-6 design studies (Table 6.4, the GA of Table 6.5, the D4 sweep: about two minutes)\n  fuzz [--cases N] [--seed S] [--jobs J] [--timeout SECS] [--mem-mib MIB] [--bin PATH] [--only GROUPS] [--skip GROUPS] [--keep]  run afsv on N generated bad inputs (default 10000); fail on panics, hangs, aborts, non-finite output or modified inputs\n  discover-matrix [--vehicle3d]  run the discovery workflow on every catalogue effect of the strut and the yaw-plane vehicle and print the detection table (minutes); --vehicle3d: the 3-D adapter's rows instead (null and effect sets of the mild and realistic variants and of the independent 3-D implementation, rigid and with the front-axle HPS; about two hours of CPU, the crate-made HPS rows most of it)\n  slurm-test [--bin PATH]  as root: install slurm-wlm and munge, start a single-node Slurm, run scripts/slurm/optimize.sh end to end for `optimize afs` and a tiny `optimize layout` and compare each with the in-process optimum (skipped without root, apt-get or network); --bin: run that afsv binary instead of building one";
 
 /// The full detection matrix of the discovery workflow (the slow tests of
 /// `crates/afsv-discovery/tests/discover_matrix.rs`); with `--vehicle3d`, the 3-D adapter's
@@ -180,8 +182,11 @@ fn bench(args: &[String]) -> Result<(), String> {
     if args.iter().any(|a| a == "--commands") {
         return commands::command_timings(&root, runs, profile.as_deref());
     }
-    let args = &args[..];
+    // this task's own switches; the rest go to the bench harnesses
     let summary_only = args.iter().any(|a| a == "--summary");
+    let no_discovery = args.iter().any(|a| a == "--no-discovery");
+    args.retain(|a| a != "--summary" && a != "--no-discovery");
+    let args = &args[..];
     if !summary_only {
         let mut cmd = Command::new(std::env::var("CARGO").unwrap_or_else(|_| "cargo".into()));
         cmd.current_dir(&root)
@@ -215,7 +220,7 @@ fn bench(args: &[String]) -> Result<(), String> {
             .unwrap_or_default();
         println!("{:<60} {:>14} {:>16}", id, human_time(ns), rtf);
     }
-    if !summary_only && !args.iter().any(|a| a == "--no-discovery") {
+    if !summary_only && !no_discovery {
         discovery_rows(&root)?;
     }
     if !summary_only {
