@@ -23,6 +23,10 @@ use arrayvec::ArrayVec;
 /// more.
 pub const MAX_SAMPLES: usize = 1024;
 
+/// How far below the best cam base so far a profile vertex must lie to be skipped (m): far
+/// above the round-off of the cam's drop (about 1e-16 m), far below any height that matters.
+const PRUNE_GUARD_M: f64 = 1e-9;
+
 /// Fixed-point iterations of the cam spacing (see [`EnvelopeMethod::TandemCams`]).
 pub const CAM_ITERATIONS: usize = 3;
 
@@ -191,6 +195,8 @@ impl Envelope {
             slope: ArrayVec::new(),
             offset: ArrayVec::new(),
             lift: ArrayVec::new(),
+            reach: 0.0,
+            top: f64::NEG_INFINITY,
         };
         cams.fill_segments();
         cams.base(x)
@@ -242,6 +248,8 @@ impl Envelope {
                     slope: ArrayVec::new(),
                     offset: ArrayVec::new(),
                     lift: ArrayVec::new(),
+                    reach: 0.0,
+                    top: f64::NEG_INFINITY,
                 };
                 cams.fill_segments();
                 let central = cams.base(x_c);
@@ -431,6 +439,11 @@ struct Cams<'a> {
     slope: ArrayVec<f64, MAX_SAMPLES>,
     offset: ArrayVec<f64, MAX_SAMPLES>,
     lift: ArrayVec<f64, MAX_SAMPLES>,
+    /// The largest `|offset|` of the window's segments: a cam at `x_j` touches no segment
+    /// farther than that from `x_j`.
+    reach: f64,
+    /// The window's highest sample (minus infinity for none).
+    top: f64,
 }
 
 impl Cams<'_> {
@@ -443,10 +456,23 @@ impl Cams<'_> {
             self.offset.push(rc * m / q);
             self.lift.push(rc * (q - 1.0));
         }
+        self.reach = self.offset.iter().fold(0.0, |r: f64, o| r.max(o.abs()));
+        self.top = s.z.iter().fold(f64::NEG_INFINITY, |t, z| t.max(*z));
     }
 
     /// Height of the base of a cam centred at `xj` resting on the profile (minus infinity
-    /// when no sample lies under it).
+    /// when no sample lies under it): the largest of the vertex and segment candidates
+    /// below, the same to the bit as over every candidate in any order. Two bounds skip
+    /// candidates that cannot be the largest:
+    /// - a segment's tangent point lies within `reach` (the window's largest tangent offset)
+    ///   of `xj`, so only the segments there are tried (one more index on each side for
+    ///   round-off);
+    /// - a vertex at distance `d` has the candidate `z − (rc − sqrt(rc² − d²))`, at most
+    ///   `z − d² / (2 rc)`; a vertex whose bound lies below the best so far by more than
+    ///   [`PRUNE_GUARD_M`] (far above the round-off of either) is skipped without its
+    ///   square root, and with the window's highest sample `top` only the vertices with
+    ///   `d² < 2 rc (top − best + guard)` are visited at all. The segments go first: they
+    ///   set a high best at no square root.
     fn base(&self, xj: f64) -> f64 {
         let (s, rc) = (self.s, self.rc);
         let nseg = s.z.len().saturating_sub(1);
@@ -454,23 +480,40 @@ impl Cams<'_> {
         let hi = ((((xj + rc) - s.x0) / s.h).floor().max(-1.0) + 1.0) as usize;
         let hi = hi.min(s.z.len());
         let mut b = f64::NEG_INFINITY;
-        // Vertices of the sampled profile under the cam.
-        for i in lo..hi {
-            let d = s.x(i) - xj;
-            let v = s.z[i] - (rc - (rc * rc - d * d).max(0.0).sqrt());
-            if v > b {
-                b = v;
-            }
-        }
         // Segments between samples (linear): the cam touches a segment of slope m at
         // x_j + rc m / sqrt(1 + m^2), base z_line(x_j) - rc + rc sqrt(1 + m^2).
-        for i in lo.saturating_sub(1)..hi.min(nseg) {
+        let near = (((xj - self.reach - s.x0) / s.h).floor() - 2.0).max(0.0) as usize;
+        let far = (((xj + self.reach - s.x0) / s.h).ceil() + 2.0).max(0.0) as usize;
+        for i in lo.saturating_sub(1).max(near)..hi.min(nseg).min(far) {
             let xt = xj + self.offset[i];
             if xt >= s.x(i) && xt <= s.x(i + 1) {
                 let v = s.z[i] + self.slope[i] * (xj - s.x(i)) + self.lift[i];
                 if v > b {
                     b = v;
                 }
+            }
+        }
+        // Vertices of the sampled profile under the cam: with the best so far `b`, only
+        // those with `top − d² / (2 rc) > b − guard`, i.e. `d² < 2 rc (top − b + guard)`.
+        let curvature = 0.5 / rc;
+        let mut floor = b - PRUNE_GUARD_M;
+        let (mut lo, mut hi) = (lo, hi);
+        if b.is_finite() {
+            let reach = (2.0 * rc * (self.top - floor)).max(0.0).sqrt();
+            let near = (((xj - reach - s.x0) / s.h).floor() - 1.0).max(0.0) as usize;
+            let far = (((xj + reach - s.x0) / s.h).ceil() + 2.0).max(0.0) as usize;
+            lo = lo.max(near);
+            hi = hi.min(far);
+        }
+        for i in lo..hi {
+            let d = s.x(i) - xj;
+            if s.z[i] - curvature * d * d <= floor {
+                continue;
+            }
+            let v = s.z[i] - (rc - (rc * rc - d * d).max(0.0).sqrt());
+            if v > b {
+                b = v;
+                floor = b - PRUNE_GUARD_M;
             }
         }
         b
@@ -522,5 +565,72 @@ fn finish(p1: (f64, f64), p2: (f64, f64), r: f64, x_c: f64, z_c: f64) -> Effecti
         slope,
         contact_length: dx.max(0.0),
         deflection,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The cam base over every vertex and segment under the cam, vertices first: the
+    /// definition [`Cams::base`] must give to the bit.
+    fn base_over_every_sample(c: &Cams, xj: f64) -> f64 {
+        let (s, rc) = (c.s, c.rc);
+        let nseg = s.z.len().saturating_sub(1);
+        let lo = (((xj - rc) - s.x0) / s.h).ceil().max(0.0) as usize;
+        let hi = ((((xj + rc) - s.x0) / s.h).floor().max(-1.0) + 1.0) as usize;
+        let hi = hi.min(s.z.len());
+        let mut b = f64::NEG_INFINITY;
+        for i in lo..hi {
+            let d = s.x(i) - xj;
+            b = b.max(s.z[i] - (rc - (rc * rc - d * d).max(0.0).sqrt()));
+        }
+        for i in lo.saturating_sub(1)..hi.min(nseg) {
+            let xt = xj + c.offset[i];
+            if xt >= s.x(i) && xt <= s.x(i + 1) {
+                b = b.max(s.z[i] + c.slope[i] * (xj - s.x(i)) + c.lift[i]);
+            }
+        }
+        b
+    }
+
+    /// On rough profiles with steps, plateaus and spikes, cams of several radii give the
+    /// same base with the low vertices skipped as over every sample, at cam centres on and
+    /// between the samples and beyond the window's ends.
+    #[test]
+    fn skipping_low_vertices_leaves_the_cam_base_unchanged_to_the_bit() {
+        let mut checked = 0;
+        for (h, rc) in [(0.01, 0.8), (0.02, 0.3), (0.005, 1.2)] {
+            let z: Vec<f64> = (0..400)
+                .map(|i| {
+                    let x = i as f64;
+                    let step = ((i * 7919) % 13) as f64 / 13.0;
+                    let spike = if i % 97 == 0 { 0.08 } else { 0.0 };
+                    let plateau = if (150..180).contains(&i) { 0.0 } else { 1.0 };
+                    plateau * (0.05 * (1.7 * x).sin() + 0.03 * (0.031 * x + 0.2).sin())
+                        + 0.01 * step
+                        + spike
+                })
+                .collect();
+            let samples = Samples { x0: -1.0, h, z: &z };
+            let mut cams = Cams {
+                s: &samples,
+                rc,
+                slope: ArrayVec::new(),
+                offset: ArrayVec::new(),
+                lift: ArrayVec::new(),
+                reach: 0.0,
+                top: f64::NEG_INFINITY,
+            };
+            cams.fill_segments();
+            let span = 400.0 * h;
+            for k in 0..=2000 {
+                let xj = -1.0 - 0.5 + (span + 1.0) * k as f64 / 2000.0;
+                let (fast, every) = (cams.base(xj), base_over_every_sample(&cams, xj));
+                assert_eq!(fast.to_bits(), every.to_bits(), "h {h}, rc {rc}, xj {xj}");
+                checked += usize::from(fast.is_finite());
+            }
+        }
+        assert!(checked > 5000, "{checked} finite bases");
     }
 }
