@@ -189,17 +189,7 @@ impl Envelope {
             h: self.spacing,
             z: &buf,
         };
-        let mut cams = Cams {
-            s: &samples,
-            rc: self.cam_radius,
-            slope: ArrayVec::new(),
-            offset: ArrayVec::new(),
-            lift: ArrayVec::new(),
-            reach: 0.0,
-            top: f64::NEG_INFINITY,
-        };
-        cams.fill_segments();
-        cams.base(x)
+        Cams::on(&samples, self.cam_radius).base(x)
     }
 
     /// Effective contact of a wheel with centre at `(x_c, z_c)` on `profile`.
@@ -242,16 +232,7 @@ impl Envelope {
                 solve(&|z_c| self.circle_line(profile, &samples, x_c, z_c))
             }
             EnvelopeMethod::TandemCams => {
-                let mut cams = Cams {
-                    s: &samples,
-                    rc: self.cam_radius,
-                    slope: ArrayVec::new(),
-                    offset: ArrayVec::new(),
-                    lift: ArrayVec::new(),
-                    reach: 0.0,
-                    top: f64::NEG_INFINITY,
-                };
-                cams.fill_segments();
+                let cams = Cams::on(&samples, self.cam_radius);
                 let central = cams.base(x_c);
                 solve(&|z_c| self.tandem_cams(&cams, central, x_c, z_c))
             }
@@ -446,18 +427,29 @@ struct Cams<'a> {
     top: f64,
 }
 
-impl Cams<'_> {
-    fn fill_segments(&mut self) {
-        let (s, rc) = (self.s, self.rc);
+impl<'a> Cams<'a> {
+    /// The cams of radius `rc` on the window `s`: every segment's slope, tangent offset and
+    /// lift, the largest offset and the highest sample.
+    fn on(s: &'a Samples<'a>, rc: f64) -> Self {
+        let mut cams = Cams {
+            s,
+            rc,
+            slope: ArrayVec::new(),
+            offset: ArrayVec::new(),
+            lift: ArrayVec::new(),
+            reach: 0.0,
+            top: f64::NEG_INFINITY,
+        };
         for i in 0..s.z.len().saturating_sub(1) {
             let m = (s.z[i + 1] - s.z[i]) / s.h;
             let q = (1.0 + m * m).sqrt();
-            self.slope.push(m);
-            self.offset.push(rc * m / q);
-            self.lift.push(rc * (q - 1.0));
+            cams.slope.push(m);
+            cams.offset.push(rc * m / q);
+            cams.lift.push(rc * (q - 1.0));
         }
-        self.reach = self.offset.iter().fold(0.0, |r: f64, o| r.max(o.abs()));
-        self.top = s.z.iter().fold(f64::NEG_INFINITY, |t, z| t.max(*z));
+        cams.reach = cams.offset.iter().fold(0.0, |r: f64, o| r.max(o.abs()));
+        cams.top = s.z.iter().fold(f64::NEG_INFINITY, |t, z| t.max(*z));
+        cams
     }
 
     /// Height of the base of a cam centred at `xj` resting on the profile (minus infinity
@@ -613,16 +605,7 @@ mod tests {
                 })
                 .collect();
             let samples = Samples { x0: -1.0, h, z: &z };
-            let mut cams = Cams {
-                s: &samples,
-                rc,
-                slope: ArrayVec::new(),
-                offset: ArrayVec::new(),
-                lift: ArrayVec::new(),
-                reach: 0.0,
-                top: f64::NEG_INFINITY,
-            };
-            cams.fill_segments();
+            let cams = Cams::on(&samples, rc);
             let span = 400.0 * h;
             for k in 0..=2000 {
                 let xj = -1.0 - 0.5 + (span + 1.0) * k as f64 / 2000.0;
