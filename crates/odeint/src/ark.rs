@@ -36,7 +36,7 @@
 //! block rows' known part `y + h Σ aI_ij f_j`, `aux[3]` the block mask.
 
 use crate::blocks;
-use crate::kernel::Kernel;
+use crate::kernel::{accepted_step_factor, rejected_step_factor, Kernel};
 use crate::linalg::lu_solve;
 use crate::tolerance::error_norm;
 use crate::{OdeSystem, Workspace};
@@ -421,18 +421,12 @@ impl Kernel for ArkKernel {
         match self.failure {
             Failure::Singular => 0.5,
             Failure::Newton => 0.25,
-            Failure::None if e.is_finite() => (0.9 * e.powf(-0.25)).clamp(0.2, 0.9),
-            Failure::None => 0.1,
+            Failure::None => rejected_step_factor(e, -0.25, 0.9),
         }
     }
 
     fn accept_factor(&self, e: f64, last_rejected: bool) -> f64 {
-        let f = (0.9 * e.max(1e-10).powf(-0.25)).clamp(0.2, 5.0);
-        if last_rejected {
-            f.min(1.0)
-        } else {
-            f
-        }
+        accepted_step_factor(e, -0.25, last_rejected)
     }
 
     /// The dense output reads the stages: nothing to evaluate.

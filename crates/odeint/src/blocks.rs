@@ -83,24 +83,3 @@ pub(crate) fn mark<S: OdeSystem + ?Sized>(sys: &S, ws: &mut Workspace) {
         mask[i] = 1.0;
     }
 }
-
-/// Cubic Hermite interpolation between `(y, k[0])` and `(y_new, k[6])` at `theta`, linear
-/// in the block states (`aux[3]`): there `f` multiplies the step's error by the stiffness,
-/// while the linear form's error is `h² |y''| / 8` of the slow motion the stiff state
-/// follows.
-pub(crate) fn dense(theta: f64, h: f64, ws: &mut Workspace) {
-    let Workspace {
-        y,
-        y_new,
-        y_out,
-        k,
-        aux,
-        ..
-    } = ws;
-    crate::rk4::hermite(theta, h, y, &k[0], y_new, &k[6], y_out);
-    for (i, m) in aux[3].iter().enumerate() {
-        if *m != 0.0 {
-            y_out[i] = (1.0 - theta) * y[i] + theta * y_new[i];
-        }
-    }
-}

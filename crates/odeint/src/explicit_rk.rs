@@ -13,7 +13,7 @@
 //! zero left out (the coefficients are constants, so the test costs nothing): the same
 //! operations in the same order as a hand-written stage of the pair.
 
-use crate::kernel::Kernel;
+use crate::kernel::{accepted_step_factor, rejected_step_factor, Kernel};
 use crate::stiffness::StiffnessWatch;
 use crate::tolerance::error_norm;
 use crate::{OdeSystem, Workspace};
@@ -140,20 +140,11 @@ impl<P: Pair> Kernel for FsalKernel<P> {
     }
 
     fn reject_factor(&self, e: f64) -> f64 {
-        if e.is_finite() {
-            (0.9 * e.powf(-0.2)).clamp(0.2, 1.0)
-        } else {
-            0.1
-        }
+        rejected_step_factor(e, -0.2, 1.0)
     }
 
     fn accept_factor(&self, e: f64, last_rejected: bool) -> f64 {
-        let fac = (0.9 * e.max(1e-10).powf(-0.2)).clamp(0.2, 5.0);
-        if last_rejected {
-            fac.min(1.0)
-        } else {
-            fac
-        }
+        accepted_step_factor(e, -0.2, last_rejected)
     }
 
     fn prepare_dense<S: OdeSystem + ?Sized>(

@@ -54,6 +54,28 @@ pub(crate) trait Kernel {
     }
 }
 
+/// Step-size factor after an accepted step of an adaptive kernel whose error estimate is of
+/// order `q − 1` (`exponent = −1/q`): `0.9 e^exponent` within `[0.2, 5]`, at most 1 right
+/// after a rejection (HNW I, II.4).
+pub(crate) fn accepted_step_factor(e: f64, exponent: f64, last_rejected: bool) -> f64 {
+    let f = (0.9 * e.max(1e-10).powf(exponent)).clamp(0.2, 5.0);
+    if last_rejected {
+        f.min(1.0)
+    } else {
+        f
+    }
+}
+
+/// Step-size factor after a rejected step with error norm `e`: `0.9 e^exponent` within
+/// `[0.2, max]`, or 0.1 when the attempt gave no finite error.
+pub(crate) fn rejected_step_factor(e: f64, exponent: f64, max: f64) -> f64 {
+    if e.is_finite() {
+        (0.9 * e.powf(exponent)).clamp(0.2, max)
+    } else {
+        0.1
+    }
+}
+
 /// Hairer's starting-step heuristic (HNW I, II.4) for a method of order `order`, from
 /// `(t, ws.y)` with `ws.k[0] = f(t, y)`; costs one RHS call (scratch `ws.y_stage`, `ws.k[1]`).
 pub(crate) fn initial_step<S: OdeSystem + ?Sized>(

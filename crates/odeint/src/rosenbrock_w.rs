@@ -33,7 +33,7 @@
 //! ([`crate::blocks`]).
 
 use crate::blocks;
-use crate::kernel::Kernel;
+use crate::kernel::{accepted_step_factor, rejected_step_factor, Kernel};
 use crate::linalg::lu_solve;
 use crate::tolerance::error_norm;
 use crate::{OdeSystem, Workspace};
@@ -271,20 +271,13 @@ impl Kernel for RosenbrockWKernel {
     fn reject_factor(&self, e: f64) -> f64 {
         if self.singular {
             0.5
-        } else if e.is_finite() {
-            (0.9 * e.powf(-1.0 / 3.0)).clamp(0.2, 0.9)
         } else {
-            0.1
+            rejected_step_factor(e, -1.0 / 3.0, 0.9)
         }
     }
 
     fn accept_factor(&self, e: f64, last_rejected: bool) -> f64 {
-        let f = (0.9 * e.max(1e-10).powf(-1.0 / 3.0)).clamp(0.2, 5.0);
-        if last_rejected {
-            f.min(1.0)
-        } else {
-            f
-        }
+        accepted_step_factor(e, -1.0 / 3.0, last_rejected)
     }
 
     fn prepare_dense<S2: OdeSystem + ?Sized>(
@@ -302,10 +295,25 @@ impl Kernel for RosenbrockWKernel {
         1
     }
 
-    /// Cubic Hermite in the explicit states, linear in the stiff ones
-    /// ([`blocks::dense`]).
+    /// Cubic Hermite interpolation between `(y, k[0])` and `(y_new, k[6])` at `theta`, linear
+    /// in the block states (`aux[3]`): there `f` multiplies the step's error by the stiffness,
+    /// while the linear form's error is `h² |y''| / 8` of the slow motion the stiff state
+    /// follows.
     fn dense(&self, theta: f64, h: f64, ws: &mut Workspace) {
-        blocks::dense(theta, h, ws);
+        let Workspace {
+            y,
+            y_new,
+            y_out,
+            k,
+            aux,
+            ..
+        } = ws;
+        crate::rk4::hermite(theta, h, y, &k[0], y_new, &k[6], y_out);
+        for (i, m) in aux[3].iter().enumerate() {
+            if *m != 0.0 {
+                y_out[i] = (1.0 - theta) * y[i] + theta * y_new[i];
+            }
+        }
     }
 
     fn accept<S2: OdeSystem + ?Sized>(

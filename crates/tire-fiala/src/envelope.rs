@@ -491,9 +491,9 @@ impl<'a> Cams<'a> {
         let mut floor = b - PRUNE_GUARD_M;
         let (mut lo, mut hi) = (lo, hi);
         if b.is_finite() {
-            let reach = (2.0 * rc * (self.top - floor)).max(0.0).sqrt();
-            let near = (((xj - reach - s.x0) / s.h).floor() - 1.0).max(0.0) as usize;
-            let far = (((xj + reach - s.x0) / s.h).ceil() + 2.0).max(0.0) as usize;
+            let span = (2.0 * rc * (self.top - floor)).max(0.0).sqrt();
+            let near = (((xj - span - s.x0) / s.h).floor() - 1.0).max(0.0) as usize;
+            let far = (((xj + span - s.x0) / s.h).ceil() + 2.0).max(0.0) as usize;
             lo = lo.max(near);
             hi = hi.min(far);
         }
