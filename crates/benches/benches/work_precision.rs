@@ -91,13 +91,12 @@ fn case_3d(name: &str, vehicle: &Vehicle, breakpoints: &[f64], t_end: f64) {
         assert_eq!(states.len(), reference.len());
         let (e, rms) = err(&states);
         println!(
-            "| {name} | {} | {:.1e} | {} | {} / {} | {} | {e:.2e} (rms {rms:.2e}) |",
+            "| {name} | {} | {:.1e} | {} | {} / {} | {e:.2e} (rms {rms:.2e}) |",
             solver.name(),
             rtol * f,
             st.rhs_evals,
             st.accepted,
             st.rejected,
-            st.switches,
         );
     }
 }
@@ -216,8 +215,8 @@ fn main() {
     {
         return;
     }
-    println!("| run | solver | rtol | RHS calls | accepted / rejected | switches | error |");
-    println!("|---|---|---|---|---|---|---|");
+    println!("| run | solver | rtol | RHS calls | accepted / rejected | error |");
+    println!("|---|---|---|---|---|---|");
     truck();
     vehicle_3d();
 }

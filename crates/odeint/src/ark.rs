@@ -19,19 +19,26 @@
 //! A stage's block rows are solved by Newton's method with the explicit rows held, block by
 //! block, with the model's own block rates ([`crate::OdeSystem::block_rhs`]: a strut's
 //! rates at its carrier's travel and rate, no vehicle right-hand side) and the block
-//! Jacobian at the step's start ([`crate::blocks`]); the block rows of `f_i` are then
+//! Jacobian at the step's start ([`crate::blocks`]), refreshed at the current iterate when
+//! the iteration stalls and the model gives the block's Jacobian
+//! ([`crate::OdeSystem::block_jacobian`]); the block rows of `f_i` are then
 //! `(Y_i − y − h Σ_{j<i} aI_ij f_j) / (h γ)`, the value the stage equation gives them. One
 //! right-hand side per stage evaluates the explicit rows at the solved stage. Since the
 //! explicit tableau's last row is not `b`, `f(t + h, y_1)` is evaluated as the next step's
 //! first stage: an accepted step costs six right-hand sides, a rejected one five, plus the
 //! Newton iterations' block evaluations.
 //!
-//! Dense output from the stages alone: Kennedy & Carpenter's third-order continuous
-//! extension `y(t + θh) = y + h Σ b_i(θ) f_i` in the explicit states, the quadratic
-//! through `y`, the fifth stage and `y_1` in the block states ([`ArkKernel`]'s `dense`).
+//! Dense output: the cubic Hermite interpolant of `y`, `y_1` and their rates (`f(t + h, y_1)`
+//! is the next step's first stage, evaluated once for both), in every state; a block state
+//! through a stiff start-up within the step takes the quadratic through `y`, the fifth stage
+//! and `y_1` instead ([`ArkKernel`]'s `dense`). Kennedy & Carpenter's third-order
+//! continuous extension from the stages alone read the strut's states (the block rows) so
+//! poorly between the steps of the 3-D vehicle's HPS ride that the cab's accelerations,
+//! computed from the interpolated states, were four times further from a tight reference
+//! than Dormand-Prince's; the Hermite form brings them within Dormand-Prince's.
 //!
 //! Workspace use: `k[0..6]` the stage derivatives `f_1..f_6` (`k[0] = f(t, y)`), `k[6]`
-//! the Newton iterations' block rates; `y_stage` the stage argument;
+//! the Newton iterations' block rates, then `f(t + h, y_1)`; `y_stage` the stage argument;
 //! `y_out` the Newton corrections; `aux[0]` the error, `aux[1]` solve scratch, `aux[2]` the
 //! block rows' known part `y + h Σ aI_ij f_j`, `aux[3]` the block mask.
 
@@ -47,12 +54,30 @@ const S: usize = 6;
 /// The diagonal of the implicit tableau.
 const GAMMA: f64 = 0.25;
 
-/// Newton iterations per stage and block before the step is refused.
+/// Newton iterations per stage and block before the block's Jacobian is refreshed (or,
+/// after [`MAX_REFRESH`] refreshes, the step refused).
 const MAX_NEWTON: usize = 7;
 
 /// A Newton iteration converged when its estimated remaining error is below this fraction
 /// of the tolerance (the weighted norm of the error estimate is 1 at the tolerance).
 const NEWTON_TOL: f64 = 0.03;
+
+/// A Newton iteration whose corrections shrink by less than this factor has stalled.
+const STALLED_RATE: f64 = 0.9;
+
+/// Refreshes of a block's Jacobian at the current iterate per stage, when its Newton
+/// iteration stalls, before the step is refused. The strut's orifice law makes the block's
+/// stiffness change fiftyfold between a moving strut and zero flow (150-700 s⁻¹ against
+/// 3·10⁴ s⁻¹), so the Jacobian of the step's start can be far from the stage's: on the
+/// loaded D1 ride with the nominal HPS, 2 200 of 2 750 refused steps were such stalls
+/// without the refresh; with up to one refresh 24 853 right-hand sides instead of 43 882,
+/// with up to three 23 818.
+const MAX_REFRESH: usize = 3;
+
+/// A block state's dense output leaves the cubic Hermite form when its start rate times the
+/// step exceeds this multiple of both its change over the step and its end rate times the
+/// step (a stiff start-up, [`ArkKernel`]'s `dense`).
+const STIFF_START: f64 = 4.0;
 
 /// The two tableaus (their Table "ARK4(3)6L\[2\]SA": ERK and ESDIRK).
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -67,8 +92,6 @@ pub(crate) struct Tableau {
     pub(crate) b: [f64; S],
     /// Embedded weights b̂_i (both parts).
     pub(crate) b_hat: [f64; S],
-    /// Dense output: `b_i(θ) = Σ_{k=1..3} d_ik θ^k` (order 3, both parts).
-    pub(crate) dense: [[f64; 3]; S],
 }
 
 impl Tableau {
@@ -133,34 +156,6 @@ impl Tableau {
                 -3_700_637.0 / 11_593_932.0,
                 61727.0 / 225_920.0,
             ],
-            dense: [
-                [
-                    6_943_876_665_148.0 / 7_220_017_795_957.0,
-                    -54_480_133.0 / 30_881_146.0,
-                    6_818_779_379_841.0 / 7_100_303_317_025.0,
-                ],
-                [0.0; 3],
-                [
-                    7_640_104_374_378.0 / 9_702_883_013_639.0,
-                    -11_436_875.0 / 14_766_696.0,
-                    2_173_542_590_792.0 / 12_501_825_683_035.0,
-                ],
-                [
-                    -20_649_996_744_609.0 / 7_521_556_579_894.0,
-                    174_696_575.0 / 18_121_608.0,
-                    -31_592_104_683_404.0 / 5_083_833_661_969.0,
-                ],
-                [
-                    8_854_892_464_581.0 / 2_390_941_311_638.0,
-                    -12_120_380.0 / 966_161.0,
-                    61_146_701_046_299.0 / 7_138_195_549_469.0,
-                ],
-                [
-                    -11_397_109_935_349.0 / 6_675_773_540_249.0,
-                    3843.0 / 706.0,
-                    -17_219_254_887_155.0 / 4_939_391_667_607.0,
-                ],
-            ],
         }
     }
 }
@@ -181,6 +176,8 @@ pub(crate) struct ArkKernel {
     tab: Tableau,
     need_jac: bool,
     failure: Failure,
+    /// `f(t + h, y_1)` of the step just taken is in `k[6]` (the dense output needed it).
+    end_rates: bool,
 }
 
 impl Default for ArkKernel {
@@ -189,6 +186,7 @@ impl Default for ArkKernel {
             tab: Tableau::ark436l2sa(),
             need_jac: true,
             failure: Failure::None,
+            end_rates: false,
         }
     }
 }
@@ -200,8 +198,9 @@ struct Newton<'a> {
     rtol: f64,
     atol: &'a [f64],
     /// The factored iteration matrices and their pivots, packed ([`blocks::factor`]).
-    w: &'a [f64],
-    piv: &'a [usize],
+    w: &'a mut [f64],
+    piv: &'a mut [usize],
+    jac: &'a mut [f64],
     /// The block rows' known part of the stage equation, by state index.
     known: &'a [f64],
     /// Block rates (or the whole right-hand side when the model has no block rates).
@@ -213,6 +212,29 @@ struct Newton<'a> {
 }
 
 impl Newton<'_> {
+    /// Block `b`'s Jacobian at the current iterate `(t, ys)` from the model
+    /// ([`OdeSystem::block_jacobian`]) and its iteration matrix refactored (`at`, `p`: its
+    /// place in the packed matrices and pivots). `false` when the model has no Jacobian of
+    /// its own (differencing the whole right-hand side would cost a step's worth) or the
+    /// matrix is singular.
+    fn refresh<S2: OdeSystem + ?Sized>(
+        &mut self,
+        sys: &S2,
+        t: f64,
+        ys: &[f64],
+        b: usize,
+        (at, p, nb): (usize, usize, usize),
+    ) -> bool {
+        let jb = &mut self.jac[at..at + nb * nb];
+        sys.block_jacobian(t, ys, b, jb)
+            && blocks::factor_block(
+                jb,
+                self.hg,
+                &mut self.w[at..at + nb * nb],
+                &mut self.piv[p..p + nb],
+            )
+    }
+
     /// Solve `Y_b = known_b + hγ f_b(t, Y)` for every block's rows of `ys` in place, the
     /// other rows held. Returns the whole right-hand sides evaluated (none when the model
     /// gives its block rates), `Err` with the same count when an iteration fails.
@@ -227,8 +249,9 @@ impl Newton<'_> {
         for (b, block) in sys.stiff_blocks().iter().enumerate() {
             let nb = block.len();
             let mut previous = f64::INFINITY;
-            let mut converged = false;
-            for iteration in 0..MAX_NEWTON {
+            let mut iteration = 0;
+            let mut refreshed = 0;
+            loop {
                 let own = sys.block_rhs(t, ys, b, &mut self.rates[..nb]);
                 if !own {
                     sys.rhs(t, ys, self.rates);
@@ -257,22 +280,26 @@ impl Newton<'_> {
                 if !norm.is_finite() {
                     return Err(evals);
                 }
-                if iteration == 0 {
-                    converged = norm <= 0.3 * NEWTON_TOL;
+                let rate = norm / previous;
+                let converged = if iteration == 0 {
+                    norm <= 0.3 * NEWTON_TOL
                 } else {
-                    let rate = norm / previous;
-                    if rate >= 0.9 {
-                        return Err(evals);
-                    }
-                    converged = rate / (1.0 - rate) * norm <= NEWTON_TOL;
-                }
+                    rate < STALLED_RATE && rate / (1.0 - rate) * norm <= NEWTON_TOL
+                };
                 if converged {
                     break;
                 }
+                if iteration > 0 && rate >= STALLED_RATE || iteration + 1 == MAX_NEWTON {
+                    if refreshed == MAX_REFRESH || !self.refresh(sys, t, ys, b, (at, p, nb)) {
+                        return Err(evals);
+                    }
+                    refreshed += 1;
+                    iteration = 0;
+                    previous = f64::INFINITY;
+                    continue;
+                }
                 previous = norm;
-            }
-            if !converged {
-                return Err(evals);
+                iteration += 1;
             }
             at += nb * nb;
             p += nb;
@@ -316,6 +343,7 @@ impl Kernel for ArkKernel {
 
     fn start<S2: OdeSystem + ?Sized>(&mut self, sys: &S2, t: f64, ws: &mut Workspace) -> usize {
         self.need_jac = true;
+        self.end_rates = false;
         blocks::mark(sys, ws);
         sys.rhs(t, &ws.y, &mut ws.k[0]);
         1
@@ -336,6 +364,7 @@ impl Kernel for ArkKernel {
             self.need_jac = false;
         }
         self.failure = Failure::None;
+        self.end_rates = false;
         let hg = h * GAMMA;
         if !blocks::factor(sys, hg, ws) {
             self.failure = Failure::Singular;
@@ -352,6 +381,7 @@ impl Kernel for ArkKernel {
             atol,
             w,
             piv,
+            jac,
             ..
         } = ws;
         let [err, tmp, known, mask] = aux;
@@ -381,8 +411,9 @@ impl Kernel for ArkKernel {
                 hg,
                 rtol,
                 atol,
-                w,
-                piv,
+                w: &mut w[..],
+                piv: &mut piv[..],
+                jac: &mut jac[..],
                 known,
                 rates: &mut scratch[0],
                 delta,
@@ -429,30 +460,41 @@ impl Kernel for ArkKernel {
         accepted_step_factor(e, -0.25, last_rejected)
     }
 
-    /// The dense output reads the stages: nothing to evaluate.
+    /// `f(t + h, y_1)` into `k[6]`: the dense output's end rates, and the next step's
+    /// first stage ([`Kernel::accept`] takes it from there).
     fn prepare_dense<S2: OdeSystem + ?Sized>(
         &mut self,
-        _sys: &S2,
-        _t: f64,
-        _h: f64,
-        _ws: &mut Workspace,
+        sys: &S2,
+        t: f64,
+        h: f64,
+        ws: &mut Workspace,
     ) -> usize {
-        0
+        sys.rhs(t + h, &ws.y_new, &mut ws.k[6]);
+        self.end_rates = true;
+        1
     }
 
-    /// Kennedy & Carpenter's third-order continuous extension in the explicit states,
-    /// `y(t + θh) = y + h Σ_i b_i(θ) f_i`. In the block states the stage derivatives carry
-    /// the stiffness times each stage's error, which those weights do not cancel (measured on
-    /// a follower state with k = 10⁵: errors 10³ times the tolerance between the steps);
-    /// there the state is the quadratic through `y`, the fifth stage `Y_5` (c = 17/20, stage
-    /// order 2, `Y_5 = y + h Σ_{j<=5} aI_5j f_j`) and `y_1`. On `y' = λ y` with `h λ → −∞` the
-    /// fifth stage keeps −0.157 of `y`, so a stiff start-up is damped in the interpolant as
-    /// much as in a linear one (which keeps `1 − θ` of it), while a slow motion the state
-    /// follows is interpolated to `O(h³)` instead of the linear form's `h² |y''| / 8`.
+    /// The cubic Hermite interpolant of the step's end values and rates,
+    /// `y + (y_1 − y)(3θ² − 2θ³) + h (f θ(1 − θ)² + f_1 θ²(θ − 1))`, `f = f(t, y)`,
+    /// `f_1 = f(t + h, y_1)`: order 3 in every state.
+    ///
+    /// A block state through a stiff start-up within the step (its rate at the start more
+    /// than [`STIFF_START`] times both its change over the step and its end rate, in steps)
+    /// takes the quadratic through `y`, the fifth stage `Y_5` and `y_1` instead: the start
+    /// rate of a fast transient the step has damped would swing the cubic far outside
+    /// `[y, y_1]`. The fifth stage (c = 17/20, stage order 2,
+    /// `Y_5 = y + h Σ_{j<=5} aI_5j f_j`) keeps −0.157 of such a start-up on `y' = λ y`,
+    /// `h λ → −∞`, as little as a linear interpolant keeps at θ = 0.85.
     fn dense(&self, theta: f64, h: f64, ws: &mut Workspace) {
-        let d = &self.tab.dense;
-        let w: [f64; S] =
-            std::array::from_fn(|i| theta * (d[i][0] + theta * (d[i][1] + theta * d[i][2])));
+        let t2 = theta * theta;
+        let t3 = t2 * theta;
+        let (w_end, w_f0, w_f1) = (3.0 * t2 - 2.0 * t3, theta - 2.0 * t2 + t3, t3 - t2);
+        let c5 = self.tab.c[4];
+        let l = [
+            (theta - c5) * (theta - 1.0) / c5,
+            theta * (theta - 1.0) / (c5 * (c5 - 1.0)),
+            theta * (theta - c5) / (1.0 - c5),
+        ];
         let Workspace {
             y,
             y_new,
@@ -461,22 +503,14 @@ impl Kernel for ArkKernel {
             aux,
             ..
         } = ws;
-        let c5 = self.tab.c[4];
-        let l = [
-            (theta - c5) * (theta - 1.0) / c5,
-            theta * (theta - 1.0) / (c5 * (c5 - 1.0)),
-            theta * (theta - c5) / (1.0 - c5),
-        ];
         for (r, m) in aux[3].iter().enumerate() {
-            y_out[r] = if *m != 0.0 {
+            let (f0, f1) = (h * k[0][r], h * k[6][r]);
+            let change = y_new[r] - y[r];
+            y_out[r] = if *m != 0.0 && f0.abs() > STIFF_START * change.abs().max(f1.abs()) {
                 let y5 = y[r] + h * (0..5).map(|j| self.tab.ai[4][j] * k[j][r]).sum::<f64>();
                 l[0] * y[r] + l[1] * y5 + l[2] * y_new[r]
             } else {
-                let mut s = 0.0;
-                for (wi, ki) in w.iter().zip(k.iter()) {
-                    s += wi * ki[r];
-                }
-                y[r] + h * s
+                y[r] + change * w_end + f0 * w_f0 + f1 * w_f1
             };
         }
     }
@@ -490,6 +524,11 @@ impl Kernel for ArkKernel {
     ) -> usize {
         ws.y.copy_from_slice(&ws.y_new);
         self.need_jac = true;
+        if std::mem::take(&mut self.end_rates) {
+            let [k0, .., k6] = &mut ws.k;
+            k0.copy_from_slice(k6);
+            return 0;
+        }
         sys.rhs(t_new, &ws.y, &mut ws.k[0]);
         1
     }
@@ -574,34 +613,6 @@ mod tests {
         let s_hat = tree_sums(&t.b_hat, &t.ae, &t.ae, &t.c);
         let off: f64 = (4..8).map(|k| (s_hat[k] - EXACT[k]).abs()).sum();
         assert!(off > 1e-4, "the embedding is of order 3 only: {off}");
-    }
-
-    /// The continuous extension meets the order-3 conditions of both parts at every
-    /// `θ = j/20` and gives the step's weights at `θ = 1`.
-    #[test]
-    fn dense_output_is_of_order_3_and_ends_on_the_step() {
-        let t = Tableau::ark436l2sa();
-        for j in 0..=20 {
-            let th = j as f64 / 20.0;
-            let w: Vec<f64> = (0..S)
-                .map(|i| (0..3).map(|k| t.dense[i][k] * th.powi(k as i32 + 1)).sum())
-                .collect();
-            for a in [&t.ae, &t.ai] {
-                let ac = |i: usize| (0..S).map(|k| a[i][k] * t.c[k]).sum::<f64>();
-                let sums = [
-                    (0..S).map(|i| w[i]).sum::<f64>() - th,
-                    (0..S).map(|i| w[i] * t.c[i]).sum::<f64>() - th * th / 2.0,
-                    (0..S).map(|i| w[i] * t.c[i] * t.c[i]).sum::<f64>() - th.powi(3) / 3.0,
-                    (0..S).map(|i| w[i] * ac(i)).sum::<f64>() - th.powi(3) / 6.0,
-                ];
-                assert!(sums.iter().all(|e| e.abs() < 1e-12), "θ {th}: {sums:?}");
-            }
-            if j == 20 {
-                for i in 0..S {
-                    assert!(close(w[i], t.b[i]), "b_{i}(1)");
-                }
-            }
-        }
     }
 
     /// On `y' = λ y` with `h λ → −∞` the implicit stages keep `R_i(∞) y`: the last is 0

@@ -56,23 +56,30 @@ pub(crate) fn jacobians<S: OdeSystem + ?Sized>(
 /// Factor `I/hg − J_b` of every block into `ws.w` (pivots packed in `ws.piv`), `hg` the
 /// step times the method's diagonal coefficient; `false` if one is singular.
 pub(crate) fn factor<S: OdeSystem + ?Sized>(sys: &S, hg: f64, ws: &mut Workspace) -> bool {
-    let inv = 1.0 / hg;
     let (mut at, mut p) = (0, 0);
     for block in sys.stiff_blocks() {
         let nb = block.len();
         let (jb, wb) = (&ws.jac[at..at + nb * nb], &mut ws.w[at..at + nb * nb]);
-        for r in 0..nb {
-            for c in 0..nb {
-                wb[r * nb + c] = if r == c { inv } else { 0.0 } - jb[r * nb + c];
-            }
-        }
-        if !lu_factor(wb, &mut ws.piv[p..p + nb], nb) {
+        if !factor_block(jb, hg, wb, &mut ws.piv[p..p + nb]) {
             return false;
         }
         at += nb * nb;
         p += nb;
     }
     true
+}
+
+/// Factor `I/hg − J_b` of one block (`jb` its Jacobian, row-major, `piv.len()` states) into
+/// `wb` and `piv`; `false` if singular.
+pub(crate) fn factor_block(jb: &[f64], hg: f64, wb: &mut [f64], piv: &mut [usize]) -> bool {
+    let nb = piv.len();
+    let inv = 1.0 / hg;
+    for r in 0..nb {
+        for c in 0..nb {
+            wb[r * nb + c] = if r == c { inv } else { 0.0 } - jb[r * nb + c];
+        }
+    }
+    lu_factor(wb, piv, nb)
 }
 
 /// Mark the block states in `ws.aux[3]` (1 on a block state, 0 elsewhere).

@@ -1,7 +1,7 @@
 //! Dormand-Prince 5(4) step with error estimate and 4th-order dense output
 //! (Hairer, Nørsett & Wanner, *Solving ODEs I*, section II.5/II.6, code DOPRI5).
 //!
-//! The step, its error estimate, the step-size factors and the stiffness test are the
+//! The step, its error estimate and the step-size factors are the
 //! shared seven-stage FSAL kernel's ([`crate::explicit_rk`]); this module gives the
 //! tableau and the dense output, whose coefficients it keeps in `aux[1..4]`.
 
@@ -49,7 +49,7 @@ const D7: f64 = 69997945.0 / 29380423.0;
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct DormandPrince;
 
-/// The Dormand-Prince 5(4) kernel with its stiffness test.
+/// The Dormand-Prince 5(4) kernel.
 pub(crate) type Dopri5Kernel = FsalKernel<DormandPrince>;
 
 impl Pair for DormandPrince {

@@ -8,7 +8,6 @@ use crate::kernel::{initial_step, Kernel};
 use crate::rk4::Rk4Kernel;
 use crate::rosenbrock::Rosenbrock23Kernel;
 use crate::rosenbrock_w::RosenbrockWKernel;
-use crate::switching::{Flow, SwitchRule};
 use crate::tsit5::Tsit5Kernel;
 use crate::{
     Atol, Control, OdeError, OdeSystem, Solver, Stats, Workspace, COLLAPSE_FACTOR,
@@ -182,10 +181,6 @@ impl Integrator {
         self.check_settings()?;
         ws.fit(sys.dim(), problem.events.len());
         self.atol.fill(&mut ws.atol)?;
-        if self.solver == Solver::Auto && !sys.is_stiff() && !sys.stiff_blocks().is_empty() {
-            let drive = Drive::new(self, sys, problem, Dopri5Kernel::default());
-            return switching_run(drive, ws, &mut observe);
-        }
         // `resolve` never returns `Auto`.
         match self.solver.resolve(sys) {
             Solver::Rosenbrock23 => Drive::new(self, sys, problem, Rosenbrock23Kernel::default())
@@ -322,7 +317,6 @@ struct Drive<'r, S: ?Sized, K> {
     next_out: usize,
     next_bp: usize,
     stats: Stats,
-    rule: SwitchRule,
 }
 
 impl<'r, S: OdeSystem + ?Sized, K: Kernel> Drive<'r, S, K> {
@@ -336,7 +330,6 @@ impl<'r, S: OdeSystem + ?Sized, K: Kernel> Drive<'r, S, K> {
             next_out: 0,
             next_bp: 0,
             stats: Stats::default(),
-            rule: SwitchRule::Never,
         }
     }
 
@@ -412,20 +405,18 @@ impl<'r, S: OdeSystem + ?Sized, K: Kernel> Drive<'r, S, K> {
         Control::Continue
     }
 
-    /// Integrate from `(self.t, ws.y)` (the method restarted there) to the end, or until the
-    /// switching rule hands the run to the other method ([`Flow::Switch`]).
+    /// Integrate from `(self.t, ws.y)` (the method restarted there) to the end.
     fn advance<F>(
         &mut self,
         fixed: Option<f64>,
         ws: &mut Workspace,
         observe: &mut F,
-    ) -> Result<Flow, OdeError>
+    ) -> Result<(), OdeError>
     where
         F: FnMut(Sample<'_>) -> Control,
     {
         let (t_out, t0) = (self.p.t_out, self.p.t0);
         let t_end = t_out[t_out.len() - 1];
-        self.rule.start_phase(self.t, &self.stats);
         let mut stop = self.next_stop(t_end);
         let mut h = self.restart(ws, stop);
         let mut last_rejected = false;
@@ -487,7 +478,7 @@ impl<'r, S: OdeSystem + ?Sized, K: Kernel> Drive<'r, S, K> {
             let ctl = self.emit_step(ws, t_new, h, observe);
             self.stats.accepted += 1;
             if ctl == Control::Stop {
-                return Ok(Flow::Done);
+                return Ok(());
             }
             self.stats.rhs_evals += self.kernel.accept(self.sys, t_new, ws);
             std::mem::swap(&mut ws.g_old, &mut ws.g_new);
@@ -504,30 +495,8 @@ impl<'r, S: OdeSystem + ?Sized, K: Kernel> Drive<'r, S, K> {
                 h = (h * self.kernel.accept_factor(e, last_rejected)).min(self.cfg.max_step);
                 last_rejected = false;
             }
-            if self
-                .rule
-                .switch_now(self.t, &self.stats, self.kernel.stiff())
-            {
-                self.stats.switches += 1;
-                return Ok(Flow::Switch);
-            }
         }
-        Ok(Flow::Done)
-    }
-
-    /// The same run carried on by `kernel` under `rule` (a method switch).
-    fn hand_over<K2: Kernel>(self, kernel: K2, rule: SwitchRule) -> Drive<'r, S, K2> {
-        Drive {
-            cfg: self.cfg,
-            sys: self.sys,
-            p: self.p,
-            kernel,
-            t: self.t,
-            next_out: self.next_out,
-            next_bp: self.next_bp,
-            stats: self.stats,
-            rule,
-        }
+        Ok(())
     }
 
     /// [`OdeError::StepSizeCollapsed`] when, every 1024 steps from [`COLLAPSE_MIN_STEPS`]
@@ -628,36 +597,5 @@ impl<'r, S: OdeSystem + ?Sized, K: Kernel> Drive<'r, S, K> {
                 return Control::Stop;
             }
         }
-    }
-}
-
-/// [`Solver::Auto`] on a model with stiff blocks: Dormand-Prince until it detects
-/// stiffness, then ROS34PW2 on trial; the run stays with whichever advanced more simulated
-/// time per right-hand side (docs/numerics.md, "Switching").
-fn switching_run<S, F>(
-    drive: Drive<'_, S, Dopri5Kernel>,
-    ws: &mut Workspace,
-    observe: &mut F,
-) -> Result<Stats, OdeError>
-where
-    S: OdeSystem + ?Sized,
-    F: FnMut(Sample<'_>) -> Control,
-{
-    let mut explicit = drive;
-    explicit.rule = SwitchRule::watching(0);
-    if explicit.begin(ws, observe) == Control::Stop {
-        return Ok(explicit.stats);
-    }
-    loop {
-        if explicit.advance(None, ws, observe)? == Flow::Done {
-            return Ok(explicit.stats);
-        }
-        let trial = SwitchRule::trial(explicit.rule.phase_pace(explicit.t, &explicit.stats));
-        let mut implicit = explicit.hand_over(RosenbrockWKernel::default(), trial);
-        if implicit.advance(None, ws, observe)? == Flow::Done {
-            return Ok(implicit.stats);
-        }
-        let cooldown = SwitchRule::watching(implicit.stats.accepted);
-        explicit = implicit.hand_over(Dopri5Kernel::default(), cooldown);
     }
 }

@@ -1,20 +1,17 @@
 //! What the two explicit 5(4) pairs share, Dormand-Prince ([`crate::dopri5`]) and Tsitouras
 //! ([`crate::tsit5`]): seven stages, first same as last (the propagated solution is the
 //! seventh stage's argument, so `k7 = f(t + h, y_new)` is the next step's `k1`), the error
-//! estimate `h Σ (b̂_i − b_i) k_i`, the step-size factors of an order-5 controller, and the
-//! stiffness test on the stages `k6` and `k7` (both at `t + h`, [`crate::stiffness`]). A pair
-//! gives its tableau and its own dense output ([`Pair`]); [`FsalKernel`] does the rest.
+//! estimate `h Σ (b̂_i − b_i) k_i` and the step-size factors of an order-5 controller. A
+//! pair gives its tableau and its own dense output ([`Pair`]); [`FsalKernel`] does the rest.
 //!
 //! Workspace use: `k[0..7]` the stages k1..k7, `aux[0]` the error estimate, `y_stage` the
-//! sixth stage's argument (kept to the end of the step for the stiffness test); `aux[1..4]`
-//! are the pair's, for its dense output.
+//! stage argument; `aux[1..4]` are the pair's, for its dense output.
 //!
 //! The stage sums are written term by term from `k1` on, each term whose coefficient is
 //! zero left out (the coefficients are constants, so the test costs nothing): the same
 //! operations in the same order as a hand-written stage of the pair.
 
 use crate::kernel::{accepted_step_factor, rejected_step_factor, Kernel};
-use crate::stiffness::StiffnessWatch;
 use crate::tolerance::error_norm;
 use crate::{OdeSystem, Workspace};
 
@@ -57,21 +54,15 @@ fn weighted<const N: usize>(c: &[f64; N], k: [&[f64]; N], i: usize) -> f64 {
     sum
 }
 
-/// The step of a seven-stage FSAL pair `P` with its stiffness test.
+/// The step of a seven-stage FSAL pair `P`.
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct FsalKernel<P> {
-    /// Step of the last attempt.
-    h: f64,
-    /// Stiffness test.
-    watch: StiffnessWatch,
     pair: std::marker::PhantomData<P>,
 }
 
 impl<P> Default for FsalKernel<P> {
     fn default() -> Self {
         Self {
-            h: 0.0,
-            watch: StiffnessWatch::default(),
             pair: std::marker::PhantomData,
         }
     }
@@ -81,7 +72,6 @@ impl<P: Pair> Kernel for FsalKernel<P> {
     const ORDER: i32 = 5;
 
     fn start<S: OdeSystem + ?Sized>(&mut self, sys: &S, t: f64, ws: &mut Workspace) -> usize {
-        self.watch.reset();
         sys.rhs(t, &ws.y, &mut ws.k[0]);
         1
     }
@@ -106,7 +96,6 @@ impl<P: Pair> Kernel for FsalKernel<P> {
         let [k1, k2, k3, k4, k5, k6, k7] = k;
         let err = &mut aux[0];
         let n = y.len();
-        self.h = h;
         for i in 0..n {
             ys[i] = y[i] + h * P::A2 * k1[i];
         }
@@ -167,15 +156,10 @@ impl<P: Pair> Kernel for FsalKernel<P> {
         _t_new: f64,
         ws: &mut Workspace,
     ) -> usize {
-        let [k1, .., k6, k7] = &mut ws.k;
-        self.watch.observe(self.h, k6, k7, &ws.y_stage, &ws.y_new);
+        let [k1, .., k7] = &mut ws.k;
         k1.copy_from_slice(k7);
         ws.y.copy_from_slice(&ws.y_new);
         0
-    }
-
-    fn stiff(&self) -> bool {
-        self.watch.stiff()
     }
 }
 

@@ -46,12 +46,6 @@ pub(crate) trait Kernel {
     /// Commit the step (`ws.y <- ws.y_new`) and carry what the next step can reuse.
     /// Returns RHS calls.
     fn accept<S: OdeSystem + ?Sized>(&mut self, sys: &S, t_new: f64, ws: &mut Workspace) -> usize;
-
-    /// Has the method found the problem stiff (its steps held by stability, not accuracy)?
-    /// Only the explicit 5(4) pairs tell (Dormand-Prince, Tsitouras); the others answer `false`.
-    fn stiff(&self) -> bool {
-        false
-    }
 }
 
 /// Step-size factor after an accepted step of an adaptive kernel whose error estimate is of

@@ -26,8 +26,6 @@ mod rk4;
 mod rosenbrock;
 mod rosenbrock_w;
 mod solver;
-mod stiffness;
-mod switching;
 mod tolerance;
 mod tsit5;
 mod workspace;
@@ -167,9 +165,6 @@ pub struct Stats {
     pub rejected: usize,
     /// Event crossings located and reported.
     pub events: usize,
-    /// Method switches of a switching [`Solver::Auto`] run (Dormand-Prince to ROS34PW2 and
-    /// back); 0 for every other solver.
-    pub switches: usize,
 }
 
 /// What the observer wants after seeing an output.

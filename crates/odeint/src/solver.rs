@@ -42,20 +42,20 @@ pub enum Solver {
         step: f64,
     },
     /// Let the model choose: [`Solver::Rosenbrock23`] when [`OdeSystem::is_stiff`] answers
-    /// `true`; otherwise [`Solver::Dopri5`], which on a model with stiff blocks
-    /// ([`OdeSystem::stiff_blocks`]) hands the run to [`Solver::Ros34pw2`] when it finds the
-    /// problem stiff and the implicit method proves faster on trial (docs/numerics.md,
-    /// "Switching").
+    /// `true`; [`Solver::Ark436`] on a model with stiff blocks ([`OdeSystem::stiff_blocks`]:
+    /// the suspended vehicles' struts); otherwise [`Solver::Dopri5`] (docs/numerics.md,
+    /// "Choosing the method").
     Auto,
 }
 
 impl Solver {
-    /// The concrete method `sys` starts with ([`Solver::Auto`] asks [`OdeSystem::is_stiff`];
-    /// the others are returned as they are). A switching `Auto` run starts with
-    /// [`Solver::Dopri5`].
+    /// The concrete method of a run of `sys` ([`Solver::Auto`] asks
+    /// [`OdeSystem::is_stiff`] and [`OdeSystem::stiff_blocks`]; the others are returned as
+    /// they are).
     pub fn resolve<S: OdeSystem + ?Sized>(self, sys: &S) -> Solver {
         match self {
             Solver::Auto if sys.is_stiff() => Solver::Rosenbrock23,
+            Solver::Auto if !sys.stiff_blocks().is_empty() => Solver::Ark436,
             Solver::Auto => Solver::Dopri5,
             s => s,
         }

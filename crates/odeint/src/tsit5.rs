@@ -12,7 +12,7 @@
 //! 1.06·10⁻³ against 1.18·10⁻³ (computed from the coefficients in 40-digit arithmetic;
 //! docs/numerics.md, "Tsitouras 5(4)").
 //!
-//! The step, its error estimate, the step-size factors and the stiffness test are the
+//! The step, its error estimate and the step-size factors are the
 //! shared seven-stage FSAL kernel's ([`crate::explicit_rk`], as for Dormand-Prince); this
 //! module gives the tableau and the dense output, which reads the stages directly, so it
 //! needs no preparation: `y(t + θh) = y + h Σ_i b_i(θ) k_i` with the paper's quartic
@@ -92,7 +92,7 @@ pub(crate) const R: [[f64; 4]; 7] = [
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct Tsitouras;
 
-/// The Tsitouras 5(4) kernel with the stiffness test of [`crate::stiffness`].
+/// The Tsitouras 5(4) kernel.
 pub(crate) type Tsit5Kernel = FsalKernel<Tsitouras>;
 
 impl Pair for Tsitouras {

@@ -178,19 +178,19 @@ fn spelled_ros34pw2() {
         "\"ros34pw2\""
     );
     assert_eq!(Solver::Ros34pw2.name(), "ros34pw2");
-    // Auto never picks it
+    // Auto picks the additive Runge-Kutta method on a model with stiff blocks
     let sys = StiffFollower {
         k: 1.0,
         blocks: vec![vec![2]],
         own_jacobian: true,
     };
-    assert_eq!(Solver::Auto.resolve(&sys), Solver::Dopri5);
+    assert_eq!(Solver::Auto.resolve(&sys), Solver::Ark436);
 }
 
-/// `Auto` on a model with stiff blocks: a stiff run is handed to ROS34PW2 and costs a
-/// fraction of Dormand-Prince's; a non-stiff one stays with Dormand-Prince, step for step.
+/// `Auto` on a model with stiff blocks is the additive Runge-Kutta method, step for step:
+/// on a stiff follower a fraction of Dormand-Prince's cost, at the same answer.
 #[test]
-fn auto_switches_to_the_w_method_when_stiffness_pays() {
+fn auto_on_a_model_with_stiff_blocks_is_ark436() {
     let run = |k: f64, solver| {
         let sys = StiffFollower {
             k,
@@ -206,19 +206,17 @@ fn auto_switches_to_the_w_method_when_stiffness_pays() {
             .unwrap();
         (st, last)
     };
+    for k in [1.0, 1e5] {
+        assert_eq!(run(k, Solver::Auto), run(k, Solver::Ark436), "k = {k}");
+    }
     let (auto, y_auto) = run(1e5, Solver::Auto);
     let (explicit, y_explicit) = run(1e5, Solver::Dopri5);
-    assert!(auto.switches >= 1, "{auto:?}");
     assert!(
         auto.rhs_evals * 10 < explicit.rhs_evals,
         "auto {auto:?} explicit {explicit:?}"
     );
+    // the fourth-order method's global error after 10 s at rtol 1e-6: 1.2e-5 (measured)
     for (a, b) in y_auto.iter().zip(&y_explicit) {
-        assert!((a - b).abs() < 1e-5, "{y_auto:?} {y_explicit:?}");
+        assert!((a - b).abs() < 3e-5, "{y_auto:?} {y_explicit:?}");
     }
-    // k = 1: nothing stiff, the Auto run is the Dormand-Prince run
-    let (auto, y_auto) = run(1.0, Solver::Auto);
-    let (explicit, y_explicit) = run(1.0, Solver::Dopri5);
-    assert_eq!(auto.switches, 0);
-    assert_eq!((auto.rhs_evals, y_auto), (explicit.rhs_evals, y_explicit));
 }

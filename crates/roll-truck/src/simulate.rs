@@ -391,7 +391,6 @@ fn add(total: &mut odeint::Stats, piece: &odeint::Stats) {
     total.accepted += piece.accepted;
     total.rejected += piece.rejected;
     total.events += piece.events;
-    total.switches += piece.switches;
 }
 
 /// Forces and contact quantities of `vehicle` at `(t, y)` (one right-hand-side

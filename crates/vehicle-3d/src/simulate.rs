@@ -1,5 +1,6 @@
 //! A run of the vehicle: from the static equilibrium at the target speed, integrated with
-//! `odeint` (Dormand-Prince 5(4), per-state absolute tolerances from typical magnitudes,
+//! `odeint` (Dormand-Prince 5(4) on rigid axles, ARK4(3)6L\[2\]SA implicit in the struts'
+//! states on suspended ones, per-state absolute tolerances from typical magnitudes,
 //! breakpoints at the steering input's kinks), recorded on a uniform output grid. With
 //! `stop_at_rollover` the run ends at the rear unit's absolute rollover (L1843, point C),
 //! located as a terminal event on [`Vehicle`]'s rollover margin.
@@ -36,9 +37,9 @@ pub struct RunOptions {
     pub max_step_s: f64,
     /// End the run at the rear unit's absolute rollover.
     pub stop_at_rollover: bool,
-    /// Integration method. Default [`Solver::Auto`]: Dormand-Prince, handing the run to
-    /// [`Solver::Ros34pw2`] (implicit in each HPS strut's states) when it finds the struts
-    /// stiff and the implicit method proves faster (docs/numerics.md, "Switching").
+    /// Integration method. Default [`Solver::Auto`]: Dormand-Prince on a vehicle without
+    /// struts, the additive Runge-Kutta method [`Solver::Ark436`] (implicit in each HPS
+    /// strut's states) on one with them (docs/numerics.md, "Choosing the method").
     pub solver: Solver,
 }
 

@@ -120,10 +120,7 @@ fn the_implicit_block_runs_agree_with_dopri5_at_tight_tolerance() {
             .map(|(x, y)| (x - y).abs())
             .fold(0.0, f64::max)
     };
-    for (solver, bound) in [
-        (odeint::Solver::Ros34pw2, 5e-3),
-        (odeint::Solver::Ark436, 1e-2),
-    ] {
+    for solver in [odeint::Solver::Ros34pw2, odeint::Solver::Ark436] {
         let w = simulate(&v, &run(solver, 1e-6)).unwrap();
         for k in 0..2 {
             let travel = worst(&w.hps_travel_m[k], &reference.hps_travel_m[k]);
@@ -132,12 +129,11 @@ fn the_implicit_block_runs_agree_with_dopri5_at_tight_tolerance() {
                 "{solver:?}, strut {k}: travel differs by {travel} m"
             );
         }
-        // the additive method's steps are longer, and between them its dense output is
-        // linear in the struts' states (odeint's ARK kernel): 5.5e-3 m/s² at one sample
-        // (0.38 s), 5e-4 with steps held to 1 ms
+        // measured: 3.3e-4 m/s² (ROS34PW2) and 3.7e-4 (ARK, whose quadratic dense output in
+        // the struts' states gave 5.5e-3 before the cubic Hermite form)
         let a = worst(&w.cab_accel_m_s2[2], &reference.cab_accel_m_s2[2]);
         assert!(
-            a < bound,
+            a < 1e-3,
             "{solver:?}: vertical acceleration differs by {a} m/s2"
         );
     }
