@@ -308,10 +308,11 @@ fn a_stalled_newton_iteration_refreshes_the_block_jacobian() {
         .map(|(a, b)| (a[2] - b[2]).abs())
         .fold(0.0, f64::max);
     assert!(err < 1e-5, "s error {err}");
-    // Without the model's Jacobian the iteration cannot refresh it, and a stall refuses
-    // the step (measured: 78 refused steps with the refresh, 156 without).
+    // Without the model's Jacobian the iteration cannot refresh it (nor damp after a
+    // refresh), and a stall refuses the step (measured: 58 refused steps with the refresh
+    // and the damping, 78 with the refresh alone, 156 without).
     assert!(
-        3 * st_with.rejected < 2 * st_without.rejected && st_with.accepted <= st_without.accepted,
+        2 * st_with.rejected < st_without.rejected && st_with.accepted <= st_without.accepted,
         "{st_with:?} against {st_without:?}"
     );
 }
