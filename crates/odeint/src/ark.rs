@@ -282,6 +282,8 @@ impl Newton<'_> {
                     d,
                     self.tmp,
                 );
+                // the step taken may be damped; the convergence test reads the full Newton
+                // correction, the distance still to go
                 let mut sum = 0.0;
                 for (c, &r) in block.iter().enumerate() {
                     ys[r] -= damping * d[c];
