@@ -1,14 +1,16 @@
 //! Project automation, run as `cargo xtask <task>` (alias in `.cargo/config.toml`).
 //!
-//! - `bench [CARGO BENCH ARGS...]`: run every criterion bench of the workspace, then print
-//!   one table of mean times. A benchmark whose id ends in `_sim<N>s` simulates N seconds
+//! - `bench [CARGO BENCH ARGS...]`: run every criterion bench of the workspace (or those the
+//!   harness arguments filter), then print one table of the mean times this run measured. A
+//!   benchmark whose id ends in `_sim<N>s` simulates N seconds
 //!   (`p` may stand for the decimal point: `_sim1p25s`), and the table adds its real-time
 //!   factor = simulated seconds / wall seconds.
 //!   Then the whole-command timings of what users run (`commands.rs`: the release binary run
 //!   `--runs N` times per command, default 20, median). `bench --commands` prints only these.
 //!   `--profile dist` builds both with the workspace's `dist` profile (fat LTO, one codegen
 //!   unit) instead of `release`.
-//! - `bench --summary`: only print the table from the last run's results.
+//! - `bench --summary`: only print the table of every result on disk, the latest of each
+//!   bench (those of benches since removed included).
 //! - `bench --no-discovery`: leave out the whole discovery runs (the ignored timing test of
 //!   `afsv-discovery`) that follow the criterion table.
 //! - `validate [--fixtures DIR] [--out DIR]`: compare our models with the dissertation's
@@ -187,6 +189,9 @@ fn bench(args: &[String]) -> Result<(), String> {
     let no_discovery = args.iter().any(|a| a == "--no-discovery");
     args.retain(|a| a != "--summary" && a != "--no-discovery");
     let args = &args[..];
+    // A run lists what it measured; `--summary` lists every result on disk, the latest of
+    // each bench (results of benches since removed or filtered out included).
+    let since = (!summary_only).then(std::time::SystemTime::now);
     if !summary_only {
         let mut cmd = Command::new(std::env::var("CARGO").unwrap_or_else(|_| "cargo".into()));
         cmd.current_dir(&root)
@@ -205,7 +210,7 @@ fn bench(args: &[String]) -> Result<(), String> {
     }
     let dir = root.join("target").join("criterion");
     let mut rows = Vec::new();
-    collect(&dir, &mut rows)?;
+    collect(&dir, since, &mut rows)?;
     if rows.is_empty() {
         return Err(format!("no criterion results under {}", dir.display()));
     }
@@ -265,8 +270,13 @@ fn discovery_rows(root: &std::path::Path) -> Result<(), String> {
     Ok(())
 }
 
-/// Walk `target/criterion` for `new/estimates.json` + `new/benchmark.json` pairs.
-fn collect(dir: &Path, rows: &mut Vec<(String, f64)>) -> Result<(), String> {
+/// Walk `target/criterion` for `new/estimates.json` + `new/benchmark.json` pairs, those
+/// written at `since` or later when given.
+fn collect(
+    dir: &Path,
+    since: Option<std::time::SystemTime>,
+    rows: &mut Vec<(String, f64)>,
+) -> Result<(), String> {
     let Ok(entries) = std::fs::read_dir(dir) else {
         return Ok(());
     };
@@ -278,6 +288,10 @@ fn collect(dir: &Path, rows: &mut Vec<(String, f64)>) -> Result<(), String> {
         if path.file_name().is_some_and(|n| n == "new") {
             let est = path.join("estimates.json");
             let meta = path.join("benchmark.json");
+            let written = std::fs::metadata(&est).and_then(|m| m.modified());
+            if since.is_some_and(|t| written.map_or(true, |w| w < t)) {
+                continue;
+            }
             if let (Ok(e), Ok(m)) = (
                 std::fs::read_to_string(&est),
                 std::fs::read_to_string(&meta),
@@ -293,7 +307,7 @@ fn collect(dir: &Path, rows: &mut Vec<(String, f64)>) -> Result<(), String> {
                 }
             }
         } else if path.file_name().is_some_and(|n| n != "report") {
-            collect(&path, rows)?;
+            collect(&path, since, rows)?;
         }
     }
     Ok(())
