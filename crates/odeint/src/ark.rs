@@ -188,7 +188,7 @@ pub(crate) struct ArkKernel {
     need_jac: bool,
     failure: Failure,
     /// `f(t + h, y_1)` of the step just taken is in `k[6]` (the dense output needed it).
-    end_rates: bool,
+    end_ready: bool,
 }
 
 impl Default for ArkKernel {
@@ -197,7 +197,7 @@ impl Default for ArkKernel {
             tab: Tableau::ark436l2sa(),
             need_jac: true,
             failure: Failure::None,
-            end_rates: false,
+            end_ready: false,
         }
     }
 }
@@ -358,10 +358,8 @@ impl Kernel for ArkKernel {
 
     fn start<S2: OdeSystem + ?Sized>(&mut self, sys: &S2, t: f64, ws: &mut Workspace) -> usize {
         self.need_jac = true;
-        self.end_rates = false;
-        blocks::mark(sys, ws);
-        sys.rhs(t, &ws.y, &mut ws.k[0]);
-        1
+        self.end_ready = false;
+        blocks::start(sys, t, ws)
     }
 
     #[allow(clippy::needless_range_loop)] // stage indices read as the equations
@@ -379,7 +377,7 @@ impl Kernel for ArkKernel {
             self.need_jac = false;
         }
         self.failure = Failure::None;
-        self.end_rates = false;
+        self.end_ready = false;
         let hg = h * GAMMA;
         if !blocks::factor(sys, hg, ws) {
             self.failure = Failure::Singular;
@@ -484,14 +482,11 @@ impl Kernel for ArkKernel {
         h: f64,
         ws: &mut Workspace,
     ) -> usize {
-        sys.rhs(t + h, &ws.y_new, &mut ws.k[6]);
-        self.end_rates = true;
-        1
+        blocks::end_rates(sys, t + h, ws, &mut self.end_ready)
     }
 
-    /// The cubic Hermite interpolant of the step's end values and rates,
-    /// `y + (y_1 − y)(3θ² − 2θ³) + h (f θ(1 − θ)² + f_1 θ²(θ − 1))`, `f = f(t, y)`,
-    /// `f_1 = f(t + h, y_1)`: order 3 in every state.
+    /// The cubic Hermite interpolant of the step's end values and rates (`rk4::hermite`,
+    /// as RK4 and ROS34PW2), `f(t, y)` and `f_1 = f(t + h, y_1)`: order 3 in every state.
     ///
     /// A block state through a stiff start-up within the step (its rate at the start more
     /// than [`STIFF_START`] times both its change over the step and its end rate, in steps)
@@ -501,15 +496,6 @@ impl Kernel for ArkKernel {
     /// `Y_5 = y + h Σ_{j<=5} aI_5j f_j`) keeps −0.157 of such a start-up on `y' = λ y`,
     /// `h λ → −∞`, as little as a linear interpolant keeps at θ = 0.85.
     fn dense(&self, theta: f64, h: f64, ws: &mut Workspace) {
-        let t2 = theta * theta;
-        let t3 = t2 * theta;
-        let (w_end, w_f0, w_f1) = (3.0 * t2 - 2.0 * t3, theta - 2.0 * t2 + t3, t3 - t2);
-        let c5 = self.tab.c[4];
-        let l = [
-            (theta - c5) * (theta - 1.0) / c5,
-            theta * (theta - 1.0) / (c5 * (c5 - 1.0)),
-            theta * (theta - c5) / (1.0 - c5),
-        ];
         let Workspace {
             y,
             y_new,
@@ -518,34 +504,33 @@ impl Kernel for ArkKernel {
             aux,
             ..
         } = ws;
+        crate::rk4::hermite(theta, h, y, &k[0], y_new, &k[6], y_out);
+        let c5 = self.tab.c[4];
+        let l = [
+            (theta - c5) * (theta - 1.0) / c5,
+            theta * (theta - 1.0) / (c5 * (c5 - 1.0)),
+            theta * (theta - c5) / (1.0 - c5),
+        ];
         for (r, m) in aux[3].iter().enumerate() {
             let (f0, f1) = (h * k[0][r], h * k[6][r]);
             let change = y_new[r] - y[r];
-            y_out[r] = if *m != 0.0 && f0.abs() > STIFF_START * change.abs().max(f1.abs()) {
+            if *m != 0.0 && f0.abs() > STIFF_START * change.abs().max(f1.abs()) {
                 let y5 = y[r] + h * (0..5).map(|j| self.tab.ai[4][j] * k[j][r]).sum::<f64>();
-                l[0] * y[r] + l[1] * y5 + l[2] * y_new[r]
-            } else {
-                y[r] + change * w_end + f0 * w_f0 + f1 * w_f1
-            };
+                y_out[r] = l[0] * y[r] + l[1] * y5 + l[2] * y_new[r];
+            }
         }
     }
 
-    /// `f(t + h, y_1)`, the next step's first stage.
+    /// `f(t + h, y_1)`, the next step's first stage: the dense output's end rates when it
+    /// evaluated them.
     fn accept<S2: OdeSystem + ?Sized>(
         &mut self,
         sys: &S2,
         t_new: f64,
         ws: &mut Workspace,
     ) -> usize {
-        ws.y.copy_from_slice(&ws.y_new);
         self.need_jac = true;
-        if std::mem::take(&mut self.end_rates) {
-            let [k0, .., k6] = &mut ws.k;
-            k0.copy_from_slice(k6);
-            return 0;
-        }
-        sys.rhs(t_new, &ws.y, &mut ws.k[0]);
-        1
+        blocks::commit(sys, t_new, ws, &mut self.end_ready)
     }
 }
 

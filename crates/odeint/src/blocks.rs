@@ -4,8 +4,13 @@
 //! Rosenbrock-W method ([`crate::Solver::Ros34pw2`]) and the additive Runge-Kutta method
 //! ([`crate::Solver::Ark436`]).
 //!
+//! Both end a step at `y_1` with the cubic Hermite dense output, whose end rates
+//! `f(t + h, y_1)` are the next step's first stage: [`start`], [`end_rates`] and [`commit`]
+//! evaluate them once for both.
+//!
 //! Workspace use: `jac` the packed block Jacobians, `w` their factored iteration matrices,
-//! `piv` their pivots (packed), `aux[3]` the mask (1 on a block state, else 0).
+//! `piv` their pivots (packed), `aux[3]` the mask (1 on a block state, else 0), `k[0]` the
+//! step's first stage `f(t, y)`, `k[6]` the end rates.
 
 use crate::linalg::lu_factor;
 use crate::{OdeSystem, Workspace};
@@ -88,5 +93,49 @@ pub(crate) fn mark<S: OdeSystem + ?Sized>(sys: &S, ws: &mut Workspace) {
     mask.fill(0.0);
     for &i in sys.stiff_blocks().iter().flatten() {
         mask[i] = 1.0;
+    }
+}
+
+/// (Re)start at `(t, ws.y)`: mark the block states and evaluate the first stage
+/// `ws.k[0] = f(t, y)`. Returns RHS calls.
+pub(crate) fn start<S: OdeSystem + ?Sized>(sys: &S, t: f64, ws: &mut Workspace) -> usize {
+    mark(sys, ws);
+    sys.rhs(t, &ws.y, &mut ws.k[0]);
+    1
+}
+
+/// The end rates `f(t_end, y_1)` of the step just taken into `ws.k[6]`, once per step
+/// (`ready` says they are there). Returns RHS calls.
+pub(crate) fn end_rates<S: OdeSystem + ?Sized>(
+    sys: &S,
+    t_end: f64,
+    ws: &mut Workspace,
+    ready: &mut bool,
+) -> usize {
+    if *ready {
+        return 0;
+    }
+    sys.rhs(t_end, &ws.y_new, &mut ws.k[6]);
+    *ready = true;
+    1
+}
+
+/// Commit the step (`ws.y <- ws.y_new`) and set the next step's first stage
+/// `ws.k[0] = f(t_new, y)`: the end rates when [`end_rates`] left them (`ready`, cleared),
+/// else evaluated. Returns RHS calls.
+pub(crate) fn commit<S: OdeSystem + ?Sized>(
+    sys: &S,
+    t_new: f64,
+    ws: &mut Workspace,
+    ready: &mut bool,
+) -> usize {
+    ws.y.copy_from_slice(&ws.y_new);
+    let [f0, .., f_end] = &mut ws.k;
+    if std::mem::take(ready) {
+        f0.copy_from_slice(f_end);
+        0
+    } else {
+        sys.rhs(t_new, &ws.y, f0);
+        1
     }
 }

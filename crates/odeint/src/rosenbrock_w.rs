@@ -194,9 +194,7 @@ impl Kernel for RosenbrockWKernel {
     fn start<S2: OdeSystem + ?Sized>(&mut self, sys: &S2, t: f64, ws: &mut Workspace) -> usize {
         self.need_jac = true;
         self.end_ready = false;
-        blocks::mark(sys, ws);
-        sys.rhs(t, &ws.y, &mut ws.k[0]);
-        1
+        blocks::start(sys, t, ws)
     }
 
     fn attempt<S2: OdeSystem + ?Sized>(
@@ -287,12 +285,7 @@ impl Kernel for RosenbrockWKernel {
         h: f64,
         ws: &mut Workspace,
     ) -> usize {
-        if self.end_ready {
-            return 0;
-        }
-        sys.rhs(t + h, &ws.y_new, &mut ws.k[6]);
-        self.end_ready = true;
-        1
+        blocks::end_rates(sys, t + h, ws, &mut self.end_ready)
     }
 
     /// Cubic Hermite interpolation between `(y, k[0])` and `(y_new, k[6])` at `theta`, linear
@@ -322,17 +315,8 @@ impl Kernel for RosenbrockWKernel {
         t_new: f64,
         ws: &mut Workspace,
     ) -> usize {
-        ws.y.copy_from_slice(&ws.y_new);
         self.need_jac = true;
-        let [f0, .., f_end] = &mut ws.k;
-        if self.end_ready {
-            f0.copy_from_slice(f_end);
-            self.end_ready = false;
-            0
-        } else {
-            sys.rhs(t_new, &ws.y, f0);
-            1
-        }
+        blocks::commit(sys, t_new, ws, &mut self.end_ready)
     }
 }
 
