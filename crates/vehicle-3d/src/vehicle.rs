@@ -100,6 +100,16 @@ pub fn course_frame(
     (x - axle_x0 + x_s, y_s - y, -heading)
 }
 
+/// The unit horizontal direction `(cos ψ, sin ψ, 0)` of a body axis whose world x and y
+/// components are `(x, y)` (the axis projected on the ground; ψ its heading), without the
+/// angle: `(x, y, 0) / √(x² + y²)`. The axis is a rotation's column, so `x² + y²` is 1 on
+/// level ground and near it whenever the body is not standing on end.
+#[inline]
+fn ground_direction(x: f64, y: f64) -> Vector3<f64> {
+    let len = (x * x + y * y).sqrt();
+    Vector3::new(x / len, y / len, 0.0)
+}
+
 /// Largest state dimension (HPS on both axles with the rear bogie, 70 states, and every
 /// strut extension on stay below it).
 pub const MAX_DIM: usize = 96;
@@ -611,7 +621,7 @@ impl Vehicle {
         // tires (Eqs 6.1-6.3, Table 6.2) and the drive
         let rot = ws.body_rotation(body::FRONT);
         let heading = rot[(1, 0)].atan2(rot[(0, 0)]);
-        let h = Vector3::new(heading.cos(), heading.sin(), 0.0);
+        let h = ground_direction(rot[(0, 0)], rot[(1, 0)]);
         let path = PathFrame {
             direction: h,
             origin: ws.body_position(body::FRONT),
@@ -624,7 +634,8 @@ impl Vehicle {
             // the wheel's heading: the carrier's x axis projected on the ground; its axle:
             // the carrier's y axis
             let carrier = ws.body_rotation(m.carrier);
-            let heading = carrier[(1, 0)].atan2(carrier[(0, 0)]).sin_cos();
+            let along = ground_direction(carrier[(0, 0)], carrier[(1, 0)]);
+            let heading = (along.y, along.x);
             let axle = carrier.column(1).into_owned();
             let omega =
                 ws.body_rotation(m.wheel) * multibody::spatial::angular(&ws.body_velocity(m.wheel));
