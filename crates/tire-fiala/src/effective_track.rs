@@ -9,7 +9,7 @@
 //! order in the load change on rough ground. Its rate with the line held fixed is
 //! `v_s sin theta - v_z cos theta`.
 
-use crate::envelope::Envelope;
+use crate::envelope::{EffectiveContact, Envelope};
 use crate::error::{positive, TireError};
 use crate::terrain::Profile;
 
@@ -81,6 +81,13 @@ impl EffectiveTrack {
             });
         }
         let n = grid_points((s_start, s_end), 0.0, ds)?;
+        // the profile sampled once for every grid point's window (none when the range
+        // needs more samples than a cache may hold: each window then samples its own)
+        let reach = radius + envelope.cam_radius() + 2.0 * envelope.sample_spacing();
+        let s_last = s_start + (n - 1) as f64 * ds;
+        let sampled = envelope
+            .sample(profile, (s_start - reach, s_last + reach))
+            .ok();
         let mut wheel_z = Vec::with_capacity(n);
         let mut slope = Vec::with_capacity(n);
         let mut z = f64::NAN;
@@ -92,7 +99,7 @@ impl EffectiveTrack {
             // Newton on the wheel height, d(delta)/dz = -cos(theta), warm-started from the
             // previous grid point (one step is usually enough); the profile under the
             // wheel is sampled once for all its iterations.
-            let c = envelope.contacts_at(profile, s, |contact| {
+            let mut newton = |contact: &dyn Fn(f64) -> EffectiveContact| {
                 let mut c = contact(z);
                 for _ in 0..NEWTON_ITERATIONS {
                     let step = (c.deflection - reference_deflection) / c.slope.cos().max(0.1);
@@ -103,7 +110,11 @@ impl EffectiveTrack {
                     }
                 }
                 c
-            });
+            };
+            let c = match &sampled {
+                Some(sampled) => envelope.contacts_in(sampled, profile, s, &mut newton),
+                None => envelope.contacts_at(profile, s, &mut newton),
+            };
             wheel_z.push(z);
             slope.push(c.slope);
         }
@@ -188,8 +199,18 @@ impl InstantaneousTrack {
         let radius = envelope.radius();
         let n = grid_points((s_start, s_end), 2.0 * radius, ds)?;
         let s0 = s_start - radius;
+        // the profile sampled once for every cam's window (none beyond a cache's size)
+        let reach = envelope.cam_radius() + 2.0 * envelope.sample_spacing();
+        let s_last = s0 + (n - 1) as f64 * ds;
+        let sampled = envelope.sample(profile, (s0 - reach, s_last + reach)).ok();
         let base = (0..n)
-            .map(|i| envelope.cam_base(profile, s0 + i as f64 * ds))
+            .map(|i| {
+                let s = s0 + i as f64 * ds;
+                match &sampled {
+                    Some(sampled) => envelope.cam_base_in(sampled, profile, s),
+                    None => envelope.cam_base(profile, s),
+                }
+            })
             .collect::<Vec<_>>();
         if let Some(b) = base.iter().find(|b| !b.is_finite()) {
             return Err(TireError::InvalidParameter {

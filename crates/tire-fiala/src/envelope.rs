@@ -16,6 +16,7 @@
 //! allocation: samples live in a fixed stack buffer of [`MAX_SAMPLES`].
 
 use crate::error::{positive, TireError};
+use crate::sampled::SampledProfile;
 use crate::terrain::Profile;
 use arrayvec::ArrayVec;
 
@@ -177,19 +178,62 @@ impl Envelope {
     /// envelopes it); minus infinity where no sample lies under the cam. The base the
     /// tandem cams of [`Envelope::contact`] rest on.
     pub fn cam_base<P: Profile + ?Sized>(&self, profile: &P, x: f64) -> f64 {
+        let (i0, n) = self.cam_window(x);
         let mut buf = ArrayVec::<f64, MAX_SAMPLES>::new();
-        // one sample beyond the cam each side: the segment the cam's rim ends on
-        let i0 = ((x - self.cam_radius) / self.spacing).ceil() - 1.0;
-        let i1 = ((x + self.cam_radius) / self.spacing).floor() + 1.0;
-        let n = ((i1 - i0) as usize + 1).min(MAX_SAMPLES);
-        let x0 = i0 * self.spacing;
-        buf.extend((0..n).map(|i| profile.height_at(x0 + i as f64 * self.spacing)));
+        buf.extend((0..n).map(|i| profile.height_at(grid_x(i0, i, self.spacing))));
         let samples = Samples {
-            x0,
+            x0: i0 * self.spacing,
             h: self.spacing,
             z: &buf,
         };
         Cams::on(&samples, self.cam_radius, &mut Segments::new()).base(x)
+    }
+
+    /// [`Envelope::cam_base`] read from `sampled` (the profile sampled once over a range,
+    /// [`Envelope::sample`]) where the cam's window lies inside it, else from `profile`:
+    /// the same base to the bit.
+    pub fn cam_base_in<P: Profile + ?Sized>(
+        &self,
+        sampled: &SampledProfile,
+        profile: &P,
+        x: f64,
+    ) -> f64 {
+        let (i0, n) = self.cam_window(x);
+        match sampled.window(self, i0, n) {
+            Some((samples, segments)) => Cams::over(&samples, self.cam_radius, segments).base(x),
+            None => self.cam_base(profile, x),
+        }
+    }
+
+    /// The first global sample index (as a float) and the number of samples of the window a
+    /// cam centred at `x` reads: one sample beyond the cam each side, the segment its rim
+    /// ends on.
+    fn cam_window(&self, x: f64) -> (f64, usize) {
+        let i0 = ((x - self.cam_radius) / self.spacing).ceil() - 1.0;
+        let i1 = ((x + self.cam_radius) / self.spacing).floor() + 1.0;
+        (i0, ((i1 - i0) as usize + 1).min(MAX_SAMPLES))
+    }
+
+    /// The first global sample index (as a float) and the number of samples of the window
+    /// the contact of a wheel at `x_c` reads: the profile within the window's half width.
+    fn contact_window(&self, x_c: f64) -> (f64, usize) {
+        let half = self.window_half_width();
+        let i0 = ((x_c - half) / self.spacing).ceil();
+        let i1 = ((x_c + half) / self.spacing).floor();
+        (i0, ((i1 - i0) as usize + 1).min(MAX_SAMPLES))
+    }
+
+    /// The profile sampled once on the global grid over `(x_lo, x_hi)` (m), with the cams'
+    /// segment data: what every contact and cam base inside that range reads, so that a
+    /// cache along a track ([`crate::EffectiveTrack`], [`crate::InstantaneousTrack`])
+    /// samples each point once instead of once per overlapping window. At most
+    /// [`crate::effective_track::MAX_TRACK_POINTS`] samples.
+    pub fn sample<P: Profile + ?Sized>(
+        &self,
+        profile: &P,
+        (x_lo, x_hi): (f64, f64),
+    ) -> Result<SampledProfile, TireError> {
+        SampledProfile::new(self, profile, (x_lo, x_hi))
     }
 
     /// Effective contact of a wheel with centre at `(x_c, z_c)` on `profile`.
@@ -215,25 +259,56 @@ impl Envelope {
     ) -> R {
         // stack buffers filled to the window's length only: zero-filling all MAX_SAMPLES
         // points cost more than the sampling itself
+        let (i0, n) = self.contact_window(x_c);
         let mut buf = ArrayVec::<f64, MAX_SAMPLES>::new();
-        let half = self.window_half_width();
-        let i0 = ((x_c - half) / self.spacing).ceil();
-        let i1 = ((x_c + half) / self.spacing).floor();
-        let n = ((i1 - i0) as usize + 1).min(MAX_SAMPLES);
-        let x0 = i0 * self.spacing;
-        buf.extend((0..n).map(|i| profile.height_at(x0 + i as f64 * self.spacing)));
+        buf.extend((0..n).map(|i| profile.height_at(grid_x(i0, i, self.spacing))));
         let samples = Samples {
-            x0,
+            x0: i0 * self.spacing,
             h: self.spacing,
             z: &buf,
         };
+        self.contacts_on(profile, &samples, None, x_c, solve)
+    }
+
+    /// [`Envelope::contacts_at`] read from `sampled` (the profile sampled once over a range,
+    /// [`Envelope::sample`]) where the wheel's window lies inside it, else from `profile`:
+    /// the same contacts to the bit.
+    pub fn contacts_in<P: Profile + ?Sized, R>(
+        &self,
+        sampled: &SampledProfile,
+        profile: &P,
+        x_c: f64,
+        solve: impl FnOnce(&dyn Fn(f64) -> EffectiveContact) -> R,
+    ) -> R {
+        let (i0, n) = self.contact_window(x_c);
+        match sampled.window(self, i0, n) {
+            Some((samples, segments)) => {
+                self.contacts_on(profile, &samples, Some(segments), x_c, solve)
+            }
+            None => self.contacts_at(profile, x_c, solve),
+        }
+    }
+
+    /// The contacts at `x_c` on the window `samples` (and, for the cams, its `segments` when
+    /// they are at hand, else computed here).
+    fn contacts_on<P: Profile + ?Sized, R>(
+        &self,
+        profile: &P,
+        samples: &Samples,
+        segments: Option<SegmentView>,
+        x_c: f64,
+        solve: impl FnOnce(&dyn Fn(f64) -> EffectiveContact) -> R,
+    ) -> R {
         match self.method {
             EnvelopeMethod::CircleLine => {
-                solve(&|z_c| self.circle_line(profile, &samples, x_c, z_c))
+                solve(&|z_c| self.circle_line(profile, samples, x_c, z_c))
             }
             EnvelopeMethod::TandemCams => {
-                let mut segments = Segments::new();
-                let cams = Cams::on(&samples, self.cam_radius, &mut segments);
+                let mut own = Segments::new();
+                let cams = match segments {
+                    Some(view) => Cams::over(samples, self.cam_radius, view),
+                    None => Cams::on(samples, self.cam_radius, &mut own),
+                };
                 let central = cams.base(x_c);
                 solve(&|z_c| self.tandem_cams(&cams, central, x_c, z_c))
             }
@@ -398,11 +473,22 @@ fn place(
     }
 }
 
+/// The x of sample `i` of a window whose first sample has the global index `i0` (an
+/// integer held as a float): `(i0 + i) h`, the global grid point itself, so a window of a
+/// [`SampledProfile`] holds the very samples a window sampled on its own would.
+#[inline]
+fn grid_x(i0: f64, i: usize, h: f64) -> f64 {
+    (i0 + i as f64) * h
+}
+
 /// Profile samples on the global grid.
-struct Samples<'a> {
-    x0: f64,
-    h: f64,
-    z: &'a [f64],
+pub(crate) struct Samples<'a> {
+    /// x of the first sample (m).
+    pub(crate) x0: f64,
+    /// Spacing (m).
+    pub(crate) h: f64,
+    /// Heights (m).
+    pub(crate) z: &'a [f64],
 }
 
 impl Samples<'_> {
@@ -412,18 +498,37 @@ impl Samples<'_> {
     }
 }
 
+/// What a cam of radius `rc` sees of the segment from height `z0` to `z1` over the spacing
+/// `h`: its slope m, the offset `rc m / sqrt(1 + m²)` of the cam's tangent point and the
+/// cam's lift `rc (sqrt(1 + m²) − 1)` there.
+#[inline]
+pub(crate) fn segment(z0: f64, z1: f64, h: f64, rc: f64) -> (f64, f64, f64) {
+    let m = (z1 - z0) / h;
+    let q = (1.0 + m * m).sqrt();
+    (m, rc * m / q, rc * (q - 1.0))
+}
+
 /// The cams of section 6.2.2 on one sampled window: per segment the slope m, the tangent
 /// offset rc m / sqrt(1 + m^2) and the base lift rc (sqrt(1 + m^2) - 1), computed once for
 /// all cam evaluations.
 struct Cams<'a> {
     s: &'a Samples<'a>,
     rc: f64,
-    seg: &'a Segments,
+    seg: SegmentView<'a>,
     /// The largest `|offset|` of the window's segments: a cam at `x_j` touches no segment
     /// farther than that from `x_j`.
     reach: f64,
     /// The window's highest sample (minus infinity for none).
     top: f64,
+}
+
+/// A window's segments as [`segment`] gives them, one entry per pair of neighbouring
+/// samples: borrowed from a [`Segments`] buffer or from a [`SampledProfile`].
+#[derive(Clone, Copy)]
+pub(crate) struct SegmentView<'a> {
+    pub(crate) slope: &'a [f64],
+    pub(crate) offset: &'a [f64],
+    pub(crate) lift: &'a [f64],
 }
 
 /// The window's segments as cams of one radius see them: each one's slope, the offset of a
@@ -449,19 +554,29 @@ impl Segments {
 }
 
 impl<'a> Cams<'a> {
-    /// The cams of radius `rc` on the window `s`, their segments in `seg`: every segment's
-    /// slope, tangent offset and lift, the largest offset and the highest sample.
+    /// The cams of radius `rc` on the window `s`, their segments computed into `seg`.
     fn on(s: &'a Samples<'a>, rc: f64, seg: &'a mut Segments) -> Self {
         seg.slope.clear();
         seg.offset.clear();
         seg.lift.clear();
         for i in 0..s.z.len().saturating_sub(1) {
-            let m = (s.z[i + 1] - s.z[i]) / s.h;
-            let q = (1.0 + m * m).sqrt();
+            let (m, offset, lift) = segment(s.z[i], s.z[i + 1], s.h, rc);
             seg.slope.push(m);
-            seg.offset.push(rc * m / q);
-            seg.lift.push(rc * (q - 1.0));
+            seg.offset.push(offset);
+            seg.lift.push(lift);
         }
+        let seg: &'a Segments = seg;
+        let view = SegmentView {
+            slope: &seg.slope,
+            offset: &seg.offset,
+            lift: &seg.lift,
+        };
+        Self::over(s, rc, view)
+    }
+
+    /// The cams of radius `rc` on the window `s` with its segments `seg` (one per pair of
+    /// neighbouring samples): the largest offset and the highest sample.
+    fn over(s: &'a Samples<'a>, rc: f64, seg: SegmentView<'a>) -> Self {
         Cams {
             s,
             rc,
@@ -487,14 +602,14 @@ impl<'a> Cams<'a> {
     fn base(&self, xj: f64) -> f64 {
         let (s, rc) = (self.s, self.rc);
         let nseg = s.z.len().saturating_sub(1);
-        let lo = (((xj - rc) - s.x0) / s.h).ceil().max(0.0) as usize;
-        let hi = ((((xj + rc) - s.x0) / s.h).floor().max(-1.0) + 1.0) as usize;
+        let lo = fast_ceil(((xj - rc) - s.x0) / s.h).max(0.0) as usize;
+        let hi = (fast_floor(((xj + rc) - s.x0) / s.h).max(-1.0) + 1.0) as usize;
         let hi = hi.min(s.z.len());
         let mut b = f64::NEG_INFINITY;
         // Segments between samples (linear): the cam touches a segment of slope m at
         // x_j + rc m / sqrt(1 + m^2), base z_line(x_j) - rc + rc sqrt(1 + m^2).
-        let near = (((xj - self.reach - s.x0) / s.h).floor() - 2.0).max(0.0) as usize;
-        let far = (((xj + self.reach - s.x0) / s.h).ceil() + 2.0).max(0.0) as usize;
+        let near = (fast_floor((xj - self.reach - s.x0) / s.h) - 2.0).max(0.0) as usize;
+        let far = (fast_ceil((xj + self.reach - s.x0) / s.h) + 2.0).max(0.0) as usize;
         for i in lo.saturating_sub(1).max(near)..hi.min(nseg).min(far) {
             let xt = xj + self.seg.offset[i];
             if xt >= s.x(i) && xt <= s.x(i + 1) {
@@ -511,8 +626,8 @@ impl<'a> Cams<'a> {
         let (mut lo, mut hi) = (lo, hi);
         if b.is_finite() {
             let span = (2.0 * rc * (self.top - floor)).max(0.0).sqrt();
-            let near = (((xj - span - s.x0) / s.h).floor() - 1.0).max(0.0) as usize;
-            let far = (((xj + span - s.x0) / s.h).ceil() + 2.0).max(0.0) as usize;
+            let near = (fast_floor((xj - span - s.x0) / s.h) - 1.0).max(0.0) as usize;
+            let far = (fast_ceil((xj + span - s.x0) / s.h) + 2.0).max(0.0) as usize;
             lo = lo.max(near);
             hi = hi.min(far);
         }
@@ -528,6 +643,39 @@ impl<'a> Cams<'a> {
             }
         }
         b
+    }
+}
+
+/// `v.floor()` without the library call (the baseline x86-64 target has no rounding
+/// instruction, and `f64::floor` is a call): the same value for every `v`, but a negative
+/// zero for `v` in (−1, −0] may come out as +0 (the cam base only compares and truncates
+/// these).
+#[inline]
+fn fast_floor(v: f64) -> f64 {
+    if v.abs() < 4.5e15 {
+        let t = v as i64 as f64;
+        if t > v {
+            t - 1.0
+        } else {
+            t
+        }
+    } else {
+        v.floor()
+    }
+}
+
+/// `v.ceil()` without the library call, as [`fast_floor`].
+#[inline]
+fn fast_ceil(v: f64) -> f64 {
+    if v.abs() < 4.5e15 {
+        let t = v as i64 as f64;
+        if t < v {
+            t + 1.0
+        } else {
+            t
+        }
+    } else {
+        v.ceil()
     }
 }
 

@@ -38,6 +38,7 @@ pub mod model;
 pub mod params;
 mod registry;
 pub mod relaxation;
+pub mod sampled;
 mod table;
 pub mod terrain;
 pub mod vertical;
@@ -59,5 +60,6 @@ pub use relaxation::{
     contact_velocity_lag_rate, lag_rate, regularised_speed, slip_lag_rate, Relaxation,
     LOW_SPEED_REGULARISATION,
 };
+pub use sampled::SampledProfile;
 pub use terrain::{PolylineProfile, Profile, Track};
 pub use vertical::{LoadDeflectionTable, VerticalContact};

@@ -197,6 +197,34 @@ proptest! {
         }
     }
 
+    /// A profile sampled once over a range serves every window inside it with the very
+    /// contacts and cam bases a window sampled on its own gives, to the bit; a window
+    /// reaching past the range, or an envelope of another spacing, is sampled on its own.
+    #[test]
+    fn a_profile_sampled_once_gives_each_window_to_the_bit(
+        xs in prop::collection::vec(-60.0..60.0f64, 1..8), z in 0.5..1.4f64,
+        amp in 0.0..0.3f64, k in 0.5..20.0f64, cams in prop::bool::ANY,
+    ) {
+        let prof = move |x: f64| amp * (k * x).sin() + 0.02 * (3.1 * k * x + 1.0).sin();
+        let m = if cams { EnvelopeMethod::TandemCams } else { EnvelopeMethod::CircleLine };
+        let e = env(m);
+        let sampled = e.sample(&prof, (-40.0, 40.0)).unwrap();
+        let (lo, hi) = sampled.range();
+        prop_assert!(lo <= -40.0 && hi >= 40.0 && hi - lo < 80.0 + 3.0 * e.sample_spacing());
+        let other = Envelope::new(m, 1.0, 0.5 * e.sample_spacing()).unwrap();
+        for &x in &xs {
+            for e in [e, other] {
+                let own = e.contacts_at(&prof, x, |contact| contact(z));
+                let shared = e.contacts_in(&sampled, &prof, x, |contact| contact(z));
+                prop_assert_eq!(own, shared);
+                prop_assert_eq!(
+                    e.cam_base(&prof, x).to_bits(),
+                    e.cam_base_in(&sampled, &prof, x).to_bits()
+                );
+            }
+        }
+    }
+
     #[test]
     fn enveloping_is_finite_and_consistent(
         x in -50.0..50.0f64, z in -0.5..2.0f64, amp in 0.0..0.3f64, k in 0.5..20.0f64,
