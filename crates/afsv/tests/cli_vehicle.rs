@@ -200,6 +200,28 @@ fn roll_to_rollover_reports_sp_drt_within_the_sustained_period() {
     assert!(svg.contains("written_by: afsv") && svg.contains("sustained period"));
 }
 
+/// At its defaults `vehicle roll --seed N` is D2 on the terrain of seed N, the run
+/// `afsv evaluate` makes: the same duration, so the same terrain length and realisation.
+#[test]
+fn a_roll_seed_reads_the_terrain_evaluate_reads() {
+    use vehicle_3d::scenarios::{roll, RollSpec};
+    use vehicle_3d::{FrontAxle, VehicleParams};
+    let v = json(&afsv(&["vehicle", "roll", "--seed", "3", "--json"]));
+    let (_, m) = roll(
+        &VehicleParams::nominal(),
+        &RollSpec::d2(FrontAxle::Rigid),
+        3,
+    )
+    .unwrap();
+    let rollover = m.rollover_s.expect("D2 rolls over");
+    assert!(
+        (num(&v["rollover_s"]["mean"]) - rollover).abs() < 1e-9,
+        "{} against {rollover}",
+        v["rollover_s"]
+    );
+    assert!((num(&v["sp_drt_m_s2"]["mean"]) - m.sp_drt_m_s2).abs() < 1e-9);
+}
+
 #[test]
 fn simulate_writes_an_afsv_v1_record_of_a_right_hand_pulse() {
     let out = scratch("vehicle", "run.csv");

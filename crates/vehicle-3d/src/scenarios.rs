@@ -586,13 +586,18 @@ impl RollSpec {
             speed_kmh: 50.0,
             ramp_deg_s: 5.0,
             ramp_start_s: 1.0,
-            // rollover comes at 25-30 s on class E; the enveloping cache covers the path
-            // of the whole run, so a longer limit costs in proportion
-            t_end_s: 45.0,
+            t_end_s: D2_DURATION_S,
             terrain: Some(TerrainSpec::default()),
         }
     }
 }
+
+/// The longest D2 run (s), when the rear unit does not roll over: rollover comes at 25-30 s
+/// on class E. The terrain is synthesised over the path of the whole run, so a seed's
+/// terrain depends on this length (and the speed): a run of another duration reads another
+/// realisation under the same seed. The enveloping cache covers that path too, so a longer
+/// limit also costs in proportion.
+pub const D2_DURATION_S: f64 = 45.0;
 
 /// The vehicle options of a roll run.
 pub(crate) fn roll_options(spec: &RollSpec) -> VehicleOptions {

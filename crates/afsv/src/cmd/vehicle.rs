@@ -133,8 +133,11 @@ pub enum Command {
         /// Steering-wheel rate of the ramp from t = 1 s (deg/s), 0.01 to 1000; D2: 5.
         #[arg(long, default_value_t = 5.0, allow_hyphen_values = true, value_parser = ramp_rate)]
         ramp_deg_s: f64,
-        /// Longest run if the rear unit does not roll over (s), at most 600.
-        #[arg(long, default_value_t = 90.0, allow_hyphen_values = true, value_parser = duration_s)]
+        /// Longest run if the rear unit does not roll over (s), at most 600; D2: 45. The
+        /// terrain is synthesised over the whole run's path, so another duration (or speed)
+        /// reads another terrain under the same seed; at the default a seed's terrain is the
+        /// one `afsv evaluate` runs.
+        #[arg(long, default_value_t = vehicle_3d::scenarios::D2_DURATION_S, allow_hyphen_values = true, value_parser = duration_s)]
         duration: f64,
     },
     /// D3 yaw: a 0.2 s half-sine steering-wheel pulse at t = 1 s; omega_z and zeta of the
