@@ -7,7 +7,7 @@
 mod common;
 mod counting;
 
-use common::{loglog_slope, Logistic};
+use common::{loglog_slope, Logistic, StiffFollower};
 use odeint::{output_grid, Control, Integrator, OdeSystem, Problem, Solver, Stats, Workspace};
 
 /// The logistic pair (`common::Logistic`) with any of its states named a stiff block (none
@@ -196,37 +196,6 @@ fn a_stiff_nonlinear_block_is_solved_implicitly_with_or_without_its_own_rates() 
     assert!(st_fallback.rhs_evals > st.rhs_evals + 5 * st.accepted);
 }
 
-/// A slow oscillator beside a stiff state that follows it linearly, `x'' = −x`,
-/// `s' = −k (s − x)`, counting the block evaluations of the Newton iterations.
-struct LinearFollower {
-    k: f64,
-    blocks: Vec<Vec<usize>>,
-    block_evals: std::cell::Cell<usize>,
-}
-
-impl OdeSystem for LinearFollower {
-    fn dim(&self) -> usize {
-        3
-    }
-    fn rhs(&self, _t: f64, y: &[f64], d: &mut [f64]) {
-        d[0] = y[1];
-        d[1] = -y[0];
-        d[2] = -self.k * (y[2] - y[0]);
-    }
-    fn stiff_blocks(&self) -> &[Vec<usize>] {
-        &self.blocks
-    }
-    fn block_jacobian(&self, _t: f64, _y: &[f64], _block: usize, jac: &mut [f64]) -> bool {
-        jac[0] = -self.k;
-        true
-    }
-    fn block_rhs(&self, _t: f64, y: &[f64], _block: usize, out: &mut [f64]) -> bool {
-        self.block_evals.set(self.block_evals.get() + 1);
-        out[0] = -self.k * (y[2] - y[0]);
-        true
-    }
-}
-
 /// On a linear block with its exact Jacobian one Newton correction solves a stage. The
 /// iteration measures that contraction (rate 0) on its first solves and from then on
 /// accepts the first correction (RADAU5's `faccon`): about one block evaluation per stage,
@@ -234,10 +203,9 @@ impl OdeSystem for LinearFollower {
 /// two.
 #[test]
 fn a_linear_block_is_solved_in_one_newton_iteration_per_stage() {
-    let sys = LinearFollower {
-        k: 1e4,
-        blocks: vec![vec![2]],
-        block_evals: std::cell::Cell::new(0),
+    let sys = StiffFollower {
+        own_rates: true,
+        ..StiffFollower::new(1e4, vec![vec![2]], true)
     };
     let integ = Integrator::new(Solver::Ark436, 1e-6, 1e-9).with_max_step(0.05);
     let (st, run) = recorded(integ, &sys, &[1.0, 0.0, 1.0], &output_grid(0.0, 10.0, 0.1));

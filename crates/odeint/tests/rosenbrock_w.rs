@@ -4,7 +4,7 @@
 
 mod common;
 
-use common::{loglog_slope, Oscillator};
+use common::{loglog_slope, Oscillator, StiffFollower};
 use odeint::{output_grid, Control, Integrator, OdeError, OdeSystem, Solver};
 
 /// The oscillator with the position alone as its "stiff block": the block Jacobian
@@ -54,34 +54,6 @@ fn third_order_with_no_block_a_partial_block_and_the_full_jacobian() {
     }
 }
 
-/// A slow oscillator beside a stiff state driven by it:
-/// `x'' = -x`, `s' = -k (s - x)`; `s` follows `x` within `1/k`.
-struct StiffFollower {
-    k: f64,
-    blocks: Vec<Vec<usize>>,
-    own_jacobian: bool,
-}
-
-impl OdeSystem for StiffFollower {
-    fn dim(&self) -> usize {
-        3
-    }
-    fn rhs(&self, _t: f64, y: &[f64], d: &mut [f64]) {
-        d[0] = y[1];
-        d[1] = -y[0];
-        d[2] = -self.k * (y[2] - y[0]);
-    }
-    fn stiff_blocks(&self) -> &[Vec<usize>] {
-        &self.blocks
-    }
-    fn block_jacobian(&self, _t: f64, _y: &[f64], _block: usize, jac: &mut [f64]) -> bool {
-        if self.own_jacobian {
-            jac[0] = -self.k;
-        }
-        self.own_jacobian
-    }
-}
-
 /// Largest errors of `x` and `s` over the output grid (between steps: the dense output,
 /// linear in the stiff state).
 fn follower_run(sys: &StiffFollower, solver: Solver) -> (odeint::Stats, f64, f64) {
@@ -102,11 +74,7 @@ fn follower_run(sys: &StiffFollower, solver: Solver) -> (odeint::Stats, f64, f64
 fn the_stiff_block_is_implicit_and_the_rest_explicit() {
     let k = 1e6;
     for own_jacobian in [false, true] {
-        let sys = StiffFollower {
-            k,
-            blocks: vec![vec![2]],
-            own_jacobian,
-        };
+        let sys = StiffFollower::new(k, vec![vec![2]], own_jacobian);
         let (st, err_x, err_s) = follower_run(&sys, Solver::Ros34pw2);
         assert!(err_x < 1e-6 && err_s < 1e-5, "errors {err_x} {err_s}");
         assert!(st.accepted < 10_000, "{st:?}");
@@ -122,11 +90,7 @@ fn the_stiff_block_is_implicit_and_the_rest_explicit() {
     }
     // without the block the same method is explicit and the stiff state holds its steps
     // near the stability limit (about 2.5 / k each, more than 10x as many steps)
-    let explicit = StiffFollower {
-        k,
-        blocks: vec![],
-        own_jacobian: false,
-    };
+    let explicit = StiffFollower::new(k, vec![], false);
     let st = Integrator::new(Solver::Ros34pw2, 1e-6, 1e-9)
         .with_max_steps(200_000)
         .integrate(&explicit, 0.0, &[1.0, 0.0, 1.0], &[0.5], |_, _| {
@@ -152,11 +116,7 @@ fn bad_blocks_are_refused() {
         vec![vec![0], vec![2, 0]],
         vec![vec![3]],
     ] {
-        let sys = StiffFollower {
-            k: 1.0,
-            blocks: blocks.clone(),
-            own_jacobian: false,
-        };
+        let sys = StiffFollower::new(1.0, blocks.clone(), false);
         let r = Integrator::new(Solver::Ros34pw2, 1e-6, 1e-9).integrate(
             &sys,
             0.0,
@@ -179,11 +139,7 @@ fn spelled_ros34pw2() {
     );
     assert_eq!(Solver::Ros34pw2.name(), "ros34pw2");
     // Auto picks the additive Runge-Kutta method on a model with stiff blocks
-    let sys = StiffFollower {
-        k: 1.0,
-        blocks: vec![vec![2]],
-        own_jacobian: true,
-    };
+    let sys = StiffFollower::new(1.0, vec![vec![2]], true);
     assert_eq!(Solver::Auto.resolve(&sys), Solver::Ark436);
 }
 
@@ -192,11 +148,7 @@ fn spelled_ros34pw2() {
 #[test]
 fn auto_on_a_model_with_stiff_blocks_is_ark436() {
     let run = |k: f64, solver| {
-        let sys = StiffFollower {
-            k,
-            blocks: vec![vec![2]],
-            own_jacobian: true,
-        };
+        let sys = StiffFollower::new(k, vec![vec![2]], true);
         let mut last = vec![];
         let st = Integrator::new(solver, 1e-6, 1e-9)
             .integrate(&sys, 0.0, &[1.0, 0.0, 1.0], &[0.0, 5.0, 10.0], |_, y| {

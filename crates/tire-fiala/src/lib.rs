@@ -29,6 +29,7 @@
 //! ```
 
 pub mod assembly;
+mod cams;
 pub mod cornering;
 pub mod effective_track;
 pub mod envelope;

@@ -11,8 +11,9 @@
 //! samples (`(i0 + i) h`, the global grid point) and segment values a window sampled on its
 //! own holds, so the contacts are the same to the bit.
 
+use crate::cams::{segment, SegmentView};
 use crate::effective_track::MAX_TRACK_POINTS;
-use crate::envelope::{segment, Envelope, Samples, SegmentView};
+use crate::envelope::{Envelope, Samples};
 use crate::error::TireError;
 use crate::terrain::Profile;
 
