@@ -4,12 +4,12 @@
 //! [`crate::Envelope::contacts_at`] samples the profile under a wheel on the global grid
 //! `x_k = k h` and, for the tandem cams, works out every segment's slope, tangent offset
 //! and lift. Along a cache the windows of neighbouring grid points overlap almost entirely
-//! (a 2.4 m window every 5 cm on the 3-D vehicle's tracks), so the same samples and
-//! segments were computed again and again: a third of a D2 roll run's cache build. A
-//! [`SampledProfile`] holds them once for a whole range; [`crate::Envelope::contacts_in`]
-//! and [`crate::Envelope::cam_base_in`] read a window of it. The window holds the very
-//! samples (`(i0 + i) h`, the global grid point) and segment values a window sampled on its
-//! own holds, so the contacts are the same to the bit.
+//! (four tire radii, about 4 m, every 5 cm on the 3-D vehicle's tracks), so the same
+//! samples and segments were computed again and again: a quarter of a D2 roll run's cache
+//! build. A [`SampledProfile`] holds them once for a whole range;
+//! [`crate::Envelope::contacts_in`] and [`crate::Envelope::cam_base_in`] read a window of
+//! it. The window holds the very samples (`(i0 + i) h`, the global grid point) and segment
+//! values a window sampled on its own holds, so the contacts are the same to the bit.
 
 use crate::cams::{segment, SegmentView};
 use crate::effective_track::MAX_TRACK_POINTS;
