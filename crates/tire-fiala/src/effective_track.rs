@@ -111,10 +111,7 @@ impl EffectiveTrack {
                 }
                 c
             };
-            let c = match &sampled {
-                Some(sampled) => envelope.contacts_in(sampled, profile, s, &mut newton),
-                None => envelope.contacts_at(profile, s, &mut newton),
-            };
+            let c = envelope.contacts_in(sampled.as_ref(), profile, s, &mut newton);
             wheel_z.push(z);
             slope.push(c.slope);
         }
@@ -204,13 +201,7 @@ impl InstantaneousTrack {
         let s_last = s0 + (n - 1) as f64 * ds;
         let sampled = envelope.sample(profile, (s0 - reach, s_last + reach)).ok();
         let base = (0..n)
-            .map(|i| {
-                let s = s0 + i as f64 * ds;
-                match &sampled {
-                    Some(sampled) => envelope.cam_base_in(sampled, profile, s),
-                    None => envelope.cam_base(profile, s),
-                }
-            })
+            .map(|i| envelope.cam_base_in(sampled.as_ref(), profile, s0 + i as f64 * ds))
             .collect::<Vec<_>>();
         if let Some(b) = base.iter().find(|b| !b.is_finite()) {
             return Err(TireError::InvalidParameter {

@@ -187,16 +187,16 @@ impl Envelope {
     }
 
     /// [`Envelope::cam_base`] read from `sampled` (the profile sampled once over a range,
-    /// [`Envelope::sample`]) where the cam's window lies inside it, else from `profile`:
-    /// the same base to the bit.
+    /// [`Envelope::sample`]) where there is one and the cam's window lies inside it, else
+    /// from `profile`: the same base to the bit.
     pub fn cam_base_in<P: Profile + ?Sized>(
         &self,
-        sampled: &SampledProfile,
+        sampled: Option<&SampledProfile>,
         profile: &P,
         x: f64,
     ) -> f64 {
         let (i0, n) = self.cam_window(x);
-        match sampled.window(self, i0, n) {
+        match sampled.and_then(|sampled| sampled.window(self, i0, n)) {
             Some((samples, segments)) => Cams::over(&samples, self.cam_radius, segments).base(x),
             None => self.cam_base(profile, x),
         }
@@ -268,17 +268,17 @@ impl Envelope {
     }
 
     /// [`Envelope::contacts_at`] read from `sampled` (the profile sampled once over a range,
-    /// [`Envelope::sample`]) where the wheel's window lies inside it, else from `profile`:
-    /// the same contacts to the bit.
+    /// [`Envelope::sample`]) where there is one and the wheel's window lies inside it, else
+    /// from `profile`: the same contacts to the bit.
     pub fn contacts_in<P: Profile + ?Sized, R>(
         &self,
-        sampled: &SampledProfile,
+        sampled: Option<&SampledProfile>,
         profile: &P,
         x_c: f64,
         solve: impl FnOnce(&dyn Fn(f64) -> EffectiveContact) -> R,
     ) -> R {
         let (i0, n) = self.contact_window(x_c);
-        match sampled.window(self, i0, n) {
+        match sampled.and_then(|sampled| sampled.window(self, i0, n)) {
             Some((samples, segments)) => {
                 self.contacts_on(profile, &samples, Some(segments), x_c, solve)
             }

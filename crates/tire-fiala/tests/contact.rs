@@ -199,7 +199,8 @@ proptest! {
 
     /// A profile sampled once over a range serves every window inside it with the very
     /// contacts and cam bases a window sampled on its own gives, to the bit; a window
-    /// reaching past the range, or an envelope of another spacing, is sampled on its own.
+    /// reaching past the range, an envelope of another spacing, or no sampled profile at
+    /// all, is sampled on its own.
     #[test]
     fn a_profile_sampled_once_gives_each_window_to_the_bit(
         xs in prop::collection::vec(-60.0..60.0f64, 1..8), z in 0.5..1.4f64,
@@ -215,12 +216,13 @@ proptest! {
         for &x in &xs {
             for e in [e, other] {
                 let own = e.contacts_at(&prof, x, |contact| contact(z));
-                let shared = e.contacts_in(&sampled, &prof, x, |contact| contact(z));
+                let shared = e.contacts_in(Some(&sampled), &prof, x, |contact| contact(z));
                 prop_assert_eq!(own, shared);
                 prop_assert_eq!(
                     e.cam_base(&prof, x).to_bits(),
-                    e.cam_base_in(&sampled, &prof, x).to_bits()
+                    e.cam_base_in(Some(&sampled), &prof, x).to_bits()
                 );
+                prop_assert_eq!(own, e.contacts_in(None, &prof, x, |contact| contact(z)));
             }
         }
     }
