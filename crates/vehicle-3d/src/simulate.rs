@@ -250,21 +250,7 @@ pub(crate) fn simulate_system<S: OdeSystem>(
     let span = options.span();
     let dim = vehicle.offsets.dim;
     let t_out = span.output_times(n);
-    let margin = |t: f64, y: &[f64]| -> f64 {
-        let mut ws = vehicle.ws.borrow_mut();
-        let mut tau = [0.0; MAX_DIM];
-        let mut scratch = [0.0; MAX_DIM];
-        match vehicle.apply_forces(
-            t,
-            &y[..dim],
-            &mut ws,
-            &mut tau[..vehicle.model.nv()],
-            &mut scratch[..dim],
-        ) {
-            Ok(_) => vehicle.rear_rollover_margin(&ws),
-            Err(_) => f64::NAN,
-        }
-    };
+    let margin = |_t: f64, y: &[f64]| -> f64 { vehicle.rear_rollover_margin_at(y) };
     let events = [Event::new(&margin, Direction::Falling).terminal()];
     let breakpoints = vehicle.options.steer.breakpoints();
     let mut problem = Problem::new(0.0, y0, &t_out).with_breakpoints(&breakpoints);

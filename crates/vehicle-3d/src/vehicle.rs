@@ -738,6 +738,18 @@ impl Vehicle {
         Ok(snap)
     }
 
+    /// [`Vehicle::rear_rollover_margin`] at the state `y` (its first `dim` entries), from the
+    /// kinematics alone: the rollover event's function, evaluated at every accepted step,
+    /// needs no tire, strut or steering force. NaN where the kinematics fail.
+    pub(crate) fn rear_rollover_margin_at(&self, y: &[f64]) -> f64 {
+        let o = &self.offsets;
+        let mut ws = self.ws.borrow_mut();
+        match multibody::update_kinematics(&self.model, &mut ws, &y[o.q..o.v], &y[o.v..o.afs]) {
+            Ok(()) => self.rear_rollover_margin(&ws),
+            Err(_) => f64::NAN,
+        }
+    }
+
     /// Signed horizontal distance (m) of the rear unit's cg (with payload) inside the nearer
     /// of the two vertical planes through the articulation joint and a rear wheel's contact
     /// centre: absolute rollover of the rear unit when it reaches zero (L1843, point C).

@@ -104,3 +104,29 @@ fn shared_tracks_give_the_same_run_and_refuse_another_load() {
     let err = ride_on(&p, &unloaded, tracks).unwrap_err().to_string();
     assert!(err.contains("tracks"), "{err}");
 }
+
+/// The rollover event (its function reads the kinematics alone) ends a D2 run where the
+/// rear unit's margin, as the record computes it after the force evaluation, crosses zero.
+#[test]
+fn the_rollover_event_stops_the_run_at_zero_margin() {
+    use vehicle_3d::scenarios::{roll, RollSpec};
+    let p = VehicleParams::nominal();
+    for axle in [FrontAxle::Rigid, FrontAxle::Suspended] {
+        let (rec, m) = roll(&p, &RollSpec::d2(axle), 1).unwrap();
+        let t_roll = rec.rollover_s.expect("D2 seed 1 rolls over");
+        assert_eq!(m.rollover_s, Some(t_roll));
+        assert_eq!(
+            *rec.t_s.last().unwrap(),
+            t_roll,
+            "{axle:?}: the run ends at the event"
+        );
+        let margin = &rec.rollover_margin_m;
+        let last = margin[margin.len() - 1];
+        assert!(last.abs() < 1e-6, "{axle:?}: margin {last} m at the event");
+        // the samples before it are inside the margin (the crossing falls between samples)
+        assert!(
+            margin[..margin.len() - 1].iter().all(|&x| x > 0.0),
+            "{axle:?}"
+        );
+    }
+}
