@@ -16,7 +16,7 @@
 //!   On the HPS ride also the additive method with the front carriers' states (and then the
 //!   struts' as well) left out of the error norm: the steps the rest of the vehicle would
 //!   take if a multirate method resolved those fast states for free (docs/numerics.md,
-//!   "What the wheel hop bounds").
+//!   "What a multirate method could gain at best").
 
 use odeint::{Atol, Control, Integrator, OdeSystem, Problem, Solver, Stats, Workspace};
 use roll_truck::simulate::simulate_with_stats;
