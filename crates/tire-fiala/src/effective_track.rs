@@ -11,6 +11,8 @@
 
 use crate::envelope::{EffectiveContact, Envelope};
 use crate::error::{positive, TireError};
+use crate::on_demand::Grid;
+use crate::sampled::SampledProfile;
 use crate::terrain::Profile;
 
 /// Largest number of grid points of one effective track (bounds the allocation).
@@ -25,13 +27,17 @@ pub const NEWTON_TOLERANCE_M: f64 = 1e-3;
 
 /// The enveloped contact of one tire along one track at a reference deflection (module
 /// docs), on a uniform grid in the path coordinate `s`.
-#[derive(Debug, Clone, PartialEq)]
+///
+/// Built whole ([`EffectiveTrack::build`]) or chunk by chunk as a run first reads it
+/// ([`EffectiveTrack::on_demand`], for runs that may stop early): the same values to the
+/// bit either way.
+#[derive(Debug, PartialEq)]
 pub struct EffectiveTrack {
     s0: f64,
     ds: f64,
     reference_deflection: f64,
-    wheel_z: Vec<f64>,
-    slope: Vec<f64>,
+    /// Per grid point the wheel-centre height `z_ref` and the slope `theta`.
+    points: Grid<2>,
 }
 
 /// The contact of one tire at one instant, from an [`EffectiveTrack`] (the default: all
@@ -66,6 +72,90 @@ impl EffectiveTrack {
     /// `[0, radius)`). At most [`MAX_TRACK_POINTS`] grid points.
     pub fn build<P: Profile + ?Sized>(
         profile: &P,
+        range: (f64, f64),
+        ds: f64,
+        envelope: &Envelope,
+        reference_deflection: f64,
+    ) -> Result<Self, TireError> {
+        let mut walk = NewtonWalk::start(profile, range, ds, envelope, reference_deflection)?;
+        let points = (0..walk.n).map(|_| walk.next(profile)).collect();
+        Ok(Self {
+            s0: walk.s0,
+            ds: walk.ds,
+            reference_deflection,
+            points: Grid::built(points),
+        })
+    }
+
+    /// [`EffectiveTrack::build`] deferred: the grid is built in order, a chunk of 256
+    /// points at a time, when a contact first reads it, so a run that stops early builds
+    /// only the part it reached. The same values to the bit as [`EffectiveTrack::build`];
+    /// the track owns `profile` until its last chunk is built.
+    pub fn on_demand<P: Profile + Send + 'static>(
+        profile: P,
+        range: (f64, f64),
+        ds: f64,
+        envelope: &Envelope,
+        reference_deflection: f64,
+    ) -> Result<Self, TireError> {
+        let mut walk = NewtonWalk::start(&profile, range, ds, envelope, reference_deflection)?;
+        Ok(Self {
+            s0: walk.s0,
+            ds: walk.ds,
+            reference_deflection,
+            points: Grid::on_demand(walk.n, Box::new(move || walk.next(&profile))),
+        })
+    }
+
+    /// Contact of a wheel with centre height `z_c` at path coordinate `s` (clamped to the
+    /// grid): linear interpolation of the cache, then the penetration of the module docs.
+    #[inline]
+    pub fn contact(&self, s: f64, z_c: f64) -> TrackContact {
+        let u = ((s - self.s0) / self.ds).max(0.0);
+        let last = self.points.len() - 1;
+        let i = (u as usize).min(last - 1);
+        let w = (u - i as f64).min(1.0);
+        let ([z0, slope0], [z1, slope1]) = self.points.cell(i);
+        let z_ref = z0 + w * (z1 - z0);
+        let slope = slope0 + w * (slope1 - slope0);
+        let (sin_slope, cos_slope) = slope.sin_cos();
+        TrackContact {
+            deflection: self.reference_deflection + (z_ref - z_c) * cos_slope,
+            slope,
+            sin_slope,
+            cos_slope,
+        }
+    }
+
+    /// Path range covered `(s_start, s_end)` (m).
+    pub fn range(&self) -> (f64, f64) {
+        (self.s0, self.s0 + (self.points.len() - 1) as f64 * self.ds)
+    }
+}
+
+/// The effective track's grid points in order ([`EffectiveTrack::build`]): at each, Newton
+/// on the wheel height (`d(delta)/dz = -cos(theta)`) from the previous point's height (one
+/// step is usually enough), the profile under the wheel sampled once for all its
+/// iterations.
+struct NewtonWalk {
+    s0: f64,
+    ds: f64,
+    reference_deflection: f64,
+    radius: f64,
+    envelope: Envelope,
+    /// The profile sampled once for every grid point's window (none when the range needs
+    /// more samples than a cache may hold: each window then samples its own).
+    sampled: Option<SampledProfile>,
+    /// Grid points in all, and the next one's index.
+    n: usize,
+    i: usize,
+    /// The last point's wheel height (not finite before the first).
+    z: f64,
+}
+
+impl NewtonWalk {
+    fn start<P: Profile + ?Sized>(
+        profile: &P,
         (s_start, s_end): (f64, f64),
         ds: f64,
         envelope: &Envelope,
@@ -81,71 +171,49 @@ impl EffectiveTrack {
             });
         }
         let n = grid_points((s_start, s_end), 0.0, ds)?;
-        // the profile sampled once for every grid point's window (none when the range
-        // needs more samples than a cache may hold: each window then samples its own)
         let reach = radius + envelope.cam_radius() + 2.0 * envelope.sample_spacing();
         let s_last = s_start + (n - 1) as f64 * ds;
         let sampled = envelope
             .sample(profile, (s_start - reach, s_last + reach))
             .ok();
-        let mut wheel_z = Vec::with_capacity(n);
-        let mut slope = Vec::with_capacity(n);
-        let mut z = f64::NAN;
-        for i in 0..n {
-            let s = s_start + i as f64 * ds;
-            if !z.is_finite() {
-                z = profile.height_at(s) + radius - reference_deflection;
-            }
-            // Newton on the wheel height, d(delta)/dz = -cos(theta), warm-started from the
-            // previous grid point (one step is usually enough); the profile under the
-            // wheel is sampled once for all its iterations.
-            let mut newton = |contact: &dyn Fn(f64) -> EffectiveContact| {
-                let mut c = contact(z);
-                for _ in 0..NEWTON_ITERATIONS {
-                    let step = (c.deflection - reference_deflection) / c.slope.cos().max(0.1);
-                    z += step;
-                    c = contact(z);
-                    if step.abs() < NEWTON_TOLERANCE_M {
-                        break;
-                    }
-                }
-                c
-            };
-            let c = envelope.contacts_in(sampled.as_ref(), profile, s, &mut newton);
-            wheel_z.push(z);
-            slope.push(c.slope);
-        }
         Ok(Self {
             s0: s_start,
             ds,
             reference_deflection,
-            wheel_z,
-            slope,
+            radius,
+            envelope: *envelope,
+            sampled,
+            n,
+            i: 0,
+            z: f64::NAN,
         })
     }
 
-    /// Contact of a wheel with centre height `z_c` at path coordinate `s` (clamped to the
-    /// grid): linear interpolation of the cache, then the penetration of the module docs.
-    #[inline]
-    pub fn contact(&self, s: f64, z_c: f64) -> TrackContact {
-        let u = ((s - self.s0) / self.ds).max(0.0);
-        let last = self.wheel_z.len() - 1;
-        let i = (u as usize).min(last - 1);
-        let w = (u - i as f64).min(1.0);
-        let z_ref = self.wheel_z[i] + w * (self.wheel_z[i + 1] - self.wheel_z[i]);
-        let slope = self.slope[i] + w * (self.slope[i + 1] - self.slope[i]);
-        let (sin_slope, cos_slope) = slope.sin_cos();
-        TrackContact {
-            deflection: self.reference_deflection + (z_ref - z_c) * cos_slope,
-            slope,
-            sin_slope,
-            cos_slope,
+    /// The next grid point's wheel height and slope.
+    fn next<P: Profile + ?Sized>(&mut self, profile: &P) -> [f64; 2] {
+        let s = self.s0 + self.i as f64 * self.ds;
+        self.i += 1;
+        if !self.z.is_finite() {
+            self.z = profile.height_at(s) + self.radius - self.reference_deflection;
         }
-    }
-
-    /// Path range covered `(s_start, s_end)` (m).
-    pub fn range(&self) -> (f64, f64) {
-        (self.s0, self.s0 + (self.wheel_z.len() - 1) as f64 * self.ds)
+        let reference_deflection = self.reference_deflection;
+        let z = &mut self.z;
+        let mut newton = |contact: &dyn Fn(f64) -> EffectiveContact| {
+            let mut c = contact(*z);
+            for _ in 0..NEWTON_ITERATIONS {
+                let step = (c.deflection - reference_deflection) / c.slope.cos().max(0.1);
+                *z += step;
+                c = contact(*z);
+                if step.abs() < NEWTON_TOLERANCE_M {
+                    break;
+                }
+            }
+            c
+        };
+        let c = self
+            .envelope
+            .contacts_in(self.sampled.as_ref(), profile, s, &mut newton);
+        [self.z, c.slope]
     }
 }
 
@@ -272,7 +340,7 @@ impl InstantaneousTrack {
 /// One tire's enveloping cache along its track: the contact at a reference deflection
 /// ([`EffectiveTrack`]) or the tandem cams spaced at the instantaneous deflection
 /// ([`InstantaneousTrack`]). What [`crate::TireAssembly`] reads per tire.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, PartialEq)]
 pub enum TireTrack {
     /// The contact cached at a reference deflection, the penetration linearised about it.
     Static(EffectiveTrack),
@@ -402,6 +470,27 @@ mod tests {
         // the static deflection misses by millimetres away from it
         assert!(worst_inst < 1e-4, "instantaneous: {worst_inst}");
         assert!(worst_fixed > 1e-3, "static: {worst_fixed}");
+    }
+
+    /// A track built on demand holds the points of the track built at once, to the bit,
+    /// whatever order the contacts read it in: each grid point's Newton iteration starts
+    /// from the previous point's height, so the points are built in order.
+    #[test]
+    fn a_track_built_on_demand_is_the_track_built_at_once() {
+        let env = Envelope::new(EnvelopeMethod::TandemCams, 1.0, 0.01).unwrap();
+        let at_once = EffectiveTrack::build(&rough, (0.0, 40.0), 0.02, &env, 0.08).unwrap();
+        let later = EffectiveTrack::on_demand(rough, (0.0, 40.0), 0.02, &env, 0.08).unwrap();
+        assert_eq!(later.range(), at_once.range());
+        for s in [33.3, 0.01, 17.0, 39.99, 5.2, 40.0, 0.0] {
+            for z in [0.9, 0.95, 1.02] {
+                let (a, b) = (at_once.contact(s, z), later.contact(s, z));
+                assert_eq!(a.deflection.to_bits(), b.deflection.to_bits(), "{s} {z}");
+                assert_eq!(a.slope.to_bits(), b.slope.to_bits(), "{s} {z}");
+            }
+        }
+        assert_eq!(later, at_once);
+        let err = EffectiveTrack::on_demand(rough, (0.0, 1.0), 0.1, &env, 1.5).unwrap_err();
+        assert!(err.to_string().contains("reference_deflection_m"), "{err}");
     }
 
     #[test]

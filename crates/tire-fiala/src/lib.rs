@@ -36,6 +36,7 @@ pub mod envelope;
 pub mod error;
 pub mod fiala;
 pub mod model;
+mod on_demand;
 pub mod params;
 mod registry;
 pub mod relaxation;

@@ -356,15 +356,15 @@ fn on_an_incline_both_laws_push_along_the_slope() {
 fn the_contact_is_the_tracks_at_the_wheels_path_coordinate() {
     // a 0.1 m step at s = 10 under a path along (0.6, 0.8), coordinate 3 at (1, 2)
     let step = |s: f64| if s >= 10.0 { 0.1 } else { 0.0 };
-    let cached = track(&step, EnvelopeMethod::TandemCams);
     let tracks: Arc<[TireTrack]> = Arc::new([
         track(&|_: f64| 0.0, EnvelopeMethod::TandemCams),
-        cached.clone(),
+        track(&step, EnvelopeMethod::TandemCams),
     ]);
+    let cached = &tracks[1];
     let p = TireParams::nominal();
     let law = HandlingLaw::Fiala(FialaLaw::new(&p).unwrap());
     let tires = TireAssembly::new(
-        tracks,
+        Arc::clone(&tracks),
         &[0, 1, 1],
         1.0,
         VerticalContact::from_params(&p).unwrap(),

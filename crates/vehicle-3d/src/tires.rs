@@ -90,6 +90,65 @@ impl TireTracks {
         terrain: &T,
         half_width: f64,
     ) -> Result<Self, VehicleError> {
+        Self::assemble(
+            params,
+            load,
+            options,
+            half_width,
+            |y, d, range, envelope| {
+                let profile = Track { terrain, y };
+                built_at_once(options, &profile, d, range, envelope)
+            },
+        )
+    }
+
+    /// [`TireTracks::build`] for a run that may stop early (a roll run ends at rollover):
+    /// with the static cam spacing each track is built in order, a chunk at a time, as the
+    /// run first reads it ([`tire_fiala::EffectiveTrack::on_demand`]), the same values to
+    /// the bit. The tracks hold `terrain` until they are built to the end. With the
+    /// instantaneous spacing they are built at once, as [`TireTracks::build`] builds them.
+    pub fn on_demand<T: Terrain + Send + Sync + 'static>(
+        params: &VehicleParams,
+        load: Load,
+        options: &VehicleOptions,
+        terrain: Arc<T>,
+        half_width: f64,
+    ) -> Result<Self, VehicleError> {
+        Self::assemble(
+            params,
+            load,
+            options,
+            half_width,
+            |y, d, range, envelope| {
+                let profile = Track {
+                    terrain: Arc::clone(&terrain),
+                    y,
+                };
+                match options.cam_spacing {
+                    CamSpacing::Static => Ok(TireTrack::Static(EffectiveTrack::on_demand(
+                        profile,
+                        range,
+                        options.track_grid_m,
+                        envelope,
+                        d,
+                    )?)),
+                    CamSpacing::Instantaneous => {
+                        built_at_once(options, &profile, d, range, envelope)
+                    }
+                }
+            },
+        )
+    }
+
+    /// The four tracks, each from `track(y, reference deflection, path range, envelope)`,
+    /// after the settings are checked.
+    fn assemble(
+        params: &VehicleParams,
+        load: Load,
+        options: &VehicleOptions,
+        half_width: f64,
+        track: impl Fn(f64, f64, (f64, f64), &Envelope) -> Result<TireTrack, VehicleError>,
+    ) -> Result<Self, VehicleError> {
         params.validate()?;
         positive("half_width", half_width)?;
         positive("path_length_m", options.path_length_m)?;
@@ -112,32 +171,16 @@ impl TireTracks {
                 "instantaneous needs the tandem cams (envelope = TandemCams)",
             ));
         }
-        let track = |left: bool, front: bool| -> Result<TireTrack, VehicleError> {
+        let tire = |left: bool, front: bool| {
             let y = if left { half_width } else { -half_width };
-            let profile = Track { terrain, y };
-            let d = reference[usize::from(!front)];
-            Ok(match options.cam_spacing {
-                CamSpacing::Static => TireTrack::Static(EffectiveTrack::build(
-                    &profile,
-                    range,
-                    options.track_grid_m,
-                    &envelope,
-                    d,
-                )?),
-                CamSpacing::Instantaneous => TireTrack::Instantaneous(InstantaneousTrack::build(
-                    &profile,
-                    range,
-                    options.track_grid_m / CAM_BASE_GRID_DIVISOR,
-                    &envelope,
-                )?),
-            })
+            track(y, reference[usize::from(!front)], range, &envelope)
         };
         Ok(Self {
             tracks: Arc::new([
-                track(true, true)?,
-                track(false, true)?,
-                track(true, false)?,
-                track(false, false)?,
+                tire(true, true)?,
+                tire(false, true)?,
+                tire(true, false)?,
+                tire(false, false)?,
             ]),
             reference,
             range,
@@ -224,6 +267,33 @@ impl TireTracks {
     }
 }
 
+/// One tire's track built at once: the contact at the reference deflection `d`
+/// ([`EffectiveTrack`]) or the cams' base for the instantaneous spacing
+/// ([`InstantaneousTrack`], on the finer grid of [`CAM_BASE_GRID_DIVISOR`]).
+fn built_at_once<T: Terrain>(
+    options: &VehicleOptions,
+    profile: &Track<T>,
+    d: f64,
+    range: (f64, f64),
+    envelope: &Envelope,
+) -> Result<TireTrack, VehicleError> {
+    Ok(match options.cam_spacing {
+        CamSpacing::Static => TireTrack::Static(EffectiveTrack::build(
+            profile,
+            range,
+            options.track_grid_m,
+            envelope,
+            d,
+        )?),
+        CamSpacing::Instantaneous => TireTrack::Instantaneous(InstantaneousTrack::build(
+            profile,
+            range,
+            options.track_grid_m / CAM_BASE_GRID_DIVISOR,
+            envelope,
+        )?),
+    })
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -272,5 +342,35 @@ mod tests {
         assert_eq!("instantaneous".parse(), Ok(CamSpacing::Instantaneous));
         assert_eq!("static".parse(), Ok(CamSpacing::Static));
         assert!("dynamic".parse::<CamSpacing>().is_err());
+    }
+
+    /// Tracks built on demand (a roll run's) give the contacts of tracks built at once to
+    /// the bit, whatever the order the run reads them in.
+    #[test]
+    fn tracks_built_on_demand_are_the_tracks_built_at_once() {
+        let p = VehicleParams::nominal();
+        let terrain = crate::scenarios::TerrainSpec::default()
+            .build(&p, 120.0, 7)
+            .unwrap();
+        let options = VehicleOptions {
+            path_length_m: 60.0,
+            ..VehicleOptions::default()
+        };
+        let half = 0.5 * p.front_track_m;
+        let at_once = TireTracks::build(&p, Load::Loaded, &options, &terrain, half).unwrap();
+        let shared = Arc::new(terrain);
+        let later = TireTracks::on_demand(&p, Load::Loaded, &options, shared, half).unwrap();
+        let (lo, hi) = at_once.range;
+        assert_eq!(later.range, at_once.range);
+        // far along first, then back to the start, then the whole range
+        for k in [0.9, 0.05, 0.5, 0.0, 1.0, 0.31] {
+            let s = lo + k * (hi - lo);
+            for (i, z) in [(0, 1.2), (1, 1.3), (2, 1.25), (3, 1.1)] {
+                let (a, b) = (at_once.contact(i, s, z), later.contact(i, s, z));
+                assert_eq!(a.deflection.to_bits(), b.deflection.to_bits(), "{i} {s}");
+                assert_eq!(a.slope.to_bits(), b.slope.to_bits(), "{i} {s}");
+            }
+        }
+        assert_eq!(later, at_once);
     }
 }

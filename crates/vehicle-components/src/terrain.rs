@@ -77,6 +77,23 @@ impl<T: Terrain + ?Sized> Terrain for &T {
     }
 }
 
+/// A shared terrain is the terrain: what a cache that outlives its builder's borrow holds
+/// (the 3-D vehicle's enveloping caches built on demand).
+impl<T: Terrain + ?Sized> Terrain for std::sync::Arc<T> {
+    #[inline]
+    fn height(&self, x: f64, y: f64) -> f64 {
+        (**self).height(x, y)
+    }
+    #[inline]
+    fn friction(&self, x: f64, y: f64) -> f64 {
+        (**self).friction(x, y)
+    }
+    #[inline]
+    fn normal(&self, x: f64, y: f64) -> [f64; 3] {
+        (**self).normal(x, y)
+    }
+}
+
 /// Unit normal of `z = h(x, y)` from central differences of step [`NORMAL_STEP_M`]:
 /// `(-h_x, -h_y, 1) / sqrt(1 + h_x^2 + h_y^2)`; `(0, 0, 1)` where a difference is not
 /// finite.
