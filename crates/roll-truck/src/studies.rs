@@ -2,6 +2,8 @@
 //! rough-terrain point is a mean ± SD over terrain seeds (the same seeds for every
 //! variant of a study), run in parallel with rayon.
 
+use std::sync::Arc;
+
 use perf_measures::roll::SustainedPeriodParams;
 use serde::Serialize;
 use terrain_psd::{synthesize, SurfaceParams, TwoTrackProfile, TwoTrackSpec, TwoTrackTerrain};
@@ -128,7 +130,7 @@ pub fn run_case_on(
         return Ok(Run { record, measures });
     };
     let terrain = rough_terrain(p, spec, terrain_length_m, seed)?;
-    run_on_terrain(p, &terrain, direction, options, sp)
+    run_on_terrain(p, terrain, direction, options, sp)
 }
 
 /// Path length a run of `options` covers (m): the target speed over the run, 10 % over,
@@ -137,16 +139,24 @@ fn run_path_length_m(p: &TruckParams, options: &RunOptions) -> f64 {
     p.target_speed_m_s * options.t_end_s * 1.1 + 10.0
 }
 
-/// A run on `terrain` (each side's tires on its track) and its measures.
+/// A run on `terrain` (each side's tires on its track) and its measures. The run stops at
+/// rollover, so its enveloping caches are built as it reaches them
+/// ([`TruckVehicle::on_demand`]): the prototype's class E run rolls over at 29 s of 60.
 fn run_on_terrain(
     p: &TruckParams,
-    terrain: &TwoTrackTerrain,
+    terrain: TwoTrackTerrain,
     direction: SteerDirection,
     options: &RunOptions,
     sp: &SustainedPeriodParams,
 ) -> Result<Run, TruckError> {
-    let path_length_m = run_path_length_m(p, options);
-    let record = simulate(&truck_on(p, terrain, direction, path_length_m)?, options)?;
+    let model = ModelOptions {
+        direction,
+        path_length_m: run_path_length_m(p, options).min(terrain.profile().length_m()),
+        ..ModelOptions::default()
+    };
+    let half_width = 0.5 * terrain.params().track_width_m;
+    let truck = TruckVehicle::on_demand(p, Arc::new(terrain), half_width, model)?;
+    let record = simulate(&truck, options)?;
     let measures = roll_measures(p, &record, sp)?;
     Ok(Run { record, measures })
 }
@@ -188,7 +198,7 @@ pub fn run_case_on_road(
         ))));
     }
     let terrain = TwoTrackTerrain::new(profile, truck_surface(p))?;
-    run_on_terrain(p, &terrain, direction, options, sp)
+    run_on_terrain(p, terrain, direction, options, sp)
 }
 
 /// Longest run (s) a road `length_m` long carries ([`road_length_needed_m`] solved for the

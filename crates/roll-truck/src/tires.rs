@@ -48,3 +48,23 @@ pub fn circle_line_track<P: Profile + ?Sized>(
         reference_deflection,
     )?)
 }
+
+/// [`circle_line_track`] built as a run reads it ([`EffectiveTrack::on_demand`]): the same
+/// values to the bit, only as far along the track as the run reaches.
+pub fn circle_line_track_on_demand<P: Profile + Send + 'static>(
+    profile: P,
+    range: (f64, f64),
+    ds: f64,
+    radius: f64,
+    sample_spacing: f64,
+    reference_deflection: f64,
+) -> Result<EffectiveTrack, TruckError> {
+    let envelope = Envelope::new(EnvelopeMethod::CircleLine, radius, sample_spacing)?;
+    Ok(EffectiveTrack::on_demand(
+        profile,
+        range,
+        ds,
+        &envelope,
+        reference_deflection,
+    )?)
+}

@@ -19,8 +19,8 @@ use std::sync::Arc;
 use multibody::Workspace;
 use nalgebra::Vector3;
 use tire_fiala::{
-    HandlingLaw, LinearCorneringLaw, LoadDeflectionTable, PathFrame, TireAssembly, TireInput,
-    TireTrack, Track, VerticalContact,
+    EffectiveTrack, HandlingLaw, LinearCorneringLaw, LoadDeflectionTable, PathFrame, TireAssembly,
+    TireInput, TireTrack, Track, VerticalContact,
 };
 use vehicle_components::{Component, StateInfo, StateLayout, Terrain};
 
@@ -30,7 +30,7 @@ use crate::model::{body, build_tree, TireMount, NQ, NV};
 use crate::params::TruckParams;
 use crate::statics::Statics;
 use crate::suspension::Suspension;
-use crate::tires::circle_line_track;
+use crate::tires::{circle_line_track, circle_line_track_on_demand};
 
 /// Offsets of the state blocks: the plain indices of [`truck_states`], fixed at compile
 /// time so the right-hand side works on fixed-size arrays.
@@ -203,6 +203,58 @@ impl TruckVehicle {
         half_width: f64,
         options: ModelOptions,
     ) -> Result<Self, TruckError> {
+        Self::assemble(params, options, |range, deflection| {
+            let build = |y: f64| {
+                circle_line_track(
+                    &Track { terrain, y },
+                    range,
+                    options.track_grid_m,
+                    params.tire_free_radius_m,
+                    options.envelope_sample_m,
+                    deflection,
+                )
+            };
+            // the two sides' caches are independent: built side by side
+            let (left, right) = rayon::join(|| build(half_width), || build(-half_width));
+            Ok([left?, right?])
+        })
+    }
+
+    /// [`TruckVehicle::new`] for a run that may stop early (a ramp steer ends at rollover):
+    /// each side's enveloping cache is built in order, a chunk at a time, as the run first
+    /// reads it (`tire_fiala::EffectiveTrack::on_demand`), the same values to the bit. The
+    /// truck holds `terrain` until the caches are built to the end.
+    pub fn on_demand<T: Terrain + Send + Sync + 'static>(
+        params: &TruckParams,
+        terrain: Arc<T>,
+        half_width: f64,
+        options: ModelOptions,
+    ) -> Result<Self, TruckError> {
+        Self::assemble(params, options, |range, deflection| {
+            let build = |y: f64| {
+                circle_line_track_on_demand(
+                    Track {
+                        terrain: Arc::clone(&terrain),
+                        y,
+                    },
+                    range,
+                    options.track_grid_m,
+                    params.tire_free_radius_m,
+                    options.envelope_sample_m,
+                    deflection,
+                )
+            };
+            Ok([build(half_width)?, build(-half_width)?])
+        })
+    }
+
+    /// The truck with the left and right caches `tracks(path range, reference deflection)`
+    /// gives, after the parameters and options are checked.
+    fn assemble(
+        params: &TruckParams,
+        options: ModelOptions,
+        tracks: impl FnOnce((f64, f64), f64) -> Result<[EffectiveTrack; 2], TruckError>,
+    ) -> Result<Self, TruckError> {
         params.validate()?;
         positive("path_length_m", options.path_length_m)?;
         positive("envelope_sample_m", options.envelope_sample_m)?;
@@ -220,24 +272,8 @@ impl TruckVehicle {
             options.start_s_m - margin,
             options.start_s_m + options.path_length_m + margin,
         );
-        let build = |y: f64, deflection: f64| {
-            circle_line_track(
-                &Track { terrain, y },
-                range,
-                options.track_grid_m,
-                params.tire_free_radius_m,
-                options.envelope_sample_m,
-                deflection,
-            )
-        };
         let deflection = 0.5 * (statics.front_tire_deflection_m + statics.rear_tire_deflection_m);
-        // the two sides' caches are independent: built side by side
-        let (left, right) = rayon::join(
-            || build(half_width, deflection),
-            || build(-half_width, deflection),
-        );
-        let tracks: Arc<[TireTrack]> =
-            Arc::new([TireTrack::Static(left?), TireTrack::Static(right?)]);
+        let tracks: Arc<[TireTrack]> = Arc::new(tracks(range, deflection)?.map(TireTrack::Static));
         let vertical = VerticalContact::new(
             LoadDeflectionTable::linear(params.tire_vertical_stiffness_n_per_m)?,
             params.tire_vertical_damping_n_s_per_m,

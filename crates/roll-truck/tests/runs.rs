@@ -90,6 +90,24 @@ fn left_and_right_ramps_mirror_on_swapped_rough_tracks() {
     );
 }
 
+/// The caches built as the run reaches them (how the studies build them) give the run of
+/// the caches built at once, to the bit; the run stops at 8 s, a sixth of the path.
+#[test]
+fn a_truck_with_caches_built_on_demand_runs_as_one_built_at_once() {
+    let p = TruckParams::nominal();
+    let terrain = rough_terrain(&p, &TwoTrackSpec::paper_nominal(), 500.0, 5).unwrap();
+    let opts = RunOptions {
+        t_end_s: 8.0,
+        ..RunOptions::default()
+    };
+    let at_once = truck_on(&p, &terrain, SteerDirection::Left, 480.0).unwrap();
+    let half_width = 0.5 * terrain.params().track_width_m;
+    let model = *at_once.options();
+    let later = TruckVehicle::on_demand(&p, std::sync::Arc::new(terrain), half_width, model);
+    let (a, b) = (simulate(&at_once, &opts), simulate(&later.unwrap(), &opts));
+    assert_eq!(a.unwrap(), b.unwrap());
+}
+
 #[test]
 fn same_seed_same_run_other_seed_other_run() {
     let p = TruckParams::nominal();
