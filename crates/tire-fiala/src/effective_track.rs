@@ -37,7 +37,7 @@ pub struct EffectiveTrack {
     ds: f64,
     reference_deflection: f64,
     /// Per grid point the wheel-centre height `z_ref` and the slope `theta`.
-    points: Grid<2>,
+    points: Grid,
 }
 
 /// The contact of one tire at one instant, from an [`EffectiveTrack`] (the default: all

@@ -16,34 +16,36 @@ use std::sync::{Mutex, OnceLock};
 /// Points per chunk: 12.8 m of track at the 3-D vehicle's 0.05 m grid.
 pub(crate) const CHUNK: usize = 256;
 
+/// One grid point: two values (an effective track's wheel height and slope).
+pub(crate) type Point = [f64; 2];
+
 /// Computes the grid's points one after the other, from the first.
-pub(crate) type NextPoint<const W: usize> = Box<dyn FnMut() -> [f64; W] + Send>;
+pub(crate) type NextPoint = Box<dyn FnMut() -> Point + Send>;
 
 /// One chunk's points, set once.
-type Chunk<const W: usize> = OnceLock<Box<[[f64; W]]>>;
+type Chunk = OnceLock<Box<[Point]>>;
 
-/// `len` points of `W` values each, built when read ([`Grid::on_demand`]) or at once
-/// ([`Grid::built`]).
-pub(crate) struct Grid<const W: usize> {
+/// `len` points, built when read ([`Grid::on_demand`]) or at once ([`Grid::built`]).
+pub(crate) struct Grid {
     len: usize,
-    chunks: Box<[Chunk<W>]>,
-    builder: Mutex<Builder<W>>,
+    chunks: Box<[Chunk]>,
+    builder: Mutex<Builder>,
 }
 
 /// The chunks still to build, from `next_chunk` on, and what computes their points
 /// (dropped with the profile it owns once every chunk is built).
-struct Builder<const W: usize> {
+struct Builder {
     next_chunk: usize,
-    next_point: Option<NextPoint<W>>,
+    next_point: Option<NextPoint>,
 }
 
-impl<const W: usize> Grid<W> {
+impl Grid {
     /// A grid of the given points, all built.
-    pub(crate) fn built(points: Vec<[f64; W]>) -> Self {
+    pub(crate) fn built(points: Vec<Point>) -> Self {
         let len = points.len();
         let chunks: Box<[_]> = points
             .chunks(CHUNK)
-            .map(|c| OnceLock::from(Box::<[[f64; W]]>::from(c)))
+            .map(|c| OnceLock::from(Box::<[Point]>::from(c)))
             .collect();
         let next_chunk = chunks.len();
         Self {
@@ -58,7 +60,7 @@ impl<const W: usize> Grid<W> {
 
     /// A grid of `len` points that `next_point` computes in order, chunk by chunk, as they
     /// are first read. `len` is bounded by the caller before this allocates its chunk list.
-    pub(crate) fn on_demand(len: usize, next_point: NextPoint<W>) -> Self {
+    pub(crate) fn on_demand(len: usize, next_point: NextPoint) -> Self {
         Self {
             len,
             chunks: (0..len.div_ceil(CHUNK)).map(|_| OnceLock::new()).collect(),
@@ -76,7 +78,7 @@ impl<const W: usize> Grid<W> {
 
     /// Point `k` (`k < len`), building the chunks up to it first if they are not built.
     #[inline]
-    pub(crate) fn get(&self, k: usize) -> [f64; W] {
+    pub(crate) fn get(&self, k: usize) -> Point {
         let c = k / CHUNK;
         let chunk = match self.chunks[c].get() {
             Some(chunk) => chunk,
@@ -88,7 +90,7 @@ impl<const W: usize> Grid<W> {
     /// Points `k` and `k + 1` (`k + 1 < len`), the two ends of a grid cell: one chunk look-up
     /// unless the cell straddles two chunks.
     #[inline]
-    pub(crate) fn cell(&self, k: usize) -> ([f64; W], [f64; W]) {
+    pub(crate) fn cell(&self, k: usize) -> (Point, Point) {
         let (c, j) = (k / CHUNK, k % CHUNK);
         let chunk = match self.chunks[c].get() {
             Some(chunk) => chunk,
@@ -103,7 +105,7 @@ impl<const W: usize> Grid<W> {
     /// Build every chunk up to `last` that is not built, in order, and return chunk `last`.
     #[cold]
     #[inline(never)]
-    fn build_to(&self, last: usize) -> &[[f64; W]] {
+    fn build_to(&self, last: usize) -> &[Point] {
         let mut builder = self
             .builder
             .lock()
@@ -115,7 +117,7 @@ impl<const W: usize> Grid<W> {
                 .next_point
                 .as_mut()
                 .expect("the builder is kept until the last chunk is built");
-            let points: Box<[[f64; W]]> = (0..n).map(|_| next_point()).collect();
+            let points: Box<[Point]> = (0..n).map(|_| next_point()).collect();
             // only the holder of the lock sets a chunk, and only this one
             let _ = self.chunks[c].set(points);
             builder.next_chunk += 1;
@@ -135,7 +137,7 @@ impl<const W: usize> Grid<W> {
     }
 }
 
-impl<const W: usize> fmt::Debug for Grid<W> {
+impl fmt::Debug for Grid {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         f.debug_struct("Grid")
             .field("len", &self.len)
@@ -147,7 +149,7 @@ impl<const W: usize> fmt::Debug for Grid<W> {
 
 /// Two grids are equal when they hold the same points; comparing builds every chunk of
 /// both.
-impl<const W: usize> PartialEq for Grid<W> {
+impl PartialEq for Grid {
     fn eq(&self, other: &Self) -> bool {
         self.len == other.len && (0..self.len).all(|k| self.get(k) == other.get(k))
     }
@@ -161,7 +163,7 @@ mod tests {
 
     /// Points that depend on every point before them, as the Newton warm start makes the
     /// effective track's: any other build order would give other values.
-    fn chained(calls: Arc<AtomicUsize>) -> NextPoint<2> {
+    fn chained(calls: Arc<AtomicUsize>) -> NextPoint {
         let (mut k, mut x) = (0usize, 0.3f64);
         Box::new(move || {
             calls.fetch_add(1, Ordering::Relaxed);
@@ -171,7 +173,7 @@ mod tests {
         })
     }
 
-    fn all_at_once(len: usize) -> Vec<[f64; 2]> {
+    fn all_at_once(len: usize) -> Vec<Point> {
         let mut next = chained(Arc::new(AtomicUsize::new(0)));
         (0..len).map(|_| next()).collect()
     }
