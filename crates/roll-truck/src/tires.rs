@@ -16,7 +16,7 @@
 //! a cornering truck stays on its two tracks.
 //!
 //! Enveloping cache (`tire_fiala::EffectiveTrack`): the circle-line contact of a tire under its static load is
-//! precomputed once per run on a grid along each track ([`EffectiveTrack`]), one cache per
+//! precomputed once per run on a grid along each track ([`tire_fiala::EffectiveTrack`]), one cache per
 //! side shared by the front and rear tires at the mean of their static deflections: the
 //! wheel height `z_ref(s)` at which the circle-line deflection equals that deflection
 //! `delta_ref`, and the slope `theta(s)` of P1P2 (Eq 2.4). During the run the deflection is
@@ -24,47 +24,17 @@
 //! `delta = delta_ref + (z_ref(s) - z_c) cos theta(s)`, exact on a plane and to first order
 //! in the load change on rough ground, and its rate is `v_s sin theta - v_z cos theta`.
 
-use tire_fiala::{EffectiveTrack, Envelope, EnvelopeMethod, Profile};
+use tire_fiala::{Envelope, EnvelopeMethod};
 
 use crate::error::TruckError;
 
-/// The circle-line [`EffectiveTrack`] of a tire of free radius `radius` along `profile`
-/// for `s` in `range` at grid spacing `ds`, with the profile sampled every
-/// `sample_spacing` (m), at the reference deflection `reference_deflection` (m).
-pub fn circle_line_track<P: Profile + ?Sized>(
-    profile: &P,
-    range: (f64, f64),
-    ds: f64,
-    radius: f64,
-    sample_spacing: f64,
-    reference_deflection: f64,
-) -> Result<EffectiveTrack, TruckError> {
-    let envelope = Envelope::new(EnvelopeMethod::CircleLine, radius, sample_spacing)?;
-    Ok(EffectiveTrack::build(
-        profile,
-        range,
-        ds,
-        &envelope,
-        reference_deflection,
-    )?)
-}
-
-/// [`circle_line_track`] built as a run reads it ([`EffectiveTrack::on_demand`]): the same
-/// values to the bit, only as far along the track as the run reaches.
-pub fn circle_line_track_on_demand<P: Profile + Send + 'static>(
-    profile: P,
-    range: (f64, f64),
-    ds: f64,
-    radius: f64,
-    sample_spacing: f64,
-    reference_deflection: f64,
-) -> Result<EffectiveTrack, TruckError> {
-    let envelope = Envelope::new(EnvelopeMethod::CircleLine, radius, sample_spacing)?;
-    Ok(EffectiveTrack::on_demand(
-        profile,
-        range,
-        ds,
-        &envelope,
-        reference_deflection,
+/// The circle-line enveloping of a tire of free radius `radius` on a profile sampled every
+/// `sample_spacing` (m): what the truck's [`tire_fiala::EffectiveTrack`]s are built with,
+/// at once or as a run reaches them ([`tire_fiala::EffectiveTrack::on_demand`]).
+pub fn circle_line_envelope(radius: f64, sample_spacing: f64) -> Result<Envelope, TruckError> {
+    Ok(Envelope::new(
+        EnvelopeMethod::CircleLine,
+        radius,
+        sample_spacing,
     )?)
 }

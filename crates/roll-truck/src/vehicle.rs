@@ -19,8 +19,8 @@ use std::sync::Arc;
 use multibody::Workspace;
 use nalgebra::Vector3;
 use tire_fiala::{
-    EffectiveTrack, HandlingLaw, LinearCorneringLaw, LoadDeflectionTable, PathFrame, TireAssembly,
-    TireInput, TireTrack, Track, VerticalContact,
+    EffectiveTrack, Envelope, HandlingLaw, LinearCorneringLaw, LoadDeflectionTable, PathFrame,
+    TireAssembly, TireInput, TireTrack, Track, VerticalContact,
 };
 use vehicle_components::{Component, StateInfo, StateLayout, Terrain};
 
@@ -30,7 +30,7 @@ use crate::model::{body, build_tree, TireMount, NQ, NV};
 use crate::params::TruckParams;
 use crate::statics::Statics;
 use crate::suspension::Suspension;
-use crate::tires::{circle_line_track, circle_line_track_on_demand};
+use crate::tires::circle_line_envelope;
 
 /// Offsets of the state blocks: the plain indices of [`truck_states`], fixed at compile
 /// time so the right-hand side works on fixed-size arrays.
@@ -203,14 +203,13 @@ impl TruckVehicle {
         half_width: f64,
         options: ModelOptions,
     ) -> Result<Self, TruckError> {
-        Self::assemble(params, options, |range, deflection| {
+        Self::assemble(params, options, |range, deflection, envelope| {
             let build = |y: f64| {
-                circle_line_track(
+                EffectiveTrack::build(
                     &Track { terrain, y },
                     range,
                     options.track_grid_m,
-                    params.tire_free_radius_m,
-                    options.envelope_sample_m,
+                    envelope,
                     deflection,
                 )
             };
@@ -230,17 +229,17 @@ impl TruckVehicle {
         half_width: f64,
         options: ModelOptions,
     ) -> Result<Self, TruckError> {
-        Self::assemble(params, options, |range, deflection| {
+        Self::assemble(params, options, |range, deflection, envelope| {
             let build = |y: f64| {
-                circle_line_track_on_demand(
-                    Track {
-                        terrain: Arc::clone(&terrain),
-                        y,
-                    },
+                let profile = Track {
+                    terrain: Arc::clone(&terrain),
+                    y,
+                };
+                EffectiveTrack::on_demand(
+                    profile,
                     range,
                     options.track_grid_m,
-                    params.tire_free_radius_m,
-                    options.envelope_sample_m,
+                    envelope,
                     deflection,
                 )
             };
@@ -248,12 +247,16 @@ impl TruckVehicle {
         })
     }
 
-    /// The truck with the left and right caches `tracks(path range, reference deflection)`
-    /// gives, after the parameters and options are checked.
+    /// The truck with the left and right caches `tracks(path range, reference deflection,
+    /// circle-line envelope)` gives, after the parameters and options are checked.
     fn assemble(
         params: &TruckParams,
         options: ModelOptions,
-        tracks: impl FnOnce((f64, f64), f64) -> Result<[EffectiveTrack; 2], TruckError>,
+        tracks: impl FnOnce(
+            (f64, f64),
+            f64,
+            &Envelope,
+        ) -> Result<[EffectiveTrack; 2], tire_fiala::TireError>,
     ) -> Result<Self, TruckError> {
         params.validate()?;
         positive("path_length_m", options.path_length_m)?;
@@ -273,7 +276,9 @@ impl TruckVehicle {
             options.start_s_m + options.path_length_m + margin,
         );
         let deflection = 0.5 * (statics.front_tire_deflection_m + statics.rear_tire_deflection_m);
-        let tracks: Arc<[TireTrack]> = Arc::new(tracks(range, deflection)?.map(TireTrack::Static));
+        let envelope = circle_line_envelope(params.tire_free_radius_m, options.envelope_sample_m)?;
+        let tracks = tracks(range, deflection, &envelope)?;
+        let tracks: Arc<[TireTrack]> = Arc::new(tracks.map(TireTrack::Static));
         let vertical = VerticalContact::new(
             LoadDeflectionTable::linear(params.tire_vertical_stiffness_n_per_m)?,
             params.tire_vertical_damping_n_s_per_m,
