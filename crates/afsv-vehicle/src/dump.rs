@@ -2,7 +2,7 @@
 //! order with a comment above it. The vehicle's own fields are explained in words with
 //! their source; the fields of the nested sets (tire, steering, strut, truck, yaw-plane)
 //! carry their unit and plausible range from the set's parameter registry, the same range
-//! [`crate::check`] enforces. Reading the dump back gives the description bit for bit.
+//! [`crate::resolve`] enforces. Reading the dump back gives the description bit for bit.
 
 use toml::{Table, Value};
 use vehicle_components::{ParamSet, ParamSpec};

@@ -11,7 +11,7 @@
 //!
 //! - [`schema`]: the file's structure; [`read`]: TOML to a description with located errors;
 //! - [`resolve`]: ranges from the parameter registries, the models' own checks, the
-//!   conversion; [`builtin`]: the Chapter 6 prototype (the default) and the Chapter 2
+//!   conversion; [`mod@builtin`]: the Chapter 6 prototype (the default) and the Chapter 2
 //!   truck; [`dump`]: a description as commented TOML.
 
 pub mod builtin;

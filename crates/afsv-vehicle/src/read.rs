@@ -16,7 +16,7 @@ use crate::schema::{Articulated, Head, Kind, RigidTruck, VehicleDescription, FOR
 pub const MAX_BYTES: usize = 1 << 20;
 
 /// Parse the description `text` read from `origin` (a file name for messages). The result
-/// is read, not yet checked against the physical ranges ([`crate::check`]).
+/// is read, not yet checked against the physical ranges ([`crate::resolve`]).
 pub fn parse(text: &str, origin: &str) -> Result<VehicleDescription, DescriptionError> {
     if text.len() > MAX_BYTES {
         return Err(DescriptionError::TooLarge {

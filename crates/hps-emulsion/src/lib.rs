@@ -15,9 +15,9 @@
 //!   evaluate, and a `vehicle_components::Component` ([`StrutMotion`] in, force out) for a
 //!   vehicle model.
 //! - [`simulate_displacement`]: prescribed-displacement runs (harmonic or sampled).
-//! - [`characterize`], [`lab_programme`], [`loop_metrics`]: the harmonic characterisation;
+//! - [`mod@characterize`], [`lab_programme`], [`loop_metrics`]: the harmonic characterisation;
 //!   [`HysteresisLoop`]: the samples of one period for the loop plots.
-//! - [`identify`]: least-squares identification from a record.
+//! - [`mod@identify`]: least-squares identification from a record.
 //! - [`HpsExtensions`]: switchable physical extensions for the model-discrepancy workflow;
 //!   [`StrutLaws`]: the readings of ambiguous laws (calibration switches).
 //! - [`interconnect`]: two struts cross-connected by hydraulic lines with accumulators (roll

@@ -1,6 +1,6 @@
 //! The rear walking-beam bogie (`docs/layouts.md`, "The walking-beam bogie"): a rear tandem
 //! whose two wheels on each side turn on the ends of one beam, the beam pitching about a
-//! pivot at the rear axle position of [`VehicleParams`] (`rear_axle_to_joint_m`) at the
+//! pivot at the rear axle position of [`crate::VehicleParams`] (`rear_axle_to_joint_m`) at the
 //! wheel-centre height. Each side's pivot sits on the side's wheel carrier, which slides
 //! along the rear unit's z on one HPS strut when the rear axle is suspended
 //! (`VehicleParams::rear_hps`), else is fixed ([`crate::model`]).

@@ -4,7 +4,7 @@
 //! package's `simulate_vehicle` and discovery's replay all read a [`RunRecord`] through it.
 //!
 //! Conversions: angles in degrees; the yaw rate right-turn positive (the model's is
-//! left-turn positive about +z, module docs of [`crate::simulate`]); everything else as the
+//! left-turn positive about +z, module docs of [`mod@crate::simulate`]); everything else as the
 //! model records it (SI, body axes of the front unit).
 
 use crate::simulate::RunRecord;

@@ -415,7 +415,7 @@ impl OdeSystem for LinkedVehicle {
 /// A run of the linked vehicle.
 #[derive(Debug, Clone, PartialEq, Default, Serialize)]
 pub struct LinkedRun {
-    /// The vehicle's record ([`crate::simulate`]).
+    /// The vehicle's record ([`fn@crate::simulate`]).
     pub record: RunRecord,
     /// Node (accumulator) pressure of every line at each sample (Pa): entry `2 i + k` is
     /// pair `i`'s line `k` ([`LinkedVehicle::pairs`]). Roll: line 0 from the left piston side

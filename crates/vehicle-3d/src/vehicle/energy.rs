@@ -7,7 +7,7 @@ use crate::error::VehicleError;
 impl Vehicle {
     /// Mechanical and hydraulic energy (J) at `y`: kinetic + gravitational + the AFS
     /// chambers' compression energy + the tires' elastic energy, and with the HPS the
-    /// struts' stored energy ([`AxleStruts::stored_energy`]). Conserved on rigid axles with
+    /// struts' stored energy ([`crate::suspension::AxleStruts::stored_energy`]). Conserved on rigid axles with
     /// the valve closed (steering-wheel angle inside the dead band), no leakage, no strut
     /// friction, no tire damping and no horizontal tire forces (`tests/physics.rs`); the
     /// HPS struts only lose it (`tests/rear_hps.rs`).
