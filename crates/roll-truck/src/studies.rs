@@ -59,12 +59,24 @@ pub fn truck_on(
     direction: SteerDirection,
     path_length_m: f64,
 ) -> Result<TruckVehicle, TruckError> {
+    let (options, half_width) = placement(terrain, direction, path_length_m);
+    TruckVehicle::new(p, terrain, half_width, options)
+}
+
+/// How a truck stands on `terrain` for [`truck_on`] and the studies' runs: its options,
+/// the cache covering `path_length_m` (at most the terrain's length), and the half width of
+/// the terrain's tracks its tires run on.
+fn placement(
+    terrain: &TwoTrackTerrain,
+    direction: SteerDirection,
+    path_length_m: f64,
+) -> (ModelOptions, f64) {
     let options = ModelOptions {
         direction,
         path_length_m: path_length_m.min(terrain.profile().length_m()),
         ..ModelOptions::default()
     };
-    TruckVehicle::new(p, terrain, 0.5 * terrain.params().track_width_m, options)
+    (options, 0.5 * terrain.params().track_width_m)
 }
 
 /// One run and its measures.
@@ -149,12 +161,7 @@ fn run_on_terrain(
     options: &RunOptions,
     sp: &SustainedPeriodParams,
 ) -> Result<Run, TruckError> {
-    let model = ModelOptions {
-        direction,
-        path_length_m: run_path_length_m(p, options).min(terrain.profile().length_m()),
-        ..ModelOptions::default()
-    };
-    let half_width = 0.5 * terrain.params().track_width_m;
+    let (model, half_width) = placement(&terrain, direction, run_path_length_m(p, options));
     let truck = TruckVehicle::on_demand(p, Arc::new(terrain), half_width, model)?;
     let record = simulate(&truck, options)?;
     let measures = roll_measures(p, &record, sp)?;
